@@ -1,0 +1,41 @@
+# simswift_library(NAME DIR): one static library per source folder, named
+# simswift::NAME, made of every .cpp below DIR (new files need no CMake edit).
+function(simswift_library name dir)
+  file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
+  if(NOT srcs)
+    add_library(simswift_${name} INTERFACE)
+    target_include_directories(simswift_${name} INTERFACE ${PROJECT_SOURCE_DIR})
+  else()
+    add_library(simswift_${name} STATIC ${srcs})
+    target_include_directories(simswift_${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  endif()
+  add_library(simswift::${name} ALIAS simswift_${name})
+endfunction()
+
+# simswift_forbid_includes(DIR PREFIX): fail the configure step if any file
+# under DIR includes a header under PREFIX. Used to keep agent/ (the robot
+# code) free of the simulator, so the same code runs on a robot.
+function(simswift_forbid_includes dir prefix)
+  file(GLOB_RECURSE files CONFIGURE_DEPENDS
+       ${PROJECT_SOURCE_DIR}/${dir}/*.cpp ${PROJECT_SOURCE_DIR}/${dir}/*.hpp)
+  foreach(f ${files})
+    file(STRINGS ${f} hits REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<]${prefix}")
+    if(hits)
+      message(FATAL_ERROR "${f} includes ${hits}: ${dir}/ must not depend on ${prefix}")
+    endif()
+  endforeach()
+endfunction()
+
+# simswift_test(NAME DIR LIBS...): one GoogleTest executable per tests/ folder.
+function(simswift_test name dir)
+  file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
+  if(NOT srcs)
+    return()
+  endif()
+  add_executable(test_${name} ${srcs})
+  target_link_libraries(test_${name} PRIVATE ${ARGN} GTest::gtest_main)
+  target_compile_definitions(test_${name} PRIVATE
+      SIMSWIFT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+      SIMSWIFT_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  gtest_discover_tests(test_${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${name})
+endfunction()

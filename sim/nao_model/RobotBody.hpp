@@ -1,0 +1,86 @@
+// One simulated NAO: the NaoModel instantiated as ODE bodies, geoms and hinge
+// joints, plus its joint servos (the DCM's behaviour). Mutable state; the
+// model it was built from is shared and immutable.
+//
+// Units: m, rad, rad/s, N, N*m. Poses are in the world (field) frame: origin
+// at the centre spot, x toward the opponent goal, y left, z up.
+#pragma once
+
+#include <ode/ode.h>
+
+#include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/Servo.hpp"
+
+namespace simswift {
+
+// What ODE geoms carry in their user data, so contacts can be attributed.
+struct GeomTag {
+  enum Kind : int32_t { Ground, FieldObject, Net, Ball, RobotLink } kind = Ground;
+  int32_t robot = -1;  // robot index for RobotLink
+  int32_t link = -1;   // link index in the NaoModel for RobotLink
+};
+
+class RobotBody {
+ public:
+  // Builds bodies/geoms/joints in `world`/`space` with the torso at
+  // `torso_pose` and all joints at `posture` (rad, indexed like
+  // model.joints(); missing entries = 0).
+  RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSpaceID space,
+            const Eigen::Isometry3d& torso_pose, const std::vector<double>& posture,
+            const ServoConfig& servo_config);
+  ~RobotBody();
+  RobotBody(const RobotBody&) = delete;
+  RobotBody& operator=(const RobotBody&) = delete;
+
+  const NaoModel& model() const { return *model_; }
+  int index() const { return index_; }
+
+  // --- Commands (libagent order, 25 slots). Latched; the runner decides
+  // when they take effect (one 10 ms cycle after they were written).
+  void setCommand(const std::array<float, 25>& angles, const std::array<float, 25>& stiffnesses);
+  const ServoCommandStats& commandStats() const { return servo_.stats(); }
+
+  // Called by the World before every physics substep of length dt (s).
+  void applyServos(double dt);
+
+  // --- State
+  double jointAngle(int joint) const;     // rad, model joint index
+  double jointVelocity(int joint) const;  // rad/s
+  double jointTorque(int joint) const;    // N*m last applied by the servo
+  dBodyID body(int link) const { return bodies_[link]; }
+  dBodyID torsoBody() const { return bodies_[model_->rootLink()]; }
+  Eigen::Isometry3d linkPose(int link) const;            // link frame in world
+  Eigen::Vector3d linkLinearVelocity(int link, const Eigen::Vector3d& point_in_link) const;
+  Eigen::Vector3d linkAngularVelocity(int link) const;   // world frame
+  const std::vector<dGeomID>& geoms() const { return geoms_; }
+
+  // --- Teleport: moves the whole robot rigidly so the torso is at `pose`,
+  // zeroing all velocities. With a posture, joints are set first.
+  void teleport(const Eigen::Isometry3d& torso_pose);
+  void setPosture(const std::vector<double>& posture);  // kinematic, keeps torso pose
+
+  // Lowest z of any collision geom (m) -- used to put the feet on the ground.
+  double lowestPoint() const;
+
+  // True if any body has a NaN/inf or speed beyond the limits (m/s, rad/s).
+  bool blownUp(double max_linear, double max_angular) const;
+
+ private:
+  const NaoModel* model_;
+  int index_;
+  dWorldID world_;
+  std::vector<dBodyID> bodies_;        // per link
+  std::vector<dJointID> joints_;       // per joint (hinge)
+  std::vector<dJointID> motors_;       // per joint (angular motor or null)
+  std::vector<dGeomID> geoms_;
+  std::vector<std::unique_ptr<GeomTag>> tags_;
+  ServoBank servo_;
+};
+
+}  // namespace simswift

@@ -1,0 +1,112 @@
+// The ODE world: field, ball, robots, contacts, fixed-step stepping and the
+// state hash. One world, single-threaded. `step()` advances one 10 ms motion
+// tick made of a whole number of substeps; its order is fixed and commented in
+// World.cpp.
+#pragma once
+
+#include <ode/ode.h>
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/RobotBody.hpp"
+#include "sim/world/FieldConfig.hpp"
+
+namespace simswift {
+
+constexpr double kTickSeconds = 0.010;  // the NAO's DCM / Motion cycle
+
+struct WorldConfig {
+  enum class Solver { Exact, Quick };
+  Solver solver = Solver::Exact;     // see World.cpp for why
+  int substeps = 2;                  // physics steps per 10 ms tick
+  int quick_iterations = 20;
+  double erp = 0.2;
+  double cfm = 1e-5;
+  double gravity = 9.81;             // m/s^2
+  double blowup_linear_speed = 50;   // m/s: beyond this a body has blown up
+  double blowup_angular_speed = 200; // rad/s
+  ServoConfig servo;
+};
+
+// A contact felt by a robot link during the last tick, averaged over its
+// substeps: the force the environment exerts on the link (N, world frame) at
+// `position` (m, world frame).
+struct LinkContact {
+  int robot;
+  int link;
+  GeomTag::Kind other;
+  int other_robot;  // if other == RobotLink
+  Eigen::Vector3d position;
+  Eigen::Vector3d force;
+};
+
+struct WorldEvent {
+  enum class Kind { BlowUp, Fall } kind;
+  int64_t tick;
+  int robot;            // -1 for the ball
+  std::string message;
+};
+
+class World {
+ public:
+  World(const FieldConfig& field, const WorldConfig& config = {});
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  // Adds a robot whose feet rest on the carpet at (x, y) m facing `theta`
+  // rad, joints at `posture` (model joint order). Returns its index.
+  int addRobot(std::shared_ptr<const NaoModel> model, double x, double y, double theta,
+               const std::vector<double>& posture);
+  int numRobots() const { return static_cast<int>(robots_.size()); }
+  RobotBody& robot(int i) { return *robots_[i]; }
+  const RobotBody& robot(int i) const { return *robots_[i]; }
+
+  // Teleports: velocities zeroed. A robot is re-seated on its feet.
+  void placeRobot(int i, double x, double y, double theta, const std::vector<double>& posture);
+  void placeBall(double x, double y);
+  void setBallVelocity(const Eigen::Vector3d& v);  // m/s, world
+  Eigen::Vector3d ballPosition() const;
+  Eigen::Vector3d ballVelocity() const;
+
+  // Advances one 10 ms tick. Detects blow-ups: the robot (or ball) is reset
+  // to where it was last placed and an event is recorded; the run goes on.
+  void step();
+  int64_t tick() const { return tick_; }
+  double time() const { return tick_ * kTickSeconds; }  // s
+
+  const std::vector<LinkContact>& contacts() const { return contacts_; }
+  std::vector<WorldEvent> takeEvents();
+
+  // Distance (m) from `origin` along unit `dir` to the first geom hit within
+  // `max_range`, ignoring robot `ignore_robot`'s own links; < 0 if none.
+  double rayCast(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double max_range,
+                 int ignore_robot) const;
+
+  // FNV-1a over every body's pose and velocities (bit patterns), in a fixed
+  // order: ball, then robots by index, links by model index.
+  uint64_t stateHash() const;
+
+  const FieldConfig& field() const { return field_; }
+  const WorldConfig& config() const { return config_; }
+  dWorldID odeWorld() const { return world_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  FieldConfig field_;
+  WorldConfig config_;
+  dWorldID world_ = nullptr;
+  dSpaceID space_ = nullptr;
+  std::vector<std::unique_ptr<RobotBody>> robots_;
+  std::vector<LinkContact> contacts_;
+  std::vector<WorldEvent> events_;
+  int64_t tick_ = 0;
+};
+
+}  // namespace simswift
