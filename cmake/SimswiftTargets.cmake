@@ -3,12 +3,14 @@
 function(simswift_library name dir)
   file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
   if(NOT srcs)
-    add_library(simswift_${name} INTERFACE)
-    target_include_directories(simswift_${name} INTERFACE ${PROJECT_SOURCE_DIR})
-  else()
-    add_library(simswift_${name} STATIC ${srcs})
-    target_include_directories(simswift_${name} PUBLIC ${PROJECT_SOURCE_DIR})
+    # A folder not written yet still gets a real (empty) library, so that
+    # target_link_libraries(... PUBLIC ...) on it stays valid.
+    set(stub ${PROJECT_BINARY_DIR}/simswift_${name}_empty.cpp)
+    file(WRITE ${stub} "// empty: ${dir} has no sources yet\n")
+    set(srcs ${stub})
   endif()
+  add_library(simswift_${name} STATIC ${srcs})
+  target_include_directories(simswift_${name} PUBLIC ${PROJECT_SOURCE_DIR})
   add_library(simswift::${name} ALIAS simswift_${name})
 endfunction()
 

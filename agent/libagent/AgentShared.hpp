@@ -114,6 +114,9 @@ struct LockStep {
   sem_t motion_done;
   // Set by the simulator when the run ends so robot threads can exit.
   std::atomic<int32_t> shutdown;
+  // Set by the robot program once it is attached and its threads wait (the
+  // process id, or 1 in-process); the simulator waits for it before tick 0.
+  std::atomic<int32_t> attached;
 };
 
 constexpr uint32_t kMagic = 0x53574654;  // "SWFT"

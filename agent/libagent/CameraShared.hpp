@@ -47,6 +47,10 @@ struct CameraBlock {
   sem_t frame_ready;               // posted by the simulator at 30 Hz
   sem_t perception_done;           // posted by Perception when it has finished
   std::atomic<int32_t> shutdown;   // set when the run ends
+  // 1 if a Perception thread waits on frame_ready. Set before
+  // LockStep::attached; the simulator posts frames (and waits for
+  // perception_done) only to robots that have one.
+  std::atomic<int32_t> consumer;
 };
 
 }  // namespace agent::libagent

@@ -30,7 +30,11 @@ class RobotBody {
  public:
   // Builds bodies/geoms/joints in `world`/`space` with the torso at
   // `torso_pose` and all joints at `posture` (rad, indexed like
-  // model.joints(); missing entries = 0).
+  // model.joints(); missing entries = 0; clamped to the limits).
+  // Geoms go straight into `space`, each tagged (GeomTag) with this robot's
+  // index and its link: the world's collision callback must skip pairs whose
+  // tags name the same robot (no self-collision). Destroy every RobotBody
+  // before its dWorldID. Link inertias get ServoConfig::min_link_inertia.
   RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSpaceID space,
             const Eigen::Isometry3d& torso_pose, const std::vector<double>& posture,
             const ServoConfig& servo_config);
@@ -81,6 +85,14 @@ class RobotBody {
   std::vector<dGeomID> geoms_;
   std::vector<std::unique_ptr<GeomTag>> tags_;
   ServoBank servo_;
+  // Each link's centre of mass in its link frame (m): ODE puts a body's
+  // origin at its CoM, so link frame = body frame shifted by -com.
+  std::vector<Eigen::Vector3d> com_;
+  std::vector<dJointFeedback> feedback_;  // per joint, filled by ODE each step
+  // Link frames in the world for torso pose `torso` and joint angles (rad).
+  std::vector<Eigen::Isometry3d> forwardKinematics(const Eigen::Isometry3d& torso,
+                                                   const std::vector<double>& angles) const;
+  void placeLinks(const std::vector<Eigen::Isometry3d>& poses);
 };
 
 }  // namespace simswift

@@ -14,6 +14,12 @@ struct ServoConfig {
   double kp = 60.0;            // 1/s: velocity target = kp * angle error (before the speed clamp)
   double torque_scale = 1.0;   // multiplies each joint's max_effort
   double limp_damping = 0.02;  // N*m*s/rad of friction left in a limp joint
+  // Floor (kg*m^2) on every link's principal moments of inertia, applied when
+  // RobotBody builds the ODE bodies. Physically the reflected rotor inertia
+  // (armature) of the geared joint motors, which the bare link inertias
+  // leave out; numerically it keeps the NAO's small 70-130 g links from
+  // blowing up ODE's iterative solver (facts.md section 7). 0 disables it.
+  double min_link_inertia = 5e-4;
 };
 
 // Counts of commands the servo had to correct; reported at the end of a run.
@@ -34,6 +40,10 @@ class ServoBank {
   // given the current angle (rad) and the substep length dt (s).
   struct Drive { double velocity; double max_torque; };
   Drive drive(int joint, double angle, double dt) const;
+
+  // Makes `joint` follow `leader` (target * multiplier, same stiffness), for
+  // joints sharing one motor (RHipYawPitch). Not counted in stats().
+  void follow(int joint, int leader, double multiplier);
 
   double target(int joint) const { return target_[joint]; }
   double stiffness(int joint) const { return stiffness_[joint]; }

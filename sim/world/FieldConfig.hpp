@@ -7,15 +7,12 @@
 // (positive) goal, y left, z up. Units: m, kg, rad.
 #pragma once
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace simswift {
+#include "sim/world/ConfigError.hpp"
 
-struct ConfigError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+namespace simswift {
 
 struct LineSegment {   // a painted line, from a to b, `width` wide
   double ax = 0, ay = 0, bx = 0, by = 0;
@@ -35,19 +32,29 @@ struct GoalConfig {
   double inner_width = 1.50;     // between the posts' inner faces
   double depth = 0.50;           // net depth behind the goal line
   double net_height = 0.80;
+  // The net as a damped spring (so a shot is absorbed, not bounced back):
+  // stiffness N/m and damping N*s/m per contact.
+  double net_stiffness = 300.0;
+  double net_damping = 8.0;
 };
 
 struct BallConfig {
   double diameter = 0.10;
   double mass = 0.044;
-  double rolling_friction = 0.02;   // rolling-resistance coefficient on carpet (dimensionless)
+  // Rolling-resistance coefficient on carpet (dimensionless: resisting force
+  // / normal force). 0.07 decelerates a rolling ball by ~0.5 m/s^2; a ball
+  // struck at 2.5 m/s first slides (losing 2/7 of its speed) and then rolls,
+  // stopping after ~3.5 m, as on SPL carpet.
+  double rolling_friction = 0.07;
   double restitution = 0.6;         // against posts and robots
+  double ground_restitution = 0.3;  // dropped on the carpet
   double linear_damping = 0.0;      // extra air drag (1/s)
 };
 
 struct SurfaceConfig {
   double friction = 0.8;            // foot-carpet Coulomb coefficient
   double ball_friction = 0.5;       // ball-carpet
+  double other_friction = 0.5;      // every other pair (robot-robot, ball-post, ball-robot...)
   double soft_erp = 0.2, soft_cfm = 1e-5;
 };
 
@@ -67,6 +74,14 @@ struct FieldConfig {
   double carpetLength() const { return length + 2 * border; }
   double carpetWidth() const { return width + 2 * border; }
 
+  // The SPL 2017 field with all its markings (what an empty YAML gives).
+  static FieldConfig spl2017();
+  // Replaces lines/circles/crosses with the SPL 2017 markings for the
+  // current length/width/line_width (penalty area 0.6 x 2.2 m, marks 1.3 m
+  // from the goal lines, centre circle 0.75 m radius).
+  void setSplMarkings();
+
+  // A YAML file's markings lists, when present, replace the defaults.
   static FieldConfig loadYaml(const std::string& path);
   static FieldConfig parseYaml(const std::string& text, const std::string& source_name);
 };

@@ -22,7 +22,7 @@ constexpr double kTickSeconds = 0.010;  // the NAO's DCM / Motion cycle
 
 struct WorldConfig {
   enum class Solver { Exact, Quick };
-  Solver solver = Solver::Exact;     // see World.cpp for why
+  Solver solver = Solver::Quick;     // see World.cpp for why (measured)
   int substeps = 2;                  // physics steps per 10 ms tick
   int quick_iterations = 20;
   double erp = 0.2;
@@ -35,7 +35,9 @@ struct WorldConfig {
 
 // A contact felt by a robot link during the last tick, averaged over its
 // substeps: the force the environment exerts on the link (N, world frame) at
-// `position` (m, world frame).
+// `position` (m, world frame). contacts() holds one entry per contact point
+// per substep with the force already divided by the number of substeps, so
+// summing a link's entries gives its tick-average force.
 struct LinkContact {
   int robot;
   int link;

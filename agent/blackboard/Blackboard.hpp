@@ -1,0 +1,172 @@
+// The Blackboard: the store the robot program's threads share.
+//
+// It is split into sections, one per producing module. Each section is a
+// plain value struct guarded by its own mutex (Section<T>); readers take a
+// copy, writers replace or update the value under the lock, so a thread
+// never sees half of another thread's write and never holds a lock while it
+// computes. Sections are small (well under a kilobyte) so copying is cheap
+// compared with the 10 ms Motion tick.
+//
+// Who reads and writes what (one line per module; later modules add theirs):
+//   Behaviour  writes motion_request; reads motion (odometry, posture).
+//   Motion     reads motion_request; writes motion (odometry, posture,
+//              support foot, active action).
+//
+// Units: distances mm, speeds mm/s, angles rad, angular speeds rad/s.
+// Frame: robot-relative (x forward, y left, z up), as on the NAO.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <mutex>
+
+#include "agent/libagent/AgentShared.hpp"
+
+namespace agent::blackboard {
+
+// A value guarded by its own mutex. read() returns a copy; write() replaces.
+template <typename T>
+class Section {
+ public:
+  T read() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return value_;
+  }
+  void write(const T& v) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    value_ = v;
+  }
+  // Read-modify-write under the lock: fn(T&).
+  template <typename Fn>
+  void update(Fn&& fn) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    fn(value_);
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  T value_{};
+};
+
+// ---------------------------------------------------------------- requests
+
+// What the body should do. The Motion thread picks the generator from this.
+enum class ActionType : int32_t {
+  NONE = 0,     // keep doing what is being done (no new body request)
+  STAND,        // stand still, knees slightly bent (the walk's stand)
+  WALK,         // omnidirectional walk at forward/left/turn
+  KICK,         // kick with `foot` at `kick_power` toward `kick_direction`
+  GETUP_FRONT,  // get up from lying face down
+  GETUP_BACK,   // get up from lying on the back
+  DEAD,         // fall-safe: all joints limp (stiffness off)
+  CROUCH,       // low crouch, low stiffness (safe rest posture)
+  LIMP,         // low stiffness, holding the current angles loosely
+  NUM_ACTION_TYPES
+};
+const char* actionName(ActionType t);
+
+enum class Foot : int32_t { LEFT = 0, RIGHT = 1 };
+
+struct HeadCommand {
+  float yaw = 0;          // rad, + = left
+  float pitch = 0;        // rad, + = down
+  bool relative = false;  // true: yaw/pitch are added to the current angles
+  float yaw_speed = 1.0f;    // rad/s, limited further by the joint's max speed
+  float pitch_speed = 1.0f;  // rad/s
+};
+
+struct BodyCommand {
+  ActionType type = ActionType::NONE;
+  float forward = 0;          // mm/s (WALK)
+  float left = 0;             // mm/s (WALK)
+  float turn = 0;             // rad/s, + = counter-clockwise (WALK)
+  float kick_power = 1.0f;    // 0..1 (KICK)
+  float kick_direction = 0;   // rad, robot-relative, 0 = straight ahead (KICK)
+  Foot foot = Foot::RIGHT;    // kicking foot (KICK)
+};
+
+// Written by Behaviour (or a scenario script), read by Motion.
+struct MotionRequest {
+  HeadCommand head;
+  BodyCommand body;
+  libagent::LedCommand leds{};
+  int64_t sequence = 0;  // incremented by the writer on every new request
+};
+
+// ---------------------------------------------------------------- outputs
+
+enum class Posture : int32_t {
+  STANDING = 0,
+  WALKING,
+  KICKING,
+  GETTING_UP,
+  FALLING,          // a fall was detected, joints made limp
+  FALLEN_FORWARD,   // lying face down
+  FALLEN_BACKWARD,  // lying on the back
+  FALLEN_SIDEWAYS,
+  LIMP,             // DEAD / LIMP / CROUCH on request
+};
+const char* postureName(Posture p);
+
+// Dead-reckoned motion of the robot, accumulated since Motion started, in
+// the robot frame integrated step by step (x forward mm, y left mm, turn rad).
+struct Odometry {
+  double forward = 0;  // mm
+  double left = 0;     // mm
+  double turn = 0;     // rad
+  // Field-style integration of the same steps: position of the robot in the
+  // frame it had when Motion started (mm, mm, rad). Easier for a caller that
+  // wants "where am I relative to where I began".
+  double x = 0, y = 0, theta = 0;
+};
+
+// Written by Motion, read by everyone.
+struct MotionState {
+  Odometry odometry;
+  Posture posture = Posture::STANDING;
+  Foot support_foot = Foot::LEFT;
+  ActionType active = ActionType::NONE;  // the generator currently running
+  bool walk_stepping = false;            // the walk is taking steps
+  int64_t request_sequence = 0;          // last MotionRequest::sequence seen
+  int64_t tick = 0;                      // Motion ticks so far
+  double time = 0;                       // s, sim time of the last tick
+};
+
+// ---------------------------------------------------------------- the store
+
+struct Blackboard {
+  Section<MotionRequest> motion_request;  // Behaviour -> Motion
+  Section<MotionState> motion;            // Motion -> all
+};
+
+inline const char* actionName(ActionType t) {
+  switch (t) {
+    case ActionType::NONE: return "NONE";
+    case ActionType::STAND: return "STAND";
+    case ActionType::WALK: return "WALK";
+    case ActionType::KICK: return "KICK";
+    case ActionType::GETUP_FRONT: return "GETUP_FRONT";
+    case ActionType::GETUP_BACK: return "GETUP_BACK";
+    case ActionType::DEAD: return "DEAD";
+    case ActionType::CROUCH: return "CROUCH";
+    case ActionType::LIMP: return "LIMP";
+    default: return "?";
+  }
+}
+
+inline const char* postureName(Posture p) {
+  switch (p) {
+    case Posture::STANDING: return "STANDING";
+    case Posture::WALKING: return "WALKING";
+    case Posture::KICKING: return "KICKING";
+    case Posture::GETTING_UP: return "GETTING_UP";
+    case Posture::FALLING: return "FALLING";
+    case Posture::FALLEN_FORWARD: return "FALLEN_FORWARD";
+    case Posture::FALLEN_BACKWARD: return "FALLEN_BACKWARD";
+    case Posture::FALLEN_SIDEWAYS: return "FALLEN_SIDEWAYS";
+    case Posture::LIMP: return "LIMP";
+  }
+  return "?";
+}
+
+}  // namespace agent::blackboard

@@ -1,0 +1,336 @@
+#include "agent/motion/Generators.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "agent/motion/JointLimits.hpp"
+#include "agent/motion/Kinematics.hpp"
+#include "agent/motion/Walk2014Generator.hpp"
+
+namespace agent::motion {
+
+namespace J = libagent::Joints;
+namespace S = libagent::Sensors;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double ease(double f) {
+  f = std::max(0.0, std::min(1.0, f));
+  return 0.5 - 0.5 * std::cos(kPi * f);
+}
+
+void setArms(JointArray& a, float pitch, float roll, float elbow_yaw, float elbow_roll) {
+  a[J::LShoulderPitch] = pitch;
+  a[J::RShoulderPitch] = pitch;
+  a[J::LShoulderRoll] = roll;
+  a[J::RShoulderRoll] = -roll;
+  a[J::LElbowYaw] = elbow_yaw;
+  a[J::RElbowYaw] = -elbow_yaw;
+  a[J::LElbowRoll] = elbow_roll;
+  a[J::RElbowRoll] = -elbow_roll;
+}
+
+void setLegs(JointArray& a, float hyp, float roll, float hip, float knee, float ankle, float ankle_roll = 0) {
+  a[J::LHipYawPitch] = hyp;
+  a[J::LHipRoll] = roll;
+  a[J::RHipRoll] = -roll;
+  a[J::LHipPitch] = a[J::RHipPitch] = hip;
+  a[J::LKneePitch] = a[J::RKneePitch] = knee;
+  a[J::LAnklePitch] = a[J::RAnklePitch] = ankle;
+  a[J::LAnkleRoll] = ankle_roll;
+  a[J::RAnkleRoll] = -ankle_roll;
+}
+
+void writeLegs(const std::array<LegAngles, 2>& q, libagent::JointValues& out) {
+  out.angles[J::LHipYawPitch] = static_cast<float>(q[0].hip_yaw_pitch);
+  out.angles[J::LHipRoll] = static_cast<float>(q[0].hip_roll);
+  out.angles[J::LHipPitch] = static_cast<float>(q[0].hip_pitch);
+  out.angles[J::LKneePitch] = static_cast<float>(q[0].knee);
+  out.angles[J::LAnklePitch] = static_cast<float>(q[0].ankle_pitch);
+  out.angles[J::LAnkleRoll] = static_cast<float>(q[0].ankle_roll);
+  out.angles[J::RHipRoll] = static_cast<float>(q[1].hip_roll);
+  out.angles[J::RHipPitch] = static_cast<float>(q[1].hip_pitch);
+  out.angles[J::RKneePitch] = static_cast<float>(q[1].knee);
+  out.angles[J::RAnklePitch] = static_cast<float>(q[1].ankle_pitch);
+  out.angles[J::RAnkleRoll] = static_cast<float>(q[1].ankle_roll);
+}
+
+}  // namespace
+
+JointArray walkStandAngles(const WalkConfig& cfg) {
+  Walk2014Generator walk(cfg);
+  libagent::SensorValues s{};
+  libagent::JointValues out{};
+  walk.tick(s, 0.01, out);
+  JointArray a{};
+  for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = out.angles[i];
+  a[J::HeadYaw] = a[J::HeadPitch] = 0;
+  return a;
+}
+
+JointArray crouchAngles() {
+  libagent::JointValues out{};
+  writeLegs(legsInverse(footPose(-10, 0, -160, 0), footPose(-10, 0, -160, 0)), out);
+  JointArray a{};
+  for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = out.angles[i];
+  setArms(a, 1.5f, 0.15f, -1.2f, -0.4f);
+  return a;
+}
+
+// ------------------------------------------------------------------ head
+
+void headPitchRange(float yaw, float* lower, float* upper) {
+  // Approximation of the NAO's yaw-dependent pitch table: the full range
+  // (-38.5..29.5 deg) up to |yaw| 0.8 rad, tightening linearly to
+  // (-29.5..18 deg) at the yaw limit (2.086 rad).
+  const auto& lim = jointLimits()[J::HeadPitch];
+  const float a = std::fabs(yaw);
+  const float k = a <= 0.8f ? 0.0f : std::min(1.0f, (a - 0.8f) / (2.086f - 0.8f));
+  const float deg = 3.14159265f / 180.0f;
+  *lower = lim.lower + k * (-29.5f * deg - lim.lower);
+  *upper = lim.upper + k * (18.0f * deg - lim.upper);
+}
+
+void HeadGenerator::tick(const blackboard::HeadCommand& cmd, int64_t sequence,
+                         const libagent::SensorValues& sensors, double dt, libagent::JointValues& out) {
+  const float yaw_now = sensors.joints.angles[J::HeadYaw];
+  const float pitch_now = sensors.joints.angles[J::HeadPitch];
+  if (!primed_) {
+    yaw_ = target_yaw_ = std::isfinite(yaw_now) ? yaw_now : 0.0f;
+    pitch_ = target_pitch_ = std::isfinite(pitch_now) ? pitch_now : 0.0f;
+    primed_ = true;
+  }
+  if (cmd.relative) {
+    if (sequence != last_sequence_) {
+      target_yaw_ = yaw_now + cmd.yaw;
+      target_pitch_ = pitch_now + cmd.pitch;
+    }
+  } else {
+    target_yaw_ = cmd.yaw;
+    target_pitch_ = cmd.pitch;
+  }
+  last_sequence_ = sequence;
+  if (!std::isfinite(target_yaw_)) target_yaw_ = yaw_;
+  if (!std::isfinite(target_pitch_)) target_pitch_ = pitch_;
+  const auto& lim = jointLimits();
+  target_yaw_ = std::min(lim[J::HeadYaw].upper, std::max(lim[J::HeadYaw].lower, target_yaw_));
+  float lo, hi;
+  headPitchRange(target_yaw_, &lo, &hi);
+  target_pitch_ = std::min(hi, std::max(lo, target_pitch_));
+
+  const float yaw_speed = std::min(std::fabs(cmd.yaw_speed), lim[J::HeadYaw].max_velocity);
+  const float pitch_speed = std::min(std::fabs(cmd.pitch_speed), lim[J::HeadPitch].max_velocity);
+  const float dy = static_cast<float>(yaw_speed * dt), dp = static_cast<float>(pitch_speed * dt);
+  yaw_ += std::max(-dy, std::min(dy, target_yaw_ - yaw_));
+  pitch_ += std::max(-dp, std::min(dp, target_pitch_ - pitch_));
+  out.angles[J::HeadYaw] = yaw_;
+  out.angles[J::HeadPitch] = pitch_;
+  out.stiffnesses[J::HeadYaw] = out.stiffnesses[J::HeadPitch] = 0.8f;
+}
+
+// ------------------------------------------------------------------ keyframes
+
+void KeyframeGenerator::start(const std::vector<Keyframe>& frames, const JointArray& from) {
+  frames_ = frames;
+  from_ = from;
+  frame_ = 0;
+  t_ = 0;
+  elapsed_ = 0;
+}
+
+void KeyframeGenerator::tick(double dt, libagent::JointValues& out, bool with_head) {
+  if (frames_.empty()) return;
+  const int first = with_head ? 0 : J::LShoulderPitch;
+  if (done()) {
+    const Keyframe& last = frames_.back();
+    for (int i = first; i < libagent::kNumJoints; ++i) {
+      out.angles[i] = last.angles[i];
+      out.stiffnesses[i] = last.stiffness;
+    }
+    return;
+  }
+  t_ += dt;
+  elapsed_ += dt;
+  const Keyframe& k = frames_[frame_];
+  const JointArray& a = frame_ == 0 ? from_ : frames_[frame_ - 1].angles;
+  const double f = k.duration > 0 ? ease(t_ / k.duration) : 1.0;
+  for (int i = first; i < libagent::kNumJoints; ++i) {
+    out.angles[i] = static_cast<float>(a[i] + (k.angles[i] - a[i]) * f);
+    out.stiffnesses[i] = k.stiffness;
+  }
+  if (t_ >= k.duration) {
+    ++frame_;
+    t_ = 0;
+  }
+}
+
+// The get-ups are written in joint space. Signs: HipPitch < 0 folds the
+// thigh forward, ShoulderPitch 0 points the arms along the torso's x,
+// pi/2 down along the body, > pi/2 behind it.
+std::vector<Keyframe> getupFrontFrames(const WalkConfig& cfg) {
+  std::vector<Keyframe> f;
+  JointArray a{};
+  // Face down: arms to the sides of the chest, palms under the shoulders.
+  setArms(a, 0.0f, 0.5f, 0.0f, -1.4f);
+  setLegs(a, 0, 0, 0, 0, 0);
+  f.push_back({0.5, a, 1.0f});
+  // Straighten the arms: the chest comes up off the ground.
+  setArms(a, 0.2f, 0.15f, 0.0f, -0.05f);
+  f.push_back({0.4, a, 1.0f});
+  // Pull the knees under the hips (kneeling on all fours).
+  setLegs(a, -0.5f, 0.2f, -1.5f, 2.1f, -1.0f);
+  f.push_back({0.7, a, 1.0f});
+  // Push back onto the feet: arms swing back, hips open a little.
+  setArms(a, 1.0f, 0.15f, 0.0f, -0.05f);
+  setLegs(a, -0.3f, 0.1f, -1.3f, 2.1f, -1.1f);
+  f.push_back({0.6, a, 1.0f});
+  // Squat.
+  setArms(a, 1.5f, 0.15f, -1.2f, -0.4f);
+  setLegs(a, 0, 0, -1.2f, 2.1f, -0.95f);
+  f.push_back({0.6, a, 1.0f});
+  // Crouch, then stand.
+  JointArray c = crouchAngles();
+  f.push_back({0.7, c, 1.0f});
+  f.push_back({0.8, walkStandAngles(cfg), 1.0f});
+  return f;
+}
+
+std::vector<Keyframe> getupBackFrames(const WalkConfig& cfg) {
+  std::vector<Keyframe> f;
+  JointArray a{};
+  // On the back: arms beside and behind the hips, elbows bent, legs straight.
+  setArms(a, 2.0f, 0.3f, 0.0f, -1.0f);
+  setLegs(a, 0, 0, 0, 0, 0);
+  f.push_back({0.5, a, 1.0f});
+  // Prop up on the elbows and straighten the arms: the torso rises to sitting.
+  setArms(a, 2.0f, 0.1f, 0.0f, -0.05f);
+  setLegs(a, 0, 0, -0.6f, 0, 0);
+  f.push_back({0.5, a, 1.0f});
+  // Sitting with hands behind: spread the legs and fold them under.
+  setLegs(a, -0.9f, 0.5f, -1.2f, 2.1f, -0.8f);
+  f.push_back({0.7, a, 1.0f});
+  // Lean forward over the feet, arms forward for balance.
+  setArms(a, 0.5f, 0.1f, 0.0f, -0.05f);
+  setLegs(a, -0.4f, 0.2f, -1.5f, 2.1f, -1.0f);
+  f.push_back({0.6, a, 1.0f});
+  // Squat, crouch, stand.
+  setArms(a, 1.5f, 0.15f, -1.2f, -0.4f);
+  setLegs(a, 0, 0, -1.2f, 2.1f, -0.95f);
+  f.push_back({0.6, a, 1.0f});
+  f.push_back({0.7, crouchAngles(), 1.0f});
+  f.push_back({0.8, walkStandAngles(cfg), 1.0f});
+  return f;
+}
+
+// ------------------------------------------------------------------ kick
+
+void KickGenerator::start(blackboard::Foot foot, double power, double direction) {
+  foot_ = foot;
+  power_ = std::isfinite(power) ? std::max(0.0, std::min(1.0, power)) : 1.0;
+  direction_ = std::isfinite(direction) ? std::max(-0.8, std::min(0.8, direction)) : 0.0;
+  started_ = true;
+  phase_ = 0;
+  t_ = 0;
+  from_ = now_ = Target{0, 0, 0, 0, walk_.stand_hip_height};
+}
+
+// Targets per phase, for the kicking foot (x, y, z) and the hip shift over
+// the support foot (mm), with the hip height (mm).
+KickGenerator::Target KickGenerator::phaseTarget(int phase) const {
+  const double back = -cfg_.wind_back * (0.4 + 0.6 * power_);
+  const double side = std::max(-cfg_.max_side, std::min(cfg_.max_side, cfg_.reach * std::sin(direction_)));
+  switch (phase) {
+    case 0: return {0, 0, 0, cfg_.shift, cfg_.height};                      // shift over support
+    case 1: return {0, 0, cfg_.lift, cfg_.shift, cfg_.height};              // lift
+    case 2: return {back, 0, cfg_.lift, cfg_.shift, cfg_.height};           // wind back
+    case 3: return {cfg_.reach * std::cos(direction_), side, cfg_.lift * 0.8, cfg_.shift, cfg_.height};  // strike
+    case 4: return {cfg_.reach * std::cos(direction_), side, cfg_.lift * 0.8, cfg_.shift, cfg_.height};  // hold
+    case 5: return {0, 0, cfg_.lift, cfg_.shift, cfg_.height};              // retract
+    case 6: return {0, 0, 0, cfg_.shift, cfg_.height};                      // put down
+    default: return {0, 0, 0, 0, walk_.stand_hip_height};                   // back to stand
+  }
+}
+
+double KickGenerator::phaseDuration(int phase) const {
+  switch (phase) {
+    case 0: return 0.7;
+    case 1: return 0.3;
+    case 2: return 0.3;
+    case 3: return cfg_.strike_time_fast + (cfg_.strike_time_slow - cfg_.strike_time_fast) * (1 - power_);
+    case 4: return 0.15;
+    case 5: return 0.4;
+    case 6: return 0.3;
+    default: return 0.6;
+  }
+}
+
+void KickGenerator::tick(const libagent::SensorValues& sensors, double dt, libagent::JointValues& out) {
+  const float* s = sensors.sensors;
+  gyro_x_ = 0.8 * gyro_x_ + 0.2 * s[S::InertialSensor_GyrX];
+  gyro_y_ = 0.8 * gyro_y_ + 0.2 * s[S::InertialSensor_GyrY];
+  if (started_ && !done()) {
+    t_ += dt;
+    const double d = phaseDuration(phase_);
+    // The strike goes straight through (linear) to keep the foot fast at
+    // contact; everything else eases.
+    const double f = phase_ == 3 ? std::min(1.0, t_ / d) : ease(t_ / d);
+    const Target to = phaseTarget(phase_);
+    now_.x = from_.x + (to.x - from_.x) * f;
+    now_.y = from_.y + (to.y - from_.y) * f;
+    now_.z = from_.z + (to.z - from_.z) * f;
+    now_.shift = from_.shift + (to.shift - from_.shift) * f;
+    now_.height = from_.height + (to.height - from_.height) * f;
+    if (t_ >= d) {
+      from_ = to;
+      ++phase_;
+      t_ = 0;
+    }
+  }
+  // Kicking right: the hips move left over the left foot, so both feet move
+  // right (-y) in the hip frames. Mirror for a left kick.
+  const bool kick_right = foot_ == blackboard::Foot::RIGHT;
+  const double sgn = kick_right ? -1.0 : 1.0;
+  const double shift_y = sgn * now_.shift;
+  // now_.y aims the strike sideways in the robot frame (+ = left).
+  const FootPose support = footPose(0, shift_y, -now_.height, 0);
+  const FootPose kicking = footPose(now_.x, shift_y + now_.y, -now_.height + now_.z, 0);
+  const auto q = kick_right ? legsInverse(support, kicking) : legsInverse(kicking, support);
+  writeLegs(q, out);
+  // Balance on the support ankle (same feedback as the walk).
+  const int sp = kick_right ? J::LAnklePitch : J::RAnklePitch;
+  const int sr = kick_right ? J::LAnkleRoll : J::RAnkleRoll;
+  out.angles[sp] += static_cast<float>(walk_.gyro_pitch_gain * gyro_y_);
+  out.angles[sr] += static_cast<float>(walk_.gyro_roll_gain * gyro_x_);
+  // Arms out a little for balance, the kicking side's arm swings against the leg.
+  const double swing = 0.004 * now_.x;
+  out.angles[J::LShoulderPitch] = static_cast<float>(1.5 + (kick_right ? swing : -swing));
+  out.angles[J::RShoulderPitch] = static_cast<float>(1.5 + (kick_right ? -swing : swing));
+  out.angles[J::LShoulderRoll] = 0.25f;
+  out.angles[J::RShoulderRoll] = -0.25f;
+  out.angles[J::LElbowYaw] = -1.2f;
+  out.angles[J::RElbowYaw] = 1.2f;
+  out.angles[J::LElbowRoll] = -0.4f;
+  out.angles[J::RElbowRoll] = 0.4f;
+  out.angles[J::LWristYaw] = out.angles[J::RWristYaw] = 0;
+  out.angles[J::LHand] = out.angles[J::RHand] = 0;
+  for (int i = J::LShoulderPitch; i < libagent::kNumJoints; ++i)
+    out.stiffnesses[i] = static_cast<float>(cfg_.stiffness);
+}
+
+// ------------------------------------------------------------------ limp
+
+void deadJoints(libagent::JointValues& out) {
+  for (int i = 0; i < libagent::kNumJoints; ++i) out.stiffnesses[i] = -1.0f;
+}
+
+void limpJoints(const libagent::SensorValues& sensors, float stiffness, libagent::JointValues& out) {
+  for (int i = 0; i < libagent::kNumJoints; ++i) {
+    const float a = sensors.joints.angles[i];
+    if (std::isfinite(a)) out.angles[i] = a;
+    out.stiffnesses[i] = stiffness;
+  }
+}
+
+}  // namespace agent::motion

@@ -1,0 +1,128 @@
+// The Motion thread's other generators: head, keyframe motions (get-ups,
+// crouch, transitions), the kick, and dead/limp. Angles rad, times s,
+// distances mm (hip frames as in Kinematics.hpp).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "agent/blackboard/Blackboard.hpp"
+#include "agent/libagent/AgentShared.hpp"
+#include "agent/motion/WalkConfig.hpp"
+
+namespace agent::motion {
+
+using JointArray = std::array<float, libagent::kNumJoints>;
+
+// The walk's standing posture (stand hip height, feet together) as angles.
+JointArray walkStandAngles(const WalkConfig& cfg);
+// Deep crouch (hip height 160 mm), arms hanging.
+JointArray crouchAngles();
+
+// ------------------------------------------------------------------ head
+
+// Moves HeadYaw / HeadPitch toward a target at the commanded speeds (capped
+// at the joints' maximum speeds). A relative command is added to the head's
+// measured angles once, when a new request sequence arrives.
+class HeadGenerator {
+ public:
+  void tick(const blackboard::HeadCommand& cmd, int64_t sequence, const libagent::SensorValues& sensors,
+            double dt, libagent::JointValues& out);
+  void reset() { primed_ = false; }
+  float targetYaw() const { return target_yaw_; }
+  float targetPitch() const { return target_pitch_; }
+
+ private:
+  bool primed_ = false;
+  int64_t last_sequence_ = -1;
+  float target_yaw_ = 0, target_pitch_ = 0;
+  float yaw_ = 0, pitch_ = 0;  // current command
+};
+
+// HeadPitch limits are tighter when the head is turned far (the head hits the
+// shoulders): the allowed pitch range (rad) at a given yaw (rad).
+void headPitchRange(float yaw, float* lower, float* upper);
+
+// ------------------------------------------------------------------ keyframes
+
+struct Keyframe {
+  double duration;       // s to move from the previous frame to this one
+  JointArray angles;     // rad
+  float stiffness;       // 0..1 for every joint in this frame (legs and arms)
+};
+
+// Plays keyframes, interpolating (cosine ease) from the pose it started from.
+class KeyframeGenerator {
+ public:
+  void start(const std::vector<Keyframe>& frames, const JointArray& from);
+  // Fills all joints but the head (head too if `with_head`).
+  void tick(double dt, libagent::JointValues& out, bool with_head = false);
+  bool done() const { return frame_ >= frames_.size(); }
+  bool active() const { return !frames_.empty() && !done(); }
+  double elapsed() const { return elapsed_; }
+
+ private:
+  std::vector<Keyframe> frames_;
+  JointArray from_{};
+  size_t frame_ = 0;
+  double t_ = 0, elapsed_ = 0;
+};
+
+// Get-up sequences; each ends in the walk's stand.
+std::vector<Keyframe> getupFrontFrames(const WalkConfig& cfg);  // lying face down
+std::vector<Keyframe> getupBackFrames(const WalkConfig& cfg);   // lying on the back
+
+// ------------------------------------------------------------------ kick
+
+// A kick as its own motion: shift the hips over the support foot, lift the
+// kicking foot, wind back, strike (faster with more power, turned toward the
+// direction), retract, put down, shift back to the walk's stand.
+struct KickConfig {
+  double shift = 42.0;         // mm the hips move sideways over the support foot
+  double height = 215.0;       // mm hip height while kicking
+  double lift = 35.0;          // mm kicking foot lift
+  double wind_back = 55.0;     // mm behind the hip at full power
+  double reach = 110.0;        // mm ahead of the hip at the strike
+  double strike_time_fast = 0.07;  // s at power 1
+  double strike_time_slow = 0.25;  // s at power 0
+  double max_side = 40.0;      // mm the strike may be aimed sideways
+  double stiffness = 1.0;
+};
+
+class KickGenerator {
+ public:
+  explicit KickGenerator(const WalkConfig& walk_cfg, const KickConfig& cfg = KickConfig())
+      : walk_(walk_cfg), cfg_(cfg) {}
+  // power 0..1, direction rad (robot frame, 0 = ahead), kicking foot.
+  void start(blackboard::Foot foot, double power, double direction);
+  void tick(const libagent::SensorValues& sensors, double dt, libagent::JointValues& out);
+  bool done() const { return phase_ >= kPhases; }
+  bool active() const { return started_ && !done(); }
+  blackboard::Foot foot() const { return foot_; }
+
+ private:
+  static constexpr int kPhases = 8;
+  struct Target { double x, y, z, shift, height; };
+  Target phaseTarget(int phase) const;
+  double phaseDuration(int phase) const;
+
+  WalkConfig walk_;
+  KickConfig cfg_;
+  blackboard::Foot foot_ = blackboard::Foot::RIGHT;
+  double power_ = 1, direction_ = 0;
+  bool started_ = false;
+  int phase_ = kPhases;
+  double t_ = 0;
+  Target from_{}, now_{};
+  double gyro_x_ = 0, gyro_y_ = 0;
+};
+
+// ------------------------------------------------------------------ limp
+
+// All joints off (-1): the DEAD action, and the safe fall.
+void deadJoints(libagent::JointValues& out);
+// Holds the measured angles at low stiffness (LIMP): the robot can be posed.
+void limpJoints(const libagent::SensorValues& sensors, float stiffness, libagent::JointValues& out);
+
+}  // namespace agent::motion

@@ -1,0 +1,41 @@
+// NAO V5 joint limits and maximum speeds in libagent order (facts.md
+// section 1), and the Clipper that keeps every command inside them.
+// Angles rad (Hand: 0..1 fraction open), speeds rad/s (Hand: fraction/s).
+#pragma once
+
+#include <array>
+
+#include "agent/libagent/AgentShared.hpp"
+
+namespace agent::motion {
+
+struct JointLimit {
+  float lower, upper;   // rad
+  float max_velocity;   // rad/s
+};
+
+// Indexed by libagent::Joints::JointCode.
+const std::array<JointLimit, libagent::kNumJoints>& jointLimits();
+
+// The Motion thread's tick (s): commands move at most max_velocity * tick.
+constexpr double kMotionTick = 0.010;
+
+// Clips commanded angles to the joint limits and to the per-tick speed
+// limit, relative to the previous clipped command. The first call (or after
+// reset) starts from `sensed` angles, so the first command cannot jump.
+class Clipper {
+ public:
+  // Clips `cmd` in place. `sensed` = the measured angles this tick.
+  void clip(libagent::JointValues& cmd, const libagent::JointValues& sensed);
+  void reset() { primed_ = false; }
+  // Fraction of the per-tick step allowed (1 = the joint's full speed); a
+  // safety margin below the hardware limit.
+  void setSpeedFraction(double f) { speed_fraction_ = f; }
+
+ private:
+  bool primed_ = false;
+  double speed_fraction_ = 1.0;
+  std::array<float, libagent::kNumJoints> last_{};
+};
+
+}  // namespace agent::motion

@@ -1,0 +1,80 @@
+// The Motion thread's tick. Every 10 ms: read the latest MotionRequest from
+// the Blackboard and the sensors, detect falls, run the generator the
+// request (or the fall state) selects, clip to the joint limits and per-tick
+// speeds, and publish odometry, posture, support foot and the active action.
+//
+// It plugs into the robot program as its MotionGenerator, so it sees the body
+// only through libagent SensorValues / JointValues.
+//
+// Units: angles rad, distances mm, times s.
+#pragma once
+
+#include <cstdint>
+
+#include "agent/blackboard/Blackboard.hpp"
+#include "agent/motion/Generators.hpp"
+#include "agent/motion/JointLimits.hpp"
+#include "agent/motion/Walk2014Generator.hpp"
+#include "agent/program/MotionGenerator.hpp"
+
+namespace agent::motion {
+
+struct MotionConfig {
+  WalkConfig walk;
+  KickConfig kick;
+  double fall_angle = 0.8;       // rad: |AngleX| or |AngleY| beyond this = falling
+  double fallen_angle = 1.0;     // rad: beyond this and still = lying down
+  double settle_rate = 0.6;      // rad/s: gyro magnitude below which the body is "still"
+  double settle_time = 0.3;      // s still before a fall counts as finished
+  double upright_angle = 0.5;    // rad: below this after a get-up = standing again
+  float falling_stiffness = 0.0f;  // the safe limp fall (0 = limp, joints free)
+  bool auto_getup = true;        // get up after a fall unless DEAD / LIMP is requested
+  float limp_stiffness = 0.1f;   // LIMP action
+  double lifted_weight = 4.0;    // N on both feet below which the robot is in the air
+  double transition_time = 0.8;  // s to move to the stand from another posture
+};
+
+class MotionModule : public agent::program::MotionGenerator {
+ public:
+  explicit MotionModule(blackboard::Blackboard& board, const MotionConfig& cfg = MotionConfig());
+
+  // program::MotionGenerator: one tick at sim_time_us; `out` is the command.
+  void tick(const libagent::SensorValues& sensors, int64_t sim_time_us, libagent::JointValues& out) override;
+
+  // Same, by time in s, for tests and tools.
+  void tickSeconds(const libagent::SensorValues& sensors, double time_s, libagent::JointValues& out);
+
+  enum class Mode { Walk, Kick, Crouch, Transition, Falling, Fallen, Getup, Limp, Dead };
+  Mode mode() const { return mode_; }
+  const Walk2014Generator& walk() const { return walk_; }
+  int getupAttempts() const { return getup_attempts_; }
+  const MotionConfig& config() const { return cfg_; }
+
+ private:
+  void startTransitionToStand(const libagent::JointValues& from);
+  void publish(const blackboard::MotionRequest& req, double time_s, bool stepping);
+
+  blackboard::Blackboard& board_;
+  MotionConfig cfg_;
+  Walk2014Generator walk_;
+  KickGenerator kick_;
+  KeyframeGenerator keyframes_;
+  HeadGenerator head_;
+  Clipper clipper_;
+  Mode mode_ = Mode::Walk;
+  blackboard::BodyCommand body_;      // last non-NONE body command
+  blackboard::Odometry odometry_;
+  blackboard::Posture posture_ = blackboard::Posture::STANDING;
+  blackboard::Foot support_ = blackboard::Foot::LEFT;
+  libagent::JointValues last_cmd_{};
+  bool have_last_ = false;
+  double last_time_ = -1;
+  double still_time_ = 0;   // s the body has been still while falling
+  double lifted_time_ = 0;  // s with no weight on the feet
+  int64_t kick_sequence_ = -1;
+  int64_t ticks_ = 0;
+  int getup_attempts_ = 0;
+  bool getup_front_ = true;
+};
+
+}  // namespace agent::motion

@@ -1,0 +1,64 @@
+// Every parameter of the Walk2014-style walk in one typed struct, with units.
+// Defaults follow facts.md section 3 except where a comment says otherwise.
+// Units: mm, mm/s, rad, rad/s, s, N.
+#pragma once
+
+namespace agent::motion {
+
+struct WalkConfig {
+  // --- Timing
+  double period = 0.25;            // s, one step (half a walk cycle)
+  double period_side_extra = 0.1;  // s added at full sideways speed (x |left|/max_left)
+
+  // --- Limits (the ellipsoid clamp's semi-axes; turn keeps priority)
+  double max_forward = 300.0;  // mm/s
+  double max_left = 200.0;     // mm/s
+  double max_turn = 0.8;       // rad/s
+
+  // --- Per-step ratchet: the most the latched command may change from one
+  // step to the next (speed units per step).
+  double ratchet_forward = 60.0;  // mm/s per step
+  double ratchet_left = 50.0;     // mm/s per step
+  double ratchet_turn = 0.25;     // rad/s per step
+
+  // --- Heights (hip joint above the sole, mm)
+  double walk_hip_height = 210.0;
+  // facts.md gives 248 mm for Walk2014's stand, which is a straight leg here
+  // (248.09 mm); 230 mm keeps the knees bent so the servos can absorb.
+  double stand_hip_height = 230.0;
+  double start_time = 0.5;  // s to sink from stand to walk height (and to rise)
+
+  // --- Swing foot lift (mm): base + per (m/s) of forward and sideways speed,
+  // i.e. 0.014 m + 0.01 m per m/s forward + 0.02 m per m/s sideways.
+  double base_lift = 14.0;
+  double lift_per_forward = 10.0;  // mm per (m/s)
+  double lift_per_left = 20.0;     // mm per (m/s)
+
+  // --- Stance (added to every foot target, hip frame, mm)
+  double foot_x_offset = 0.0;       // + = feet ahead of the hips
+  double stance_width_extra = 0.0;  // + = feet further apart than the hips
+  double torso_lean = 0.0;          // rad, + = torso pitched forward (soles pitched back)
+  // Sideways hip sway toward the support foot (mm, peak). Walk2014 relies on
+  // the gait's own rocking; 0 keeps it that way.
+  double sway = 0.0;
+
+  // --- Support-foot switching from the FSRs' lateral centre of pressure
+  double switch_min_fraction = 0.75;  // of the period before a CoP sign change counts
+  double switch_forced_periods = 3.0; // switch regardless after this many periods
+  double min_foot_weight = 2.0;       // N on both feet together to trust the FSRs;
+                                      // below it (robot lifted) switch on time (1 period)
+
+  // --- Gyro balance feedback on the support ankle
+  double gyro_filter = 0.8;        // filtered = f * filtered + (1 - f) * gyro
+  double gyro_pitch_gain = 1.0 / 25.0;  // rad of ankle pitch per rad/s of GyrY
+  double gyro_roll_gain = 1.0 / 25.0;   // rad of ankle roll per rad/s of GyrX
+
+  // --- Arms
+  double arm_swing = 0.006;        // rad of shoulder pitch per mm of the opposite foot's x
+  double arm_pitch = 1.5;          // rad, arms hanging (ShoulderPitch)
+  double arm_roll = 0.15;          // rad, away from the body (mirrored on the right)
+
+  double stiffness = 1.0;  // leg and arm stiffness while walking
+};
+
+}  // namespace agent::motion

@@ -1,0 +1,67 @@
+// A robot program: the robot code's threads around one AgentConnection.
+//
+//   Motion     (thread "t<T>p<P>-motion"):  loop { waitTick; readSensors;
+//              generator->tick; writeActuators (posts motion_done) }
+//   Perception (thread "t<T>p<P>-percept"): loop { wait frame_ready;
+//              perception step; post perception_done }
+//
+// Robot code sees simulated time only (lockstep.sim_time_us). The threads end
+// when the body side sets shutdown and wakes them.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "agent/libagent/AgentConnection.hpp"
+#include "agent/program/MotionGenerator.hpp"
+
+namespace agent::program {
+
+class RobotProgram {
+ public:
+  RobotProgram(agent::libagent::AgentConnection connection, int team, int player,
+               std::unique_ptr<MotionGenerator> motion,
+               std::unique_ptr<PerceptionStep> perception = std::make_unique<PerceptionStep>());
+  ~RobotProgram();  // joins (call the body side's shutdown first)
+  RobotProgram(const RobotProgram&) = delete;
+  RobotProgram& operator=(const RobotProgram&) = delete;
+
+  // Replace the Motion step (before start()).
+  void setMotion(std::unique_ptr<MotionGenerator> motion);
+  // Starts the threads, then announces the program to the body side.
+  void start();
+  // Waits for the threads to end (they end on shutdown).
+  void join();
+
+  // Optional hook run by Motion after each command is sent (e.g. printing).
+  void setAfterTick(std::function<void(const agent::libagent::SensorValues&, int64_t)> f) {
+    after_tick_ = std::move(f);
+  }
+
+  const std::string& tag() const { return tag_; }
+  int64_t motionTicks() const { return motion_ticks_.load(); }
+  int64_t perceptionFrames() const { return perception_frames_.load(); }
+  // First exception a thread died of (empty if none).
+  std::string error() const;
+
+ private:
+  void motionLoop();
+  void perceptionLoop();
+  void fail(const std::string& thread, const std::exception& e);
+
+  agent::libagent::AgentConnection conn_;
+  std::string tag_;
+  std::unique_ptr<MotionGenerator> motion_;
+  std::unique_ptr<PerceptionStep> perception_;
+  std::function<void(const agent::libagent::SensorValues&, int64_t)> after_tick_;
+  std::thread motion_thread_, perception_thread_;
+  std::atomic<int64_t> motion_ticks_{0}, perception_frames_{0};
+  mutable std::mutex error_mutex_;
+  std::string error_;
+};
+
+}  // namespace agent::program

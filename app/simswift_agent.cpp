@@ -1,0 +1,126 @@
+// simswift-agent: a stand-alone robot program in its own process. It attaches
+// to a simulated robot's named shared memory (a robot with `program:
+// external` in a running simswift scenario), exactly as robot code attaches
+// to libagent, and holds a pose or moves one joint.
+//
+//   simswift-agent --team T --player P [--posture stand|crouch|limp|zero]
+//                  [--move JOINT ANGLE [--at S]] [--print] [--attach-timeout S]
+//
+// It runs until the simulator ends the run.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include "agent/libagent/AgentConnection.hpp"
+#include "agent/libagent/SharedNames.hpp"
+#include "agent/program/RobotProgram.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: simswift-agent --team T --player P [options]\n"
+    "  --posture NAME       stand (default), crouch, limp or zero\n"
+    "  --move JOINT ANGLE   move one joint (NAO name, e.g. HeadYaw) to ANGLE rad\n"
+    "  --at S               ... at simulated time S s (default 0)\n"
+    "  --print              print the sensors every 100 ticks (1 s)\n"
+    "  --attach-timeout S   keep trying to attach for S wall-clock seconds (default 10)\n";
+
+[[noreturn]] void usageError(const std::string& msg) {
+  std::fprintf(stderr, "simswift-agent: %s\n\n%s", msg.c_str(), kUsage);
+  std::exit(2);
+}
+
+double number(const char* s, const char* what) {
+  char* end = nullptr;
+  const double v = std::strtod(s, &end);
+  if (*end != '\0') usageError(std::string(what) + ": not a number: '" + s + "'");
+  return v;
+}
+
+void printSensors(const agent::libagent::SensorValues& s, int64_t t_us) {
+  namespace al = agent::libagent;
+  std::printf("t %.2f s\n  joints (rad):", static_cast<double>(t_us) * 1e-6);
+  for (int i = 0; i < al::kNumJoints; ++i) std::printf(" %s=%.3f", al::Joints::kNames[i], s.joints.angles[i]);
+  std::printf("\n  sensors:");
+  for (int i = 0; i < al::kNumSensors; ++i) std::printf(" %s=%.3f", al::Sensors::kNames[i], s.sensors[i]);
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  namespace al = agent::libagent;
+  namespace ap = agent::program;
+  int team = -1, player = -1;
+  ap::Posture posture = ap::Posture::Stand;
+  std::string move_joint;
+  double move_angle = 0, move_at = 0, attach_timeout = 10;
+  bool print = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&](const char* what) -> const char* {
+      if (i + 1 >= argc) usageError(std::string(what) + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--team") team = static_cast<int>(number(next("--team"), "--team"));
+    else if (a == "--player") player = static_cast<int>(number(next("--player"), "--player"));
+    else if (a == "--posture") {
+      const std::string p = next("--posture");
+      auto parsed = ap::parsePosture(p);
+      if (!parsed) usageError("--posture: unknown posture '" + p + "'");
+      posture = *parsed;
+    } else if (a == "--move") {
+      move_joint = next("--move");
+      move_angle = number(next("--move"), "--move ANGLE");
+    } else if (a == "--at") move_at = number(next("--at"), "--at");
+    else if (a == "--print") print = true;
+    else if (a == "--attach-timeout") attach_timeout = number(next("--attach-timeout"), "--attach-timeout");
+    else if (a == "--help" || a == "-h") {
+      std::printf("%s", kUsage);
+      return 0;
+    } else usageError("unknown argument '" + a + "'");
+  }
+  if (team < 0 || team >= al::kMaxTeams) usageError("--team must be 0.." + std::to_string(al::kMaxTeams - 1));
+  if (player < al::kMinPlayer || player > al::kMaxPlayer)
+    usageError("--player must be " + std::to_string(al::kMinPlayer) + ".." + std::to_string(al::kMaxPlayer));
+
+  std::vector<ap::ScriptStep> script;
+  if (!move_joint.empty()) {
+    ap::ScriptStep s;
+    s.joint = ap::jointIndex(move_joint);
+    if (s.joint < 0) usageError("--move: unknown joint '" + move_joint + "'");
+    s.angle = static_cast<float>(move_angle);
+    s.t_s = move_at;
+    script.push_back(s);
+  }
+
+  // The simulator may not have created the robot yet: retry for a while
+  // (wall clock: attaching only).
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(attach_timeout);
+  for (;;) {
+    try {
+      al::AgentConnection conn = al::AgentConnection::attachByName(team, player);
+      std::fprintf(stderr, "simswift-agent: attached to %s\n", conn.name().c_str());
+      ap::RobotProgram program(std::move(conn), team, player,
+                               std::make_unique<ap::ScriptedMotion>(posture, script));
+      if (print)
+        program.setAfterTick([](const al::SensorValues& s, int64_t t_us) {
+          if (t_us % 1000000 == 0) printSensors(s, t_us);
+        });
+      program.start();
+      program.join();
+      std::fprintf(stderr, "simswift-agent: run ended after %lld ticks\n",
+                   static_cast<long long>(program.motionTicks()));
+      return program.error().empty() ? 0 : 1;
+    } catch (const al::AgentError& e) {
+      if (std::chrono::steady_clock::now() > deadline) {
+        std::fprintf(stderr, "simswift-agent: %s\n", e.what());
+        return 1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  }
+}

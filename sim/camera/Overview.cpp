@@ -1,0 +1,123 @@
+#include "sim/camera/Overview.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include "sim/camera/FrameDumper.hpp"
+#include "sim/camera/Png.hpp"
+#include "sim/camera/RobotCameras.hpp"
+#include "sim/world/World.hpp"
+
+namespace simswift::camera {
+
+namespace {
+// Single-quotes a path for /bin/sh.
+std::string shellQuote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+}  // namespace
+
+bool VideoWriter::ffmpegOnPath() {
+  const char* path = std::getenv("PATH");
+  if (!path) return false;
+  std::stringstream ss(path);
+  std::string dir;
+  while (std::getline(ss, dir, ':')) {
+    if (dir.empty()) continue;
+    const std::string f = dir + "/ffmpeg";
+    if (::access(f.c_str(), X_OK) == 0) return true;
+  }
+  return false;
+}
+
+VideoResult VideoWriter::assemble(const std::string& pattern, double fps, const std::string& mp4) {
+  VideoResult r;
+  if (!ffmpegOnPath()) {
+    r.message = "ffmpeg not found on PATH: frames left as PNGs (" + pattern + ")";
+    return r;
+  }
+  const std::string log = mp4 + ".log";
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%g", fps);
+  for (const char* codec : {"libx264", "mpeg4"}) {
+    std::string cmd = std::string("ffmpeg -nostdin -y -loglevel error -framerate ") + rate + " -i " +
+                      shellQuote(pattern) + " -c:v " + codec + " -pix_fmt yuv420p";
+    if (std::string(codec) == "mpeg4") cmd += " -q:v 3";
+    cmd += " " + shellQuote(mp4) + " > " + shellQuote(log) + " 2>&1";
+    std::error_code ec;
+    if (std::system(cmd.c_str()) == 0 && std::filesystem::file_size(mp4, ec) > 0 && !ec) {
+      r.ok = true;
+      r.output = mp4;
+      r.codec = codec;
+      r.message = "video written: " + mp4 + " (" + codec + ", " + rate + " fps)";
+      return r;
+    }
+  }
+  r.message = "ffmpeg failed (see " + log + "): frames left as PNGs (" + pattern + ")";
+  return r;
+}
+
+OverviewCamera::OverviewCamera(OverviewConfig cfg) : cfg_(std::move(cfg)) {
+  if (!(cfg_.rate_hz > 0)) throw std::invalid_argument("overview: rate_hz must be > 0");
+  if (cfg_.width <= 0 || cfg_.height <= 0 || cfg_.width % 2 || cfg_.height % 2)
+    throw std::invalid_argument("overview: width and height must be positive and even");
+  makeDirectories(cfg_.dir);
+}
+
+CameraModel OverviewCamera::cameraFor(const Scene& scene, const Eigen::Vector3d& followed) const {
+  CameraModel c;
+  c.intrinsics = Intrinsics::fromHorizontalFov(cfg_.width, cfg_.height, cfg_.hfov);
+  if (cfg_.mode == OverviewConfig::Mode::Fixed) {
+    Eigen::Vector3d eye = cfg_.eye;
+    if (!std::isfinite(eye.x())) eye = Eigen::Vector3d(0, -(scene.field().carpetWidth() / 2 + 3.3), 5.0);
+    c.pose = lookAt(eye, cfg_.target);
+  } else {
+    const Eigen::Vector3d target(followed.x(), followed.y(), 0);
+    c.pose = lookAt(target + cfg_.follow_offset, target);
+  }
+  return c;
+}
+
+bool OverviewCamera::maybeCapture(Renderer& renderer, const Scene& scene, double t,
+                                  const Eigen::Vector3d& followed) {
+  // Due when t has reached frame k's time; the tolerance absorbs the tick
+  // arithmetic (t = ticks * 0.01 s).
+  if (t + 1e-9 < frames_ / cfg_.rate_hz) return false;
+  CameraView v;
+  v.camera = cameraFor(scene, followed);
+  v.far_clip = 100;
+  rgb_.resize(size_t(cfg_.width) * cfg_.height * 3);
+  renderer.render(scene, v, rgb_.data());
+  char name[64];
+  std::snprintf(name, sizeof name, "/overview_%06lld.png", static_cast<long long>(frames_));
+  writePng(cfg_.dir + name, rgb_.data(), cfg_.width, cfg_.height);
+  ++frames_;
+  return true;
+}
+
+bool OverviewCamera::maybeCapture(RobotCameras& cameras, const World& world) {
+  if (world.time() + 1e-9 < frames_ / cfg_.rate_hz) return false;  // skip the sync when nothing is due
+  cameras.syncScene(world);
+  Eigen::Vector3d followed = world.ballPosition();
+  if (cfg_.mode == OverviewConfig::Mode::FollowRobot) {
+    if (cfg_.robot < 0 || cfg_.robot >= world.numRobots())
+      throw std::out_of_range("overview: no robot " + std::to_string(cfg_.robot) + " to follow");
+    const RobotBody& b = world.robot(cfg_.robot);
+    followed = b.linkPose(b.model().rootLink()).translation();
+  }
+  return maybeCapture(cameras.renderer(), cameras.scene(), world.time(), followed);
+}
+
+VideoResult OverviewCamera::finish(const std::string& mp4) const {
+  if (frames_ == 0) return {false, "", "", "overview: no frames captured"};
+  return VideoWriter::assemble(pattern(), cfg_.rate_hz, mp4);
+}
+
+}  // namespace simswift::camera

@@ -1,0 +1,304 @@
+#include "sim/runner/Runner.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <thread>
+
+#include "agent/libagent/SharedNames.hpp"
+
+namespace simswift::runner {
+
+namespace al = agent::libagent;
+namespace ap = agent::program;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+std::string hex64(uint64_t v) {
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+// Ankle damping gain (s) of the builtin standing program; see ScriptedMotion.
+constexpr float kBuiltinAnkleGyroGain = 0.05f;
+}  // namespace
+
+std::string RunStats::summary() const {
+  std::ostringstream s;
+  s << "sim " << fmt("%.2f", sim_s) << " s | wall " << fmt("%.2f", wall_s) << " s | "
+    << fmt("%.1f", real_time_factor) << "x real time | falls " << falls << " | blowups " << blowups;
+  if (nan_commands || clamped_angles || clamped_stiffness)
+    s << " | nan " << nan_commands << " clamped " << clamped_angles << "+" << clamped_stiffness;
+  if (skipped_cycles) s << " | skipped " << skipped_cycles;
+  s << " | hash " << hex64(hash);
+  return s.str();
+}
+
+Runner::Runner(Scenario scenario) : scenario_(std::move(scenario)) {}
+
+Runner::~Runner() { shutdown(); }
+
+void Runner::setMotionGenerator(int robot, std::unique_ptr<ap::MotionGenerator> motion) {
+  if (started_) throw RunnerError("setMotionGenerator: the runner has already started");
+  if (robot < 0 || robot >= static_cast<int>(scenario_.robots.size()))
+    throw RunnerError("setMotionGenerator: no robot " + std::to_string(robot));
+  if (robots_.empty()) {
+    // Robots are created in start(); keep overrides in scenario order until then.
+    robots_.resize(scenario_.robots.size());
+    for (auto& r : robots_) r = std::make_unique<Robot>();
+  }
+  robots_[robot]->motion_override = std::move(motion);
+}
+
+std::vector<double> Runner::modelPosture(const ap::JointArray& angles) const {
+  std::vector<double> q(model_->joints().size(), 0.0);
+  for (int i = 0; i < al::kNumJoints; ++i) {
+    const int j = model_->jointForLibagent(i);
+    if (j >= 0) q[j] = angles[i];
+  }
+  return q;  // RobotBody sets mimicking joints (RHipYawPitch) itself
+}
+
+void Runner::start() {
+  if (started_) return;
+  started_ = true;
+  model_ = std::make_shared<const NaoModel>(NaoModel::loadUrdf(scenario_.modelFile()));
+  const FieldConfig field = FieldConfig::loadYaml(scenario_.fieldFile());
+  WorldConfig wc;
+  wc.substeps = scenario_.substeps;
+  wc.solver = scenario_.solver == "quick" ? WorldConfig::Solver::Quick : WorldConfig::Solver::Exact;
+  wc.quick_iterations = scenario_.quick_iterations;
+  world_ = std::make_unique<World>(field, wc);
+  if (scenario_.ball) world_->placeBall(scenario_.ball->first, scenario_.ball->second);
+
+  sensors::SensorConfig sc;
+  sc.seed = scenario_.seed;
+  sc.noise = scenario_.noise.on;
+  auto off = [](sensors::NoiseSpec& n, bool on) {
+    if (!on) n = sensors::NoiseSpec{};
+  };
+  off(sc.gyro, scenario_.noise.gyro);
+  off(sc.accel, scenario_.noise.accel);
+  off(sc.angle, scenario_.noise.angle);
+  off(sc.fsr, scenario_.noise.fsr);
+  off(sc.sonar, scenario_.noise.sonar);
+  off(sc.encoder, scenario_.noise.encoder);
+
+  if (robots_.empty()) {
+    robots_.resize(scenario_.robots.size());
+    for (auto& r : robots_) r = std::make_unique<Robot>();
+  }
+  for (size_t i = 0; i < scenario_.robots.size(); ++i) {
+    Robot& r = *robots_[i];
+    r.spec = scenario_.robots[i];
+    r.tag = al::robotTag(r.spec.team, r.spec.player);
+    const int index = world_->addRobot(model_, r.spec.x, r.spec.y, r.spec.theta,
+                                       modelPosture(ap::postureAngles(r.spec.posture)));
+    r.sensors = std::make_unique<sensors::SensorSuite>(*world_, index, sc);
+    const al::JointValues initial = ap::postureCommand(r.spec.posture);
+    const bool external = r.spec.program == RobotSpec::Program::External;
+    r.host = std::make_unique<bridge::BodyHost>(
+        r.spec.team, r.spec.player, external ? bridge::BodyHost::Mode::Named : bridge::BodyHost::Mode::InProcess,
+        initial);
+    r.latched.joints = initial;
+    if (!external) {
+      std::unique_ptr<ap::MotionGenerator> motion = std::move(r.motion_override);
+      if (!motion) {
+        auto scripted = std::make_unique<ap::ScriptedMotion>(r.spec.posture, r.spec.script);
+        scripted->setAnkleGyroDamping(kBuiltinAnkleGyroGain);
+        motion = std::move(scripted);
+      }
+      r.program = std::make_unique<ap::RobotProgram>(r.host->connect(), r.spec.team, r.spec.player,
+                                                     std::move(motion));
+      r.program->start();
+    }
+  }
+  waitForAttach();
+  for (auto& r : robots_) r->perception = r->host->hasPerception();
+  wall_start_ = Clock::now();
+}
+
+void Runner::waitForAttach() {
+  // Wall clock: only how long to wait for another process, never simulation.
+  const auto deadline = Clock::now() + std::chrono::duration<double>(scenario_.attach_timeout_s);
+  for (auto& r : robots_) {
+    bool announced = false;
+    while (!r->host->attached()) {
+      if (!announced && r->spec.program == RobotSpec::Program::External) {
+        std::fprintf(stderr, "waiting for robot %s: start e.g. `simswift-agent --team %d --player %d`\n",
+                     r->tag.c_str(), r->spec.team, r->spec.player);
+        announced = true;
+      }
+      if (Clock::now() > deadline) {
+        std::ostringstream m;
+        m << "robot " << r->tag << ": no robot program attached to " << r->host->memoryName() << " within "
+          << scenario_.attach_timeout_s << " s";
+        if (r->spec.program == RobotSpec::Program::External)
+          m << " (program: external: start one, e.g. simswift-agent --team " << r->spec.team << " --player "
+            << r->spec.player << ")";
+        throw RunnerError(m.str());
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+}
+
+void Runner::watchdogFail(const Robot& r, const char* thread) const {
+  std::ostringstream m;
+  m << "robot " << r.tag << ": " << thread << " thread did not answer within " << scenario_.watchdog_s << " s (tick "
+    << world_->tick() << ", sim " << fmt("%.2f", world_->time()) << " s)";
+  if (r.program && !r.program->error().empty()) m << ": " << r.program->error();
+  throw WatchdogError(m.str());
+}
+
+// One 10 ms tick, in this fixed order:
+//  1. Every robot's joint command latched at the end of the previous tick goes
+//     to its servos: a command written during tick k acts during tick k+1,
+//     like the DCM sending Motion's output on its next cycle.
+//  2. World::step(): physics advances 10 ms.
+//  3. Sensors are read from the new state and published into each robot's
+//     triple buffer with the simulated time; then all tick semaphores are
+//     posted, releasing every robot's Motion thread.
+//  4. The runner waits for every robot's motion_done (watchdog: wall clock).
+//  5. Each robot's actuators are latched (used in step 1 of the next tick).
+//  6. At 30 Hz of simulated time (when floor(t * 30) advances) every robot
+//     with a Perception thread gets a camera frame and the runner waits for
+//     its perception_done (same watchdog).
+// Threads may run in any order inside 3-4 and 6: the runner reads nothing
+// until they have all answered, so the result does not depend on timing.
+void Runner::tick() {
+  if (!started_) start();
+  if (stopped_) throw RunnerError("tick after shutdown");
+  // 1.
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    Robot& r = *robots_[i];
+    std::array<float, 25> angles, stiff;
+    for (int j = 0; j < al::kNumJoints; ++j) {
+      angles[j] = r.latched.joints.angles[j];
+      stiff[j] = r.latched.joints.stiffnesses[j];
+    }
+    world_->robot(static_cast<int>(i)).setCommand(angles, stiff);
+    r.sensors->setSonarMode(r.latched.sonar);
+  }
+  // 2.
+  world_->step();
+  for (const WorldEvent& e : world_->takeEvents()) {
+    if (e.kind == WorldEvent::Kind::BlowUp) {
+      ++blowups_;
+      std::fprintf(stderr, "tick %lld: %s\n", static_cast<long long>(e.tick), e.message.c_str());
+      if (e.robot >= 0 && e.robot < numRobots()) robots_[e.robot]->sensors->reset(*world_);
+    }
+  }
+  const int64_t tick = world_->tick();
+  const int64_t t_us = tick * 10000;  // exact: 10 ms per tick
+  // 3.
+  for (auto& rp : robots_) {
+    Robot& r = *rp;
+    r.sensors->update(*world_);
+    sensors::copyToAgent(r.sensors->reading(), r.values);
+    for (int j = 0; j < al::kNumJoints; ++j) r.values.joints.stiffnesses[j] = r.latched.joints.stiffnesses[j];
+  }
+  for (auto& r : robots_) r->host->publishSensors(r->values, t_us, tick);
+  // 4.
+  for (auto& r : robots_)
+    if (!r->host->waitMotionDone(scenario_.watchdog_s)) watchdogFail(*r, "motion");
+  // 5.
+  for (auto& r : robots_) r->latched = r->host->readActuators();
+
+  // Fall bookkeeping (torso frame origin height, m).
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    Robot& r = *robots_[i];
+    const RobotBody& body = world_->robot(static_cast<int>(i));
+    const double z = body.linkPose(body.model().rootLink()).translation().z();
+    if (!r.fallen && z < kFallHeight) {
+      r.fallen = true;
+      ++r.falls;
+    } else if (r.fallen && z > kStandHeight) {
+      r.fallen = false;
+    }
+  }
+
+  // 6. Integer arithmetic: frame k is due once t_us * 30 / 1e6 reaches k.
+  const int64_t frame = t_us * 30 / 1000000;
+  if (frame > last_frame_) {
+    last_frame_ = frame;
+    al::CameraFrame f{};
+    f.sim_time_us = t_us;
+    f.frame_index = frame;
+    f.num_observations = 0;  // vision oracle: a later issue
+    bool any = false;
+    for (auto& r : robots_)
+      if (r->perception) {
+        r->host->publishFrame(f);
+        any = true;
+      }
+    if (any)
+      for (auto& r : robots_)
+        if (r->perception && !r->host->waitPerceptionDone(scenario_.watchdog_s)) watchdogFail(*r, "perception");
+  }
+}
+
+RunStats Runner::stats() const {
+  RunStats s;
+  s.ticks = world_ ? world_->tick() : 0;
+  s.sim_s = world_ ? world_->time() : 0;
+  s.wall_s = std::chrono::duration<double>(Clock::now() - wall_start_).count();
+  s.real_time_factor = s.wall_s > 0 ? s.sim_s / s.wall_s : 0;
+  s.blowups = blowups_;
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    s.falls += robots_[i]->falls;
+    if (robots_[i]->host) s.skipped_cycles += robots_[i]->host->skippedCycles();
+    if (world_ && static_cast<int>(i) < world_->numRobots()) {
+      const ServoCommandStats& c = world_->robot(static_cast<int>(i)).commandStats();
+      s.nan_commands += c.nan_commands;
+      s.clamped_angles += c.clamped_angles;
+      s.clamped_stiffness += c.clamped_stiffness;
+    }
+  }
+  s.hash = world_ ? world_->stateHash() : 0;
+  return s;
+}
+
+RunStats Runner::run(const RunOptions& opt) {
+  start();
+  const int64_t total = static_cast<int64_t>(std::llround(scenario_.duration / kTickSeconds));
+  const int64_t progress_every =
+      opt.progress && opt.progress_every_s > 0 ? std::max<int64_t>(1, std::llround(opt.progress_every_s / kTickSeconds)) : 0;
+  wall_start_ = Clock::now();
+  while (world_->tick() < total) {
+    tick();
+    const int64_t t = world_->tick();
+    if (opt.print_hash_every > 0 && t % opt.print_hash_every == 0)
+      std::printf("tick %lld hash %s\n", static_cast<long long>(t), hex64(world_->stateHash()).c_str());
+    if (progress_every && t % progress_every == 0 && t < total) {
+      const RunStats s = stats();
+      std::fprintf(stderr, "  sim %.1f / %.1f s | wall %.1f s | %.1fx real time\n", s.sim_s, scenario_.duration,
+                   s.wall_s, s.real_time_factor);
+    }
+    if (opt.realtime) {
+      // Pacing only: sleep until the wall clock catches up with simulated time.
+      std::this_thread::sleep_until(wall_start_ + std::chrono::microseconds(t * 10000));
+    }
+  }
+  const RunStats s = stats();
+  shutdown();
+  return s;
+}
+
+void Runner::shutdown() {
+  if (stopped_) return;
+  stopped_ = true;
+  for (auto& r : robots_)
+    if (r && r->host) r->host->shutdown();
+  for (auto& r : robots_)
+    if (r && r->program) r->program->join();
+  for (auto& r : robots_)
+    if (r) r->program.reset();
+}
+
+}  // namespace simswift::runner

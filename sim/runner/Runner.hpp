@@ -1,0 +1,120 @@
+// The lock-step runner: one World, one BodyHost + SensorSuite per robot, and
+// the robot programs' threads (builtin: in this process; external: another
+// process attached by name). Each 10 ms tick runs a fixed sequence (see
+// Runner::tick() in Runner.cpp) in which every robot thread must answer
+// before physics moves on, so the outcome does not depend on thread timing:
+// the same scenario and seed give the same state hash.
+//
+// A robot thread that does not answer within the watchdog (wall clock) stops
+// the run with a WatchdogError naming the robot and the thread.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "agent/program/MotionGenerator.hpp"
+#include "agent/program/RobotProgram.hpp"
+#include "sim/bridge/BodyHost.hpp"
+#include "sim/runner/Scenario.hpp"
+#include "sim/sensors/SensorSuite.hpp"
+#include "sim/world/World.hpp"
+
+namespace simswift::runner {
+
+struct WatchdogError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+struct RunnerError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct RunOptions {
+  bool realtime = false;        // pace with the wall clock (pacing only)
+  int64_t print_hash_every = 0; // ticks; 0 = never (stdout)
+  double progress_every_s = 5;  // simulated s between progress lines (stderr); <= 0 = never
+  bool progress = true;
+};
+
+struct RunStats {
+  double sim_s = 0;          // simulated seconds run
+  double wall_s = 0;         // wall-clock seconds (reporting only)
+  double real_time_factor = 0;
+  int64_t ticks = 0;
+  int falls = 0;             // torso height below kFallHeight, counted once until it stands again
+  int blowups = 0;           // world resets after a numerical blow-up
+  int64_t nan_commands = 0;  // summed over robots
+  int64_t clamped_angles = 0;
+  int64_t clamped_stiffness = 0;
+  int64_t skipped_cycles = 0;
+  uint64_t hash = 0;         // World::stateHash() at the end
+
+  std::string summary() const;  // the one-line summary
+};
+
+constexpr double kFallHeight = 0.20;   // m: torso origin below this = fallen
+constexpr double kStandHeight = 0.25;  // m: back above this = up again (hysteresis)
+
+class Runner {
+ public:
+  explicit Runner(Scenario scenario);
+  ~Runner();  // shuts robot programs down, joins builtin threads
+  Runner(const Runner&) = delete;
+  Runner& operator=(const Runner&) = delete;
+
+  // Before start(): replace a builtin robot's Motion step (robot index in
+  // scenario order). The walk plugs in here.
+  void setMotionGenerator(int robot, std::unique_ptr<agent::program::MotionGenerator> motion);
+
+  // Builds the world, hosts and programs; waits for external robots to attach.
+  void start();
+  // One 10 ms tick. Throws WatchdogError.
+  void tick();
+  // start() if needed, then ticks until the scenario's duration.
+  RunStats run(const RunOptions& options = {});
+  // Stops robot programs (also done by the destructor).
+  void shutdown();
+
+  const Scenario& scenario() const { return scenario_; }
+  World& world() { return *world_; }
+  int numRobots() const { return static_cast<int>(robots_.size()); }
+  bridge::BodyHost& host(int i) { return *robots_[i]->host; }
+  const sensors::SensorSuite& sensors(int i) const { return *robots_[i]->sensors; }
+  int64_t ticks() const { return world_ ? world_->tick() : 0; }
+  RunStats stats() const;  // so far
+
+ private:
+  struct Robot {
+    RobotSpec spec;
+    std::string tag;
+    std::unique_ptr<bridge::BodyHost> host;
+    std::unique_ptr<sensors::SensorSuite> sensors;
+    std::unique_ptr<agent::program::MotionGenerator> motion_override;
+    std::unique_ptr<agent::program::RobotProgram> program;  // builtin only
+    agent::libagent::SensorValues values{};
+    agent::libagent::ActuatorCommand latched;
+    bool perception = false;
+    bool fallen = false;
+    int falls = 0;
+  };
+
+  std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
+  void waitForAttach();
+  [[noreturn]] void watchdogFail(const Robot& r, const char* thread) const;
+
+  Scenario scenario_;
+  std::shared_ptr<const NaoModel> model_;
+  std::unique_ptr<World> world_;
+  std::vector<std::unique_ptr<Robot>> robots_;
+  bool started_ = false;
+  bool stopped_ = false;
+  int64_t last_frame_ = -1;
+  int blowups_ = 0;
+  std::chrono::steady_clock::time_point wall_start_;
+};
+
+}  // namespace simswift::runner

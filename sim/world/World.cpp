@@ -1,0 +1,251 @@
+// The ODE world: construction, placement, the fixed tick and blow-up
+// recovery. Contacts are in Contacts.cpp, the field geoms in
+// FieldGeometry.cpp, the hash in StateHash.cpp.
+//
+// SOLVER AND SUBSTEPS (WorldConfig defaults): dWorldQuickStep, 20
+// iterations, 2 substeps of 5 ms, with RobotBody's inertia floor
+// (ServoConfig::min_link_inertia = 5e-4 kg m^2, the motors' reflected rotor
+// inertia). Why, measured with the URDF NAO holding a knee-bent stand for
+// 10 s (CPU-time real-time factor for 1 / 3 / 10 robots, no sensors, on a
+// shared 2-core machine; torso height after settling, and its range):
+//
+//   exact  10 ms x1, floor   :  26 /  8 / 2.5   z 0.3290 m  range 0.7 mm
+//   exact   5 ms x2, floor   :  13 /  4 / 1.3   z 0.3290 m  range 0.7 mm
+//   exact   either,  no floor:  blows up every tick (reset loop)
+//   quick   5 ms x2, floor   :  82 / 28 / 8.0   z 0.3254 m  range 0.2 mm
+//   quick   5 ms x2, 50 iter :  37 / 12 / 3.7   z 0.3273 m  range 0.1 mm
+//   quick  10 ms x1, floor   : 162 / 53 / 16    z 0.3175 m  range 0.6 mm
+//
+// Stability first: every floored configuration stands, none without the
+// floor does, so the floor is not optional. Then speed: the issue asks for
+// >= 30 / 10 / 3 with sensors, which only QuickStep reaches; exact 10 ms
+// misses it already without sensors. Among the QuickSteps, 5 ms x2 keeps the
+// hinge anchors within 0.8 mm of each other (torso 3.5 mm below the exact
+// solution, joint angles within 0.5 mrad), whereas 10 ms x1 lets them drift
+// 3.2 mm (torso 11 mm low) and halves the servo update rate; 5 ms also keeps
+// a 3 m/s ball to 1.5 cm per step, below the 2 cm net and 10 cm posts.
+// Exact remains selectable (WorldConfig::solver) for reference runs.
+//
+// ORDER OF ONE TICK (step()), fixed:
+//   for each substep of dt = 10 ms / substeps:
+//     1. every robot's servos set their hinge motors (RobotBody::applyServos)
+//     2. collide; contacts sorted, contact joints created; ODE's random
+//        generator (QuickStep's row shuffle) reseeded from the tick
+//     3. dWorldStep / dWorldQuickStep(dt)
+//     4. contact forces on robot links read back, scaled 1/substeps
+//     5. contact joints removed
+//   then: blow-up check per robot and for the ball (reset + WorldEvent),
+//   tick counter + 1.
+#include <cmath>
+#include <mutex>
+
+#include "sim/world/WorldImpl.hpp"
+
+namespace simswift {
+
+namespace {
+
+void initOdeOnce() {
+  static std::once_flag once;
+  std::call_once(once, [] { dInitODE2(0); });
+}
+
+// Placement height (m) for the torso before re-seating on the ground: high
+// enough that no posture reaches below the carpet.
+constexpr double kPlacementZ = 1.0;
+
+}  // namespace
+
+Eigen::Isometry3d planarPose(double x, double y, double theta, double z) {
+  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+  p.translation() = Eigen::Vector3d(x, y, z);
+  p.linear() = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return p;
+}
+
+World::World(const FieldConfig& field, const WorldConfig& config)
+    : impl_(std::make_unique<Impl>()), field_(field), config_(config) {
+  if (config_.substeps < 1) throw ConfigError("world: substeps must be >= 1");
+  initOdeOnce();
+  world_ = dWorldCreate();
+  dWorldSetGravity(world_, 0, 0, -config_.gravity);
+  dWorldSetERP(world_, config_.erp);
+  dWorldSetCFM(world_, config_.cfm);
+  dWorldSetQuickStepNumIterations(world_, config_.quick_iterations);
+  // Let resting contacts sink 1 mm before pushing back (stops jitter), and
+  // cap the push-out speed so deep penetrations resolve without a kick.
+  dWorldSetContactSurfaceLayer(world_, 0.001);
+  dWorldSetContactMaxCorrectingVel(world_, 1.0);
+  dWorldSetAutoDisableFlag(world_, 0);
+
+  space_ = dSimpleSpaceCreate(nullptr);
+  impl_->static_space = dSimpleSpaceCreate(space_);
+  impl_->contact_group = dJointGroupCreate(0);
+  impl_->buildField(field_);
+
+  // The ball: a solid sphere (I = 2/5 m r^2). The SPL ball is a thick
+  // plastic shell; the rolling resistance in the field YAML is tuned for
+  // this inertia.
+  const double r = field_.ball.diameter / 2;
+  impl_->ball = dBodyCreate(world_);
+  dMass m;
+  dMassSetSphereTotal(&m, field_.ball.mass, r);
+  dBodySetMass(impl_->ball, &m);
+  // ODE's damping is a per-step fraction of velocity removed: rate (1/s) * dt.
+  dBodySetLinearDamping(impl_->ball, field_.ball.linear_damping * kTickSeconds / config_.substeps);
+  impl_->ball_geom = dCreateSphere(space_, r);
+  dGeomSetBody(impl_->ball_geom, impl_->ball);
+  dGeomSetData(impl_->ball_geom, &impl_->ball_tag);
+  placeBall(0, 0);
+
+  impl_->ray = dCreateRay(nullptr, 1.0);
+}
+
+World::~World() {
+  robots_.clear();  // RobotBody removes its own bodies, joints and geoms
+  if (impl_->ray) dGeomDestroy(impl_->ray);
+  dJointGroupDestroy(impl_->contact_group);
+  dSpaceDestroy(space_);  // cleanup mode: destroys the sub-spaces and their geoms
+  dWorldDestroy(world_);
+}
+
+int World::addRobot(std::shared_ptr<const NaoModel> model, double x, double y, double theta,
+                    const std::vector<double>& posture) {
+  const int index = numRobots();
+  dSpaceID rs = dSimpleSpaceCreate(space_);
+  impl_->robot_spaces.push_back(rs);
+  impl_->models.push_back(model);
+  impl_->placements.push_back({});
+  robots_.push_back(std::make_unique<RobotBody>(*model, index, world_, rs,
+                                                planarPose(x, y, theta, kPlacementZ), posture,
+                                                config_.servo));
+  placeRobot(index, x, y, theta, posture);
+  return index;
+}
+
+void World::placeRobot(int i, double x, double y, double theta,
+                       const std::vector<double>& posture) {
+  RobotBody& rb = *robots_.at(i);
+  rb.teleport(planarPose(x, y, theta, kPlacementZ));
+  rb.setPosture(posture);
+  // Re-seat: lower the whole robot so its lowest collision point is at z = 0.
+  const double drop = rb.lowestPoint();
+  rb.teleport(planarPose(x, y, theta, kPlacementZ - drop));
+  impl_->placements[i] = {x, y, theta, posture};
+}
+
+void World::placeBall(double x, double y) {
+  const double r = field_.ball.diameter / 2;
+  impl_->ball_placed = Eigen::Vector3d(x, y, r);
+  dBodySetPosition(impl_->ball, x, y, r);
+  const dQuaternion identity = {1, 0, 0, 0};
+  dBodySetQuaternion(impl_->ball, identity);
+  dBodySetLinearVel(impl_->ball, 0, 0, 0);
+  dBodySetAngularVel(impl_->ball, 0, 0, 0);
+}
+
+void World::setBallVelocity(const Eigen::Vector3d& v) {
+  dBodySetLinearVel(impl_->ball, v.x(), v.y(), v.z());
+}
+
+Eigen::Vector3d World::ballPosition() const {
+  const dReal* p = dBodyGetPosition(impl_->ball);
+  return {p[0], p[1], p[2]};
+}
+
+Eigen::Vector3d World::ballVelocity() const {
+  const dReal* v = dBodyGetLinearVel(impl_->ball);
+  return {v[0], v[1], v[2]};
+}
+
+void World::step() {
+  const int n = config_.substeps;
+  const double dt = kTickSeconds / n;
+  contacts_.clear();
+  for (int s = 0; s < n; ++s) {
+    for (auto& r : robots_) r->applyServos(dt);
+    impl_->collide(world_, space_, field_, config_, dt);
+    // QuickStep shuffles its constraint rows with ODE's one process-wide
+    // random generator; reseeding it from the tick makes every world's
+    // result a function of its own state, whatever other worlds did.
+    dRandSetSeed(static_cast<unsigned long>(tick_) * 16u + static_cast<unsigned long>(s));
+    if (config_.solver == WorldConfig::Solver::Exact) {
+      dWorldStep(world_, dt);
+    } else {
+      dWorldQuickStep(world_, dt);
+    }
+    impl_->gatherContacts(1.0 / n, contacts_);
+    dJointGroupEmpty(impl_->contact_group);
+  }
+  ++tick_;
+
+  // Blow-ups: a robot or the ball with NaN/inf or absurd speed is put back
+  // where it was last placed; the run goes on and the event is reported.
+  for (int i = 0; i < numRobots(); ++i) {
+    if (!robots_[i]->blownUp(config_.blowup_linear_speed, config_.blowup_angular_speed)) continue;
+    const Impl::Placement p = impl_->placements[i];
+    placeRobot(i, p.x, p.y, p.theta, p.posture);
+    events_.push_back({WorldEvent::Kind::BlowUp, tick_, i,
+                       "robot " + std::to_string(i) +
+                           " blew up (NaN or speed beyond limits); reset to its last placement"});
+  }
+  const Eigen::Vector3d bp = ballPosition(), bv = ballVelocity();
+  const dReal* bw = dBodyGetAngularVel(impl_->ball);
+  const bool ball_bad = !bp.allFinite() || !bv.allFinite() || !std::isfinite(bw[0]) ||
+                        !std::isfinite(bw[1]) || !std::isfinite(bw[2]) ||
+                        bv.norm() > config_.blowup_linear_speed ||
+                        Eigen::Vector3d(bw[0], bw[1], bw[2]).norm() > config_.blowup_angular_speed;
+  if (ball_bad) {
+    placeBall(impl_->ball_placed.x(), impl_->ball_placed.y());
+    events_.push_back({WorldEvent::Kind::BlowUp, tick_, -1,
+                       "ball blew up (NaN or speed beyond limits); reset to its last placement"});
+  }
+}
+
+std::vector<WorldEvent> World::takeEvents() {
+  std::vector<WorldEvent> out;
+  out.swap(events_);
+  return out;
+}
+
+namespace {
+
+struct RayQuery {
+  dSpaceID ignore_space;  // the ignored robot's space, or null
+  int ignore_robot;
+  double best;
+};
+
+void rayCallback(void* data, dGeomID o1, dGeomID o2) {
+  auto* q = static_cast<RayQuery*>(data);
+  if (dGeomIsSpace(o1) || dGeomIsSpace(o2)) {
+    dGeomID sp = dGeomIsSpace(o1) ? o1 : o2;
+    if (reinterpret_cast<dSpaceID>(sp) == q->ignore_space) return;
+    dSpaceCollide2(o1, o2, data, &rayCallback);
+    return;
+  }
+  for (dGeomID g : {o1, o2}) {
+    if (dGeomGetClass(g) == dRayClass) continue;
+    const auto* tag = static_cast<const GeomTag*>(dGeomGetData(g));
+    if (tag && tag->kind == GeomTag::RobotLink && tag->robot == q->ignore_robot) return;
+  }
+  dContactGeom c;
+  if (dCollide(o1, o2, 1, &c, sizeof(c)) > 0 && c.depth < q->best) q->best = c.depth;
+}
+
+}  // namespace
+
+double World::rayCast(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double max_range,
+                      int ignore_robot) const {
+  const Eigen::Vector3d d = dir.normalized();
+  dGeomRaySetLength(impl_->ray, max_range);
+  dGeomRaySet(impl_->ray, origin.x(), origin.y(), origin.z(), d.x(), d.y(), d.z());
+  RayQuery q{nullptr, ignore_robot, max_range + 1};
+  if (ignore_robot >= 0 && ignore_robot < numRobots()) {
+    q.ignore_space = impl_->robot_spaces[ignore_robot];
+  }
+  dSpaceCollide2(impl_->ray, reinterpret_cast<dGeomID>(space_), &q, &rayCallback);
+  return q.best <= max_range ? q.best : -1.0;
+}
+
+}  // namespace simswift

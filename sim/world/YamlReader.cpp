@@ -1,0 +1,256 @@
+// Typed YAML reading with file:line:key errors. See YamlReader.hpp.
+#include "sim/world/YamlReader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace simswift {
+
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+// How a scalar looked in the file, for "got ..." in messages.
+std::string shown(const YAML::Node& n) {
+  if (!n.IsDefined() || n.IsNull()) return "nothing";
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsSequence()) return "a list";
+  if (n.IsMap()) return "a map";
+  return "?";
+}
+
+}  // namespace
+
+bool Range::contains(double v) const {
+  if (lo && (lo_open ? !(v > *lo) : !(v >= *lo))) return false;
+  if (hi && (hi_open ? !(v < *hi) : !(v <= *hi))) return false;
+  return true;
+}
+
+std::string Range::describe() const {
+  if (lo && hi) {
+    return "must be in " + std::string(lo_open ? "(" : "[") + fmt(*lo) + ", " + fmt(*hi) +
+           (hi_open ? ")" : "]");
+  }
+  if (lo) return std::string("must be ") + (lo_open ? "> " : ">= ") + fmt(*lo);
+  if (hi) return std::string("must be ") + (hi_open ? "< " : "<= ") + fmt(*hi);
+  return "must be a number";
+}
+
+YAML::Node YamlReader::parse(const std::string& text, const std::string& file) {
+  try {
+    YAML::Node root = YAML::Load(text);
+    return root;
+  } catch (const YAML::Exception& e) {
+    // e.mark.line is 0-based; e.msg is yaml-cpp's text without the position.
+    throw ConfigError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " +
+                      e.msg);
+  }
+}
+
+YAML::Node YamlReader::parseFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path + ": cannot open file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse(ss.str(), path);
+}
+
+YamlReader::YamlReader(YAML::Node node, std::string file, std::string path)
+    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
+
+std::string YamlReader::keyPath(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+void YamlReader::fail(const std::string& key, const std::string& message) const {
+  YAML::Node n = get(key);
+  YAML::Mark m = (n.IsDefined() && !n.Mark().is_null()) ? n.Mark() : node_.Mark();
+  std::string where = file_;
+  if (!m.is_null()) where += ":" + std::to_string(m.line + 1);
+  throw ConfigError(where + ": " + keyPath(key) + ": " + message);
+}
+
+void YamlReader::fail(const std::string& message) const {
+  std::string where = file_;
+  if (!node_.Mark().is_null()) where += ":" + std::to_string(node_.Mark().line + 1);
+  throw ConfigError(where + ": " + (path_.empty() ? std::string("<document>") : path_) + ": " +
+                    message);
+}
+
+void YamlReader::checkMap() const {
+  // An empty value ("field:" with nothing under it) counts as an empty map.
+  if (!node_.IsDefined() || node_.IsNull() || node_.IsMap()) return;
+  fail("expected a map of keys (got " + shown(node_) + ")");
+}
+
+YAML::Node YamlReader::get(const std::string& key) const {
+  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
+  if (!node_.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+  const YAML::Node& cn = node_;
+  return cn[key];  // const access: never inserts
+}
+
+bool YamlReader::has(const std::string& key) const {
+  checkMap();
+  return get(key).IsDefined();
+}
+
+YAML::Node YamlReader::require(const std::string& key) const {
+  checkMap();
+  YAML::Node n = get(key);
+  if (!n.IsDefined()) fail(key, "missing required key");
+  return n;
+}
+
+double YamlReader::toNumber(const YAML::Node& n, const std::string& key) const {
+  if (!n.IsScalar()) fail(key, "expected a number (got " + shown(n) + ")");
+  double v = 0;
+  try {
+    v = n.as<double>();
+  } catch (const YAML::Exception&) {
+    fail(key, "expected a number (got " + shown(n) + ")");
+  }
+  if (!std::isfinite(v)) fail(key, "must be finite (got " + shown(n) + ")");
+  return v;
+}
+
+double YamlReader::number(const std::string& key, double def, const Range& r) const {
+  checkMap();
+  if (!get(key).IsDefined()) return def;
+  return number(key, r);
+}
+
+double YamlReader::number(const std::string& key, const Range& r) const {
+  double v = toNumber(require(key), key);
+  if (!r.contains(v)) fail(key, r.describe() + " (got " + fmt(v) + ")");
+  return v;
+}
+
+int YamlReader::integer(const std::string& key, int def, const Range& r) const {
+  checkMap();
+  if (!get(key).IsDefined()) return def;
+  return integer(key, r);
+}
+
+int YamlReader::integer(const std::string& key, const Range& r) const {
+  double v = toNumber(require(key), key);
+  if (v != std::floor(v) || std::fabs(v) > 2e9) {
+    fail(key, "expected an integer (got " + fmt(v) + ")");
+  }
+  if (!r.contains(v)) fail(key, r.describe() + " (got " + fmt(v) + ")");
+  return static_cast<int>(v);
+}
+
+bool YamlReader::boolean(const std::string& key, bool def) const {
+  checkMap();
+  if (!get(key).IsDefined()) return def;
+  return boolean(key);
+}
+
+bool YamlReader::boolean(const std::string& key) const {
+  YAML::Node n = require(key);
+  if (n.IsScalar()) {
+    const std::string& s = n.Scalar();
+    if (s == "true" || s == "True" || s == "yes" || s == "on") return true;
+    if (s == "false" || s == "False" || s == "no" || s == "off") return false;
+  }
+  fail(key, "expected true or false (got " + shown(n) + ")");
+}
+
+std::string YamlReader::string(const std::string& key, const std::string& def) const {
+  checkMap();
+  if (!get(key).IsDefined()) return def;
+  return string(key);
+}
+
+std::string YamlReader::string(const std::string& key) const {
+  YAML::Node n = require(key);
+  if (!n.IsScalar()) fail(key, "expected a string (got " + shown(n) + ")");
+  return n.Scalar();
+}
+
+std::string YamlReader::choice(const std::string& key, const std::string& def,
+                               const std::vector<std::string>& choices) const {
+  std::string v = string(key, def);
+  if (std::find(choices.begin(), choices.end(), v) != choices.end()) return v;
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+  fail(key, "expected one of " + list + " (got '" + v + "')");
+}
+
+std::vector<double> YamlReader::numbers(const std::string& key, size_t count,
+                                        const Range& r) const {
+  YAML::Node n = require(key);
+  if (!n.IsSequence() || n.size() != count) {
+    fail(key, "expected a list of " + std::to_string(count) + " numbers (got " + shown(n) + ")");
+  }
+  std::vector<double> out;
+  for (size_t i = 0; i < count; ++i) {
+    double v = toNumber(n[i], key);
+    if (!r.contains(v)) {
+      fail(key, "element " + std::to_string(i) + " " + r.describe() + " (got " + fmt(v) + ")");
+    }
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::vector<double> YamlReader::numbers(const std::string& key, const std::vector<double>& def,
+                                        const Range& r) const {
+  checkMap();
+  if (!get(key).IsDefined()) return def;
+  return numbers(key, def.size(), r);
+}
+
+YamlReader YamlReader::map(const std::string& key) const {
+  YAML::Node n = require(key);
+  YamlReader sub(n, file_, keyPath(key));
+  sub.checkMap();
+  return sub;
+}
+
+std::optional<YamlReader> YamlReader::optionalMap(const std::string& key) const {
+  checkMap();
+  if (!get(key).IsDefined()) return std::nullopt;
+  return map(key);
+}
+
+std::vector<YamlReader> YamlReader::list(const std::string& key) const {
+  checkMap();
+  YAML::Node n = get(key);
+  std::vector<YamlReader> out;
+  if (!n.IsDefined() || n.IsNull()) return out;
+  if (!n.IsSequence()) fail(key, "expected a list (got " + shown(n) + ")");
+  for (size_t i = 0; i < n.size(); ++i) {
+    YamlReader item(n[i], file_, keyPath(key) + "[" + std::to_string(i) + "]");
+    item.checkMap();
+    out.push_back(item);
+  }
+  return out;
+}
+
+void YamlReader::finish() const {
+  checkMap();
+  if (!node_.IsMap()) return;
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    std::string k = it->first.IsScalar() ? it->first.Scalar() : std::string("?");
+    if (std::find(known_.begin(), known_.end(), k) != known_.end()) continue;
+    std::string expected;
+    for (const auto& e : known_) expected += (expected.empty() ? "" : ", ") + e;
+    std::string where = file_;
+    YAML::Mark m = it->first.Mark();
+    if (!m.is_null()) where += ":" + std::to_string(m.line + 1);
+    throw ConfigError(where + ": unknown key '" + k + "' in " +
+                      (path_.empty() ? std::string("<document>") : path_) +
+                      "; expected one of " + (expected.empty() ? "(none)" : expected));
+  }
+}
+
+}  // namespace simswift

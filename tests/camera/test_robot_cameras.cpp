@@ -1,0 +1,178 @@
+// Cameras on a robot in a World: ball pixel in both cameras, identical frames
+// for identical worlds, frame dumps, and the overview sequence / video.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "CameraTestUtil.hpp"
+#include "sim/camera/FrameDumper.hpp"
+#include "sim/camera/Overview.hpp"
+#include "sim/camera/Png.hpp"
+#include "sim/camera/RobotCameras.hpp"
+#include "sim/camera/Yuv.hpp"
+#include "sim/world/World.hpp"
+
+using namespace simswift;
+using namespace simswift::camera;
+using namespace camtest;
+using agent::libagent::CameraImages;
+
+namespace {
+
+std::shared_ptr<const NaoModel> naoModel() {
+  static auto model =
+      std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+  return model;
+}
+
+std::vector<double> standingPosture(const NaoModel& m) {
+  std::vector<double> q(m.joints().size(), 0.0);
+  const std::map<std::string, double> set = {
+      {"LHipPitch", -0.2}, {"RHipPitch", -0.2}, {"LKneePitch", 0.4}, {"RKneePitch", 0.4},
+      {"LAnklePitch", -0.2}, {"RAnklePitch", -0.2}, {"LShoulderPitch", 1.4}, {"RShoulderPitch", 1.4},
+      {"LShoulderRoll", 0.1}, {"RShoulderRoll", -0.1}, {"HeadPitch", 0.1}};
+  for (const auto& [name, angle] : set)
+    if (m.jointIndex(name) >= 0) q[m.jointIndex(name)] = angle;
+  return q;
+}
+
+
+std::vector<uint8_t> copyRgb(const CameraImages& im, int cam) {
+  return std::vector<uint8_t>(im.rgb[cam], im.rgb[cam] + im.rgbBytes());
+}
+
+}  // namespace
+
+TEST(RobotCameras, BallRelativeToTheRobotAppearsAtTheExpectedPixel) {
+  noDisplay();
+  World world(FieldConfig{});  // no painted lines: only the ball is grey in its window
+  const double theta = 0.3;
+  const int robot = world.addRobot(naoModel(), -1.0, 0.5, theta, standingPosture(*naoModel()));
+  RobotCamerasConfig cfg;
+  cfg.scene.sky = {0, 0, 1};
+  cfg.scene.draw_net = false;
+  RobotCameras cams(world, cfg);
+  auto images = std::make_unique<CameraImages>();
+  const double r = world.field().ball.diameter / 2;
+  // Robot-relative ball positions (m, x forward, y left of the robot).
+  struct Case { CameraId cam; double x, y; };
+  for (const Case& c : {Case{kTop, 1.5, 0.2}, Case{kTop, 2.5, -0.4}, Case{kBottom, 0.45, 0.05},
+                        Case{kBottom, 0.35, -0.12}}) {
+    SCOPED_TRACE(testing::Message() << (c.cam == kTop ? "top" : "bottom") << " camera, ball at (" << c.x << ", "
+                                    << c.y << ") robot-relative");
+    world.placeBall(-1.0 + c.x * std::cos(theta) - c.y * std::sin(theta),
+                    0.5 + c.x * std::sin(theta) + c.y * std::cos(theta));
+    cams.fillImages(world, robot, *images);
+    ASSERT_EQ(images->valid[c.cam], 1);
+    const CameraModel model = cams.camera(world, robot, c.cam);
+    const Blob expected = sphereImage(model, world.ballPosition(), r);
+    ASSERT_GT(expected.area, 30) << "ball not in the camera's view";
+    const Blob seen = ballNear(copyRgb(*images, c.cam), images->width, images->height, expected);
+    EXPECT_NEAR(seen.u, expected.u, 2.0);
+    EXPECT_NEAR(seen.v, expected.v, 2.0);
+    EXPECT_NEAR(double(seen.area) / expected.area, 1.0, 0.1);
+  }
+}
+
+TEST(RobotCameras, IdenticalWorldsRenderIdenticalFramesAndYuvMatchesRgb) {
+  noDisplay();
+  uint64_t hashes[2][2];
+  for (int run = 0; run < 2; ++run) {
+    World world(FieldConfig::spl2017());
+    world.addRobot(naoModel(), 0, 0, 0, standingPosture(*naoModel()));
+    world.addRobot(naoModel(), 0.8, 0.1, M_PI, standingPosture(*naoModel()));
+    world.placeBall(0.4, 0.05);
+    for (int i = 0; i < 20; ++i) world.step();
+    RobotCameras cams(world);
+    cams.setTeams({0, 1});
+    auto images = std::make_unique<CameraImages>();
+    cams.fillImages(world, 0, *images);
+    for (int c = 0; c < 2; ++c) hashes[run][c] = fnv1a(images->yuv422[c], images->yuvBytes());
+    if (run == 0) {
+      // The YUV buffer is the RGB buffer converted.
+      std::vector<uint8_t> yuv(images->yuvBytes());
+      rgbToYuyv(images->rgb[0], images->width, images->height, yuv.data());
+      EXPECT_EQ(fnv1a(yuv), hashes[0][0]);
+      EXPECT_EQ(images->magic, agent::libagent::kCameraImagesMagic);
+      EXPECT_EQ(images->frame_index, 6);  // 0.2 s at 30 Hz
+      EXPECT_EQ(images->sim_time_us, 200000);
+      // The other robot (team 1, red) stands in the top camera's view.
+      const auto top = copyRgb(*images, 0);
+      const Blob red = blob(top, 640, 480, [](const uint8_t* p) { return p[0] > 110 && p[0] > 3 * p[1] && p[0] > 3 * p[2]; });
+      EXPECT_GT(red.area, 200);
+      if (std::getenv("SIMSWIFT_KEEP_TEST_IMAGES")) {
+        writePng(freshDir("two-robots") + "/top.png", images->rgb[0], 640, 480);
+        writePng(freshDir("two-robots-b") + "/bottom.png", images->rgb[1], 640, 480);
+      }
+    }
+  }
+  EXPECT_EQ(hashes[0][0], hashes[1][0]);
+  EXPECT_EQ(hashes[0][1], hashes[1][1]);
+  EXPECT_NE(hashes[0][0], hashes[0][1]);
+}
+
+TEST(FrameDumper, WritesEveryNthFrameForBothCameras) {
+  noDisplay();
+  const std::string dir = freshDir("dump");
+  World world(FieldConfig::spl2017());
+  world.addRobot(naoModel(), 0, 0, 0, standingPosture(*naoModel()));
+  RobotCameras cams(world);
+  FrameDumper dumper(dir, 3);
+  auto images = std::make_unique<CameraImages>();
+  for (int64_t frame = 0; frame <= 6; ++frame) {
+    cams.fillImages(world, 0, *images, frame);
+    dumper.dump(1, 3, *images);
+  }
+  EXPECT_EQ(dumper.written(), 6);  // frames 0, 3, 6 x top and bottom
+  for (int frame : {0, 3, 6})
+    for (const char* cam : {"top", "bottom"}) {
+      char name[64];
+      std::snprintf(name, sizeof name, "/t1p3_%s_%06d.png", cam, frame);
+      int w = 0, h = 0;
+      const auto png = readPng(dir + name, &w, &h);
+      EXPECT_EQ(w, 640);
+      EXPECT_EQ(h, 480);
+    }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/t1p3_top_000001.png"));
+  // The PNG holds exactly the RGB buffer.
+  int w = 0, h = 0;
+  EXPECT_EQ(readPng(dir + "/t1p3_bottom_000006.png", &w, &h), copyRgb(*images, 1));
+  EXPECT_THROW(FrameDumper(dir, 0), std::invalid_argument);
+}
+
+TEST(Overview, ShortRunGivesTheExpectedFramesAndVideo) {
+  noDisplay();
+  const std::string dir = freshDir("overview");
+  World world(FieldConfig::spl2017());
+  world.addRobot(naoModel(), -1.0, 0.0, 0, standingPosture(*naoModel()));
+  world.placeBall(0, 0);
+  world.setBallVelocity({1.0, 0.3, 0});
+  RobotCameras cams(world);
+  OverviewConfig cfg;
+  cfg.dir = dir;
+  cfg.rate_hz = 10;
+  cfg.width = 320;
+  cfg.height = 180;
+  cfg.mode = OverviewConfig::Mode::FollowBall;
+  OverviewCamera overview(cfg);
+  EXPECT_TRUE(overview.maybeCapture(cams, world));  // t = 0
+  for (int tick = 0; tick < 50; ++tick) {             // 0.5 s
+    world.step();
+    overview.maybeCapture(cams, world);
+  }
+  EXPECT_EQ(overview.frames(), 6);  // t = 0, 0.1, ..., 0.5 s
+  int pngs = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) pngs += e.path().extension() == ".png";
+  EXPECT_EQ(pngs, 6);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/overview_000005.png"));
+  const VideoResult video = overview.finish(dir + "/overview.mp4");
+  if (VideoWriter::ffmpegOnPath()) {
+    EXPECT_TRUE(video.ok) << video.message;
+    EXPECT_GT(std::filesystem::file_size(dir + "/overview.mp4"), 1000u);
+  } else {
+    EXPECT_FALSE(video.ok);
+    EXPECT_NE(video.message.find("PNG"), std::string::npos);
+  }
+}

@@ -1,0 +1,97 @@
+// Shared harness for the Motion physics tests: one robot in the lock-step
+// runner with the MotionModule as its Motion thread; the test plays
+// Behaviour by writing the Blackboard's MotionRequest between ticks.
+// Units: m and rad in the field frame (world), mm in the robot frame (odometry).
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "agent/blackboard/Blackboard.hpp"
+#include "agent/motion/MotionModule.hpp"
+#include "sim/runner/Runner.hpp"
+
+namespace motion_test {
+
+struct Pose2 {
+  double x, y, theta;  // m, m, rad (field frame)
+};
+
+class MotionHarness {
+ public:
+  // A scenario with one robot at (x, y, theta) standing; noise on, seeded.
+  explicit MotionHarness(uint64_t seed = 1, double x = -3.0, double y = 0.0, double theta = 0.0,
+                         const std::string& extra_yaml = "",
+                         const agent::motion::MotionConfig& cfg = agent::motion::MotionConfig())
+      : runner_(makeScenario(seed, x, y, theta, extra_yaml)) {
+    auto m = std::make_unique<agent::motion::MotionModule>(board_, cfg);
+    motion_ = m.get();
+    runner_.setMotionGenerator(0, std::move(m));
+    runner_.start();
+  }
+
+  static simswift::runner::Scenario makeScenario(uint64_t seed, double x, double y, double theta,
+                                                 const std::string& extra) {
+    const std::string yaml = "duration: 1000\nseed: " + std::to_string(seed) +
+                             "\nnoise: on\nrobots:\n  - {team: 0, player: 1, x: " + std::to_string(x) +
+                             ", y: " + std::to_string(y) + ", theta: " + std::to_string(theta) +
+                             ", posture: stand}\n" + extra;
+    simswift::runner::Scenario sc = simswift::runner::Scenario::parse(yaml, "motion_test");
+    return sc;
+  }
+
+  void request(agent::blackboard::ActionType type, double forward = 0, double left = 0, double turn = 0) {
+    board_.motion_request.update([&](agent::blackboard::MotionRequest& r) {
+      r.body.type = type;
+      r.body.forward = static_cast<float>(forward);
+      r.body.left = static_cast<float>(left);
+      r.body.turn = static_cast<float>(turn);
+      ++r.sequence;
+    });
+  }
+  void kick(agent::blackboard::Foot foot, double power, double direction = 0) {
+    board_.motion_request.update([&](agent::blackboard::MotionRequest& r) {
+      r.body.type = agent::blackboard::ActionType::KICK;
+      r.body.foot = foot;
+      r.body.kick_power = static_cast<float>(power);
+      r.body.kick_direction = static_cast<float>(direction);
+      ++r.sequence;
+    });
+  }
+
+  // Ticks for `seconds` of simulated time; returns false if the robot fell.
+  bool run(double seconds) {
+    const int n = static_cast<int>(std::lround(seconds / 0.01));
+    bool ok = true;
+    for (int i = 0; i < n; ++i) {
+      runner_.tick();
+      if (torsoHeight() < 0.2) ok = false;
+    }
+    return ok;
+  }
+
+  // Torso pose projected on the ground (field frame).
+  Pose2 pose() {
+    const Eigen::Isometry3d t = runner_.world().robot(0).linkPose(runner_.world().robot(0).model().rootLink());
+    const Eigen::Vector3d x = t.rotation().col(0);
+    return {t.translation().x(), t.translation().y(), std::atan2(x.y(), x.x())};
+  }
+  double torsoHeight() {
+    return runner_.world().robot(0).linkPose(runner_.world().robot(0).model().rootLink()).translation().z();
+  }
+
+  agent::blackboard::MotionState state() const { return board_.motion.read(); }
+  agent::motion::MotionModule& motion() { return *motion_; }
+  simswift::runner::Runner& runner() { return runner_; }
+  agent::blackboard::Blackboard& board() { return board_; }
+
+ private:
+  agent::blackboard::Blackboard board_;
+  simswift::runner::Runner runner_;
+  agent::motion::MotionModule* motion_ = nullptr;
+};
+
+inline double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+}  // namespace motion_test
