@@ -11,6 +11,8 @@
 #include <exception>
 #include <string>
 
+#include <unistd.h>
+
 #include "sim/runner/Runner.hpp"
 
 namespace {
@@ -104,9 +106,18 @@ int main(int argc, char** argv) {
 
   try {
     Runner runner(sc);
-    const RunStats stats = runner.run(opt);
-    std::printf("%s\n", stats.summary().c_str());
-    std::fflush(stdout);
+    try {
+      const RunStats stats = runner.run(opt);
+      std::printf("%s\n", stats.summary().c_str());
+      std::fflush(stdout);
+    } catch (const WatchdogError& e) {
+      // The silent robot thread cannot be joined; remove the named objects
+      // and leave without waiting for it.
+      std::fprintf(stderr, "simswift: %s\n", e.what());
+      std::fflush(stdout);
+      simswift::bridge::cleanup::removeAll();
+      _exit(1);
+    }
   } catch (const simswift::ConfigError& e) {
     std::fprintf(stderr, "simswift: %s\n", e.what());
     return 2;

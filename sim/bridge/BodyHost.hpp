@@ -107,6 +107,9 @@ namespace cleanup {
 void registerShm(const std::string& name);
 void registerSem(const std::string& name);
 void unregister(const std::string& name);
+// Unlinks everything registered by this process now (e.g. before _exit when
+// a robot thread hangs and cannot be joined).
+void removeAll();
 }  // namespace cleanup
 
 }  // namespace simswift::bridge

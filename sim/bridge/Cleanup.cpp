@@ -78,6 +78,8 @@ void add(const std::string& name, int kind) {
 
 }  // namespace
 
+void removeAll() { unlinkAll(); }
+
 void registerShm(const std::string& name) { add(name, 1); }
 void registerSem(const std::string& name) { add(name, 2); }
 

@@ -1,0 +1,124 @@
+// Camera rendering throughput (issue 4):
+//  - frames per second of one NAO camera (render + YUYV conversion) at
+//    640x480 and 1280x960, on one core (LP_NUM_THREADS=1, see Renderer.hpp);
+//  - real-time factor of one robot stepping physics at 100 Hz and rendering
+//    both cameras at 30 Hz of simulated time.
+// Usage: bench_camera [--out FILE] [--frames N] [--seconds S]
+// Wall-clock time is measured here only; the simulation itself never reads it.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "BenchResults.hpp"
+#include "sim/camera/RobotCameras.hpp"
+#include "sim/camera/Yuv.hpp"
+#include "sim/world/World.hpp"
+
+using namespace simswift;
+using namespace simswift::camera;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+std::vector<double> standingPosture(const NaoModel& m) {
+  std::vector<double> q(m.joints().size(), 0.0);
+  const std::map<std::string, double> set = {
+      {"LHipPitch", -0.2}, {"RHipPitch", -0.2}, {"LKneePitch", 0.4}, {"RKneePitch", 0.4},
+      {"LAnklePitch", -0.2}, {"RAnklePitch", -0.2}, {"LShoulderPitch", 1.4}, {"RShoulderPitch", 1.4}};
+  for (const auto& [name, angle] : set)
+    if (m.jointIndex(name) >= 0) q[m.jointIndex(name)] = angle;
+  return q;
+}
+
+void hold(RobotBody& r, const std::vector<double>& q) {
+  std::array<float, 25> a{}, s{};
+  for (int i = 0; i < 25; ++i) {
+    const int j = r.model().jointForLibagent(i);
+    a[i] = j >= 0 ? static_cast<float>(q[j]) : 0.f;
+    s[i] = 1.f;
+  }
+  r.setCommand(a, s);
+}
+
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string out = SIMSWIFT_BENCH_RESULTS;
+  int frames = 300;
+  double sim_seconds = 10.0;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--out") && i + 1 < argc) out = argv[++i];
+    else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--seconds") && i + 1 < argc) sim_seconds = std::atof(argv[++i]);
+    else {
+      std::fprintf(stderr, "usage: %s [--out FILE] [--frames N] [--seconds S]\n", argv[0]);
+      return 2;
+    }
+  }
+
+  auto model = std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+  const auto q = standingPosture(*model);
+
+  // --- One camera: a game-like view (field, goal, another robot, ball).
+  {
+    World world(FieldConfig::spl2017());
+    world.addRobot(model, -1.0, 0.0, 0.0, q);
+    world.addRobot(model, 0.5, 0.3, M_PI, q);
+    world.placeBall(0.0, -0.2);
+    RobotCameras cams(world);
+    cams.setTeams({0, 1});
+    cams.syncScene(world);
+    std::printf("renderer: %s, LP_NUM_THREADS=%s\n", Renderer::rendererName(),
+                std::getenv("LP_NUM_THREADS") ? std::getenv("LP_NUM_THREADS") : "(unset)");
+    for (int w : {640, 1280}) {
+      const int h = w * 3 / 4;
+      cams.setResolution(w, h);
+      const CameraView view = cams.view(world, 0, kTop);
+      std::vector<uint8_t> rgb(size_t(w) * h * 3), yuv(size_t(w) * h * 2);
+      cams.renderer().render(cams.scene(), view, rgb.data());  // warm-up: display lists, buffers
+      const int n = w == 640 ? frames : std::max(frames / 3, 10);
+      const auto t0 = Clock::now();
+      for (int i = 0; i < n; ++i) {
+        cams.renderer().render(cams.scene(), view, rgb.data());
+        rgbToYuyv(rgb.data(), w, h, yuv.data());
+      }
+      const double fps = n / seconds(t0, Clock::now());
+      bench::report("camera_fps_" + std::to_string(w) + "x" + std::to_string(h), fps, "fps", out.c_str());
+    }
+  }
+
+  // --- One robot: physics every 10 ms, both cameras at 30 Hz (640x480).
+  {
+    World world(FieldConfig::spl2017());
+    const int r = world.addRobot(model, -1.0, 0.0, 0.0, q);
+    hold(world.robot(r), q);
+    world.placeBall(0.0, 0.0);
+    world.setBallVelocity({-0.5, 0.1, 0});
+    RobotCameras cams(world);
+    auto images = std::make_unique<agent::libagent::CameraImages>();
+    const int64_t ticks = static_cast<int64_t>(std::llround(sim_seconds / kTickSeconds));
+    int64_t next_frame = 0, rendered = 0;
+    const auto t0 = Clock::now();
+    for (int64_t t = 0; t < ticks; ++t) {
+      world.step();
+      // Frame k is due at k/30 s of simulated time.
+      if (world.time() + 1e-9 >= next_frame / 30.0) {
+        cams.fillImages(world, r, *images, next_frame);
+        ++next_frame;
+        ++rendered;
+      }
+    }
+    const double wall = seconds(t0, Clock::now());
+    bench::report("camera_rtf_1robot_2cams_30hz", (ticks * kTickSeconds) / wall, "x", out.c_str());
+    std::printf("(%lld camera frames in %.2f s simulated, %.2f s wall)\n", static_cast<long long>(rendered),
+                ticks * kTickSeconds, wall);
+  }
+  return 0;
+}
