@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
+#include <ctime>
 #include <chrono>
 #include <thread>
 #include <cstring>
@@ -99,11 +101,38 @@ void AgentConnection::announce(bool perception) {
   block_->lockstep.attached.store(mapping_ ? static_cast<int32_t>(getpid()) : 1);
 }
 
+namespace {
+// Waits on `s`. Attached by name, wakes every second (wall clock, liveness
+// only) to check the simulator still exists: one that died or ended without
+// posting would otherwise leave this program blocked forever.
+bool waitOrSimulatorGone(sem_t* s, const std::string& name, bool named, const char* what) {
+  for (;;) {
+    if (!named) {
+      if (sem_wait(s) == 0) return true;
+    } else {
+      timespec deadline{};
+      clock_gettime(CLOCK_MONOTONIC, &deadline);
+      deadline.tv_sec += 1;
+      if (sem_clockwait(s, CLOCK_MONOTONIC, &deadline) == 0) return true;
+      if (errno == ETIMEDOUT) {
+        const int fd = shm_open(name.c_str(), O_RDONLY, 0);
+        if (fd < 0 && errno == ENOENT) {
+          std::fprintf(stderr, "libagent: %s is gone: the simulator has ended\n", name.c_str());
+          return false;
+        }
+        if (fd >= 0) close(fd);
+        continue;
+      }
+    }
+    if (errno != EINTR && errno != ETIMEDOUT)
+      throw AgentError(std::string("waiting on ") + what + ": " + std::strerror(errno));
+  }
+}
+}  // namespace
+
 bool AgentConnection::waitTick() {
   if (shutdown()) return false;
-  while (sem_wait(tick_) != 0) {
-    if (errno != EINTR) throw AgentError(std::string("sem_wait on tick: ") + std::strerror(errno));
-  }
+  if (!waitOrSimulatorGone(tick_, memory_name_, mapping_ != nullptr, "tick")) return false;
   return !shutdown();
 }
 
@@ -139,9 +168,7 @@ void AgentConnection::writeActuators(const JointValues& joints, const LedCommand
 bool AgentConnection::waitFrame() {
   if (!camera_) throw AgentError("waitFrame: this robot has no camera block");
   if (camera_->shutdown.load()) return false;
-  while (sem_wait(&camera_->frame_ready) != 0) {
-    if (errno != EINTR) throw AgentError(std::string("sem_wait on frame_ready: ") + std::strerror(errno));
-  }
+  if (!waitOrSimulatorGone(&camera_->frame_ready, memory_name_, mapping_ != nullptr, "frame_ready")) return false;
   return camera_->shutdown.load() == 0;
 }
 

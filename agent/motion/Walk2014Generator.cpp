@@ -180,7 +180,7 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
         xl_ = xl0_ + (-F / 2 - xl0_) * frac;
         yl_ = yl0_ + (y_support - yl0_) * frac;
       }
-      th_ = th0_ + (th_target - th0_) * frac;
+      th_ = th0_ + (th_target - th0_) * ps;
       const double sx1 = swing_left_ ? xr_ : xl_, sy1 = swing_left_ ? yr_ : yl_;
       const double syaw1 = swing_left_ ? -th_ : th_;
       // The body moves opposite to its support foot (relative to the hips).
