@@ -158,9 +158,9 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
     case State::Walking: {
       t_ += dt;
       const double frac = std::min(1.0, t_ / period_);
-      const double F = step_speed_.forward * period_;
-      const double L = step_speed_.left * 2 * period_;
-      const double D = step_speed_.turn * period_;
+      const double F = cfg_.forward_gain * step_speed_.forward * period_;
+      const double L = cfg_.left_gain * step_speed_.left * 2 * period_;
+      const double D = cfg_.turn_gain * step_speed_.turn * period_;
       const bool lead = (L > 0 && swing_left_) || (L < 0 && !swing_left_);
       const double y_swing = lead ? L / 2 : 0.0, y_support = lead ? -L / 2 : 0.0;
       const double th_target = swing_left_ ? D / 2 : -D / 2;
@@ -184,9 +184,9 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       const double sx1 = swing_left_ ? xr_ : xl_, sy1 = swing_left_ ? yr_ : yl_;
       const double syaw1 = swing_left_ ? -th_ : th_;
       // The body moves opposite to its support foot (relative to the hips).
-      odo_.forward = -(sx1 - sx0);
-      odo_.left = -(sy1 - sy0);
-      odo_.turn = -(syaw1 - syaw0);
+      odo_.forward = -(sx1 - sx0) * cfg_.odometry_forward_scale;
+      odo_.left = -(sy1 - sy0) * cfg_.odometry_left_scale;
+      odo_.turn = -(syaw1 - syaw0) * cfg_.odometry_turn_scale;
 
       if (switch_.shouldSwitch(t_, period_, swing_left_, footPressure(s))) {
         const bool settled = step_speed_.forward == 0 && step_speed_.left == 0 && step_speed_.turn == 0 &&
@@ -226,8 +226,11 @@ void Walk2014Generator::computeLegs(const libagent::SensorValues& sensors, libag
 
   feet_.xl = xl_ + cfg_.foot_x_offset;
   feet_.xr = xr_ + cfg_.foot_x_offset;
-  feet_.yl = yl_ + cfg_.stance_width_extra - sway;
-  feet_.yr = yr_ - cfg_.stance_width_extra - sway;
+  const double width = cfg_.stance_width_extra + (walking || state_ == State::Stopping || state_ == State::Starting
+                                                       ? cfg_.turn_width * std::fabs(step_speed_.turn)
+                                                       : 0.0);
+  feet_.yl = yl_ + width - sway;
+  feet_.yr = yr_ - width - sway;
   feet_.zl = -height_ + (walking && swing_left_ ? lift : 0.0);
   feet_.zr = -height_ + (walking && !swing_left_ ? lift : 0.0);
   feet_.th = th_;

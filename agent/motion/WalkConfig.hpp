@@ -58,6 +58,21 @@ struct WalkConfig {
   double arm_pitch = 1.5;          // rad, arms hanging (ShoulderPitch)
   double arm_roll = 0.15;          // rad, away from the body (mirrored on the right)
 
+  // Feet apart by this much more per rad/s of turn (mm per rad/s, each
+  // side): toed-in feet otherwise touch (the sole gap is only 11 mm).
+  double turn_width = 25.0;
+
+  // --- Calibration (measured in simswift, see tests/runner/motion_*):
+  // step geometry gains, so that the achieved speed matches the command
+  // despite foot slip, and odometry scales from the executed foot motion to
+  // the body motion it really produces.
+  double forward_gain = 1.0;
+  double left_gain = 1.0;
+  double turn_gain = 1.0;
+  double odometry_forward_scale = 1.0;
+  double odometry_left_scale = 1.0;
+  double odometry_turn_scale = 1.0;
+
   double stiffness = 1.0;  // leg and arm stiffness while walking
 };
 

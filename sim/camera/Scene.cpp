@@ -14,7 +14,6 @@ namespace simswift::camera {
 
 namespace {
 
-constexpr int kSphereSlices = 32, kSphereStacks = 16;   // robot spheres
 constexpr int kBallSlices = 48, kBallStacks = 32;       // the ball: finer, its outline is measured
 constexpr int kCylinderSlices = 48;
 constexpr int kCircleSegments = 128;                    // centre circle band
@@ -170,14 +169,12 @@ struct Scene::Gl {
   uint64_t context_id = 0;
   GLuint base = 0;  // glGenLists base
   GLuint ground = 0, cube = 0, sphere = 0, cylinder = 0, ball = 0, goals = 0, net = 0;
-  std::vector<std::pair<const MeshData*, GLuint>> mesh_lists;
 };
 
 Scene::Scene(const FieldConfig& field, SceneOptions options) : field_(field), options_(std::move(options)) {
   if (options_.team_colours.empty()) throw std::invalid_argument("SceneOptions: team_colours is empty");
 }
 
-Scene::~Scene() = default;  // display lists die with their context
 
 Eigen::Vector2d Scene::goalPostCentre(const FieldConfig& field, int goal, int post) {
   const double r = field.goal.post_diameter / 2;
@@ -222,11 +219,6 @@ const Scene::MeshData& Scene::mesh(const std::string& path, const std::string& l
   return *meshes_.back().second;
 }
 
-void Scene::preloadModel(const NaoModel& model) {
-  for (const auto& link : model.links())
-    for (const auto& v : link.visuals)
-      if (v.type == ShapeType::Mesh) mesh(v.mesh, link.name);
-}
 
 void Scene::buildLists() const {
   gl_ = std::make_unique<Gl>();
@@ -242,9 +234,6 @@ void Scene::buildLists() const {
 
   glNewList(g.cube, GL_COMPILE);
   emitCube();
-  glEndList();
-  glNewList(g.sphere, GL_COMPILE);
-  emitSphere(kSphereSlices, kSphereStacks, false);
   glEndList();
   glNewList(g.cylinder, GL_COMPILE);
   emitCylinder(kCylinderSlices);
@@ -333,96 +322,188 @@ void Scene::buildLists() const {
   glEndList();
 }
 
-void Scene::drawShape(const simswift::ShapeSpec& s, const std::string& link) const {
-  glColor4d(s.rgba[0], s.rgba[1], s.rgba[2], s.rgba[3]);
-  glPushMatrix();
-  multMatrix(s.origin.isometry());
-  switch (s.type) {
-    case ShapeType::Box:
-      glScaled(s.size.x(), s.size.y(), s.size.z());
-      glCallList(gl_->cube);
-      break;
-    case ShapeType::Sphere:
-      glScaled(s.radius, s.radius, s.radius);
-      glCallList(gl_->sphere);
-      break;
-    case ShapeType::Cylinder:
-      glScaled(s.radius, s.radius, s.length);
-      glCallList(gl_->cylinder);
-      break;
-    case ShapeType::Capsule:
-      glPushMatrix();
-      glScaled(s.radius, s.radius, s.length);
-      glCallList(gl_->cylinder);
-      glPopMatrix();
-      for (double z : {-s.length / 2, s.length / 2}) {
-        glPushMatrix();
-        glTranslated(0, 0, z);
-        glScaled(s.radius, s.radius, s.radius);
-        glCallList(gl_->sphere);
-        glPopMatrix();
-      }
-      break;
-    case ShapeType::Mesh: {
-      const MeshData* m = &mesh(s.mesh, link);
-      GLuint list = 0;
-      for (const auto& ml : gl_->mesh_lists)
-        if (ml.first == m) list = ml.second;
-      if (list == 0) {
-        list = glGenLists(1);
-        glNewList(list, GL_COMPILE);
-        glBegin(GL_TRIANGLES);
-        for (size_t i = 0; i < m->positions.size(); ++i) {
-          glNormal3f(m->normals[i].x(), m->normals[i].y(), m->normals[i].z());
-          glVertex3f(m->positions[i].x(), m->positions[i].y(), m->positions[i].z());
-        }
-        glEnd();
-        glEndList();
-        gl_->mesh_lists.emplace_back(m, list);
-      }
-      glCallList(list);
-      break;
-    }
+namespace {
+
+// Unit primitives as triangle soups (positions and unit normals), built once.
+struct UnitMesh {
+  std::vector<Eigen::Vector3f> p, n;
+  void add(const Eigen::Vector3d& pos, const Eigen::Vector3d& nrm) {
+    p.push_back(pos.cast<float>());
+    n.push_back(nrm.normalized().cast<float>());
   }
-  glPopMatrix();
+};
+
+constexpr int kRobotSphereSlices = 20, kRobotSphereStacks = 12, kRobotCylinderSlices = 24;
+
+const UnitMesh& unitSphere() {
+  static const UnitMesh m = [] {
+    UnitMesh u;
+    for (int i = 0; i < kRobotSphereStacks; ++i)
+      for (int j = 0; j < kRobotSphereSlices; ++j) {
+        const auto a = spherePoint(j, i, kRobotSphereSlices, kRobotSphereStacks);
+        const auto b = spherePoint(j, i + 1, kRobotSphereSlices, kRobotSphereStacks);
+        const auto c = spherePoint(j + 1, i + 1, kRobotSphereSlices, kRobotSphereStacks);
+        const auto d = spherePoint(j + 1, i, kRobotSphereSlices, kRobotSphereStacks);
+        if (i != kRobotSphereStacks - 1) u.add(a, a), u.add(b, b), u.add(c, c);
+        if (i != 0) u.add(a, a), u.add(c, c), u.add(d, d);
+      }
+    return u;
+  }();
+  return m;
 }
 
-void Scene::drawRobot(int index, const RobotDrawState& robot, const DrawOptions& options) const {
-  const NaoModel& model = *robot.model;
-  const auto& links = model.links();
-  if (robot.link_poses.size() != links.size())
-    throw std::invalid_argument("Scene: robot " + std::to_string(index) + " has " +
-                                std::to_string(robot.link_poses.size()) + " link poses for " +
-                                std::to_string(links.size()) + " links");
-  const int nteams = static_cast<int>(options_.team_colours.size());
-  const Eigen::Vector3f& jersey = options_.team_colours[((robot.team % nteams) + nteams) % nteams];
+const UnitMesh& unitCylinder() {  // radius 1, z from -0.5 to 0.5, capped
+  static const UnitMesh m = [] {
+    UnitMesh u;
+    for (int j = 0; j < kRobotCylinderSlices; ++j) {
+      const double a0 = 2 * M_PI * j / kRobotCylinderSlices, a1 = 2 * M_PI * (j + 1) / kRobotCylinderSlices;
+      const Eigen::Vector3d r0(std::cos(a0), std::sin(a0), 0), r1(std::cos(a1), std::sin(a1), 0);
+      const Eigen::Vector3d up(0, 0, 0.5), z(0, 0, 1);
+      u.add(r0 - up, r0), u.add(r1 - up, r1), u.add(r1 + up, r1);
+      u.add(r0 - up, r0), u.add(r1 + up, r1), u.add(r0 + up, r0);
+      u.add(up, z), u.add(r0 + up, z), u.add(r1 + up, z);
+      u.add(-up, -z), u.add(r1 - up, -z), u.add(r0 - up, -z);
+    }
+    return u;
+  }();
+  return m;
+}
+
+const UnitMesh& unitCube() {  // side 1, centred
+  static const UnitMesh m = [] {
+    UnitMesh u;
+    for (int axis = 0; axis < 3; ++axis)
+      for (double sign : {-1.0, 1.0}) {
+        Eigen::Vector3d n = Eigen::Vector3d::Zero();
+        n[axis] = sign;
+        Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();
+        a[(axis + 1) % 3] = 1;
+        b[(axis + 2) % 3] = 1;
+        const Eigen::Vector3d c[4] = {0.5 * (n - a - b), 0.5 * (n + a - b), 0.5 * (n + a + b), 0.5 * (n - a + b)};
+        u.add(c[0], n), u.add(c[1], n), u.add(c[2], n);
+        u.add(c[0], n), u.add(c[2], n), u.add(c[3], n);
+      }
+    return u;
+  }();
+  return m;
+}
+
+}  // namespace
+
+// A link's visual triangles in the link frame, with colours.
+struct Scene::LinkGeometry {
+  std::vector<Eigen::Vector3f> p, n;
+  std::vector<Eigen::Vector4f> c;
+  void add(const std::vector<Eigen::Vector3f>& pos, const std::vector<Eigen::Vector3f>& nrm,
+           const Eigen::Affine3d& t, const Eigen::Vector4f& colour) {
+    const Eigen::Matrix3f lin = t.linear().cast<float>();
+    const Eigen::Matrix3f nmat = t.linear().inverse().transpose().cast<float>();  // normals under scaling
+    const Eigen::Vector3f off = t.translation().cast<float>();
+    for (size_t i = 0; i < pos.size(); ++i) {
+      p.push_back(lin * pos[i] + off);
+      n.push_back((nmat * nrm[i]).normalized());
+      c.push_back(colour);
+    }
+  }
+};
+
+const std::vector<Scene::LinkGeometry>& Scene::modelGeometry(const NaoModel& model) const {
+  for (const auto& g : geometry_)
+    if (g.first == &model) return g.second;
+  std::vector<LinkGeometry> links(model.links().size());
   for (size_t li = 0; li < links.size(); ++li) {
-    if (index == options.hide_robot && static_cast<int>(li) == options.hide_link) continue;
-    glPushMatrix();
-    multMatrix(robot.link_poses[li]);
-    for (const auto& v : links[li].visuals) drawShape(v, links[li].name);
+    const LinkSpec& link = model.links()[li];
+    for (const ShapeSpec& s : link.visuals) {
+      const Eigen::Vector4f col = s.rgba.cast<float>();
+      const Eigen::Affine3d o(s.origin.isometry().matrix());
+      auto scaled = [&](const Eigen::Vector3d& k, const Eigen::Vector3d& shift = Eigen::Vector3d::Zero()) {
+        return o * Eigen::Translation3d(shift) * Eigen::Scaling(k);
+      };
+      switch (s.type) {
+        case ShapeType::Box: links[li].add(unitCube().p, unitCube().n, scaled(s.size), col); break;
+        case ShapeType::Sphere:
+          links[li].add(unitSphere().p, unitSphere().n, scaled(Eigen::Vector3d::Constant(s.radius)), col);
+          break;
+        case ShapeType::Cylinder:
+          links[li].add(unitCylinder().p, unitCylinder().n, scaled({s.radius, s.radius, s.length}), col);
+          break;
+        case ShapeType::Capsule:
+          links[li].add(unitCylinder().p, unitCylinder().n, scaled({s.radius, s.radius, s.length}), col);
+          for (double z : {-s.length / 2, s.length / 2})
+            links[li].add(unitSphere().p, unitSphere().n, scaled(Eigen::Vector3d::Constant(s.radius), {0, 0, z}), col);
+          break;
+        case ShapeType::Mesh: {
+          const MeshData& m = mesh(s.mesh, link.name);
+          links[li].add(m.positions, m.normals, o, col);
+          break;
+        }
+      }
+    }
     if (options_.draw_jerseys && static_cast<int>(li) == model.rootLink()) {
       // Jersey: a band around the torso's first box visual (or a NAO-sized
-      // default), slightly proud of it so it shows on every side.
+      // default), slightly proud of it so it shows on every side. Its colour
+      // is set per robot at draw time (alpha 0 marks it here).
       Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
       Eigen::Vector3d size(0.09, 0.12, 0.16);
       at.translation() = Eigen::Vector3d(-0.008, 0, 0.045);
-      for (const auto& v : links[li].visuals)
+      for (const auto& v : link.visuals)
         if (v.type == ShapeType::Box) {
           at = v.origin.isometry();
           size = v.size;
           break;
         }
-      glPushMatrix();
-      multMatrix(at);
-      glTranslated(0, 0, 0.1 * size.z());
-      glScaled(size.x() + 0.006, size.y() + 0.006, 0.4 * size.z());
-      colour(jersey);
-      glCallList(gl_->cube);
-      glPopMatrix();
+      const Eigen::Affine3d band = Eigen::Affine3d(at.matrix()) * Eigen::Translation3d(0, 0, 0.1 * size.z()) *
+                                   Eigen::Scaling(Eigen::Vector3d(size.x() + 0.006, size.y() + 0.006, 0.4 * size.z()));
+      links[li].add(unitCube().p, unitCube().n, band, Eigen::Vector4f(0, 0, 0, 0));
     }
-    glPopMatrix();
   }
+  geometry_.emplace_back(&model, std::move(links));
+  return geometry_.back().second;
+}
+
+void Scene::preloadModel(const NaoModel& model) { modelGeometry(model); }
+
+// All robots in one vertex array, transformed on the CPU: one draw call for
+// every robot instead of one per shape (llvmpipe's per-draw cost dominates).
+void Scene::drawRobots(const DrawOptions& options) const {
+  auto& p = scratch_p_;
+  auto& n = scratch_n_;
+  auto& c = scratch_c_;
+  p.clear(), n.clear(), c.clear();
+  const int nteams = static_cast<int>(options_.team_colours.size());
+  for (size_t ri = 0; ri < robots.size(); ++ri) {
+    const RobotDrawState& robot = robots[ri];
+    if (!robot.model) continue;
+    const auto& geometry = modelGeometry(*robot.model);
+    if (robot.link_poses.size() != geometry.size())
+      throw std::invalid_argument("Scene: robot " + std::to_string(ri) + " has " +
+                                  std::to_string(robot.link_poses.size()) + " link poses for " +
+                                  std::to_string(geometry.size()) + " links");
+    const Eigen::Vector3f& jersey = options_.team_colours[((robot.team % nteams) + nteams) % nteams];
+    const Eigen::Vector4f jersey4(jersey.x(), jersey.y(), jersey.z(), 1);
+    for (size_t li = 0; li < geometry.size(); ++li) {
+      if (static_cast<int>(ri) == options.hide_robot && static_cast<int>(li) == options.hide_link) continue;
+      const LinkGeometry& g = geometry[li];
+      const Eigen::Matrix3f rot = robot.link_poses[li].linear().cast<float>();
+      const Eigen::Vector3f off = robot.link_poses[li].translation().cast<float>();
+      for (size_t i = 0; i < g.p.size(); ++i) {
+        p.push_back(rot * g.p[i] + off);
+        n.push_back(rot * g.n[i]);
+        c.push_back(g.c[i].w() == 0 ? jersey4 : g.c[i]);
+      }
+    }
+  }
+  if (p.empty()) return;
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(3, GL_FLOAT, sizeof(Eigen::Vector3f), p.data());
+  glNormalPointer(GL_FLOAT, sizeof(Eigen::Vector3f), n.data());
+  glColorPointer(4, GL_FLOAT, sizeof(Eigen::Vector4f), c.data());
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(p.size()));
+  glDisableClientState(GL_COLOR_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
 }
 
 void Scene::draw(uint64_t context_id, const DrawOptions& options) const {
@@ -457,8 +538,9 @@ void Scene::draw(uint64_t context_id, const DrawOptions& options) const {
     glCallList(g.ball);
     glPopMatrix();
   }
-  for (size_t i = 0; i < robots.size(); ++i)
-    if (robots[i].model) drawRobot(static_cast<int>(i), robots[i], options);
+  drawRobots(options);
 }
+
+Scene::~Scene() = default;  // display lists die with their context
 
 }  // namespace simswift::camera

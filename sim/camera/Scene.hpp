@@ -87,13 +87,18 @@ class Scene {
   struct MeshData;
   const MeshData& mesh(const std::string& path, const std::string& link) const;
   void buildLists() const;
-  void drawRobot(int index, const RobotDrawState& robot, const DrawOptions& options) const;
-  void drawShape(const simswift::ShapeSpec& shape, const std::string& link) const;
+  struct LinkGeometry;
+  const std::vector<LinkGeometry>& modelGeometry(const NaoModel& model) const;
+  void drawRobots(const DrawOptions& options) const;
 
   FieldConfig field_;
   SceneOptions options_;
   mutable std::unique_ptr<Gl> gl_;
   mutable std::vector<std::pair<std::string, std::unique_ptr<MeshData>>> meshes_;
+  // Per model (by address: a model must outlive the Scene's use of it).
+  mutable std::vector<std::pair<const NaoModel*, std::vector<LinkGeometry>>> geometry_;
+  mutable std::vector<Eigen::Vector3f> scratch_p_, scratch_n_;
+  mutable std::vector<Eigen::Vector4f> scratch_c_;
 };
 
 }  // namespace simswift::camera

@@ -7,6 +7,8 @@
 //   noise: on                      # or off, or a map of per-sensor switches:
 //                                  # {gyro, accel, angle, fsr, sonar, encoder: on/off}
 //   watchdog: 5                    # s of wall clock a robot thread may take
+//   attach_timeout: 30             # s of wall clock to wait for external robots
+//   base_dir: /path/to/simswift    # optional; where relative model/field paths resolve
 //   physics: {substeps: 2, solver: exact|quick, iterations: 20}
 //   camera: {enabled: off, ...}    # reserved for the camera issue
 //   ball: {x: 1.0, y: 0.0}         # m, field frame

@@ -24,6 +24,10 @@ void apply(agent::motion::MotionConfig& c, const std::string& k, double v) {
   else if (k == "T") w.period = v;
   else if (k == "min") w.switch_min_fraction = v;
   else if (k == "arm") w.arm_swing = v;
+  else if (k == "fg") w.forward_gain = v;
+  else if (k == "lg") w.left_gain = v;
+  else if (k == "tg") w.turn_gain = v;
+  else if (k == "tw") w.turn_width = v;
   else ADD_FAILURE() << "unknown " << k;
 }
 }  // namespace
