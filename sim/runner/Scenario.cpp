@@ -91,9 +91,9 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
   }
 
   if (auto p = top.optionalMap("physics")) {
-    sc.substeps = p->integer("substeps", 2, Range::closed(1, 100));
-    sc.solver = p->choice("solver", "exact", {"exact", "quick"});
-    sc.quick_iterations = p->integer("iterations", 20, Range::closed(1, 1000));
+    sc.substeps = p->integer("substeps", sc.substeps, Range::closed(1, 100));
+    sc.solver = p->choice("solver", sc.solver, {"exact", "quick"});
+    sc.quick_iterations = p->integer("iterations", sc.quick_iterations, Range::closed(1, 1000));
     p->finish();
   }
   if (auto c = top.optionalMap("camera")) {

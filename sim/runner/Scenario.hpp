@@ -9,7 +9,7 @@
 //   watchdog: 5                    # s of wall clock a robot thread may take
 //   attach_timeout: 30             # s of wall clock to wait for external robots
 //   base_dir: /path/to/simswift    # optional; where relative model/field paths resolve
-//   physics: {substeps: 2, solver: exact|quick, iterations: 20}
+//   physics: {substeps: 2, solver: quick|exact, iterations: 20}  (defaults: WorldConfig)
 //   camera: {enabled: off, ...}    # reserved for the camera issue
 //   ball: {x: 1.0, y: 0.0}         # m, field frame
 //   robots:
@@ -29,6 +29,7 @@
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/Postures.hpp"
 #include "sim/world/ConfigError.hpp"
+#include "sim/world/World.hpp"
 
 namespace simswift::runner {
 
@@ -56,9 +57,10 @@ struct Scenario {
   NoiseSwitches noise;
   double watchdog_s = 5.0;        // wall-clock s per robot thread answer
   double attach_timeout_s = 30.0; // wall-clock s to wait for external robots
-  int substeps = 2;
-  std::string solver = "exact";
-  int quick_iterations = 20;
+  // Physics defaults follow WorldConfig (QuickStep, 2 x 5 ms; World.cpp says why).
+  int substeps = WorldConfig{}.substeps;
+  std::string solver = WorldConfig{}.solver == WorldConfig::Solver::Quick ? "quick" : "exact";
+  int quick_iterations = WorldConfig{}.quick_iterations;
   bool camera = false;
   std::optional<std::pair<double, double>> ball;  // m, field frame
   std::vector<RobotSpec> robots;

@@ -197,6 +197,10 @@ TEST(Render, MeshThroughAssimpCoversTheSamePixelsAsTheBox) {
   for (int i = 0; i < 640 * 480; ++i) on += masks[0][i], differ += masks[0][i] != masks[1][i];
   EXPECT_GT(on, 5000);             // the cube is in view (~0.13 m across at ~0.9 m)
   EXPECT_LE(differ, on / 200);     // same silhouette up to edge pixels
+  // The shipped head shell loads through assimp too.
+  const NaoModel head = NaoModel::loadUrdfString(
+      urdf("<mesh filename='package://simswift/models/meshes/head_shell.obj'/>"), "head.urdf");
+  EXPECT_NO_THROW(scene.preloadModel(head));
   // A missing mesh is a clear error naming the link and file.
   const NaoModel bad = NaoModel::loadUrdfString(urdf("<mesh filename='meshes/nope.obj'/>"), "bad.urdf");
   try {
