@@ -14,6 +14,33 @@
 
 namespace motion_test {
 
+// Forwards to the MotionModule and checks every command it sends against the
+// joint limits and the per-tick speed limit (the clipper's promise).
+class CheckedMotion : public agent::program::MotionGenerator {
+ public:
+  explicit CheckedMotion(std::unique_ptr<agent::motion::MotionModule> m) : m_(std::move(m)) {}
+  void tick(const agent::libagent::SensorValues& s, int64_t t_us, agent::libagent::JointValues& out) override {
+    m_->tick(s, t_us, out);
+    const auto& lim = agent::motion::jointLimits();
+    for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
+      const float a = out.angles[i];
+      if (!(a >= lim[i].lower && a <= lim[i].upper)) ++limit_violations;
+      if (have_prev_ && std::fabs(a - prev_[i]) > lim[i].max_velocity * agent::motion::kMotionTick + 1e-6)
+        ++speed_violations;
+      prev_[i] = a;
+    }
+    have_prev_ = true;
+    ++ticks;
+  }
+  agent::motion::MotionModule& module() { return *m_; }
+  int64_t limit_violations = 0, speed_violations = 0, ticks = 0;
+
+ private:
+  std::unique_ptr<agent::motion::MotionModule> m_;
+  float prev_[agent::libagent::kNumJoints] = {};
+  bool have_prev_ = false;
+};
+
 struct Pose2 {
   double x, y, theta;  // m, m, rad (field frame)
 };
@@ -27,7 +54,9 @@ class MotionHarness {
       : runner_(makeScenario(seed, x, y, theta, extra_yaml)) {
     auto m = std::make_unique<agent::motion::MotionModule>(board_, cfg);
     motion_ = m.get();
-    runner_.setMotionGenerator(0, std::move(m));
+    auto c = std::make_unique<CheckedMotion>(std::move(m));
+    checked_ = c.get();
+    runner_.setMotionGenerator(0, std::move(c));
     runner_.start();
   }
 
@@ -90,6 +119,17 @@ class MotionHarness {
   agent::blackboard::Blackboard board_;
   simswift::runner::Runner runner_;
   agent::motion::MotionModule* motion_ = nullptr;
+  CheckedMotion* checked_ = nullptr;
+
+ public:
+  const CheckedMotion& checked() const { return *checked_; }
+
+  // A push: adds `dv` (m/s, field frame) to the torso's velocity.
+  void push(double vx, double vy) {
+    dBodyID b = runner_.world().robot(0).torsoBody();
+    const dReal* v = dBodyGetLinearVel(b);
+    dBodySetLinearVel(b, v[0] + vx, v[1] + vy, v[2]);
+  }
 };
 
 inline double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }

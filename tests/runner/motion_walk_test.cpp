@@ -1,6 +1,7 @@
-// Walk tests in physics (issue 3): the MotionModule drives the simulated NAO
-// through the libagent block only. Seeded, noise on. Figures are printed so
-// the achieved speeds can be read from the test log.
+// Motion in physics (issue 3): the MotionModule drives the simulated NAO
+// through the libagent block only; the test plays Behaviour through the
+// Blackboard. Seeded, noise on. Achieved figures are printed.
+// Units: m / rad in the field frame, mm/s and rad/s for commands.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -9,30 +10,163 @@
 
 using agent::blackboard::ActionType;
 using motion_test::MotionHarness;
+using motion_test::Pose2;
+using motion_test::wrapAngle;
+
+namespace {
+
+// Displacement from a to b in a's heading frame (m): forward, left.
+void relative(const Pose2& a, const Pose2& b, double* fwd, double* left) {
+  const double c = std::cos(a.theta), s = std::sin(a.theta);
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  *fwd = c * dx + s * dy;
+  *left = -s * dx + c * dy;
+}
+
+}  // namespace
 
 TEST(MotionPhysics, StandsStill) {
   MotionHarness h(1);
   h.request(ActionType::STAND);
   EXPECT_TRUE(h.run(3.0));
   const auto p = h.pose();
-  std::printf("stand: torso z %.3f m, pose (%.3f, %.3f, %.3f)\n", h.torsoHeight(), p.x, p.y, p.theta);
-  EXPECT_NEAR(p.x, -3.0, 0.05);
+  EXPECT_NEAR(p.x, -3.0, 0.03);
+  EXPECT_NEAR(p.y, 0.0, 0.03);
 }
 
-TEST(MotionPhysics, WalkForwardProbe) {
-  MotionHarness h(1);
+// Walk forward at 300 mm/s for 20 s: no fall, >= 90 % of the speed, sideways
+// drift <= 10 % of the distance. Measured over the 20 s after a 2 s start.
+TEST(MotionPhysics, WalkForwardFullSpeed) {
+  MotionHarness h(11, -4.0, 0.0, 0.0);
   h.request(ActionType::STAND);
   ASSERT_TRUE(h.run(1.0));
-  const auto p0 = h.pose();
   h.request(ActionType::WALK, 300, 0, 0);
-  bool ok = true;
-  for (int i = 0; i < 10; ++i) {
-    ok = h.run(1.0) && ok;
-    const auto p = h.pose();
-    std::printf("t %d: pose (%.3f, %.3f, %.3f) z %.3f posture %s odo %.0f\n", i + 1, p.x, p.y, p.theta,
-                h.torsoHeight(), agent::blackboard::postureName(h.state().posture), h.state().odometry.forward);
+  bool ok = h.run(2.0);
+  const Pose2 p0 = h.pose();
+  ok = h.run(20.0) && ok;
+  double fwd, left;
+  relative(p0, h.pose(), &fwd, &left);
+  std::printf("[motion] forward 300 mm/s x 20 s: %.0f mm/s (%.0f %%), drift %.0f mm (%.0f %% of distance)\n",
+              fwd / 20 * 1000, fwd / 20 / 0.3 * 100, left * 1000, std::fabs(left / fwd) * 100);
+  EXPECT_TRUE(ok) << "fell";
+  EXPECT_GE(fwd / 20.0, 0.9 * 0.3);
+  EXPECT_LE(std::fabs(left), 0.1 * std::fabs(fwd));
+  EXPECT_EQ(h.checked().limit_violations, 0);
+  EXPECT_EQ(h.checked().speed_violations, 0);
+}
+
+// Side-step at 200 mm/s and turn in place at 0.8 rad/s: >= 80 %, no fall.
+TEST(MotionPhysics, SideStepFullSpeed) {
+  MotionHarness h(12);
+  h.request(ActionType::STAND);
+  ASSERT_TRUE(h.run(1.0));
+  h.request(ActionType::WALK, 0, 200, 0);
+  bool ok = h.run(2.0);
+  const Pose2 p0 = h.pose();
+  ok = h.run(8.0) && ok;
+  double fwd, left;
+  relative(p0, h.pose(), &fwd, &left);
+  std::printf("[motion] left 200 mm/s x 8 s: %.0f mm/s (%.0f %%), forward drift %.0f mm\n", left / 8 * 1000,
+              left / 8 / 0.2 * 100, fwd * 1000);
+  EXPECT_TRUE(ok) << "fell";
+  EXPECT_GE(left / 8.0, 0.8 * 0.2);
+}
+
+TEST(MotionPhysics, TurnInPlaceFullSpeed) {
+  MotionHarness h(13);
+  h.request(ActionType::STAND);
+  ASSERT_TRUE(h.run(1.0));
+  h.request(ActionType::WALK, 0, 0, 0.8);
+  bool ok = h.run(2.0);
+  double turned = 0, last = h.pose().theta;
+  for (int i = 0; i < 800; ++i) {
+    ok = h.run(0.01) && ok;
+    const double th = h.pose().theta;
+    turned += wrapAngle(th - last);
+    last = th;
   }
-  const auto p1 = h.pose();
-  std::printf("walk forward: %.3f m in 10 s (%.0f%% of 3 m)\n", p1.x - p0.x, (p1.x - p0.x) / 3.0 * 100);
+  std::printf("[motion] turn 0.8 rad/s x 8 s: %.3f rad/s (%.0f %%)\n", turned / 8, turned / 8 / 0.8 * 100);
+  EXPECT_TRUE(ok) << "fell";
+  EXPECT_GE(turned / 8.0, 0.8 * 0.8);
+}
+
+// A new random command every 2 s (seeded) for 60 s: no fall.
+TEST(MotionPhysics, RandomCommandsNoFall) {
+  MotionHarness h(14, 0.0, 0.0, 0.0);
+  uint64_t x = 14;
+  auto rnd = [&x]() {  // uniform in [-1, 1)
+    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+    return 2.0 * static_cast<double>(x >> 11) / 9007199254740992.0 - 1.0;
+  };
+  bool ok = true;
+  int falls = 0;
+  for (int i = 0; i < 30; ++i) {
+    h.request(ActionType::WALK, 300 * rnd(), 200 * rnd(), 0.8 * rnd());
+    const bool up = h.run(2.0);
+    if (!up) ++falls;
+    ok = ok && up;
+  }
+  std::printf("[motion] random commands 60 s: %d two-second spans with a fall\n", falls);
   EXPECT_TRUE(ok);
+}
+
+// Walk to a point 2 m ahead using only odometry, then stop: error <= 150 mm.
+TEST(MotionPhysics, WalkToPointByOdometry) {
+  MotionHarness h(15, -3.0, 0.0, 0.0);
+  h.request(ActionType::STAND);
+  ASSERT_TRUE(h.run(1.0));
+  const Pose2 p0 = h.pose();
+  const auto o0 = h.state().odometry;
+  const double goal = 2000;  // mm ahead
+  bool ok = true;
+  for (int i = 0; i < 3000; ++i) {
+    const auto o = h.state().odometry;
+    // Goal in the robot's current odometry frame (mm).
+    const double gx = p0.x * 0 + goal - (o.x - o0.x), gy = -(o.y - o0.y);
+    const double c = std::cos(o.theta - o0.theta), s = std::sin(o.theta - o0.theta);
+    const double rx = c * gx + s * gy, ry = -s * gx + c * gy;
+    const double dist = std::hypot(rx, ry);
+    if (dist < 30) break;
+    const double speed = std::min(300.0, 1.5 * dist);
+    h.request(ActionType::WALK, speed * rx / dist, speed * ry / dist, std::max(-0.5, std::min(0.5, std::atan2(ry, rx))));
+    ok = h.run(0.1) && ok;
+  }
+  h.request(ActionType::STAND);
+  ok = h.run(2.0) && ok;
+  double fwd, left;
+  relative(p0, h.pose(), &fwd, &left);
+  const double err = std::hypot(fwd * 1000 - goal, left * 1000);
+  std::printf("[motion] walk to 2 m by odometry: ended at (%.0f, %.0f) mm, error %.0f mm\n", fwd * 1000, left * 1000, err);
+  EXPECT_TRUE(ok);
+  EXPECT_LE(err, 150);
+}
+
+// Odometry error after 3 m of walking: <= 10 %.
+TEST(MotionPhysics, OdometryAfterThreeMetres) {
+  MotionHarness h(16, -4.0, 0.0, 0.0);
+  h.request(ActionType::STAND);
+  ASSERT_TRUE(h.run(1.0));
+  const Pose2 p0 = h.pose();
+  const auto o0 = h.state().odometry;
+  h.request(ActionType::WALK, 250, 0, 0);
+  bool ok = true;
+  double travelled = 0;
+  for (int i = 0; i < 300 && travelled < 3.0; ++i) {
+    ok = h.run(0.1) && ok;
+    const Pose2 p = h.pose();
+    travelled = std::hypot(p.x - p0.x, p.y - p0.y);
+  }
+  h.request(ActionType::STAND);
+  ok = h.run(2.0) && ok;
+  const Pose2 p1 = h.pose();
+  const auto o1 = h.state().odometry;
+  // Both in the start frame: truth from the field, estimate from odometry.
+  double tf, tl;
+  relative(p0, p1, &tf, &tl);
+  const double ex = (o1.x - o0.x) / 1000, ey = (o1.y - o0.y) / 1000;
+  const double err = std::hypot(ex - tf, ey - tl), dist = std::hypot(tf, tl);
+  std::printf("[motion] odometry over %.2f m: estimate (%.2f, %.2f) truth (%.2f, %.2f), error %.0f %%\n", dist, ex, ey,
+              tf, tl, err / dist * 100);
+  EXPECT_TRUE(ok);
+  EXPECT_LE(err, 0.1 * dist);
 }
