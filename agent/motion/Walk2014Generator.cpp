@@ -163,7 +163,11 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       const double D = cfg_.turn_gain * step_speed_.turn * period_;
       const bool lead = (L > 0 && swing_left_) || (L < 0 && !swing_left_);
       const double y_swing = lead ? L / 2 : 0.0, y_support = lead ? -L / 2 : 0.0;
-      const double th_target = swing_left_ ? D / 2 : -D / 2;
+      // Turning also leads and trails so the feet only ever toe out (toed-in
+      // soles collide): the leading step opens both feet to |D|, the
+      // trailing step closes them, and the body turns D on each.
+      const bool lead_turn = (D > 0 && swing_left_) || (D < 0 && !swing_left_);
+      const double th_target = lead_turn ? std::fabs(D) : 0.0;
       const double ps = parabolicStep(frac);
 
       // Support foot (x, y, yaw) before this tick, for odometry.

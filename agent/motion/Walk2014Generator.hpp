@@ -8,8 +8,9 @@
 // per step. Sideways, the leading foot (left for + left) steps out by L/2
 // while the support foot goes to -L/2, and the trailing step brings both back
 // to 0: L = left * 2T per cycle. Turning uses one yaw state th (left foot
-// +th, right foot -th, as the one HipYawPitch motor dictates) moving to
-// +-turn*T/2 each step.
+// +th, right foot -th, as the one HipYawPitch motor dictates); it too leads
+// and trails: th opens to |turn| * T on the leading step and closes to 0 on
+// the trailing one, so the body turns turn * T per step.
 //
 // Also the walk's stand: when not stepping it holds the feet together at
 // stand height, sinking to walk height before the first step and rising after

@@ -30,8 +30,7 @@ struct WalkConfig {
 
   // --- Swing foot lift (mm): base + per (m/s) of forward and sideways speed,
   // i.e. 0.014 m + 0.01 m per m/s forward + 0.02 m per m/s sideways.
-  // 14 mm in facts.md; 20 mm clears the carpet with the simulated servo lag.
-  double base_lift = 20.0;
+  double base_lift = 14.0;
   double lift_per_forward = 10.0;  // mm per (m/s)
   double lift_per_left = 20.0;     // mm per (m/s)
 
@@ -41,7 +40,7 @@ struct WalkConfig {
   double torso_lean = 0.0;          // rad, + = torso pitched forward (soles pitched back)
   // Sideways hip sway toward the support foot (mm, peak). Walk2014 relies on
   // the gait's own rocking; 0 keeps it that way.
-  double sway = 15.0;  // tuned in simswift: steadier steps, less slip
+  double sway = 0.0;
 
   // --- Support-foot switching from the FSRs' lateral centre of pressure
   double switch_min_fraction = 0.75;  // of the period before a CoP sign change counts
@@ -55,13 +54,13 @@ struct WalkConfig {
   double gyro_roll_gain = 1.0 / 25.0;   // rad of ankle roll per rad/s of GyrX
 
   // --- Arms
-  double arm_swing = 0.012;        // rad of shoulder pitch per mm of the opposite foot's x
+  double arm_swing = 0.006;        // rad of shoulder pitch per mm of the opposite foot's x
   double arm_pitch = 1.5;          // rad, arms hanging (ShoulderPitch)
   double arm_roll = 0.15;          // rad, away from the body (mirrored on the right)
 
   // Feet apart by this much more per rad/s of turn (mm per rad/s, each
   // side): toed-in feet otherwise touch (the sole gap is only 11 mm).
-  double turn_width = 25.0;
+  double turn_width = 0.0;  // 0: turning only toes out (lead/trail), no collision
 
   // --- Calibration (measured in simswift, see tests/runner/motion_*):
   // step geometry gains, so that the achieved speed matches the command
