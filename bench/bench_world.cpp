@@ -13,11 +13,12 @@
 #include <vector>
 
 #include "BenchResults.hpp"
+#include "agent/program/Postures.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
 
 using namespace simswift;
-namespace la = agent::libagent;
+namespace ap = agent::program;
 
 int main(int argc, char** argv) {
   const double sim_seconds = argc > 1 ? std::atof(argv[1]) : 20.0;
@@ -25,20 +26,11 @@ int main(int argc, char** argv) {
       NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
   const FieldConfig field = FieldConfig::loadYaml(SIMSWIFT_SOURCE_DIR "/fields/spl_2017.yaml");
 
-  // Knee-bent stand (rad), libagent order; everything else 0, stiffness 1.
-  std::array<float, 25> stand{}, stiff{};
-  stiff.fill(1.0f);
-  for (int leg : {0, 1}) {
-    stand[leg ? la::Joints::RHipPitch : la::Joints::LHipPitch] = -0.4f;
-    stand[leg ? la::Joints::RKneePitch : la::Joints::LKneePitch] = 0.8f;
-    stand[leg ? la::Joints::RAnklePitch : la::Joints::LAnklePitch] = -0.4f;
-  }
-  stand[la::Joints::LShoulderPitch] = stand[la::Joints::RShoulderPitch] = 1.5f;
-  stand[la::Joints::LElbowRoll] = -0.3f;
-  stand[la::Joints::RElbowRoll] = 0.3f;
-  std::vector<double> posture(model->joints().size(), 0.0);
-  for (int i = 0; i < 25; ++i) posture[model->jointForLibagent(i)] = stand[i];
-  posture[model->jointIndex("RHipYawPitch")] = posture[model->jointForLibagent(la::Joints::LHipYawPitch)];
+  // The robot program's standing posture (agent/program/Postures.hpp), stiffness 1.
+  const ap::JointArray stand = ap::postureAngles(ap::Posture::Stand);
+  ap::JointArray stiff;
+  stiff.fill(ap::postureStiffness(ap::Posture::Stand));
+  const std::vector<double> posture = model->postureFromLibagent(stand);
 
   std::printf("simswift world benchmark: %.0f simulated s per case, physics + sensors, one core\n",
               sim_seconds);

@@ -283,4 +283,16 @@ double NaoModel::totalMass() const {
   return m;
 }
 
+std::vector<double> NaoModel::postureFromLibagent(const std::array<float, 25>& angles) const {
+  std::vector<double> q(joints_.size(), 0.0);
+  for (int i = 0; i < 25; ++i)
+    if (libagent_to_joint_[i] >= 0) q[libagent_to_joint_[i]] = angles[i];
+  for (size_t j = 0; j < joints_.size(); ++j)
+    if (joints_[j].mimic) {
+      const int leader = jointIndex(*joints_[j].mimic);
+      if (leader >= 0) q[j] = joints_[j].mimic_multiplier * q[leader];
+    }
+  return q;
+}
+
 }  // namespace simswift

@@ -82,6 +82,10 @@ class NaoModel {
   // The joint driven by libagent slot i (0..24).
   int jointForLibagent(int i) const { return libagent_to_joint_[i]; }
 
+  // A posture in model joint order from 25 libagent-order angles (rad);
+  // mimicking joints (RHipYawPitch) copy the joint they follow.
+  std::vector<double> postureFromLibagent(const std::array<float, 25>& angles) const;
+
  private:
   std::vector<LinkSpec> links_;
   std::vector<JointSpec> joints_;

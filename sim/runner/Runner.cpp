@@ -56,12 +56,7 @@ void Runner::setMotionGenerator(int robot, std::unique_ptr<ap::MotionGenerator> 
 }
 
 std::vector<double> Runner::modelPosture(const ap::JointArray& angles) const {
-  std::vector<double> q(model_->joints().size(), 0.0);
-  for (int i = 0; i < al::kNumJoints; ++i) {
-    const int j = model_->jointForLibagent(i);
-    if (j >= 0) q[j] = angles[i];
-  }
-  return q;  // RobotBody sets mimicking joints (RHipYawPitch) itself
+  return model_->postureFromLibagent(angles);
 }
 
 void Runner::start() {
