@@ -26,7 +26,23 @@ AgentConnection::AgentConnection(AgentBlock* block, sem_t* tick, CameraBlock* ca
 }
 
 AgentConnection AgentConnection::attachByName(int team, int player) {
-  return attachNamed(memoryName(team, player), semaphoreName(team, player));
+  AgentConnection c = attachNamed(memoryName(team, player), semaphoreName(team, player));
+  // The images block exists only while the simulator renders; without it
+  // the program runs on the frame's observations alone.
+  const std::string images = cameraImagesName(team, player);
+  const int fd = shm_open(images.c_str(), O_RDONLY, 0);
+  if (fd >= 0) {
+    struct stat st {};
+    if (fstat(fd, &st) == 0 && static_cast<size_t>(st.st_size) >= sizeof(CameraImages)) {
+      void* p = mmap(nullptr, sizeof(CameraImages), PROT_READ, MAP_SHARED, fd, 0);
+      if (p != MAP_FAILED) {
+        c.images_mapping_ = p;
+        c.images_ = static_cast<const CameraImages*>(p);
+      }
+    }
+    close(fd);
+  }
+  return c;
 }
 
 AgentConnection AgentConnection::attachNamed(const std::string& memory, const std::string& semaphore) {
@@ -76,11 +92,14 @@ AgentConnection AgentConnection::attachNamed(const std::string& memory, const st
 }
 
 AgentConnection::AgentConnection(AgentConnection&& o) noexcept
-    : block_(o.block_), tick_(o.tick_), camera_(o.camera_), mapping_(o.mapping_),
+    : block_(o.block_), tick_(o.tick_), camera_(o.camera_), images_(o.images_),
+      images_mapping_(o.images_mapping_), mapping_(o.mapping_),
       mapping_size_(o.mapping_size_), named_sem_(o.named_sem_), memory_name_(std::move(o.memory_name_)) {
   o.block_ = nullptr;
   o.tick_ = nullptr;
   o.camera_ = nullptr;
+  o.images_ = nullptr;
+  o.images_mapping_ = nullptr;
   o.mapping_ = nullptr;
   o.named_sem_ = false;
 }
@@ -90,7 +109,10 @@ AgentConnection::~AgentConnection() { release(); }
 void AgentConnection::release() {
   if (named_sem_ && tick_) sem_close(tick_);
   if (mapping_) munmap(mapping_, mapping_size_);
+  if (images_mapping_) munmap(images_mapping_, sizeof(CameraImages));
   mapping_ = nullptr;
+  images_mapping_ = nullptr;
+  images_ = nullptr;
   tick_ = nullptr;
   block_ = nullptr;
 }

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "agent/libagent/AgentShared.hpp"
+#include "agent/libagent/CameraImages.hpp"
 #include "agent/libagent/CameraShared.hpp"
 
 namespace agent::libagent {
@@ -70,6 +71,13 @@ class AgentConnection {
   bool waitFrame();
   const CameraFrame& frame() const { return camera_->frame; }
   void perceptionDone();
+  // The rendered camera images, or null when the simulator does not render.
+  // Valid for a frame when frame().images_valid is 1; read them between
+  // waitFrame() and perceptionDone() (the simulator writes them before
+  // posting frame_ready and not again until perception_done).
+  const CameraImages* images() const { return images_; }
+  // In-process: the simulator hands over its images block (before start).
+  void setImages(const CameraImages* images) { images_ = images; }
 
   // Simulated time (us) and tick of the sensors in the latest slot.
   int64_t simTimeUs() const { return block_->lockstep.sim_time_us; }
@@ -86,7 +94,9 @@ class AgentConnection {
   AgentBlock* block_ = nullptr;
   sem_t* tick_ = nullptr;
   CameraBlock* camera_ = nullptr;
+  const CameraImages* images_ = nullptr;
   // Named mode only:
+  void* images_mapping_ = nullptr;  // read-only map of the images block
   void* mapping_ = nullptr;
   size_t mapping_size_ = 0;
   bool named_sem_ = false;

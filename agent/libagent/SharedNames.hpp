@@ -13,6 +13,7 @@
 #include <string>
 
 #include "agent/libagent/AgentShared.hpp"
+#include "agent/libagent/CameraImages.hpp"
 #include "agent/libagent/CameraShared.hpp"
 
 namespace agent::libagent {
@@ -33,6 +34,10 @@ inline std::string memoryName(int team, int player) {
 }
 inline std::string semaphoreName(int team, int player) {
   return std::string(kSemaphoreName) + "-" + std::to_string(robotSuffix(team, player));
+}
+// The camera images block (only while the simulator renders).
+inline std::string cameraImagesName(int team, int player) {
+  return std::string(kCameraImagesName) + "-" + std::to_string(robotSuffix(team, player));
 }
 // "t1p2": used in thread names and messages.
 inline std::string robotTag(int team, int player) {

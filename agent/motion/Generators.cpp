@@ -172,27 +172,29 @@ void KeyframeGenerator::tick(double dt, libagent::JointValues& out, bool with_he
 std::vector<Keyframe> getupFrontFrames(const WalkConfig& cfg) {
   std::vector<Keyframe> f;
   JointArray a{};
-  // Face down: arms to the sides of the chest, palms under the shoulders.
-  setArms(a, 0.0f, 0.5f, 0.0f, -1.4f);
+  // Face down: hands under the shoulders, elbows bent, legs straight.
+  setArms(a, 0.0f, 0.4f, 0.0f, -1.3f);
   setLegs(a, 0, 0, 0, 0, 0);
-  f.push_back({0.5, a, 1.0f});
-  // Straighten the arms: the chest comes up off the ground.
-  setArms(a, 0.2f, 0.15f, 0.0f, -0.05f);
   f.push_back({0.4, a, 1.0f});
-  // Pull the knees under the hips (kneeling on all fours).
-  setLegs(a, -0.5f, 0.2f, -1.5f, 2.1f, -1.0f);
-  f.push_back({0.7, a, 1.0f});
-  // Push back onto the feet: arms swing back, hips open a little.
-  setArms(a, 1.0f, 0.15f, 0.0f, -0.05f);
-  setLegs(a, -0.3f, 0.1f, -1.3f, 2.1f, -1.1f);
-  f.push_back({0.6, a, 1.0f});
-  // Squat.
-  setArms(a, 1.5f, 0.15f, -1.2f, -0.4f);
-  setLegs(a, 0, 0, -1.2f, 2.1f, -0.95f);
+  // Straighten the arms: the chest comes up off the ground.
+  setArms(a, 0.0f, 0.15f, 0.0f, -0.05f);
+  f.push_back({0.4, a, 1.0f});
+  // Pull the knees under the hips; HipYawPitch opens the legs so the thighs
+  // can fold further than HipPitch alone allows.
+  setLegs(a, -1.0f, 0.35f, -1.53f, 2.1f, -1.1f);
+  f.push_back({0.8, a, 1.0f});
+  // Hands planted, arms swing toward the head: the body moves back over the knees.
+  setArms(a, -0.7f, 0.15f, 0.0f, -0.05f);
+  f.push_back({0.8, a, 1.0f});
+  // Sit back into a squat, legs closing, arms forward for balance.
+  setArms(a, 0.3f, 0.15f, 0.0f, -0.05f);
+  setLegs(a, -0.4f, 0.1f, -1.4f, 2.1f, -1.1f);
+  f.push_back({0.8, a, 1.0f});
+  setArms(a, 1.0f, 0.15f, -1.2f, -0.4f);
+  setLegs(a, 0, 0, -1.1f, 2.1f, -1.1f);
   f.push_back({0.6, a, 1.0f});
   // Crouch, then stand.
-  JointArray c = crouchAngles();
-  f.push_back({0.7, c, 1.0f});
+  f.push_back({0.8, crouchAngles(), 1.0f});
   f.push_back({0.8, walkStandAngles(cfg), 1.0f});
   return f;
 }

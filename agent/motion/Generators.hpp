@@ -79,9 +79,9 @@ std::vector<Keyframe> getupBackFrames(const WalkConfig& cfg);   // lying on the 
 // kicking foot, wind back, strike (faster with more power, turned toward the
 // direction), retract, put down, shift back to the walk's stand.
 struct KickConfig {
-  double shift = 42.0;         // mm the hips move sideways over the support foot
+  double shift = 70.0;         // mm the hips move sideways over the support foot (tuned in simswift)
   double height = 215.0;       // mm hip height while kicking
-  double lift = 35.0;          // mm kicking foot lift
+  double lift = 45.0;          // mm kicking foot lift
   double wind_back = 55.0;     // mm behind the hip at full power
   double reach = 110.0;        // mm ahead of the hip at the strike
   double strike_time_fast = 0.07;  // s at power 1

@@ -49,19 +49,23 @@ const std::array<JointLimit, libagent::kNumJoints>& jointLimits() {
 void Clipper::clip(libagent::JointValues& cmd, const libagent::JointValues& sensed) {
   const auto& lim = jointLimits();
   for (int i = 0; i < libagent::kNumJoints; ++i) {
+    // 1e-5 rad inside the limits: a float at the limit may round past the
+    // body side's double-precision limit.
+    const float lo = lim[i].lower + 1e-5f, hi = lim[i].upper - 1e-5f;
     float a = cmd.angles[i];
     if (!std::isfinite(a)) a = primed_ ? last_[i] : sensed.angles[i];
-    a = std::min(lim[i].upper, std::max(lim[i].lower, a));
+    if (!std::isfinite(a)) a = 0.0f;
+    a = std::min(hi, std::max(lo, a));
     if (!primed_) {
       // Start where the joint is (itself clamped into range).
       float s = sensed.angles[i];
       if (!std::isfinite(s)) s = 0.0f;
-      last_[i] = std::min(lim[i].upper, std::max(lim[i].lower, s));
+      last_[i] = std::min(hi, std::max(lo, s));
     }
     // A hair under the limit so float rounding never exceeds it.
     const float step = static_cast<float>(lim[i].max_velocity * kMotionTick * speed_fraction_) * 0.9999f;
     a = std::min(last_[i] + step, std::max(last_[i] - step, a));
-    a = std::min(lim[i].upper, std::max(lim[i].lower, a));
+    a = std::min(hi, std::max(lo, a));
     cmd.angles[i] = a;
     last_[i] = a;
     float s = cmd.stiffnesses[i];

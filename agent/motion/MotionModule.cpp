@@ -179,7 +179,11 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
         if (want == ActionType::GETUP_BACK) front = false;
         JointArray a{};
         for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = sensors.joints.angles[i];
-        keyframes_.start(front ? getupFrontFrames(cfg_.walk) : getupBackFrames(cfg_.walk), a);
+        const std::vector<Keyframe>& custom = front ? cfg_.getup_front : cfg_.getup_back;
+        keyframes_.start(!custom.empty() ? custom
+                         : front         ? getupFrontFrames(cfg_.walk)
+                                         : getupBackFrames(cfg_.walk),
+                         a);
         ++getup_attempts_;
         getup_front_ = front;
         mode_ = Mode::Getup;

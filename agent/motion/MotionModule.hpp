@@ -32,6 +32,8 @@ struct MotionConfig {
   float limp_stiffness = 0.1f;   // LIMP action
   double lifted_weight = 4.0;    // N on both feet below which the robot is in the air
   double transition_time = 0.8;  // s to move to the stand from another posture
+  // Get-up sequences; empty = the built-in ones (Generators.hpp).
+  std::vector<Keyframe> getup_front, getup_back;
 };
 
 class MotionModule : public agent::program::MotionGenerator {

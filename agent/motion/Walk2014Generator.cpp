@@ -104,6 +104,7 @@ void Walk2014Generator::reset() {
   xl0_ = xr0_ = yl0_ = yr0_ = th0_ = 0;
   lift_ = 0;
   gyro_x_ = gyro_y_ = 0;
+  yaw_measured_ = yaw_time_ = turn_correction_ = 0;
 }
 
 void Walk2014Generator::setRequest(bool walk, const WalkSpeed& speed) {
@@ -118,6 +119,14 @@ void Walk2014Generator::beginStep() {
   } else {
     swing_left_ = !swing_left_;
   }
+  // Heading hold from the step just finished (not on the first step).
+  if (state_ == State::Walking && yaw_time_ > 0.5 * period_) {
+    const double measured = yaw_measured_ / yaw_time_;
+    turn_correction_ += cfg_.heading_gain * (step_speed_.turn - measured);
+    turn_correction_ = clampAbs(turn_correction_, cfg_.heading_max_correction);
+  }
+  if (state_ != State::Walking || !want_walk_) turn_correction_ = 0;  // stopping: no hold
+  yaw_measured_ = yaw_time_ = 0;
   step_speed_ = ratchet(step_speed_, want_walk_ ? target_ : WalkSpeed{}, cfg_);
   period_ = cfg_.period + cfg_.period_side_extra * std::fabs(step_speed_.left) / cfg_.max_left;
   xl0_ = xl_; xr0_ = xr_; yl0_ = yl_; yr0_ = yr_; th0_ = th_;
@@ -160,7 +169,7 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       const double frac = std::min(1.0, t_ / period_);
       const double F = cfg_.forward_gain * step_speed_.forward * period_;
       const double L = cfg_.left_gain * step_speed_.left * 2 * period_;
-      const double D = cfg_.turn_gain * step_speed_.turn * period_;
+      const double D = (cfg_.turn_gain * step_speed_.turn + turn_correction_) * period_;
       const bool lead = (L > 0 && swing_left_) || (L < 0 && !swing_left_);
       const double y_swing = lead ? L / 2 : 0.0, y_support = lead ? -L / 2 : 0.0;
       // Turning also leads and trails so the feet only ever toe out (toed-in
@@ -191,9 +200,17 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       odo_.forward = -(sx1 - sx0) * cfg_.odometry_forward_scale;
       odo_.left = -(sy1 - sy0) * cfg_.odometry_left_scale;
       odo_.turn = -(syaw1 - syaw0) * cfg_.odometry_turn_scale;
+      const FootPressure pressure = footPressure(s);
+      if (pressure.total >= cfg_.min_foot_weight) {
+        const double rate = s[S::InertialSensor_GyroscopeZ];
+        yaw_measured_ += rate * dt;
+        yaw_time_ += dt;
+        if (cfg_.odometry_turn_from_gyro) odo_.turn = rate * dt;
+      }
 
-      if (switch_.shouldSwitch(t_, period_, swing_left_, footPressure(s))) {
+      if (switch_.shouldSwitch(t_, period_, swing_left_, pressure)) {
         const bool settled = step_speed_.forward == 0 && step_speed_.left == 0 && step_speed_.turn == 0 &&
+                             std::fabs(turn_correction_) < 1e-9 &&
                              std::fabs(xl_) < 1 && std::fabs(xr_) < 1 && std::fabs(yl_) < 1 &&
                              std::fabs(yr_) < 1 && std::fabs(th_) < 0.01;
         if (!want_walk_ && settled) {

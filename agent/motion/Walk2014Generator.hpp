@@ -83,6 +83,7 @@ class Walk2014Generator {
   const WalkSpeed& latched() const { return step_speed_; }  // this step's speed
   double stepTime() const { return t_; }
   double stepPeriod() const { return period_; }
+  double turnCorrection() const { return turn_correction_; }
   int64_t stepsTaken() const { return steps_; }
 
   // Body motion executed during the last tick, robot frame (mm, mm, rad),
@@ -118,6 +119,9 @@ class Walk2014Generator {
   double xl_ = 0, xr_ = 0, yl_ = 0, yr_ = 0, th_ = 0;
   double lift_ = 0;  // mm, this step's peak lift
   double gyro_x_ = 0, gyro_y_ = 0;  // filtered rad/s
+  double yaw_measured_ = 0;    // rad turned this step (GyroscopeZ), on the ground
+  double yaw_time_ = 0;        // s of this step spent on the ground
+  double turn_correction_ = 0; // rad/s added to the latched turn (heading hold)
   WalkSpeed odo_;
   Feet feet_;
 };

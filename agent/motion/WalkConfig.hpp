@@ -73,6 +73,16 @@ struct WalkConfig {
   double odometry_left_scale = 0.8;
   double odometry_turn_scale = 0.6;
 
+  // --- Heading hold: the yaw rate measured by GyroscopeZ over each step is
+  // compared with the step's turn; a fraction of the error is added to the
+  // next steps' turn (rad/s), up to a limit. Slipping feet otherwise make a
+  // straight walk curve. Only while the feet carry weight.
+  double heading_gain = 0.3;          // of the rate error (rad/s) per step
+  double heading_max_correction = 0.3;  // rad/s
+  // Odometry turn from the gyro (GyroscopeZ, rad/s) while stepping on the
+  // ground; from the feet (x odometry_turn_scale) otherwise.
+  bool odometry_turn_from_gyro = true;
+
   double stiffness = 1.0;  // leg and arm stiffness while walking
 };
 

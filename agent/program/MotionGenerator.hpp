@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "agent/libagent/AgentShared.hpp"
+#include "agent/libagent/CameraImages.hpp"
 #include "agent/libagent/CameraShared.hpp"
 #include "agent/program/Postures.hpp"
 
@@ -80,9 +81,14 @@ class PerceptionStep {
   virtual ~PerceptionStep() = default;
   virtual void step(const agent::libagent::CameraFrame& frame) { ++frames_; }
   int64_t frames() const { return frames_; }
+  // The rendered images (null unless the simulator renders); hold the frame
+  // passed to step() when frame.images_valid is 1. Set by RobotProgram.
+  void setImages(const agent::libagent::CameraImages* images) { images_ = images; }
+  const agent::libagent::CameraImages* images() const { return images_; }
 
  protected:
   int64_t frames_ = 0;
+  const agent::libagent::CameraImages* images_ = nullptr;
 };
 
 }  // namespace agent::program

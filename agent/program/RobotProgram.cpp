@@ -35,7 +35,10 @@ void RobotProgram::setMotion(std::unique_ptr<MotionGenerator> motion) {
 void RobotProgram::start() {
   motion_thread_ = std::thread([this] { motionLoop(); });
   const bool with_perception = conn_.hasCamera() && perception_ != nullptr;
-  if (with_perception) perception_thread_ = std::thread([this] { perceptionLoop(); });
+  if (with_perception) {
+    perception_->setImages(conn_.images());
+    perception_thread_ = std::thread([this] { perceptionLoop(); });
+  }
   // Ticks already posted wait in the semaphores, so announcing after the
   // threads were created (not necessarily waiting yet) is safe.
   conn_.announce(with_perception);

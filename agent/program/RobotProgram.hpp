@@ -45,6 +45,8 @@ class RobotProgram {
   const std::string& tag() const { return tag_; }
   int64_t motionTicks() const { return motion_ticks_.load(); }
   int64_t perceptionFrames() const { return perception_frames_.load(); }
+  // The camera images the Perception thread reads (null: no rendering).
+  const agent::libagent::CameraImages* images() const { return conn_.images(); }
   // First exception a thread died of (empty if none).
   std::string error() const;
 

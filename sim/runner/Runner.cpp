@@ -103,6 +103,9 @@ void Runner::start() {
     r.latched.joints = initial;
     if (!external) {
       std::unique_ptr<ap::MotionGenerator> motion = std::move(r.motion_override);
+      if (!motion && (!r.spec.actions.empty() || !r.spec.pushes.empty())) {
+        motion = std::make_unique<agent::motion::ActionScriptMotion>(r.spec.actions);  // the Motion module
+      }
       if (!motion) {
         auto scripted = std::make_unique<ap::ScriptedMotion>(r.spec.posture, r.spec.script);
         scripted->setAnkleGyroDamping(kBuiltinAnkleGyroGain);
@@ -179,6 +182,16 @@ void Runner::tick() {
     }
     world_->robot(static_cast<int>(i)).setCommand(angles, stiff);
     r.sensors->setSonarMode(r.latched.sonar);
+  }
+  // Scenario pushes (actions: {t, push}) due by now: add to the torso's velocity.
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    Robot& r = *robots_[i];
+    while (r.next_push < r.spec.pushes.size() && r.spec.pushes[r.next_push].t_s <= world_->time() + 1e-9) {
+      const RobotSpec::Push& p = r.spec.pushes[r.next_push++];
+      dBodyID torso = world_->robot(static_cast<int>(i)).torsoBody();
+      const dReal* v = dBodyGetLinearVel(torso);
+      dBodySetLinearVel(torso, v[0] + p.vx, v[1] + p.vy, v[2]);
+    }
   }
   // 2.
   world_->step();

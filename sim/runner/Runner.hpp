@@ -100,6 +100,7 @@ class Runner {
     bool perception = false;
     bool fallen = false;
     int falls = 0;
+    size_t next_push = 0;  // next of spec.pushes to apply
   };
 
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;

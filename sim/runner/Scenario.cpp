@@ -1,5 +1,6 @@
 #include "sim/runner/Scenario.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -45,6 +46,43 @@ ScriptStep readStep(const YamlReader& r) {
   }
   r.finish();
   return s;
+}
+
+// One entry of a robot's `actions:` list: a body action or a push.
+void readAction(const YamlReader& r, RobotSpec& rs) {
+  const double t = r.number("t", Range::nonNegative());
+  if (r.has("push")) {
+    if (r.has("action")) r.fail("an actions entry holds either 'action' or 'push', not both");
+    YamlReader p = r.map("push");
+    RobotSpec::Push push;
+    push.t_s = t;
+    push.vx = p.number("x", 0.0);
+    push.vy = p.number("y", 0.0);
+    p.finish();
+    rs.pushes.push_back(push);
+    r.finish();
+    return;
+  }
+  agent::motion::ActionStep a;
+  a.t = t;
+  const std::string name = r.choice("action", "stand",
+                                    {"walk", "stand", "kick", "getup_front", "getup_back", "dead", "crouch",
+                                     "limp", "none"});
+  agent::motion::parseActionType(name, &a.body.type);
+  a.body.forward = static_cast<float>(r.number("forward", 0.0));
+  a.body.left = static_cast<float>(r.number("left", 0.0));
+  a.body.turn = static_cast<float>(r.number("turn", 0.0));
+  a.body.kick_power = static_cast<float>(r.number("power", 1.0, Range::closed(0, 1)));
+  a.body.kick_direction = static_cast<float>(r.number("direction", 0.0));
+  a.body.foot = r.choice("foot", "right", {"left", "right"}) == "left" ? agent::blackboard::Foot::LEFT
+                                                                      : agent::blackboard::Foot::RIGHT;
+  if (r.has("head_yaw") || r.has("head_pitch")) {
+    a.has_head = true;
+    a.head.yaw = static_cast<float>(r.number("head_yaw", 0.0));
+    a.head.pitch = static_cast<float>(r.number("head_pitch", 0.0));
+  }
+  r.finish();
+  rs.actions.push_back(a);
 }
 
 }  // namespace
@@ -96,8 +134,28 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     sc.quick_iterations = p->integer("iterations", sc.quick_iterations, Range::closed(1, 1000));
     p->finish();
   }
+  std::optional<YamlReader> overview_reader;  // for errors about overview.robot
   if (auto c = top.optionalMap("camera")) {
-    sc.camera = c->boolean("enabled", false);
+    sc.camera.enabled = c->boolean("enabled", false);
+    const std::string res = c->choice("resolution", "640x480", {"640x480", "1280x960"});
+    sc.camera.width = res == "640x480" ? 640 : 1280;
+    sc.camera.height = res == "640x480" ? 480 : 960;
+    if (auto o = c->optionalMap("overview")) {
+      CameraSpec::Overview& ov = sc.camera.overview;
+      ov.enabled = o->boolean("enabled", true);
+      const std::string mode = o->choice("mode", "fixed", {"fixed", "robot", "ball"});
+      ov.mode = mode == "fixed" ? CameraSpec::Overview::Mode::Fixed
+                : mode == "robot" ? CameraSpec::Overview::Mode::Robot
+                                  : CameraSpec::Overview::Mode::Ball;
+      ov.robot = o->integer("robot", 0, Range::nonNegative());
+      ov.rate_hz = o->number("rate_hz", 10.0, Range::closed(0.1, 100));
+      ov.width = o->integer("width", 960, Range::closed(16, 3840));
+      ov.height = o->integer("height", 540, Range::closed(16, 2160));
+      if (ov.width % 2 || ov.height % 2) o->fail("width", "width and height must be even (video encoders)");
+      ov.dir = o->string("dir", ov.dir);
+      overview_reader = *o;
+      o->finish();
+    }
     c->finish();
   }
   if (auto b = top.optionalMap("ball")) {
@@ -125,10 +183,21 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
         r.fail("script", "an external robot runs its own program; a script needs program: builtin");
       for (const YamlReader& s : r.list("script")) rs.script.push_back(readStep(s));
     }
+    if (r.has("actions")) {
+      if (rs.program == RobotSpec::Program::External)
+        r.fail("actions", "an external robot runs its own program; actions need program: builtin");
+      if (!rs.script.empty()) r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
+      for (const YamlReader& a : r.list("actions")) readAction(a, rs);
+      std::stable_sort(rs.pushes.begin(), rs.pushes.end(),
+                       [](const RobotSpec::Push& a, const RobotSpec::Push& b) { return a.t_s < b.t_s; });
+    }
     r.finish();
     sc.robots.push_back(std::move(rs));
   }
   if (sc.robots.empty()) top.fail("robots", "a scenario needs at least one robot");
+  if (overview_reader && sc.camera.overview.robot >= static_cast<int>(sc.robots.size()))
+    overview_reader->fail("robot", "no robot " + std::to_string(sc.camera.overview.robot) + " (the scenario has " +
+                                       std::to_string(sc.robots.size()) + ")");
   top.finish();
   return sc;
 }

@@ -10,7 +10,11 @@
 //   attach_timeout: 30             # s of wall clock to wait for external robots
 //   base_dir: /path/to/simswift    # optional; where relative model/field paths resolve
 //   physics: {substeps: 2, solver: quick|exact, iterations: 20}  (defaults: WorldConfig)
-//   camera: {enabled: off, ...}    # reserved for the camera issue
+//   camera:                        # rendering is off unless asked (here or by CLI flags)
+//     enabled: on                  # render both NAO cameras of every robot at 30 Hz
+//     resolution: 640x480          # or 1280x960
+//     overview: {mode: fixed|robot|ball, robot: 0, rate_hz: 10,
+//                width: 960, height: 540, dir: overview}   # whole-field PNGs (+ MP4)
 //   ball: {x: 1.0, y: 0.0}         # m, field frame
 //   robots:
 //     - {team: 0, player: 1, x: -1.0, y: 0.0, theta: 0.0,   # m, m, rad (field frame)
@@ -26,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "agent/motion/ActionScript.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/Postures.hpp"
 #include "sim/world/ConfigError.hpp"
@@ -40,6 +45,34 @@ struct RobotSpec {
   agent::program::Posture posture = agent::program::Posture::Stand;
   enum class Program { Builtin, External } program = Program::Builtin;
   std::vector<agent::program::ScriptStep> script;
+  // Body actions over time, run by the Motion module (agent/motion), e.g.
+  //   actions: [{t: 1, action: walk, forward: 300, left: 0, turn: 0},
+  //             {t: 6, action: kick, foot: right, power: 1, direction: 0},
+  //             {t: 9, push: {x: 2.5, y: 0}}]
+  // forward/left mm/s, turn rad/s, direction rad; a push adds (x, y) m/s to
+  // the torso's velocity (field frame) at time t (simulator side).
+  std::vector<agent::motion::ActionStep> actions;
+  struct Push { double t_s = 0, vx = 0, vy = 0; };
+  std::vector<Push> pushes;
+};
+
+// Camera rendering (the camera issue). Off unless a scenario or flag asks.
+struct CameraSpec {
+  bool enabled = false;            // robot cameras into each robot's CameraImages
+  int width = 640, height = 480;   // px: 640x480 or 1280x960
+  std::string dump_dir;            // --dump-frames DIR (implies rendering); empty = none
+  int dump_every = 1;              // --every N: camera frames between dumps
+  struct Overview {
+    bool enabled = false;
+    enum class Mode { Fixed, Robot, Ball } mode = Mode::Fixed;
+    int robot = 0;                 // scenario robot index (mode robot)
+    double rate_hz = 10;           // frames per simulated second
+    int width = 960, height = 540; // px, even
+    std::string dir = "overview";  // PNG folder (+ overview.mp4 with ffmpeg)
+  } overview;
+
+  bool renderRobots() const { return enabled || !dump_dir.empty(); }
+  bool any() const { return renderRobots() || overview.enabled; }
 };
 
 struct NoiseSwitches {
@@ -61,7 +94,7 @@ struct Scenario {
   int substeps = WorldConfig{}.substeps;
   std::string solver = WorldConfig{}.solver == WorldConfig::Solver::Quick ? "quick" : "exact";
   int quick_iterations = WorldConfig{}.quick_iterations;
-  bool camera = false;
+  CameraSpec camera;
   std::optional<std::pair<double, double>> ball;  // m, field frame
   std::vector<RobotSpec> robots;
 

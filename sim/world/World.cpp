@@ -153,6 +153,11 @@ Eigen::Vector3d World::ballPosition() const {
   return {p[0], p[1], p[2]};
 }
 
+Eigen::Quaterniond World::ballOrientation() const {
+  const dReal* q = dBodyGetQuaternion(impl_->ball);  // ODE order: w, x, y, z
+  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+}
+
 Eigen::Vector3d World::ballVelocity() const {
   const dReal* v = dBodyGetLinearVel(impl_->ball);
   return {v[0], v[1], v[2]};

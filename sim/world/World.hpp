@@ -75,6 +75,8 @@ class World {
   void setBallVelocity(const Eigen::Vector3d& v);  // m/s, world
   Eigen::Vector3d ballPosition() const;
   Eigen::Vector3d ballVelocity() const;
+  // The ball body's orientation (world frame); drawn by the cameras.
+  Eigen::Quaterniond ballOrientation() const;
 
   // Advances one 10 ms tick. Detects blow-ups: the robot (or ball) is reset
   // to where it was last placed and an event is recorded; the run goes on.

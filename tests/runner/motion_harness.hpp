@@ -21,6 +21,8 @@ class CheckedMotion : public agent::program::MotionGenerator {
   explicit CheckedMotion(std::unique_ptr<agent::motion::MotionModule> m) : m_(std::move(m)) {}
   void tick(const agent::libagent::SensorValues& s, int64_t t_us, agent::libagent::JointValues& out) override {
     m_->tick(s, t_us, out);
+    last_command = out;
+    last_sensed = s;
     const auto& lim = agent::motion::jointLimits();
     for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
       const float a = out.angles[i];
@@ -34,6 +36,8 @@ class CheckedMotion : public agent::program::MotionGenerator {
   }
   agent::motion::MotionModule& module() { return *m_; }
   int64_t limit_violations = 0, speed_violations = 0, ticks = 0;
+  agent::libagent::JointValues last_command{};
+  agent::libagent::SensorValues last_sensed{};
 
  private:
   std::unique_ptr<agent::motion::MotionModule> m_;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 
+#include "agent/motion/JointLimits.hpp"
 #include "agent/motion/Kinematics.hpp"
 #include "sim/world/World.hpp"
 
@@ -62,5 +63,20 @@ TEST(MotionKinematics, ForwardKinematicsMatchesTheSimulatedModel) {
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) EXPECT_NEAR(f.rotation()(i, j), mine.rotation.m[i][j], 1e-3);
     }
+  }
+}
+
+// The clipper's limit table (agent/motion, from facts.md) agrees with the
+// simulated model's joint limits and speeds, so clipped commands are never
+// clamped again by the servo.
+TEST(MotionKinematics, ClipperLimitsMatchTheModel) {
+  const auto model = simswift::NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf");
+  const auto& lim = agent::motion::jointLimits();
+  for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
+    if (i == agent::libagent::Joints::LHand || i == agent::libagent::Joints::RHand) continue;  // fraction, not rad
+    const auto& j = model.joints()[model.jointForLibagent(i)];
+    EXPECT_NEAR(lim[i].lower, j.lower, 2e-3) << j.name;
+    EXPECT_NEAR(lim[i].upper, j.upper, 2e-3) << j.name;
+    EXPECT_NEAR(lim[i].max_velocity, j.max_velocity, 2e-3) << j.name;
   }
 }

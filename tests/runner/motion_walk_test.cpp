@@ -108,6 +108,10 @@ TEST(MotionPhysics, RandomCommandsNoFall) {
   }
   std::printf("[motion] random commands 60 s: %d two-second spans with a fall\n", falls);
   EXPECT_TRUE(ok);
+  // Clipping over the whole run: no command beyond a limit or a per-tick step.
+  EXPECT_EQ(h.checked().limit_violations, 0);
+  EXPECT_EQ(h.checked().speed_violations, 0);
+  EXPECT_GT(h.checked().ticks, 5900);
 }
 
 // Walk to a point 2 m ahead using only odometry, then stop: error <= 150 mm.

@@ -27,6 +27,17 @@ agent::libagent::SensorValues withWeight(double left_n, double right_n) {
   return s;
 }
 
+// The walk's geometry alone: calibration gains and scales at 1, no heading
+// hold, odometry turn from the feet.
+WalkConfig geometryConfig() {
+  WalkConfig c;
+  c.forward_gain = c.left_gain = c.turn_gain = 1.0;
+  c.odometry_forward_scale = c.odometry_left_scale = c.odometry_turn_scale = 1.0;
+  c.heading_gain = 0.0;
+  c.odometry_turn_from_gyro = false;
+  return c;
+}
+
 }  // namespace
 
 TEST(WalkClamp, InsideLimitsUnchanged) {
@@ -106,7 +117,7 @@ TEST(WalkSupportSwitch, CopSignChangeAfterThreeQuartersOfThePeriod) {
 // Drives the generator with FSRs that follow the gait (the weight on the
 // support foot, moving to the swing foot once it is down).
 TEST(WalkGenerator, FeetAlternateWithSyntheticFsrsAndOdometryIntegrates) {
-  WalkConfig c;
+  const WalkConfig c = geometryConfig();
   Walk2014Generator walk(c);
   walk.setRequest(true, {200, 0, 0});
   agent::libagent::JointValues out{};
@@ -142,7 +153,7 @@ TEST(WalkGenerator, FeetAlternateWithSyntheticFsrsAndOdometryIntegrates) {
 }
 
 TEST(WalkGenerator, StopsThroughAStandAndRisesToStandHeight) {
-  WalkConfig c;
+  const WalkConfig c = geometryConfig();
   Walk2014Generator walk(c);
   agent::libagent::JointValues out{};
   const auto air = withWeight(0, 0);
@@ -163,7 +174,7 @@ TEST(WalkGenerator, StopsThroughAStandAndRisesToStandHeight) {
 }
 
 TEST(WalkGenerator, TurnAndSideOdometryHaveTheRightSigns) {
-  WalkConfig c;
+  const WalkConfig c = geometryConfig();
   const auto air = withWeight(0, 0);
   agent::libagent::JointValues out{};
   {
