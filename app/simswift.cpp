@@ -3,12 +3,14 @@
 //
 //   simswift run SCENARIO.yaml [--realtime] [--duration S] [--seed N]
 //                [--no-noise] [--watchdog S] [--print-hash-every N]
+//                [--dump-frames DIR [--every N]] [--overview DIR] [--resolution WxH]
 //
 // Exit codes: 0 success, 1 run failure (watchdog, physics, I/O), 2 bad
 // command line or scenario.
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <optional>
 #include <string>
 
 #include <unistd.h>
@@ -32,7 +34,12 @@ const char* kUsage =
     "  --watchdog S           wall-clock seconds a robot thread may take to answer (default 5)\n"
     "  --attach-timeout S     wall-clock seconds to wait for external robots (default 30)\n"
     "  --print-hash-every N   print the state hash every N ticks (10 ms each)\n"
-    "  --quiet                no progress lines\n";
+    "  --quiet                no progress lines\n"
+    "  --dump-frames DIR      render both cameras of every robot at 30 Hz and write\n"
+    "                         DIR/t<team>p<player>_<top|bottom>_<frame>.png\n"
+    "  --every N              with --dump-frames: keep every N-th camera frame (default 1)\n"
+    "  --overview DIR         whole-field overview PNGs in DIR (+ DIR/overview.mp4 with ffmpeg)\n"
+    "  --resolution WxH       robot camera resolution: 640x480 (default) or 1280x960\n";
 
 [[noreturn]] void usageError(const std::string& msg) {
   std::fprintf(stderr, "simswift: %s\n\n%s", msg.c_str(), kUsage);
@@ -69,6 +76,12 @@ int main(int argc, char** argv) {
   std::optional<double> duration, watchdog, attach;
   std::optional<uint64_t> seed;
   bool no_noise = false;
+  std::optional<std::string> dump_dir, overview_dir, resolution;
+  std::optional<int> every;
+  auto stringArg = [&](int& i, const char* name) {
+    if (i + 1 >= argc) usageError(std::string(name) + " needs a value");
+    return std::string(argv[++i]);
+  };
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--realtime") opt.realtime = true;
@@ -80,6 +93,17 @@ int main(int argc, char** argv) {
     else if (a == "--print-hash-every")
       opt.print_hash_every = static_cast<int64_t>(numberArg(i, argc, argv, "--print-hash-every", 1));
     else if (a == "--quiet") opt.progress = false;
+    else if (a == "--dump-frames") dump_dir = stringArg(i, "--dump-frames");
+    else if (a == "--overview") overview_dir = stringArg(i, "--overview");
+    else if (a == "--every") {
+      const double n = numberArg(i, argc, argv, "--every", 1);
+      if (n != static_cast<int>(n)) usageError("--every: must be a whole number of frames");
+      every = static_cast<int>(n);
+    } else if (a == "--resolution") {
+      resolution = stringArg(i, "--resolution");
+      if (*resolution != "640x480" && *resolution != "1280x960")
+        usageError("--resolution: must be 640x480 or 1280x960 (got '" + *resolution + "')");
+    }
     else if (a == "--help" || a == "-h") {
       std::printf("%s", kUsage);
       return 0;
@@ -88,6 +112,11 @@ int main(int argc, char** argv) {
     else usageError("more than one scenario given");
   }
   if (path.empty()) usageError("missing SCENARIO.yaml");
+  if (every && !dump_dir) usageError("--every needs --dump-frames DIR");
+  if ((dump_dir || overview_dir) && !Runner::camerasAvailable())
+    usageError(std::string(dump_dir ? "--dump-frames" : "--overview") +
+               ": this simswift was built without cameras (configure with -DSIMSWIFT_CAMERAS=ON and "
+               "OSMesa, assimp and libpng installed)");
 
   Scenario sc;
   try {
@@ -101,6 +130,16 @@ int main(int argc, char** argv) {
   if (no_noise) sc.noise.on = false;
   if (watchdog) sc.watchdog_s = *watchdog;
   if (attach) sc.attach_timeout_s = *attach;
+  if (dump_dir) sc.camera.dump_dir = *dump_dir;
+  if (every) sc.camera.dump_every = *every;
+  if (resolution) {
+    sc.camera.width = *resolution == "640x480" ? 640 : 1280;
+    sc.camera.height = *resolution == "640x480" ? 480 : 960;
+  }
+  if (overview_dir) {
+    sc.camera.overview.enabled = true;
+    sc.camera.overview.dir = *overview_dir;
+  }
   // Progress lines only on runs long enough to wonder about.
   if (sc.duration < 10) opt.progress = false;
 

@@ -5,7 +5,27 @@
 #include <sstream>
 #include <thread>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
 #include "agent/libagent/SharedNames.hpp"
+#ifdef SIMSWIFT_HAVE_CAMERAS
+#include "sim/camera/FrameDumper.hpp"
+#include "sim/camera/Overview.hpp"
+#include "sim/camera/RobotCameras.hpp"
+#else
+// Built without cameras: the members stay null, but their types must be complete.
+namespace simswift::camera {
+class RobotCameras {};
+class FrameDumper {};
+class OverviewCamera {};
+}  // namespace simswift::camera
+#endif
 
 namespace simswift::runner {
 
@@ -55,6 +75,139 @@ void Runner::setMotionGenerator(int robot, std::unique_ptr<ap::MotionGenerator> 
   robots_[robot]->motion_override = std::move(motion);
 }
 
+void Runner::setPerceptionStep(int robot, std::unique_ptr<ap::PerceptionStep> perception) {
+  if (started_) throw RunnerError("setPerceptionStep: the runner has already started");
+  if (robot < 0 || robot >= static_cast<int>(scenario_.robots.size()))
+    throw RunnerError("setPerceptionStep: no robot " + std::to_string(robot));
+  if (robots_.empty()) {
+    robots_.resize(scenario_.robots.size());
+    for (auto& r : robots_) r = std::make_unique<Robot>();
+  }
+  robots_[robot]->perception_override = std::move(perception);
+}
+
+bool Runner::camerasAvailable() {
+#ifdef SIMSWIFT_HAVE_CAMERAS
+  return true;
+#else
+  return false;
+#endif
+}
+
+// The robot's CameraImages block. A builtin program shares this process, so
+// the heap will do; an external one maps /libagent-camera-images-<suffix>
+// (created 0600 with O_EXCL before the robot's libagent block, so a program
+// that attaches finds it; unlinked in releaseImages and at exit).
+void Runner::createImages(Robot& r) {
+  if (r.spec.program != RobotSpec::Program::External) {
+    r.images_heap = std::make_unique<al::CameraImages>();
+    r.images = r.images_heap.get();
+  } else {
+    const std::string name = al::cameraImagesName(r.spec.team, r.spec.player);
+    const int fd = shm_open(name.c_str(), O_CREAT | O_EXCL | O_RDWR, 0600);
+    if (fd < 0) {
+      if (errno == EEXIST)
+        throw RunnerError(name + " already exists (left over from a crashed run?): remove /dev/shm" + name);
+      throw RunnerError("shm_open " + name + ": " + std::strerror(errno));
+    }
+    bridge::cleanup::registerShm(name);
+    r.images_shm_name = name;
+    fchmod(fd, 0600);  // independent of the umask
+    if (ftruncate(fd, sizeof(al::CameraImages)) != 0) {
+      const std::string e = std::strerror(errno);
+      close(fd);
+      releaseImages(r);
+      throw RunnerError("ftruncate " + name + ": " + e);
+    }
+    void* p = mmap(nullptr, sizeof(al::CameraImages), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+    close(fd);
+    if (p == MAP_FAILED) {
+      const std::string e = std::strerror(errno);
+      releaseImages(r);
+      throw RunnerError("mmap " + name + ": " + e);
+    }
+    r.images = static_cast<al::CameraImages*>(p);  // ftruncate zero-fills
+  }
+  r.images->magic = al::kCameraImagesMagic;
+}
+
+void Runner::releaseImages(Robot& r) {
+  if (!r.images_shm_name.empty()) {
+    if (r.images) munmap(r.images, sizeof(al::CameraImages));
+    shm_unlink(r.images_shm_name.c_str());
+    bridge::cleanup::unregister(r.images_shm_name);
+    r.images_shm_name.clear();
+  }
+  r.images = nullptr;
+  r.images_heap.reset();
+}
+
+void Runner::startCameras() {
+#ifdef SIMSWIFT_HAVE_CAMERAS
+  const CameraSpec& cs = scenario_.camera;
+  camera::RobotCamerasConfig cc;
+  cc.width = cs.width;
+  cc.height = cs.height;
+  cameras_ = std::make_unique<camera::RobotCameras>(*world_, cc);
+  std::vector<int> teams;
+  for (auto& r : robots_) teams.push_back(r->spec.team);
+  cameras_->setTeams(teams);
+  if (!cs.dump_dir.empty()) dumper_ = std::make_unique<camera::FrameDumper>(cs.dump_dir, cs.dump_every);
+  if (cs.overview.enabled) {
+    camera::OverviewConfig oc;
+    using M = CameraSpec::Overview::Mode;
+    oc.mode = cs.overview.mode == M::Fixed   ? camera::OverviewConfig::Mode::Fixed
+              : cs.overview.mode == M::Robot ? camera::OverviewConfig::Mode::FollowRobot
+                                             : camera::OverviewConfig::Mode::FollowBall;
+    oc.robot = cs.overview.robot;
+    oc.rate_hz = cs.overview.rate_hz;
+    oc.width = cs.overview.width;
+    oc.height = cs.overview.height;
+    oc.dir = cs.overview.dir;
+    overview_ = std::make_unique<camera::OverviewCamera>(oc);
+  }
+#endif
+}
+
+// Renders robot `index`'s cameras for this frame (if anyone wants them) and
+// marks the frame's images valid.
+void Runner::renderFrame(int64_t frame, int64_t t_us, al::CameraFrame& f, Robot& r, int index) {
+#ifdef SIMSWIFT_HAVE_CAMERAS
+  if (!cameras_ || !r.images) return;
+  const bool dump = dumper_ && dumper_->wants(frame);
+  if (!r.perception && !dump) return;
+  cameras_->fillImages(*world_, index, *r.images, frame, t_us);
+  f.images_valid = 1;
+  if (dump) dumper_->dump(r.spec.team, r.spec.player, *r.images);
+#endif
+}
+
+int64_t Runner::framesDumped() const {
+#ifdef SIMSWIFT_HAVE_CAMERAS
+  return dumper_ ? dumper_->written() : 0;
+#else
+  return 0;
+#endif
+}
+
+int64_t Runner::overviewFrames() const {
+#ifdef SIMSWIFT_HAVE_CAMERAS
+  return overview_ ? overview_->frames() : 0;
+#else
+  return 0;
+#endif
+}
+
+std::string Runner::finishOverview() {
+#ifdef SIMSWIFT_HAVE_CAMERAS
+  if (overview_ && !overview_finished_) {
+    overview_finished_ = true;
+    overview_message_ = overview_->finish(overview_->config().dir + "/overview.mp4").message;
+  }
+#endif
+  return overview_message_;
+}
+
 std::vector<double> Runner::modelPosture(const ap::JointArray& angles) const {
   return model_->postureFromLibagent(angles);
 }
@@ -70,6 +223,9 @@ void Runner::start() {
   wc.quick_iterations = scenario_.quick_iterations;
   world_ = std::make_unique<World>(field, wc);
   if (scenario_.ball) world_->placeBall(scenario_.ball->first, scenario_.ball->second);
+  if (scenario_.camera.any() && !camerasAvailable())
+    throw RunnerError("camera rendering was asked for (camera: enabled, --dump-frames or --overview), but this "
+                      "simswift was built without cameras (-DSIMSWIFT_CAMERAS=OFF)");
 
   sensors::SensorConfig sc;
   sc.seed = scenario_.seed;
@@ -97,6 +253,7 @@ void Runner::start() {
     r.sensors = std::make_unique<sensors::SensorSuite>(*world_, index, sc);
     const al::JointValues initial = ap::postureCommand(r.spec.posture);
     const bool external = r.spec.program == RobotSpec::Program::External;
+    if (scenario_.camera.renderRobots()) createImages(r);  // before the host: an attaching program finds it
     r.host = std::make_unique<bridge::BodyHost>(
         r.spec.team, r.spec.player, external ? bridge::BodyHost::Mode::Named : bridge::BodyHost::Mode::InProcess,
         initial);
@@ -111,11 +268,16 @@ void Runner::start() {
         scripted->setAnkleGyroDamping(kBuiltinAnkleGyroGain);
         motion = std::move(scripted);
       }
-      r.program = std::make_unique<ap::RobotProgram>(r.host->connect(), r.spec.team, r.spec.player,
-                                                     std::move(motion));
+      al::AgentConnection conn = r.host->connect();
+      conn.setImages(r.images);
+      std::unique_ptr<ap::PerceptionStep> perception = std::move(r.perception_override);
+      if (!perception) perception = std::make_unique<ap::PerceptionStep>();
+      r.program = std::make_unique<ap::RobotProgram>(std::move(conn), r.spec.team, r.spec.player,
+                                                     std::move(motion), std::move(perception));
       r.program->start();
     }
   }
+  if (scenario_.camera.any()) startCameras();
   waitForAttach();
   for (auto& r : robots_) r->perception = r->host->hasPerception();
   wall_start_ = Clock::now();
@@ -195,6 +357,9 @@ void Runner::tick() {
   }
   // 2.
   world_->step();
+#ifdef SIMSWIFT_HAVE_CAMERAS
+  if (overview_) overview_->maybeCapture(*cameras_, *world_);
+#endif
   for (const WorldEvent& e : world_->takeEvents()) {
     if (e.kind == WorldEvent::Kind::BlowUp) {
       ++blowups_;
@@ -240,11 +405,15 @@ void Runner::tick() {
     f.frame_index = frame;
     f.num_observations = 0;  // vision oracle: a later issue
     bool any = false;
-    for (auto& r : robots_)
-      if (r->perception) {
-        r->host->publishFrame(f);
+    for (size_t i = 0; i < robots_.size(); ++i) {
+      Robot& r = *robots_[i];
+      al::CameraFrame fr = f;  // images_valid is per robot
+      renderFrame(frame, t_us, fr, r, static_cast<int>(i));
+      if (r.perception) {
+        r.host->publishFrame(fr);
         any = true;
       }
+    }
     if (any)
       for (auto& r : robots_)
         if (r->perception && !r->host->waitPerceptionDone(scenario_.watchdog_s)) watchdogFail(*r, "perception");
@@ -295,6 +464,10 @@ RunStats Runner::run(const RunOptions& opt) {
   }
   const RunStats s = stats();
   shutdown();
+  if (!finishOverview().empty()) std::fprintf(stderr, "%s\n", overview_message_.c_str());
+  if (framesDumped() > 0)
+    std::fprintf(stderr, "camera frames: %lld PNGs in %s\n", static_cast<long long>(framesDumped()),
+                 scenario_.camera.dump_dir.c_str());
   return s;
 }
 
@@ -307,6 +480,9 @@ void Runner::shutdown() {
     if (r && r->program) r->program->join();
   for (auto& r : robots_)
     if (r) r->program.reset();
+  // Named images go with the run; heap ones stay readable until destruction.
+  for (auto& r : robots_)
+    if (r && !r->images_shm_name.empty()) releaseImages(*r);
 }
 
 }  // namespace simswift::runner

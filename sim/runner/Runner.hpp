@@ -24,6 +24,12 @@
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
 
+namespace simswift::camera {
+class RobotCameras;
+class FrameDumper;
+class OverviewCamera;
+}  // namespace simswift::camera
+
 namespace simswift::runner {
 
 struct WatchdogError : std::runtime_error {
@@ -69,6 +75,8 @@ class Runner {
   // Before start(): replace a builtin robot's Motion step (robot index in
   // scenario order). The walk plugs in here.
   void setMotionGenerator(int robot, std::unique_ptr<agent::program::MotionGenerator> motion);
+  // Before start(): replace a builtin robot's Perception step.
+  void setPerceptionStep(int robot, std::unique_ptr<agent::program::PerceptionStep> perception);
 
   // Builds the world, hosts and programs; waits for external robots to attach.
   void start();
@@ -87,6 +95,18 @@ class Runner {
   int64_t ticks() const { return world_ ? world_->tick() : 0; }
   RunStats stats() const;  // so far
 
+  // Cameras (scenario camera:, --dump-frames, --overview). Rendering needs a
+  // build with SIMSWIFT_HAVE_CAMERAS; start() throws RunnerError otherwise.
+  static bool camerasAvailable();
+  // Robot i's images block (null unless its cameras are rendered).
+  const agent::libagent::CameraImages* images(int i) const { return robots_[i]->images; }
+  int64_t framesDumped() const;     // PNGs written by --dump-frames
+  int64_t overviewFrames() const;   // overview PNGs written
+  // After run(): the overview video line (empty if no overview).
+  const std::string& overviewMessage() const { return overview_message_; }
+  // Ends the overview (assembles the video) and returns its message; run() calls it.
+  std::string finishOverview();
+
  private:
   struct Robot {
     RobotSpec spec;
@@ -94,6 +114,11 @@ class Runner {
     std::unique_ptr<bridge::BodyHost> host;
     std::unique_ptr<sensors::SensorSuite> sensors;
     std::unique_ptr<agent::program::MotionGenerator> motion_override;
+    std::unique_ptr<agent::program::PerceptionStep> perception_override;
+    // Camera images: heap (builtin) or a named 0600 shm block (external).
+    agent::libagent::CameraImages* images = nullptr;
+    std::unique_ptr<agent::libagent::CameraImages> images_heap;
+    std::string images_shm_name;
     std::unique_ptr<agent::program::RobotProgram> program;  // builtin only
     agent::libagent::SensorValues values{};
     agent::libagent::ActuatorCommand latched;
@@ -114,6 +139,15 @@ class Runner {
   bool started_ = false;
   bool stopped_ = false;
   int64_t last_frame_ = -1;
+  std::unique_ptr<camera::RobotCameras> cameras_;
+  std::unique_ptr<camera::FrameDumper> dumper_;
+  std::unique_ptr<camera::OverviewCamera> overview_;
+  bool overview_finished_ = false;
+  std::string overview_message_;
+  void createImages(Robot& r);
+  void releaseImages(Robot& r);
+  void startCameras();
+  void renderFrame(int64_t frame, int64_t t_us, agent::libagent::CameraFrame& f, Robot& r, int index);
   int blowups_ = 0;
   std::chrono::steady_clock::time_point wall_start_;
 };

@@ -1,0 +1,122 @@
+// Throwaway tuning harness for the get-up keyframes (DISABLED_: run by hand).
+// GETUP_FRAMES=<file> overrides the front (GETUP_DIR=front) or back sequence
+// with keyframes read from a text file, so sequences can be tuned without a
+// rebuild. Line format (rad, s; symmetric arms/legs as in Generators.cpp):
+//   dur sp sr ey er hyp hr hp kn ap ar [joint=value ...]
+//   crouch dur | stand dur
+// Prints torso height (m), AngleX / AngleY (rad) and the mode every 0.1 s.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "tests/runner/motion_harness.hpp"
+
+using agent::blackboard::ActionType;
+using motion_test::MotionHarness;
+namespace J = agent::libagent::Joints;
+namespace S = agent::libagent::Sensors;
+
+namespace {
+
+std::vector<agent::motion::Keyframe> readFrames(const std::string& path, const agent::motion::WalkConfig& cfg) {
+  std::vector<agent::motion::Keyframe> f;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    std::string first;
+    ls >> first;
+    if (first == "crouch" || first == "stand") {
+      double d;
+      ls >> d;
+      f.push_back({d, first == "crouch" ? agent::motion::crouchAngles() : agent::motion::walkStandAngles(cfg), 1.0f});
+      continue;
+    }
+    double d = std::stod(first);
+    float v[10];
+    for (float& x : v) ls >> x;
+    agent::motion::JointArray a{};
+    a[J::LShoulderPitch] = a[J::RShoulderPitch] = v[0];
+    a[J::LShoulderRoll] = v[1];
+    a[J::RShoulderRoll] = -v[1];
+    a[J::LElbowYaw] = v[2];
+    a[J::RElbowYaw] = -v[2];
+    a[J::LElbowRoll] = v[3];
+    a[J::RElbowRoll] = -v[3];
+    a[J::LHipYawPitch] = v[4];
+    a[J::LHipRoll] = v[5];
+    a[J::RHipRoll] = -v[5];
+    a[J::LHipPitch] = a[J::RHipPitch] = v[6];
+    a[J::LKneePitch] = a[J::RKneePitch] = v[7];
+    a[J::LAnklePitch] = a[J::RAnklePitch] = v[8];
+    a[J::LAnkleRoll] = v[9];
+    a[J::RAnkleRoll] = -v[9];
+    std::string kv;
+    while (ls >> kv) {
+      const auto eq = kv.find('=');
+      a[std::stoi(kv.substr(0, eq))] = std::stof(kv.substr(eq + 1));
+    }
+    f.push_back({d, a, 1.0f});
+  }
+  return f;
+}
+
+}  // namespace
+
+TEST(MotionGetupTuning, DISABLED_Trace) {
+  const char* dir = std::getenv("GETUP_DIR");
+  const bool forwards = !dir || std::string(dir) != "back";
+  const char* seed_env = std::getenv("GETUP_SEED");
+  const int trial = seed_env ? std::atoi(seed_env) : 0;
+  const char* quiet = std::getenv("GETUP_QUIET");
+  agent::motion::MotionConfig cfg;
+  if (const char* file = std::getenv("GETUP_FRAMES")) {
+    (forwards ? cfg.getup_front : cfg.getup_back) = readFrames(file, cfg.walk);
+  }
+  MotionHarness h(100 + trial + (forwards ? 0 : 50), -3.0, 0.0, 0.0, "", cfg);
+  h.request(ActionType::STAND);
+  h.run(1.0);
+  const double dv = 3.0 + 0.1 * trial;
+  h.push(forwards ? dv : -dv, 0.02 * (trial - 5));
+  bool fell = false;
+  double up_at = -1, best = -1;
+  const bool one = std::getenv("GETUP_ONE") != nullptr;  // stop after the first attempt
+  for (int i = 0; i < 1300; ++i) {
+    h.run(0.01);
+    const auto st = h.state();
+    if (st.posture == agent::blackboard::Posture::FALLEN_FORWARD ||
+        st.posture == agent::blackboard::Posture::FALLEN_BACKWARD ||
+        st.posture == agent::blackboard::Posture::FALLEN_SIDEWAYS ||
+        st.posture == agent::blackboard::Posture::GETTING_UP)
+      fell = true;
+    const float* s = h.checked().last_sensed.sensors;
+    // Progress of the first attempt: high and upright is good.
+    if (h.motion().getupAttempts() == 1 && h.motion().mode() == agent::motion::MotionModule::Mode::Getup)
+      best = std::max(best, h.torsoHeight() - 0.15 * std::fabs(s[S::InertialSensor_AngleY]));
+    if (one && h.motion().getupAttempts() >= 1 && h.motion().mode() != agent::motion::MotionModule::Mode::Getup &&
+        !(fell && st.posture == agent::blackboard::Posture::STANDING))
+      break;
+    if (!quiet && i % 10 == 0)
+    {
+      const float* q = h.checked().last_sensed.joints.angles;
+      const float* c = h.checked().last_command.angles;
+      std::printf("t %5.2f m%d h %.3f ax %+.2f ay %+.2f a%d | sp %+.2f/%+.2f er %+.2f/%+.2f hyp %+.2f/%+.2f hp %+.2f/%+.2f kn %+.2f/%+.2f ap %+.2f/%+.2f\n",
+                  i * 0.01, static_cast<int>(h.motion().mode()), h.torsoHeight(), s[S::InertialSensor_AngleX],
+                  s[S::InertialSensor_AngleY], h.motion().getupAttempts(), q[J::LShoulderPitch], c[J::LShoulderPitch],
+                  q[J::LElbowRoll], c[J::LElbowRoll], q[J::LHipYawPitch], c[J::LHipYawPitch], q[J::LHipPitch],
+                  c[J::LHipPitch], q[J::LKneePitch], c[J::LKneePitch], q[J::LAnklePitch], c[J::LAnklePitch]);
+    }
+    if (fell && st.posture == agent::blackboard::Posture::STANDING && h.torsoHeight() > 0.25) {
+      up_at = i * 0.01;
+      break;
+    }
+  }
+  std::printf("RESULT %s trial %d: %s up_at %.2f attempts %d best %.3f\n", forwards ? "front" : "back", trial,
+              up_at >= 0 ? "UP" : "down", up_at, h.motion().getupAttempts(), best);
+}
