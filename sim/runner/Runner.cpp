@@ -372,6 +372,9 @@ void Runner::tick() {
   // 3.
   for (auto& rp : robots_) {
     Robot& r = *rp;
+    for (sensors::Button b : {sensors::Button::Chest, sensors::Button::HeadFront, sensors::Button::HeadMiddle,
+                              sensors::Button::HeadRear})
+      r.sensors->setButton(b, r.spec.buttonHeld(b, world_->time()));
     r.sensors->update(*world_);
     sensors::copyToAgent(r.sensors->reading(), r.values);
     for (int j = 0; j < al::kNumJoints; ++j) r.values.joints.stiffnesses[j] = r.latched.joints.stiffnesses[j];

@@ -85,7 +85,27 @@ void readAction(const YamlReader& r, RobotSpec& rs) {
   rs.actions.push_back(a);
 }
 
+// One entry of a robot's `buttons:` list.
+RobotSpec::ButtonPress readButton(const YamlReader& r) {
+  RobotSpec::ButtonPress b;
+  b.t_s = r.number("t", Range::nonNegative());
+  b.duration_s = r.number("duration", 0.1, Range::nonNegative());
+  const std::string name = r.choice("button", "chest", {"chest", "head_front", "head_middle", "head_rear"});
+  b.button = name == "chest"        ? sensors::Button::Chest
+             : name == "head_front" ? sensors::Button::HeadFront
+             : name == "head_middle" ? sensors::Button::HeadMiddle
+                                     : sensors::Button::HeadRear;
+  r.finish();
+  return b;
+}
+
 }  // namespace
+
+bool RobotSpec::buttonHeld(sensors::Button b, double t_s) const {
+  for (const ButtonPress& p : buttons)
+    if (p.button == b && t_s >= p.t_s - 1e-9 && t_s < p.t_s + p.duration_s - 1e-9) return true;
+  return false;
+}
 
 std::string Scenario::modelFile() const { return resolve(base_dir, model_path); }
 std::string Scenario::fieldFile() const { return resolve(base_dir, field_path); }
@@ -183,6 +203,8 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
         r.fail("script", "an external robot runs its own program; a script needs program: builtin");
       for (const YamlReader& s : r.list("script")) rs.script.push_back(readStep(s));
     }
+    if (r.has("buttons"))
+      for (const YamlReader& b : r.list("buttons")) rs.buttons.push_back(readButton(b));
     if (r.has("actions")) {
       if (rs.program == RobotSpec::Program::External)
         r.fail("actions", "an external robot runs its own program; actions need program: builtin");

@@ -19,7 +19,8 @@
 //   robots:
 //     - {team: 0, player: 1, x: -1.0, y: 0.0, theta: 0.0,   # m, m, rad (field frame)
 //        posture: stand, program: builtin,
-//        script: [{t: 2.0, joint: HeadYaw, angle: 0.5, duration: 0.5}]}
+//        script: [{t: 2.0, joint: HeadYaw, angle: 0.5, duration: 0.5}],
+//        buttons: [{t: 3.0, button: chest, duration: 0.1}]}
 //
 // Unknown keys and bad values throw ConfigError naming file, line and key:
 //   scenario.yaml:7: robots[1].team: must be 0..1 (got 3)
@@ -33,6 +34,7 @@
 #include "agent/motion/ActionScript.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/Postures.hpp"
+#include "sim/sensors/Buttons.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/World.hpp"
 
@@ -54,6 +56,12 @@ struct RobotSpec {
   std::vector<agent::motion::ActionStep> actions;
   struct Push { double t_s = 0, vx = 0, vy = 0; };
   std::vector<Push> pushes;
+  // Touch sensors pressed by the scenario (any program), e.g.
+  //   buttons: [{t: 2.0, button: chest, duration: 0.1}]
+  // held from t for duration s (chest, head_front, head_middle, head_rear).
+  struct ButtonPress { double t_s = 0, duration_s = 0.1; sensors::Button button = sensors::Button::Chest; };
+  std::vector<ButtonPress> buttons;
+  bool buttonHeld(sensors::Button b, double t_s) const;  // any press of b covers t_s
 };
 
 // Camera rendering (the camera issue). Off unless a scenario or flag asks.

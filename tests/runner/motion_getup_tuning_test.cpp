@@ -86,6 +86,7 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
   h.push(forwards ? dv : -dv, 0.02 * (trial - 5));
   bool fell = false;
   double up_at = -1, best = -1;
+  std::vector<double> window;
   const bool one = std::getenv("GETUP_ONE") != nullptr;  // stop after the first attempt
   for (int i = 0; i < 1300; ++i) {
     h.run(0.01);
@@ -98,7 +99,13 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
     const float* s = h.checked().last_sensed.sensors;
     // Progress of the first attempt: high and upright is good.
     if (h.motion().getupAttempts() == 1 && h.motion().mode() == agent::motion::MotionModule::Mode::Getup)
-      best = std::max(best, h.torsoHeight() - 0.15 * std::fabs(s[S::InertialSensor_AngleY]));
+    {
+      // Held for 0.5 s (the minimum over the last 50 ticks), so a throw that falls back does not count.
+      window.push_back(h.torsoHeight() - 0.2 * std::fabs(s[S::InertialSensor_AngleY]) -
+                       0.2 * std::fabs(s[S::InertialSensor_AngleX]));
+      if (window.size() > 50) window.erase(window.begin());
+      if (window.size() == 50) best = std::max(best, *std::min_element(window.begin(), window.end()));
+    }
     if (one && h.motion().getupAttempts() >= 1 && h.motion().mode() != agent::motion::MotionModule::Mode::Getup &&
         !(fell && st.posture == agent::blackboard::Posture::STANDING))
       break;
