@@ -61,6 +61,8 @@ class KeyframeGenerator {
   bool done() const { return frame_ >= frames_.size(); }
   bool active() const { return !frames_.empty() && !done(); }
   double elapsed() const { return elapsed_; }
+  size_t frame() const { return frame_; }          // index of the frame being played
+  size_t frameCount() const { return frames_.size(); }
 
  private:
   std::vector<Keyframe> frames_;

@@ -171,7 +171,7 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
       const bool sideways = std::fabs(ax) > std::fabs(ay);
       posture_ = sideways ? Posture::FALLEN_SIDEWAYS : ay > 0 ? Posture::FALLEN_FORWARD : Posture::FALLEN_BACKWARD;
       const bool asked = want == ActionType::GETUP_FRONT || want == ActionType::GETUP_BACK;
-      if (want != ActionType::LIMP && (asked || cfg_.auto_getup)) {
+      if (want != ActionType::LIMP && (asked || cfg_.auto_getup) && getups_since_up_ < cfg_.max_getup_attempts) {
         // Face down (pitched forward, AngleY > 0) gets up from the front. An
         // explicit request wins; sideways goes by the pitch sign as well.
         bool front = ay > 0;
@@ -185,6 +185,7 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
                                          : getupBackFrames(cfg_.walk),
                          a);
         ++getup_attempts_;
+        ++getups_since_up_;
         getup_front_ = front;
         mode_ = Mode::Getup;
       }
@@ -196,8 +197,15 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
       out.angles[J::HeadPitch] = 0;
       out.stiffnesses[J::HeadYaw] = out.stiffnesses[J::HeadPitch] = 0.8f;
       posture_ = Posture::GETTING_UP;
-      if (keyframes_.done()) {
+      // Rising from the crouch and tipping over: abort into the safe limp fall
+      // now rather than finishing the stand; the fall handling retries.
+      if (!keyframes_.done() && keyframes_.frame() + cfg_.getup_rise_frames >= keyframes_.frameCount() &&
+          tilt > cfg_.fall_angle) {
+        mode_ = Mode::Falling;
+        still_time_ = 0;
+      } else if (keyframes_.done()) {
         if (tilt < cfg_.upright_angle) {
+          getups_since_up_ = 0;
           walk_.reset();
           mode_ = Mode::Walk;
           posture_ = Posture::STANDING;

@@ -27,6 +27,8 @@ struct MotionConfig {
   double settle_rate = 0.6;      // rad/s: gyro magnitude below which the body is "still"
   double settle_time = 0.3;      // s still before a fall counts as finished
   double upright_angle = 0.5;    // rad: below this after a get-up = standing again
+  int max_getup_attempts = 6;    // then stay down (limp) instead of retrying forever
+  int getup_rise_frames = 2;     // the last frames of a get-up (crouch, stand): tipping over there = fall limp
   float falling_stiffness = 0.0f;  // the safe limp fall (0 = limp, joints free)
   bool auto_getup = true;        // get up after a fall unless DEAD / LIMP is requested
   float limp_stiffness = 0.1f;   // LIMP action
@@ -75,7 +77,8 @@ class MotionModule : public agent::program::MotionGenerator {
   double lifted_time_ = 0;  // s with no weight on the feet
   int64_t kick_sequence_ = -1;
   int64_t ticks_ = 0;
-  int getup_attempts_ = 0;
+  int getup_attempts_ = 0;     // total, for tests and tools
+  int getups_since_up_ = 0;    // attempts since last standing, for max_getup_attempts
   bool getup_front_ = true;
 };
 

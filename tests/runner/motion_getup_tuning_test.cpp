@@ -85,7 +85,7 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
   const double dv = 3.0 + 0.1 * trial;
   h.push(forwards ? dv : -dv, 0.02 * (trial - 5));
   bool fell = false;
-  double up_at = -1, best = -1;
+  double up_at = -1, best = -9;
   std::vector<double> window;
   const bool one = std::getenv("GETUP_ONE") != nullptr;  // stop after the first attempt
   for (int i = 0; i < 1300; ++i) {
@@ -101,7 +101,8 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
     if (h.motion().getupAttempts() == 1 && h.motion().mode() == agent::motion::MotionModule::Mode::Getup)
     {
       // Held for 0.5 s (the minimum over the last 50 ticks), so a throw that falls back does not count.
-      window.push_back(h.torsoHeight() - 0.2 * std::fabs(s[S::InertialSensor_AngleY]) -
+      // GETUP_ROLL: score how far a back sequence rolls the robot face down instead.
+      window.push_back(std::getenv("GETUP_ROLL") ? s[S::InertialSensor_AngleY] - std::fabs(s[S::InertialSensor_AngleX]) : h.torsoHeight() - 0.2 * std::fabs(s[S::InertialSensor_AngleY]) -
                        0.2 * std::fabs(s[S::InertialSensor_AngleX]));
       if (window.size() > 50) window.erase(window.begin());
       if (window.size() == 50) best = std::max(best, *std::min_element(window.begin(), window.end()));
