@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
     Runner runner(sc);
     try {
       const RunStats stats = runner.run(opt);
-      std::printf("%s\n", stats.summary().c_str());
+      std::printf("%s\n%s", stats.summary().c_str(), stats.robotLines().c_str());
       std::fflush(stdout);
     } catch (const WatchdogError& e) {
       // The silent robot thread cannot be joined; remove the named objects

@@ -59,6 +59,14 @@ std::string RunStats::summary() const {
   return s.str();
 }
 
+std::string RunStats::robotLines() const {
+  std::ostringstream s;
+  for (const RobotEnd& r : robots)
+    s << "  t" << r.team << "p" << r.player << ": x " << fmt("%.3f", r.x) << " m  y " << fmt("%.3f", r.y)
+      << " m  theta " << fmt("%.3f", r.theta) << " rad  falls " << r.falls << "\n";
+  return s.str();
+}
+
 Runner::Runner(Scenario scenario) : scenario_(std::move(scenario)) {}
 
 Runner::~Runner() { shutdown(); }
@@ -432,6 +440,13 @@ RunStats Runner::stats() const {
   s.blowups = blowups_;
   for (size_t i = 0; i < robots_.size(); ++i) {
     s.falls += robots_[i]->falls;
+    if (world_ && static_cast<int>(i) < world_->numRobots() && i < scenario_.robots.size()) {
+      const RobotBody& body = world_->robot(static_cast<int>(i));
+      const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
+      const Eigen::Vector3d fwd = torso.linear().col(0);  // torso x axis in the field frame
+      s.robots.push_back({scenario_.robots[i].team, scenario_.robots[i].player, torso.translation().x(),
+                          torso.translation().y(), std::atan2(fwd.y(), fwd.x()), robots_[i]->falls});
+    }
     if (robots_[i]->host) s.skipped_cycles += robots_[i]->host->skippedCycles();
     if (world_ && static_cast<int>(i) < world_->numRobots()) {
       const ServoCommandStats& c = world_->robot(static_cast<int>(i)).commandStats();

@@ -59,7 +59,16 @@ struct RunStats {
   int64_t skipped_cycles = 0;
   uint64_t hash = 0;         // World::stateHash() at the end
 
-  std::string summary() const;  // the one-line summary
+  // Where each robot ended (field frame: m, rad), in scenario order.
+  struct RobotEnd {
+    int team = 0, player = 0;
+    double x = 0, y = 0, theta = 0;  // torso position and heading
+    int falls = 0;
+  };
+  std::vector<RobotEnd> robots;
+
+  std::string summary() const;       // the one-line summary
+  std::string robotLines() const;    // one line per robot: "  t0p1: x .. m  y .. m  theta .. rad  falls N"
 };
 
 constexpr double kFallHeight = 0.20;   // m: torso origin below this = fallen

@@ -63,6 +63,14 @@ TEST(MotionScenario, ActionsWalkTheRobotAndPushesKnockItOver) {
   const double x = runner.world().robot(0).linkPose(torso).translation().x();
   EXPECT_GT(x, -2.0 + 0.6);  // ~3 s at up to 250 mm/s (with the start ramp)
   EXPECT_GT(runner.world().robot(0).linkPose(torso).translation().z(), 0.25);  // still up
+  // The run summary's per-robot line reports the same torso position.
+  const simswift::runner::RunStats walked = runner.stats();
+  ASSERT_EQ(walked.robots.size(), 1u);
+  EXPECT_NEAR(walked.robots[0].x, x, 1e-9);
+  EXPECT_NEAR(walked.robots[0].theta, 0.0, 0.3);  // walked straight ahead (rad)
+  EXPECT_EQ(walked.robots[0].falls, 0);
+  EXPECT_EQ(walked.robotLines().rfind("  t0p1: x ", 0), 0u) << walked.robotLines();
   for (int i = 0; i < 200; ++i) runner.tick();
   EXPECT_LT(runner.world().robot(0).linkPose(torso).translation().z(), 0.2);  // pushed over
+  EXPECT_EQ(runner.stats().robots[0].falls, 1);
 }
