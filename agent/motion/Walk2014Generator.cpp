@@ -28,6 +28,13 @@ double parabolicLift(double f) {
   f = std::max(0.0, std::min(1.0, f));
   return 4 * f * (1 - f);
 }
+// Gain for a command at `fraction` (0..1) of its limit, from a table at 25,
+// 50, 75 and 100 %: linear in between, the 25 % entry below.
+double tableGain(const std::array<double, 4>& g, double fraction) {
+  const double u = std::max(0.0, std::min(3.0, 4.0 * std::fabs(fraction) - 1.0));
+  const int i = std::min(2, static_cast<int>(u));
+  return g[i] + (g[i + 1] - g[i]) * (u - i);
+}
 double smoothBlend(double f) {
   f = std::max(0.0, std::min(1.0, f));
   return 0.5 - 0.5 * std::cos(kPi * f);
@@ -167,8 +174,10 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
     case State::Walking: {
       t_ += dt;
       const double frac = std::min(1.0, t_ / period_);
-      const double F = cfg_.forward_gain * step_speed_.forward * period_;
-      const double L = cfg_.left_gain * step_speed_.left * 2 * period_;
+      const double gain_f = tableGain(cfg_.forward_gains, step_speed_.forward / cfg_.max_forward);
+      const double gain_l = tableGain(cfg_.left_gains, step_speed_.left / cfg_.max_left);
+      const double F = gain_f * step_speed_.forward * period_;
+      const double L = gain_l * step_speed_.left * 2 * period_;
       const double D = (cfg_.turn_gain * step_speed_.turn + turn_correction_) * period_;
       const bool lead = (L > 0 && swing_left_) || (L < 0 && !swing_left_);
       const double y_swing = lead ? L / 2 : 0.0, y_support = lead ? -L / 2 : 0.0;
@@ -197,8 +206,8 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       const double sx1 = swing_left_ ? xr_ : xl_, sy1 = swing_left_ ? yr_ : yl_;
       const double syaw1 = swing_left_ ? -th_ : th_;
       // The body moves opposite to its support foot (relative to the hips).
-      odo_.forward = -(sx1 - sx0) * cfg_.odometry_forward_scale;
-      odo_.left = -(sy1 - sy0) * cfg_.odometry_left_scale;
+      odo_.forward = -(sx1 - sx0) / gain_f * cfg_.odometry_forward_scale;
+      odo_.left = -(sy1 - sy0) / gain_l * cfg_.odometry_left_scale;
       odo_.turn = -(syaw1 - syaw0) * cfg_.odometry_turn_scale;
       const FootPressure pressure = footPressure(s);
       if (pressure.total >= cfg_.min_foot_weight) {

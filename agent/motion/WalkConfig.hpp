@@ -3,6 +3,8 @@
 // Units: mm, mm/s, rad, rad/s, s, N.
 #pragma once
 
+#include <array>
+
 namespace agent::motion {
 
 struct WalkConfig {
@@ -66,12 +68,18 @@ struct WalkConfig {
   // step geometry gains, so that the achieved speed matches the command
   // despite foot slip, and odometry scales from the executed foot motion to
   // the body motion it really produces.
-  double forward_gain = 1.3;  // measured: 1.0 achieved ~72 % forward
-  double left_gain = 1.3;     // measured: 1.0 achieved ~75 % sideways
+  // Slip is not proportional to speed (slow steps lose relatively more), so
+  // the forward and sideways gains are a table over the commanded fraction of
+  // max_forward / max_left: at 25, 50, 75 and 100 %, linear in between, the
+  // 25 % value below. bench_motion prints achieved / commanded per entry.
+  std::array<double, 4> forward_gains{1.73, 1.48, 1.36, 1.27};  // measured (bench_motion); 1.0 achieved ~72 %
+  std::array<double, 4> left_gains{1.53, 1.57, 1.54, 1.33};     // measured; 1.0 achieved ~75 %
   double turn_gain = 1.0;
-  double odometry_forward_scale = 0.8;  // achieved / foot motion, measured
-  double odometry_left_scale = 0.8;
-  double odometry_turn_scale = 0.6;
+  // Odometry is the commanded (pre-gain) step scaled by these: the gains make
+  // the body move as commanded, and the scales take up what is left.
+  double odometry_forward_scale = 1.04;  // achieved / commanded step, measured
+  double odometry_left_scale = 1.04;
+  double odometry_turn_scale = 0.6;      // achieved / foot turn (no gain table)
 
   // --- Heading hold: the yaw rate measured by GyroscopeZ over each step is
   // compared with the step's turn; a fraction of the error is added to the

@@ -20,7 +20,12 @@
 //     - {team: 0, player: 1, x: -1.0, y: 0.0, theta: 0.0,   # m, m, rad (field frame)
 //        posture: stand, program: builtin,
 //        script: [{t: 2.0, joint: HeadYaw, angle: 0.5, duration: 0.5}],
-//        buttons: [{t: 3.0, button: chest, duration: 0.1}]}
+//        buttons: [{t: 3.0, button: chest, duration: 0.1}],
+//        actions: [{t: 1.0, action: walk, forward: 300, left: 0, turn: 0},  # mm/s, rad/s
+//                  {t: 6.0, action: kick, foot: right, power: 1, direction: 0},
+//                  {t: 9.0, push: {x: 3.0, y: 0.0}}]}   # m/s added to the torso (field axes)
+//      actions run the robot's Motion (agent/motion) from a timed list: walk, stand,
+//      kick, getup_front, getup_back, dead, crouch, limp, none.
 //
 // Unknown keys and bad values throw ConfigError naming file, line and key:
 //   scenario.yaml:7: robots[1].team: must be 0..1 (got 3)

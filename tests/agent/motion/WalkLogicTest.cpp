@@ -3,6 +3,7 @@
 // Units: mm, mm/s, rad, rad/s, s, N.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "agent/motion/Walk2014Generator.hpp"
@@ -31,7 +32,8 @@ agent::libagent::SensorValues withWeight(double left_n, double right_n) {
 // hold, odometry turn from the feet.
 WalkConfig geometryConfig() {
   WalkConfig c;
-  c.forward_gain = c.left_gain = c.turn_gain = 1.0;
+  c.forward_gains = c.left_gains = {1.0, 1.0, 1.0, 1.0};
+  c.turn_gain = 1.0;
   c.odometry_forward_scale = c.odometry_left_scale = c.odometry_turn_scale = 1.0;
   c.heading_gain = 0.0;
   c.odometry_turn_from_gyro = false;
@@ -200,4 +202,27 @@ TEST(WalkGenerator, TurnAndSideOdometryHaveTheRightSigns) {
     EXPECT_LT(left, -150 * 3.5 * 0.7);
     EXPECT_GT(left, -150 * 3.5 * 1.05);
   }
+}
+
+// The forward gain comes from the table at the commanded fraction of
+// max_forward; odometry reports the commanded (pre-gain) motion.
+TEST(WalkGenerator, GainTableScalesTheStepAndOdometryReportsTheCommand) {
+  WalkConfig c = geometryConfig();
+  c.forward_gains = {1.0, 1.5, 2.0, 2.0};  // 150 mm/s = 50 % of 300 -> gain 1.5
+  Walk2014Generator walk(c);
+  walk.setRequest(true, {150, 0, 0});
+  agent::libagent::JointValues out{};
+  const auto air = withWeight(0, 0);
+  for (int i = 0; i < 300; ++i) walk.tick(air, 0.01, out);  // ramp up to 150
+  ASSERT_EQ(walk.latched().forward, 150);
+  double max_x = 0, forward = 0;
+  for (int i = 0; i < 200; ++i) {
+    walk.tick(air, 0.01, out);
+    max_x = std::max({max_x, walk.feet().xl, walk.feet().xr});
+    forward += walk.lastOdometry().forward;
+  }
+  // The swing foot lands F / 2 ahead of the hips, F = gain * speed * T (mm).
+  EXPECT_NEAR(max_x, 1.5 * 150 * c.period / 2, 0.5);
+  // 2 s at 150 mm/s, stepping all the time in the air: 300 mm within 5 %.
+  EXPECT_NEAR(forward, 300, 15);
 }
