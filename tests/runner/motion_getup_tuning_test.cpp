@@ -3,8 +3,11 @@
 // with keyframes read from a text file, so sequences can be tuned without a
 // rebuild. Line format (rad, s; symmetric arms/legs as in Generators.cpp):
 //   dur sp sr ey er hyp hr hp kn ap ar [joint=value ...]
-//   crouch dur | stand dur
-// Prints torso height (m), AngleX / AngleY (rad) and the mode every 0.1 s.
+//   crouch dur | stand dur | front (the front get-up's frames)
+// Prints torso height (m), AngleX / AngleY (rad) and the mode every 0.1 s
+// (GETUP_QUIET: only the RESULT line). GETUP_SEED = trial (push and noise),
+// GETUP_SEED_BASE = noise seed base, GETUP_ONE = stop after the first attempt,
+// GETUP_ROLL = score the chest facing down. scripts/tune-getup-roll.py drives it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,6 +35,11 @@ std::vector<agent::motion::Keyframe> readFrames(const std::string& path, const a
     std::istringstream ls(line);
     std::string first;
     ls >> first;
+    if (first == "front") {  // the whole front get-up, e.g. after a roll onto the front
+      const auto front = agent::motion::getupFrontFrames(cfg);
+      f.insert(f.end(), front.begin(), front.end());
+      continue;
+    }
     if (first == "crouch" || first == "stand") {
       double d;
       ls >> d;
@@ -79,14 +87,18 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
   if (const char* file = std::getenv("GETUP_FRAMES")) {
     (forwards ? cfg.getup_front : cfg.getup_back) = readFrames(file, cfg.walk);
   }
-  MotionHarness h(100 + trial + (forwards ? 0 : 50), -3.0, 0.0, 0.0, "", cfg);
+  // GETUP_SEED_BASE: tune on other noise seeds than the test's (100 front, 150 back).
+  const char* base_env = std::getenv("GETUP_SEED_BASE");
+  const int base = base_env ? std::atoi(base_env) : (forwards ? 100 : 150);
+  MotionHarness h(base + trial, -3.0, 0.0, 0.0, "", cfg);
   h.request(ActionType::STAND);
   h.run(1.0);
   const double dv = 3.0 + 0.1 * trial;
   h.push(forwards ? dv : -dv, 0.02 * (trial - 5));
   bool fell = false;
-  double up_at = -1, best = -9;
-  std::vector<double> window;
+  double up_at = -1, best = -9, best_h = 0;
+  bool face_down = false;  // the first attempt has had the chest down (a back roll worked)
+  std::vector<double> window, window_h;
   const bool one = std::getenv("GETUP_ONE") != nullptr;  // stop after the first attempt
   for (int i = 0; i < 1300; ++i) {
     h.run(0.01);
@@ -101,11 +113,20 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
     if (h.motion().getupAttempts() == 1 && h.motion().mode() == agent::motion::MotionModule::Mode::Getup)
     {
       // Held for 0.5 s (the minimum over the last 50 ticks), so a throw that falls back does not count.
-      // GETUP_ROLL: score how far a back sequence rolls the robot face down instead.
-      window.push_back(std::getenv("GETUP_ROLL") ? s[S::InertialSensor_AngleY] - std::fabs(s[S::InertialSensor_AngleX]) : h.torsoHeight() - 0.2 * std::fabs(s[S::InertialSensor_AngleY]) -
-                       0.2 * std::fabs(s[S::InertialSensor_AngleX]));
+      // GETUP_ROLL scores how far the chest faces down (the torso x axis against
+      // world z: -1 on the back, 0 on the side or sitting, +1 face down).
+      const auto& robot = h.runner().world().robot(0);
+      const double chest_down = -robot.linkPose(robot.model().rootLink()).rotation().col(0).z();
+      window.push_back(std::getenv("GETUP_ROLL") ? chest_down
+                                                 : h.torsoHeight() - 0.2 * std::fabs(s[S::InertialSensor_AngleY]) -
+                                                       0.2 * std::fabs(s[S::InertialSensor_AngleX]));
       if (window.size() > 50) window.erase(window.begin());
       if (window.size() == 50) best = std::max(best, *std::min_element(window.begin(), window.end()));
+      // After a roll onto the front: how high the torso then rises (held 0.5 s, m).
+      face_down = face_down || chest_down > 0.9;
+      if (face_down) window_h.push_back(h.torsoHeight());
+      if (window_h.size() > 50) window_h.erase(window_h.begin());
+      if (window_h.size() == 50) best_h = std::max(best_h, *std::min_element(window_h.begin(), window_h.end()));
     }
     if (one && h.motion().getupAttempts() >= 1 && h.motion().mode() != agent::motion::MotionModule::Mode::Getup &&
         !(fell && st.posture == agent::blackboard::Posture::STANDING))
@@ -125,6 +146,6 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
       break;
     }
   }
-  std::printf("RESULT %s trial %d: %s up_at %.2f attempts %d best %.3f\n", forwards ? "front" : "back", trial,
-              up_at >= 0 ? "UP" : "down", up_at, h.motion().getupAttempts(), best);
+  std::printf("RESULT %s trial %d: %s up_at %.2f attempts %d best %.3f besth %.3f\n", forwards ? "front" : "back",
+              trial, up_at >= 0 ? "UP" : "down", up_at, h.motion().getupAttempts(), best, best_h);
 }
