@@ -10,11 +10,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <map>
 #include <memory>
 #include <string>
 
 #include "BenchResults.hpp"
+#include "agent/program/Postures.hpp"
 #include "sim/camera/RobotCameras.hpp"
 #include "sim/camera/Yuv.hpp"
 #include "sim/world/World.hpp"
@@ -25,25 +25,11 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
+// The robot program's standing posture (agent/program/Postures.hpp), model joint order.
 std::vector<double> standingPosture(const NaoModel& m) {
-  std::vector<double> q(m.joints().size(), 0.0);
-  const std::map<std::string, double> set = {
-      {"LHipPitch", -0.2}, {"RHipPitch", -0.2}, {"LKneePitch", 0.4}, {"RKneePitch", 0.4},
-      {"LAnklePitch", -0.2}, {"RAnklePitch", -0.2}, {"LShoulderPitch", 1.4}, {"RShoulderPitch", 1.4}};
-  for (const auto& [name, angle] : set)
-    if (m.jointIndex(name) >= 0) q[m.jointIndex(name)] = angle;
-  return q;
+  return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
-void hold(RobotBody& r, const std::vector<double>& q) {
-  std::array<float, 25> a{}, s{};
-  for (int i = 0; i < 25; ++i) {
-    const int j = r.model().jointForLibagent(i);
-    a[i] = j >= 0 ? static_cast<float>(q[j]) : 0.f;
-    s[i] = 1.f;
-  }
-  r.setCommand(a, s);
-}
 
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
@@ -98,7 +84,7 @@ int main(int argc, char** argv) {
   {
     World world(FieldConfig::spl2017());
     const int r = world.addRobot(model, -1.0, 0.0, 0.0, q);
-    hold(world.robot(r), q);
+    world.robot(r).holdPosture(q);
     world.placeBall(0.0, 0.0);
     world.setBallVelocity({-0.5, 0.1, 0});
     RobotCameras cams(world);

@@ -196,6 +196,16 @@ void RobotBody::teleport(const Eigen::Isometry3d& torso_pose) {
   for (auto& f : feedback_) f = dJointFeedback{};
 }
 
+void RobotBody::holdPosture(const std::vector<double>& posture, float stiffness) {
+  std::array<float, 25> angles{}, stiffnesses{};
+  for (int i = 0; i < 25; ++i) {
+    const int j = model_->jointForLibagent(i);
+    angles[i] = j >= 0 && j < static_cast<int>(posture.size()) ? static_cast<float>(posture[j]) : 0.0f;
+    stiffnesses[i] = stiffness;
+  }
+  setCommand(angles, stiffnesses);
+}
+
 void RobotBody::setCommand(const std::array<float, 25>& angles,
                            const std::array<float, 25>& stiffnesses) {
   for (int i = 0; i < 25; ++i) servo_.setTarget(model_->jointForLibagent(i), angles[i], stiffnesses[i]);

@@ -48,6 +48,8 @@ class RobotBody {
   // --- Commands (libagent order, 25 slots). Latched; the runner decides
   // when they take effect (one 10 ms cycle after they were written).
   void setCommand(const std::array<float, 25>& angles, const std::array<float, 25>& stiffnesses);
+  // The same for a posture in model joint order (rad), every joint at `stiffness`.
+  void holdPosture(const std::vector<double>& posture, float stiffness = 1.0f);
   const ServoCommandStats& commandStats() const { return servo_.stats(); }
 
   // Called by the World before every physics substep of length dt (s).

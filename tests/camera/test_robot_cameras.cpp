@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <map>
 #include <memory>
 
 #include "CameraTestUtil.hpp"
+#include "agent/program/Postures.hpp"
 #include "sim/camera/FrameDumper.hpp"
 #include "sim/camera/Overview.hpp"
 #include "sim/camera/Png.hpp"
@@ -27,15 +27,9 @@ std::shared_ptr<const NaoModel> naoModel() {
   return model;
 }
 
+// The robot program's standing posture (agent/program/Postures.hpp), model joint order.
 std::vector<double> standingPosture(const NaoModel& m) {
-  std::vector<double> q(m.joints().size(), 0.0);
-  const std::map<std::string, double> set = {
-      {"LHipPitch", -0.2}, {"RHipPitch", -0.2}, {"LKneePitch", 0.4}, {"RKneePitch", 0.4},
-      {"LAnklePitch", -0.2}, {"RAnklePitch", -0.2}, {"LShoulderPitch", 1.4}, {"RShoulderPitch", 1.4},
-      {"LShoulderRoll", 0.1}, {"RShoulderRoll", -0.1}, {"HeadPitch", 0.1}};
-  for (const auto& [name, angle] : set)
-    if (m.jointIndex(name) >= 0) q[m.jointIndex(name)] = angle;
-  return q;
+  return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
 

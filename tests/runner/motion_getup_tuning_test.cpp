@@ -103,11 +103,7 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
   for (int i = 0; i < 1300; ++i) {
     h.run(0.01);
     const auto st = h.state();
-    if (st.posture == agent::blackboard::Posture::FALLEN_FORWARD ||
-        st.posture == agent::blackboard::Posture::FALLEN_BACKWARD ||
-        st.posture == agent::blackboard::Posture::FALLEN_SIDEWAYS ||
-        st.posture == agent::blackboard::Posture::GETTING_UP)
-      fell = true;
+    if (motion_test::downOrGettingUp(st.posture)) fell = true;
     const float* s = h.checked().last_sensed.sensors;
     // Progress of the first attempt: high and upright is good.
     if (h.motion().getupAttempts() == 1 && h.motion().mode() == agent::motion::MotionModule::Mode::Getup)

@@ -14,6 +14,12 @@
 
 namespace motion_test {
 
+// Down or on the way up: the postures a pushed-over robot passes through.
+inline bool downOrGettingUp(agent::blackboard::Posture p) {
+  using P = agent::blackboard::Posture;
+  return p == P::FALLEN_FORWARD || p == P::FALLEN_BACKWARD || p == P::FALLEN_SIDEWAYS || p == P::GETTING_UP;
+}
+
 // Forwards to the MotionModule and checks every command it sends against the
 // joint limits and the per-tick speed limit (the clipper's promise).
 class CheckedMotion : public agent::program::MotionGenerator {

@@ -56,11 +56,7 @@ void getupTrials(bool forwards) {
     for (int i = 0; i < 1000 && !up_again; ++i) {  // standing within 10 s of the push, fall included
       h.run(0.01);
       const auto st = h.state();
-      if (st.posture == agent::blackboard::Posture::FALLEN_FORWARD ||
-          st.posture == agent::blackboard::Posture::FALLEN_BACKWARD ||
-          st.posture == agent::blackboard::Posture::FALLEN_SIDEWAYS ||
-          st.posture == agent::blackboard::Posture::GETTING_UP)
-        fell = true;
+      if (motion_test::downOrGettingUp(st.posture)) fell = true;
       // Standing again: reported STANDING, torso above 0.25 m and upright within 0.3 rad.
       const float* sv = h.checked().last_sensed.sensors;
       const bool upright = std::fabs(sv[agent::libagent::Sensors::InertialSensor_AngleX]) < 0.3f &&

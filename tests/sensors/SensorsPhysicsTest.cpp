@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <map>
 
+#include "agent/program/Postures.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
 
@@ -22,33 +22,15 @@ std::shared_ptr<const NaoModel> nao() {
   return model;
 }
 
-// Knees a little bent, arms hanging forward-down (rad, model joint order).
-std::vector<double> stand(const NaoModel& m) {
-  std::vector<double> q(m.joints().size(), 0.0);
-  const std::map<std::string, double> set = {
-      {"LHipPitch", -0.25},    {"RHipPitch", -0.25},    {"LKneePitch", 0.5},     {"RKneePitch", 0.5},
-      {"LAnklePitch", -0.25},  {"RAnklePitch", -0.25},  {"LShoulderPitch", 1.5}, {"RShoulderPitch", 1.5},
-      {"LShoulderRoll", 0.15}, {"RShoulderRoll", -0.15},
-  };
-  for (const auto& [name, a] : set)
-    if (m.jointIndex(name) >= 0) q[m.jointIndex(name)] = a;
-  return q;
-}
-
-void command(RobotBody& r, const std::vector<double>& q, float stiffness) {
-  std::array<float, 25> a{}, s{};
-  for (int i = 0; i < 25; ++i) {
-    const int j = r.model().jointForLibagent(i);
-    a[i] = j >= 0 ? static_cast<float>(q[j]) : 0.f;
-    s[i] = stiffness;
-  }
-  r.setCommand(a, s);
+// The robot program's standing posture (agent/program/Postures.hpp), model joint order.
+std::vector<double> standingPosture(const NaoModel& m) {
+  return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
 int addRobot(World& w, double x, double y, double theta, float stiffness) {
-  const auto q = stand(*nao());
+  const auto q = standingPosture(*nao());
   const int i = w.addRobot(nao(), x, y, theta, q);
-  command(w.robot(i), q, stiffness);
+  w.robot(i).holdPosture(q, stiffness);
   return i;
 }
 
@@ -141,7 +123,7 @@ TEST(SensorsPhysics, StandingRobotFeelsItsWeightAndGravity) {
     EXPECT_NEAR(r.sensors[first + 5], 0.0, 0.04) << "CoP y, foot " << foot;
   }
   // Joint readings: angles near the commanded stand, plausible temperatures and currents.
-  const auto q = stand(*nao());
+  const auto q = standingPosture(*nao());
   for (int s = 0; s < 25; ++s) {
     const int j = nao()->jointForLibagent(s);
     const bool hand = nao()->joints()[j].name.find("Hand") != std::string::npos;

@@ -3,9 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <map>
 
+#include "agent/program/Postures.hpp"
 #include "sim/world/World.hpp"
+
 
 using namespace simswift;
 
@@ -17,39 +18,17 @@ std::shared_ptr<const NaoModel> naoModel() {
   return model;
 }
 
-// A relaxed stand (rad): knees slightly bent, torso upright, arms down.
+// The robot program's standing posture (agent/program/Postures.hpp), model joint order.
 std::vector<double> standingPosture(const NaoModel& m) {
-  std::vector<double> q(m.joints().size(), 0.0);
-  const std::map<std::string, double> set = {
-      {"LHipPitch", -0.2},      {"RHipPitch", -0.2},      {"LKneePitch", 0.4},
-      {"RKneePitch", 0.4},      {"LAnklePitch", -0.2},    {"RAnklePitch", -0.2},
-      {"LShoulderPitch", 1.4},  {"RShoulderPitch", 1.4},  {"LShoulderRoll", 0.1},
-      {"RShoulderRoll", -0.1},
-  };
-  for (const auto& [name, angle] : set) {
-    const int j = m.jointIndex(name);
-    if (j >= 0) q[j] = angle;
-  }
-  return q;
+  return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
-// Commands `posture` (model joint order) at stiffness 1 through the
-// libagent-ordered interface.
-void holdPosture(RobotBody& r, const std::vector<double>& posture) {
-  std::array<float, 25> angles{}, stiff{};
-  for (int i = 0; i < 25; ++i) {
-    const int j = r.model().jointForLibagent(i);
-    angles[i] = j >= 0 ? static_cast<float>(posture[j]) : 0.f;
-    stiff[i] = 1.f;
-  }
-  r.setCommand(angles, stiff);
-}
 
 int addStandingRobot(World& w, double x, double y, double theta) {
   auto model = naoModel();
   const auto q = standingPosture(*model);
   const int i = w.addRobot(model, x, y, theta, q);
-  holdPosture(w.robot(i), q);
+  w.robot(i).holdPosture(q);
   return i;
 }
 
