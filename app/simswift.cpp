@@ -25,6 +25,8 @@ const char* kUsage =
     "\n"
     "Runs a scenario in lock-step with its robot programs and prints\n"
     "  sim S s | wall W s | Fx real time | falls N | blowups N | hash H\n"
+    "then a line per robot: where it ended, its falls, up or down\n"
+    "  tTpP: x X m  y Y m  theta A rad  falls N  up|down\n"
     "\n"
     "options:\n"
     "  --realtime             pace the run with the wall clock (default: as fast as possible)\n"

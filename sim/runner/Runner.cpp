@@ -63,7 +63,7 @@ std::string RunStats::robotLines() const {
   std::ostringstream s;
   for (const RobotEnd& r : robots)
     s << "  t" << r.team << "p" << r.player << ": x " << fmt("%.3f", r.x) << " m  y " << fmt("%.3f", r.y)
-      << " m  theta " << fmt("%.3f", r.theta) << " rad  falls " << r.falls << "\n";
+      << " m  theta " << fmt("%.3f", r.theta) << " rad  falls " << r.falls << (r.down ? "  down" : "  up") << "\n";
   return s.str();
 }
 
@@ -445,7 +445,8 @@ RunStats Runner::stats() const {
       const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
       const Eigen::Vector3d fwd = torso.linear().col(0);  // torso x axis in the field frame
       s.robots.push_back({scenario_.robots[i].team, scenario_.robots[i].player, torso.translation().x(),
-                          torso.translation().y(), std::atan2(fwd.y(), fwd.x()), robots_[i]->falls});
+                          torso.translation().y(), std::atan2(fwd.y(), fwd.x()), robots_[i]->falls,
+                          robots_[i]->fallen});
     }
     if (robots_[i]->host) s.skipped_cycles += robots_[i]->host->skippedCycles();
     if (world_ && static_cast<int>(i) < world_->numRobots()) {

@@ -64,11 +64,12 @@ struct RunStats {
     int team = 0, player = 0;
     double x = 0, y = 0, theta = 0;  // torso position and heading
     int falls = 0;
+    bool down = false;  // on the ground at the end (fallen and not yet back up)
   };
   std::vector<RobotEnd> robots;
 
   std::string summary() const;       // the one-line summary
-  std::string robotLines() const;    // one line per robot: "  t0p1: x .. m  y .. m  theta .. rad  falls N"
+  std::string robotLines() const;    // one line per robot: "  t0p1: x .. m  y .. m  theta .. rad  falls N  up|down"
 };
 
 constexpr double kFallHeight = 0.20;   // m: torso origin below this = fallen

@@ -46,7 +46,7 @@ TEST(MotionScenario, BadActionNamesTheLineAndKey) {
 }
 
 // End to end: the scenario walks the robot forward for 3 s, then a push
-// knocks it over.
+// knocks it over and it gets up again; the summary's robot line says so.
 TEST(MotionScenario, ActionsWalkTheRobotAndPushesKnockItOver) {
   Scenario sc = Scenario::parse(
       "seed: 3\nrobots:\n"
@@ -69,8 +69,16 @@ TEST(MotionScenario, ActionsWalkTheRobotAndPushesKnockItOver) {
   EXPECT_NEAR(walked.robots[0].x, x, 1e-9);
   EXPECT_NEAR(walked.robots[0].theta, 0.0, 0.3);  // walked straight ahead (rad)
   EXPECT_EQ(walked.robots[0].falls, 0);
+  EXPECT_FALSE(walked.robots[0].down);
   EXPECT_EQ(walked.robotLines().rfind("  t0p1: x ", 0), 0u) << walked.robotLines();
+  EXPECT_NE(walked.robotLines().find("falls 0  up\n"), std::string::npos) << walked.robotLines();
   for (int i = 0; i < 200; ++i) runner.tick();
   EXPECT_LT(runner.world().robot(0).linkPose(torso).translation().z(), 0.2);  // pushed over
+  EXPECT_EQ(runner.stats().robots[0].falls, 1);
+  EXPECT_TRUE(runner.stats().robots[0].down);
+  EXPECT_NE(runner.stats().robotLines().find("falls 1  down\n"), std::string::npos) << runner.stats().robotLines();
+  // It gets up by itself (auto get-up) within 10 s of the push.
+  for (int i = 0; i < 800; ++i) runner.tick();
+  EXPECT_FALSE(runner.stats().robots[0].down) << runner.stats().robotLines();
   EXPECT_EQ(runner.stats().robots[0].falls, 1);
 }
