@@ -247,11 +247,10 @@ std::vector<Keyframe> getupBackFrames(const WalkConfig& cfg) {
   // Lying on the back the NAO cannot sit up: the shoulders (2.3 N*m) cannot
   // prop the torso, and bending the knees lets the legs rise instead of the
   // torso. So it rolls over its left side onto the front (about 1.5 s) and
-  // then runs the front get-up. The roll poses were found by an evolution
-  // strategy in simswift (tests/runner/motion_getup_tuning_test.cpp) scored
-  // on standing up after the whole sequence, on other noise seeds than the
-  // test's: 50 / 50 pushed-over trials stand on the first attempt, ~8 s after
-  // the push.
+  // then runs the front get-up. The three roll poses were found in simswift
+  // by scripts/tune-getup-roll.py (an evolution strategy scored on standing
+  // up after the whole sequence, tuned on other noise seeds than the test's):
+  // 50 / 50 pushed-over trials stand on the first attempt, ~8 s after the push.
   std::vector<Keyframe> f;
   JointArray a{};
   // V-sit: hips flexed with straight legs lifts the torso to ~45 deg,
@@ -259,20 +258,21 @@ std::vector<Keyframe> getupBackFrames(const WalkConfig& cfg) {
   setArms(a, 0.75f, 0.2f, 0.0f, -0.05f);
   setLegs(a, 0, 0, -1.5f, 0, 0);
   f.push_back({0.5, a, 1.0f});
-  // Wind up: left leg stays up and bent, right leg swings down and back,
-  // arms cross to the right.
+  // Wind up: the left thigh stays raised, knee half bent; the right hip
+  // extends with the knee folded; both arms out to the sides.
   f.push_back({0.55,
                wholeBody({0.629f, 0.861f, -0.011f, -0.596f}, {0.181f, -0.456f, -0.613f, 1.336f}, 0.74f,
                          {-0.135f, -1.129f, 0.62f, -1.18f, 0.76f}, {0.078f, 0.48f, 1.831f, 0.213f, -0.725f}),
                1.0f});
-  // Whip (0.2 s): both arms overhead, legs kick straight: the body turns over
-  // the left side.
+  // Whip (0.2 s): both arms swing overhead (the left one in across the
+  // body), both hips extend and the right leg straightens: the body turns
+  // over its left side.
   f.push_back({0.2,
                wholeBody({-1.538f, -0.31f, -1.29f, -0.646f}, {-1.591f, -1.037f, -0.657f, 1.34f}, -0.374f,
                          {-0.184f, 0.329f, 0.548f, -0.018f, -0.236f}, {0.37f, 0.48f, -0.09f, 0.533f, -0.503f}),
                1.0f});
-  // Land face down with the arms coming back along the body and the knees
-  // drawn in, ready for the front get-up.
+  // Land face down: left arm back along the body, right arm out to the
+  // side, both knees drawn in; the front get-up starts from here.
   f.push_back({0.85,
                wholeBody({1.741f, -0.31f, 0.373f, -0.701f}, {0.326f, -1.32f, 1.469f, 0.911f}, 0.74f,
                          {0.518f, -1.013f, 1.66f, -1.18f, -0.173f}, {-0.236f, -0.702f, 1.132f, 0.783f, -0.306f}),
