@@ -30,7 +30,6 @@ std::vector<double> standingPosture(const NaoModel& m) {
   return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
-
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
 }  // namespace

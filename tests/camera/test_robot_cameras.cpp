@@ -32,7 +32,6 @@ std::vector<double> standingPosture(const NaoModel& m) {
   return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
-
 std::vector<uint8_t> copyRgb(const CameraImages& im, int cam) {
   return std::vector<uint8_t>(im.rgb[cam], im.rgb[cam] + im.rgbBytes());
 }

@@ -7,7 +7,6 @@
 #include "agent/program/Postures.hpp"
 #include "sim/world/World.hpp"
 
-
 using namespace simswift;
 
 namespace {
@@ -22,7 +21,6 @@ std::shared_ptr<const NaoModel> naoModel() {
 std::vector<double> standingPosture(const NaoModel& m) {
   return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
 }
-
 
 int addStandingRobot(World& w, double x, double y, double theta) {
   auto model = naoModel();
