@@ -133,12 +133,20 @@ void BodyHost::takeOwnership(int fd) {
 
 void BodyHost::setUpNamed() {
   int fd = -1;
-  void* p = openSized(names_.extension, sizeof(SimExtension), &fd);
-  ext_ = static_cast<SimExtension*>(p);
-  if (flock(fd, LOCK_EX) != 0) {
-    const std::string e = sysError("flock " + names_.extension);
+  for (;;) {
+    void* p = openSized(names_.extension, sizeof(SimExtension), &fd);
+    ext_ = static_cast<SimExtension*>(p);
+    if (flock(fd, LOCK_EX) != 0) {
+      const std::string e = sysError("flock " + names_.extension);
+      close(fd);
+      munmap(p, sizeof(SimExtension));
+      throw BridgeError(e);
+    }
+    // Removed as stale by another run while we waited for the lock: again.
+    struct stat st {};
+    if (fstat(fd, &st) == 0 && st.st_nlink > 0) break;
     close(fd);
-    throw BridgeError(e);
+    munmap(p, sizeof(SimExtension));
   }
   takeOwnership(fd);  // throws (leaving everything as it was) if a live simulator owns the robot
   cleanup::registerShm(names_.extension);

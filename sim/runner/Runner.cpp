@@ -198,6 +198,13 @@ void Runner::start() {
     robots_.resize(scenario_.robots.size());
     for (auto& r : robots_) r = std::make_unique<Robot>();
   }
+  // Objects a killed run left for robots not in this run; this run's own
+  // robots take theirs over (a waiting program may hold them open).
+  std::vector<std::string> ours;
+  for (const RobotSpec& spec : scenario_.robots)
+    if (spec.program == RobotSpec::Program::External)
+      ours.push_back(spec.bare_names ? al::bareNames().memory : al::simulationNames(spec.team, spec.player).memory);
+  if (!ours.empty()) bridge::removeStaleObjects(ours);
   for (size_t i = 0; i < scenario_.robots.size(); ++i) {
     Robot& r = *robots_[i];
     r.spec = scenario_.robots[i];
