@@ -253,30 +253,24 @@ void Runner::setFreeRunning(bool on) {
       r->host->setSync(on ? SyncMode::FreeRunning : SyncMode::LockStep);
 }
 
-// A robot's first answer: its program may start before or after the
-// simulator, so this waits up to attach_timeout (wall clock: only how long
-// to wait for another process, never simulation).
+// An external robot's first answer: its program may start before or after
+// the simulator, so this waits up to attach_timeout (wall clock: only how
+// long to wait for another process, never simulation).
 void Runner::waitForFirstAnswer(Robot& r) {
-  const bool external = r.spec.program == RobotSpec::Program::External;
-  if (!r.host->waitAnswer(external ? 0.5 : scenario_.attach_timeout_s)) {
-    if (external)
-      std::fprintf(stderr,
-                   "waiting for robot %s on %s: start its robot program, e.g. `simswift-agent --team %d --player "
-                   "%d%s`\n",
-                   r.tag.c_str(), r.host->memoryName().c_str(), r.spec.team, r.spec.player,
-                   r.spec.bare_names ? " --bare" : "");
+  if (!r.host->waitAnswer(0.5)) {
+    std::fprintf(stderr,
+                 "waiting for robot %s on %s: start its libagent robot program (or `simswift-agent --team %d "
+                 "--player %d%s`)\n",
+                 r.tag.c_str(), r.host->memoryName().c_str(), r.spec.team, r.spec.player,
+                 r.spec.bare_names ? " --bare" : "");
     if (!r.host->waitAnswer(scenario_.attach_timeout_s)) {
       std::ostringstream m;
       m << "robot " << r.tag << ": no robot program answered on " << r.host->memoryName() << " within "
-        << scenario_.attach_timeout_s << " s";
-      if (external)
-        m << " (program: external: start one, e.g. simswift-agent --team " << r.spec.team << " --player "
-          << r.spec.player << ")";
+        << scenario_.attach_timeout_s << " s (program: external: start one, e.g. simswift-agent --team "
+        << r.spec.team << " --player " << r.spec.player << ")";
       throw RunnerError(m.str());
     }
   }
-  r.attached = true;
-  r.perception = r.host->hasPerception();
 }
 
 void Runner::watchdogFail(const Robot& r, const char* thread) const {
@@ -357,9 +351,16 @@ void Runner::tick() {
   // 4.
   for (auto& rp : robots_) {
     Robot& r = *rp;
-    if (!r.attached) waitForFirstAnswer(r);
-    else if (r.host->sync() == SyncMode::LockStep && !r.host->waitAnswer(scenario_.watchdog_s))
+    const bool external = r.spec.program == RobotSpec::Program::External;
+    if (external && !r.attached) {
+      waitForFirstAnswer(r);
+    } else if (r.host->sync() == SyncMode::LockStep && !r.host->waitAnswer(scenario_.watchdog_s)) {
       watchdogFail(r, "motion");
+    }
+    if (!r.attached) {
+      r.attached = true;
+      r.perception = r.host->hasPerception();
+    }
   }
   // 5.
   for (auto& r : robots_) r->latched = r->host->readActuators();

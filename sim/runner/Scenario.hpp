@@ -29,7 +29,7 @@
 //      actions run the robot's Motion (agent/motion) from a timed list: walk, stand,
 //      kick, getup_front, getup_back, dead, crouch, limp, none.
 //
-// `team` is the SPL team number (0..99, as in the GameController). A match
+// `team` is the SPL team number (0..255, as in the GameController). A match
 // has at most two teams, told apart by colour: a robot's `colour` (blue or
 // red) defaults to blue for the first team number in the file and red for
 // the second; all robots of a team share one colour, the two teams differ.
@@ -37,7 +37,7 @@
 // /libagent-semaphore.
 //
 // Unknown keys and bad values throw ConfigError naming file, line and key:
-//   scenario.yaml:7: robots[1].team: must be 0..99 (got 300)
+//   scenario.yaml:7: robots[1].team: must be in [0, 255] (got 300)
 #pragma once
 
 #include <cstdint>

@@ -255,7 +255,7 @@ TEST(BodyHost, AdoptsObjectsAProgramCreatedFirst) {
 }
 
 TEST(BodyHost, RejectsRobotsOutsideTheTeamsAndPlayers) {
-  EXPECT_THROW(BodyHost(100, 1, BodyHost::Mode::InProcess), BridgeError);
+  EXPECT_THROW(BodyHost(256, 1, BodyHost::Mode::InProcess), BridgeError);
   EXPECT_THROW(BodyHost(-1, 1, BodyHost::Mode::InProcess), BridgeError);
   EXPECT_THROW(BodyHost(19, 0, BodyHost::Mode::InProcess), BridgeError);
   EXPECT_THROW(BodyHost(19, 6, BodyHost::Mode::InProcess), BridgeError);
