@@ -7,6 +7,7 @@
 // The physics version of these tests needs the perception integration.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
