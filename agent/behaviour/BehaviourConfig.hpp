@@ -87,6 +87,7 @@ struct SkillConfig {
   double robot_radius = 150.0;        // mm, for avoidance
   double avoid_distance = 600.0;      // mm: obstacles further (surface to surface) are ignored
   double avoid_gain = 60000.0;        // mm^2/s: repulsion = gain * (1/d - 1/avoid_distance)
+  double obstacle_timeout = 2.0;      // s: teammates heard longer ago are not avoided
   // HeadScan
   double scan_yaw = 1.0;           // rad, sweep between -scan_yaw and +scan_yaw
   double scan_speed = 1.0;         // rad/s (HeadYaw can do 8.27 rad/s; slower keeps images sharp)
@@ -94,6 +95,16 @@ struct SkillConfig {
   double head_yaw_limit = 2.0;     // rad, kept inside HeadYaw's +-2.0857
   double head_speed_limit = 8.0;   // rad/s, inside HeadYaw's 8.27 rad/s
   double camera_hfov = 1.0629;     // rad (60.9 deg)
+  double scan_lead = 1.25;         // head speed command / sweep speed (keeps up with the target)
+  double head_pitch_speed = 1.0;   // rad/s while scanning
+  // Looking at a ball: pitch = atan(head_height / distance) - look_pitch_offset,
+  // clamped to 0 .. look_max_pitch (the top camera looks 1.2 deg down, the
+  // bottom one 39.7 deg, so the ball stays in one of them).
+  double head_height = 450.0;      // mm, camera above the ground (standing)
+  double look_pitch_offset = 0.2;  // rad
+  double look_max_pitch = 0.45;    // rad
+  double look_yaw_speed = 3.0;     // rad/s
+  double look_pitch_speed = 2.0;   // rad/s
   // Spin
   double spin_speed = 0.8;         // rad/s (clamped to the walk's max_turn)
   // ApproachBall / Kick
@@ -101,6 +112,7 @@ struct SkillConfig {
   double approach_tolerance = 60.0;   // mm
   double kick_angle_tolerance = 0.2;  // rad
   double kick_duration = 2.0;         // s the kick request is held
+  double kick_power = 1.0;            // 0..1
   double ball_lost_time = 3.0;        // s without a sighting before the ball counts as lost
   double team_ball_max_age = 2.0;     // s: a teammate's sighting older than this is ignored
   Point2 kick_target{4500, 0};        // mm, opponent goal centre

@@ -24,8 +24,8 @@ blackboard::HeadCommand HeadScan::tick(double time) const {
   h.yaw = static_cast<float>(yawAt(time));
   h.pitch = static_cast<float>(s_.scan_pitch);
   // A little faster than the sweep so the head keeps up with its moving target.
-  h.yaw_speed = static_cast<float>(std::min(s_.head_speed_limit, 1.25 * speed()));
-  h.pitch_speed = static_cast<float>(std::min(s_.head_speed_limit, 1.0));
+  h.yaw_speed = static_cast<float>(std::min(s_.head_speed_limit, s_.scan_lead * speed()));
+  h.pitch_speed = static_cast<float>(std::min(s_.head_speed_limit, s_.head_pitch_speed));
   return h;
 }
 
@@ -33,9 +33,9 @@ blackboard::HeadCommand headLookAt(Point2 rel, const SkillConfig& s) {
   blackboard::HeadCommand h;
   const double d = std::max(1.0, std::hypot(rel.x, rel.y));
   h.yaw = static_cast<float>(std::clamp(std::atan2(rel.y, rel.x), -s.head_yaw_limit, s.head_yaw_limit));
-  h.pitch = static_cast<float>(std::clamp(std::atan2(450.0, d) - 0.2, 0.0, 0.45));
-  h.yaw_speed = static_cast<float>(std::min(s.head_speed_limit, 3.0));
-  h.pitch_speed = static_cast<float>(std::min(s.head_speed_limit, 2.0));
+  h.pitch = static_cast<float>(std::clamp(std::atan2(s.head_height, d) - s.look_pitch_offset, 0.0, s.look_max_pitch));
+  h.yaw_speed = static_cast<float>(std::min(s.head_speed_limit, s.look_yaw_speed));
+  h.pitch_speed = static_cast<float>(std::min(s.head_speed_limit, s.look_pitch_speed));
   return h;
 }
 

@@ -28,7 +28,7 @@ class HeadScan {
 };
 
 // Head command looking at a robot-relative ground point (mm): yaw toward it,
-// pitch down more the nearer it is (head about 450 mm above the ground).
+// pitch down more the nearer it is (SkillConfig's look_* fields).
 blackboard::HeadCommand headLookAt(Point2 relative, const SkillConfig& s);
 
 }  // namespace agent::behaviour

@@ -11,7 +11,7 @@ void Kick::start(const BehaviourInputs& in) {
   cmd_.foot = in.ball.relative.y >= 0 ? blackboard::Foot::LEFT : blackboard::Foot::RIGHT;
   const Point2 t = toRobotFrame(in.self.pose, s_.kick_target);
   cmd_.kick_direction = static_cast<float>(std::atan2(t.y, t.x));
-  cmd_.kick_power = 1.0f;
+  cmd_.kick_power = static_cast<float>(s_.kick_power);
 }
 
 Kick::Output Kick::tick(const BehaviourInputs& in) const {

@@ -26,7 +26,7 @@ Point2 WalkTo::repulsion(const BehaviourInputs& in, Point2 target) const {
   };
   std::vector<Obstacle> obs;
   for (const Teammate& t : in.teammates)
-    if (!t.penalised && t.time_since_heard <= 2.0) obs.push_back({position(t.pose), s_.robot_radius});
+    if (!t.penalised && t.time_since_heard <= s_.obstacle_timeout) obs.push_back({position(t.pose), s_.robot_radius});
   for (double sx : {-1.0, 1.0})
     for (double sy : {-1.0, 1.0})
       obs.push_back({{sx * f_.length / 2, sy * f_.goal_post_y}, f_.goal_post_radius});
