@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "agent/behaviour/Geometry.hpp"
@@ -119,6 +120,26 @@ struct SkillConfig {
 };
 
 enum class BehaviourKind : int32_t { FINDBALL_2016 = 0, FINDBALL_2017, STRIKER };
+
+// The scenario's spelling: "findball2016", "findball2017", "striker".
+inline const char* behaviourKindName(BehaviourKind k) {
+  switch (k) {
+    case BehaviourKind::FINDBALL_2016: return "findball2016";
+    case BehaviourKind::FINDBALL_2017: return "findball2017";
+    case BehaviourKind::STRIKER: return "striker";
+  }
+  return "?";
+}
+// False (kind untouched) for an unknown name, so a loader can report it.
+inline bool parseBehaviourKind(const std::string& name, BehaviourKind* kind) {
+  for (BehaviourKind k : {BehaviourKind::FINDBALL_2016, BehaviourKind::FINDBALL_2017,
+                          BehaviourKind::STRIKER})
+    if (name == behaviourKindName(k)) {
+      *kind = k;
+      return true;
+    }
+  return false;
+}
 
 struct BehaviourConfig {
   BehaviourKind kind = BehaviourKind::FINDBALL_2017;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "agent/behaviour/PositionalDistribution.hpp"
 
@@ -168,6 +169,55 @@ void setDistribution(FindBallViewData& d, const agent::behaviour::PositionalDist
   d.columns = p.columns();
   d.rows = p.rows();
   d.probabilities = p.probabilities();
+}
+
+}  // namespace sim::views
+
+#include "agent/behaviour/Behaviour.hpp"
+
+namespace sim::views {
+
+FindBallViewData robotView(const agent::behaviour::BehaviourInputs& in,
+                           const agent::behaviour::Behaviour& behaviour) {
+  using namespace agent::behaviour;
+  FindBallViewData d;
+  const BehaviourConfig& c = behaviour.config();
+  if (const FindBallResult* fb = behaviour.findBall()) {
+    setDistribution(d, fb->distribution);
+  } else {
+    setDistribution(d, PositionalDistribution::fromConfig(c.grid, c.field));
+  }
+  ViewRobot self;
+  self.player = in.player;
+  self.x = in.self.pose.x;
+  self.y = in.self.pose.y;
+  self.theta = in.self.pose.theta;
+  self.self = true;
+  const bool has = c.kind == BehaviourKind::FINDBALL_2016 || behaviour.searchSegment() >= 0;
+  if (has) {
+    self.has_target = true;
+    self.target_x = behaviour.searchPoint().x;
+    self.target_y = behaviour.searchPoint().y;
+  }
+  d.robots.push_back(self);
+  for (const Teammate& t : in.teammates) {
+    ViewRobot r;
+    r.player = t.player;
+    r.x = t.pose.x;
+    r.y = t.pose.y;
+    r.theta = t.pose.theta;
+    if (t.search && t.search->segment >= 0) {
+      r.has_target = true;
+      r.target_x = t.search->point.x;
+      r.target_y = t.search->point.y;
+    }
+    d.robots.push_back(r);
+  }
+  char caption[96];
+  std::snprintf(caption, sizeof caption, "t=%.1f s  robot %d  %s", in.time, in.player,
+                behaviourKindName(c.kind));
+  d.caption = caption;
+  return d;
 }
 
 }  // namespace sim::views

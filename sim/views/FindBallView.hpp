@@ -71,3 +71,19 @@ class FindBallView {
 void setDistribution(FindBallViewData& d, const agent::behaviour::PositionalDistribution& p);
 
 }  // namespace sim::views
+
+namespace agent::behaviour {
+struct BehaviourInputs;
+class Behaviour;
+}  // namespace agent::behaviour
+
+namespace sim::views {
+
+// One robot's view, as the thesis's tab shows it: the distribution its
+// FindBall class produced (team distribution for 2017), itself and its
+// search point, its teammates and the points their packets name.
+// The 2016 behaviour has no distribution: drawn uniform.
+FindBallViewData robotView(const agent::behaviour::BehaviourInputs& in,
+                           const agent::behaviour::Behaviour& behaviour);
+
+}  // namespace sim::views
