@@ -1,5 +1,7 @@
 #include "agent/behaviour/Behaviour.hpp"
 
+#include <cmath>
+
 namespace agent::behaviour {
 
 Behaviour::Behaviour(const BehaviourConfig& c)
@@ -26,7 +28,12 @@ BehaviourOutput Behaviour::tick(const BehaviourInputs& in) {
   const FindBallResult* fb = findball_ ? &findball_->tick(in) : nullptr;  // (1)
 
   RoleOutput role;
-  if (in.game.state != GameState::PLAYING || in.game.penalised) {  // (2)
+  const Pose2& p = in.self.pose;
+  const bool pose_ok = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.theta);
+  if (!pose_ok) {  // localisation gave garbage: do not walk on it
+    role.body.type = blackboard::ActionType::STAND;
+    role.activity = "no pose";
+  } else if (in.game.state != GameState::PLAYING || in.game.penalised) {  // (2)
     searcher_.reset();
     striker_.reset();
     role.body.type = blackboard::ActionType::STAND;

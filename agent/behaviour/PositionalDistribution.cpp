@@ -49,6 +49,7 @@ Point2 PositionalDistribution::centre(int index) const {
 }
 
 int PositionalDistribution::segmentAt(Point2 f) const {
+  if (!std::isfinite(f.x) || !std::isfinite(f.y)) return -1;
   int col = static_cast<int>(std::floor((f.x + length_ / 2) / segmentLength()));
   int row = static_cast<int>(std::floor((width_ / 2 - f.y) / segmentWidth()));
   col = std::clamp(col, 0, columns_ - 1);
@@ -66,11 +67,13 @@ void PositionalDistribution::set(const std::vector<double>& w) {
 }
 
 void PositionalDistribution::add(int index, double amount) {
+  if (index < 0 || index >= size() || !std::isfinite(amount)) return;
   p_[index] = std::max(0.0, p_[index] + amount);
   normalise();
 }
 
 void PositionalDistribution::scale(int index, double factor) {
+  if (index < 0 || index >= size() || !std::isfinite(factor)) return;
   p_[index] *= std::max(0.0, factor);
   normalise();
 }

@@ -40,7 +40,7 @@ class PositionalDistribution {
   const std::vector<double>& probabilities() const { return p_; }
   Point2 centre(int index) const;  // field mm
   // The segment holding a field point; points off the field go to the
-  // nearest segment.
+  // nearest segment; a non-finite point is in none (-1).
   int segmentAt(Point2 field) const;
   bool sameGrid(const PositionalDistribution& o) const {
     return columns_ == o.columns_ && rows_ == o.rows_;
@@ -49,8 +49,8 @@ class PositionalDistribution {
   // --- Updates; each normalises afterwards.
   void reset();                            // uniform
   void set(const std::vector<double>& w);  // weights >= 0 (size() of them)
-  void add(int index, double amount);      // P_j += amount
-  void scale(int index, double factor);    // P_j *= factor
+  void add(int index, double amount);      // P_j += amount (index -1: no-op)
+  void scale(int index, double factor);    // P_j *= factor (index -1: no-op)
   // P_j += alpha * (1/J - P_j) for all j (alpha in 0..1).
   void blendTowardUniform(double alpha);
 
