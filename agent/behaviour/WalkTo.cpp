@@ -39,7 +39,8 @@ Point2 WalkTo::repulsion(const BehaviourInputs& in, Point2 target) const {
     const double dx = me.x - o.at.x, dy = me.y - o.at.y;
     const double centre = std::hypot(dx, dy);
     if (centre < 1e-6) continue;
-    // An obstacle beyond the target does not matter (robots may stop next to one).
+    // An obstacle standing on the target and further away than it is not
+    // pushed against: the robot may stop next to it.
     if (distance(target, o.at) < o.radius + s_.robot_radius && centre > tn) continue;
     const double gap = std::max(50.0, centre - o.radius - s_.robot_radius);  // mm, surface to surface
     if (gap >= s_.avoid_distance) continue;
