@@ -17,9 +17,13 @@
 #include <string>
 #include <vector>
 
+#include "agent/libagent/SimExtensions.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "sim/bridge/BodyHost.hpp"
+#include "sim/game/GameController.hpp"
+#include "sim/game/Sideline.hpp"
+#include "sim/network/TeamNetwork.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
@@ -136,6 +140,7 @@ class Runner {
     bool fallen = false;
     int falls = 0;
     size_t next_push = 0;  // next of spec.pushes to apply
+    std::unique_ptr<agent::libagent::SimExtensions> ext;  // game state + team link
   };
 
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
@@ -159,6 +164,11 @@ class Runner {
   void startCameras();
   void renderFrame(int64_t frame, int64_t t_us, agent::libagent::CameraFrame& f, Robot& r, int index);
   int blowups_ = 0;
+  std::unique_ptr<network::TeamNetwork> network_;
+  std::unique_ptr<game::GameController> game_;
+  std::unique_ptr<game::PenaltyPlacer> placer_;
+  std::vector<agent::libagent::TeamLink*> links_;  // by robot index, for the network
+  void teamAndGame(int64_t t_us);  // tick step 7
   std::chrono::steady_clock::time_point wall_start_;
 };
 
