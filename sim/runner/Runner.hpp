@@ -116,6 +116,14 @@ class Runner {
   const agent::libagent::CameraImages* images(int i) const { return robots_[i]->images; }
   int64_t framesDumped() const;     // PNGs written by --dump-frames
   int64_t overviewFrames() const;   // overview PNGs written
+
+  // Team communication and game states (after start()). Robot i's extension
+  // objects beside its libagent block: the game state and the team link
+  // (see agent/libagent/SimExtensions.hpp). The runner touches them only in
+  // tick step 7, while no robot thread runs.
+  agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext.get(); }
+  const network::TeamNetwork& teamNetwork() const { return *network_; }
+  const game::GameController& gameController() const { return *game_; }
   // After run(): the overview video line (empty if no overview).
   const std::string& overviewMessage() const { return overview_message_; }
   // Ends the overview (assembles the video) and returns its message; run() calls it.

@@ -2,6 +2,8 @@
 // penalties with their timers, and what a robot reads from its block.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "agent/comms/GameStateReader.hpp"
 #include "sim/game/GameController.hpp"
 
