@@ -200,6 +200,7 @@ void BodyHost::initialise(const al::JointValues& initial) {
   sem_init(&x.camera.frame_ready, 1, 0);
   sem_init(&x.camera.perception_done, 1, 0);
   x.camera.magic = al::kExtensionMagic;
+  new (&x.team) al::TeamLink();  // empty rings, magic set
   x.version = al::kExtensionVersion;
   if (images_) images_->magic = al::kCameraImagesMagic;
   // The magic goes last: a program that sees it sees an initialised robot.

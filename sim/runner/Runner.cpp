@@ -223,7 +223,7 @@ void Runner::start() {
     r.images = r.host->images();
     if (external && free_running_) r.host->setSync(SyncMode::FreeRunning);
     r.latched.joints = initial;
-    r.ext = std::make_unique<al::SimExtensions>();  // before the program starts
+    r.ext = r.host->extension();  // game state + team link, beside the block
     if (!external) {
       std::unique_ptr<ap::MotionGenerator> motion = std::move(r.motion_override);
       if (!motion && (!r.spec.actions.empty() || !r.spec.pushes.empty())) {
@@ -247,9 +247,12 @@ void Runner::start() {
   network_ = std::make_unique<network::TeamNetwork>(scenario_.team_comms, scenario_.seed);
   std::vector<game::GameController::RobotId> ids;
   links_.clear();
+  // The game and the network know the two teams by side (GameController
+  // team index: blue 0, red 1), whatever their SPL team numbers.
   for (auto& r : robots_) {
-    network_->addEndpoint(r->spec.team, r->spec.player);
-    ids.push_back({r->spec.team, r->spec.player});
+    const int side = static_cast<int>(r->spec.colour);
+    network_->addEndpoint(side, r->spec.player);
+    ids.push_back({side, r->spec.player});
     links_.push_back(&r->ext->team);
   }
   game_ = std::make_unique<game::GameController>(scenario_.game, ids);
@@ -429,7 +432,7 @@ void Runner::teamAndGame(int64_t t_us) {
   for (const game::GameEvent& e : game_->update(t_us)) {
     Robot& r = *robots_[e.robot];
     if (e.kind == game::GameEvent::Kind::Penalised) {
-      placer_->penalise(*world_, e.robot, r.spec.team);
+      placer_->penalise(*world_, e.robot, static_cast<int>(r.spec.colour));
     } else {
       placer_->unpenalise(*world_, e.robot, scenario_.game.on_unpenalise == game::GameConfig::Return::Previous);
     }

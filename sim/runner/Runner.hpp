@@ -133,7 +133,7 @@ class Runner {
   // objects beside its libagent block: the game state and the team link
   // (see agent/libagent/SimExtensions.hpp). The runner touches them only in
   // tick step 7, while no robot thread runs.
-  agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext.get(); }
+  agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext; }
   const network::TeamNetwork& teamNetwork() const { return *network_; }
   const game::GameController& gameController() const { return *game_; }
   // After run(): the overview video line (empty if no overview).
@@ -159,7 +159,7 @@ class Runner {
     bool fallen = false;
     int falls = 0;
     size_t next_push = 0;  // next of spec.pushes to apply
-    std::unique_ptr<agent::libagent::SimExtensions> ext;  // game state + team link
+    agent::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
   };
 
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;

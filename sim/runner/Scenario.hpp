@@ -43,6 +43,8 @@
 // has at most two teams, told apart by colour: a robot's `colour` (blue or
 // red) defaults to blue for the first team number in the file and red for
 // the second; all robots of a team share one colour, the two teams differ.
+// The game (GameController, sideline, team network) knows the teams by
+// side: blue is team index 0 (own goal at -x), red index 1.
 // `names: bare` gives one robot the robot build's /libagent-memory and
 // /libagent-semaphore.
 //
