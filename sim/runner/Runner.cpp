@@ -248,11 +248,12 @@ void Runner::start() {
   std::vector<game::GameController::RobotId> ids;
   links_.clear();
   // The game and the network know the two teams by side (GameController
-  // team index: blue 0, red 1), whatever their SPL team numbers.
+  // team index: blue 0, red 1); the game-state block carries each side's
+  // SPL team number, as the GameController's packet does.
   for (auto& r : robots_) {
     const int side = static_cast<int>(r->spec.colour);
     network_->addEndpoint(side, r->spec.player);
-    ids.push_back({side, r->spec.player});
+    ids.push_back({side, r->spec.player, r->spec.team});
     links_.push_back(&r->ext->team);
   }
   game_ = std::make_unique<game::GameController>(scenario_.game, ids);
