@@ -389,6 +389,27 @@ TEST(SimswiftAgent, OutlivesAKilledSimulatorByLessThanTwoSecondsAndTheNextRunSta
   for (const std::string& f : {yaml, sim_err, agent_err}) std::remove(f.c_str());
 }
 
+// The game state and the team link an external program reads are in the
+// robot's named extension object, the same memory the runner fills.
+TEST(LibagentClient, GameStateIsInTheNamedExtensionObject) {
+  const int team = 96, player = 2;
+  const al::RobotNames names = al::simulationNames(team, player);
+  Runner r(robotScenario(1.0, team, player, "external"));
+  r.start();  // fills the game state for t = 0
+  const int fd = shm_open(names.extension.c_str(), O_RDONLY, 0);
+  ASSERT_GE(fd, 0);
+  void* p = mmap(nullptr, sizeof(al::SimExtension), PROT_READ, MAP_SHARED, fd, 0);
+  close(fd);
+  ASSERT_NE(p, MAP_FAILED);
+  const auto* x = static_cast<const al::SimExtension*>(p);
+  EXPECT_EQ(x->magic, al::kExtensionMagic);
+  EXPECT_GE(x->game.updates, 1u);
+  EXPECT_EQ(x->game.updates, r.extensions(0)->game.updates);
+  EXPECT_EQ(x->game.teams[0].team_number, 96);  // the blue side's SPL number
+  EXPECT_EQ(x->team.magic, al::kTeamLinkMagic);
+  munmap(p, sizeof(al::SimExtension));
+}
+
 TEST(ScenarioTeams, SplTeamNumbersAndColours) {
   const Scenario s = Scenario::parse(
       "robots:\n"
