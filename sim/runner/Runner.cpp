@@ -481,6 +481,9 @@ RunStats Runner::run(const RunOptions& opt) {
   while (world_->tick() < total) {
     tick();
     const int64_t t = world_->tick();
+    // The first tick may have waited for external programs to start: the
+    // wall clock (pacing, real-time factor) counts from its end.
+    if (t == 1) wall_start_ = Clock::now() - std::chrono::milliseconds(10);
     if (opt.print_hash_every > 0 && t % opt.print_hash_every == 0)
       std::printf("tick %lld hash %s\n", static_cast<long long>(t), hex64(world_->stateHash()).c_str());
     if (progress_every && t % progress_every == 0 && t < total) {
