@@ -14,6 +14,7 @@
 #include <cstring>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/vision/VisionOracle.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
 #include "sim/camera/FrameDumper.hpp"
 #include "sim/camera/Overview.hpp"
@@ -286,6 +287,14 @@ void Runner::start() {
     }
   }
   if (scenario_.camera.any()) startCameras();
+  {
+    vision::VisionConfig vc = scenario_.vision;
+    vc.noise = vc.noise && scenario_.noise.on;
+    vision_ = std::make_unique<vision::VisionOracle>(world_->field(), vc, scenario_.seed);
+    std::vector<int> teams;
+    for (auto& r : robots_) teams.push_back(r->spec.team);
+    vision_->setTeams(teams);
+  }
   waitForAttach();
   for (auto& r : robots_) r->perception = r->host->hasPerception();
   wall_start_ = Clock::now();
@@ -414,11 +423,12 @@ void Runner::tick() {
     al::CameraFrame f{};
     f.sim_time_us = t_us;
     f.frame_index = frame;
-    f.num_observations = 0;  // vision oracle: a later issue
+    f.num_observations = 0;
     bool any = false;
     for (size_t i = 0; i < robots_.size(); ++i) {
       Robot& r = *robots_[i];
-      al::CameraFrame fr = f;  // images_valid is per robot
+      al::CameraFrame fr = f;  // images_valid and observations are per robot
+      if (r.perception) vision_->fill(*world_, static_cast<int>(i), fr);  // both cameras (sim/vision)
       renderFrame(frame, t_us, fr, r, static_cast<int>(i));
       if (r.perception) {
         r.host->publishFrame(fr);

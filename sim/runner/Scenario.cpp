@@ -178,6 +178,7 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     }
     c->finish();
   }
+  if (auto v = top.optionalMap("vision")) sc.vision = vision::readVisionConfig(*v, sc.vision);
   if (auto b = top.optionalMap("ball")) {
     sc.ball = std::make_pair(b->number("x"), b->number("y"));
     b->finish();
