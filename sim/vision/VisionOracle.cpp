@@ -105,8 +105,7 @@ int headLinkOf(const NaoModel& m) {
 
 Eigen::Vector2d GroundFrame::toRobot(const Eigen::Vector2d& p) const {
   const Eigen::Vector2d d = p - origin;
-  const double c = std::cos(heading), s = std::sin(heading);
-  return {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
+  return {cos_h * d.x() + sin_h * d.y(), -sin_h * d.x() + cos_h * d.y()};
 }
 
 CameraMount cameraMount(int camera) {
@@ -148,13 +147,11 @@ GroundFrame VisionOracle::groundFrame(const World& world, int robot) const {
   const NaoModel& m = body.model();
   const int lf = m.linkIndex("LFoot"), rf = m.linkIndex("RFoot");
   const Eigen::Isometry3d torso = body.linkPose(m.rootLink());
-  GroundFrame g;
-  g.origin = (lf >= 0 && rf >= 0) ? Eigen::Vector2d(0.5 * (xy(body.linkPose(lf).translation()) +
-                                                           xy(body.linkPose(rf).translation())))
-                                  : xy(torso.translation());
+  const Eigen::Vector2d origin = (lf >= 0 && rf >= 0) ? Eigen::Vector2d(0.5 * (xy(body.linkPose(lf).translation()) +
+                                                                               xy(body.linkPose(rf).translation())))
+                                                      : xy(torso.translation());
   const Eigen::Vector3d fwd = torso.linear().col(0);
-  g.heading = std::atan2(fwd.y(), fwd.x());
-  return g;
+  return GroundFrame(origin, std::atan2(fwd.y(), fwd.x()));
 }
 
 bool VisionOracle::blind(const World& world, int robot) const {
@@ -166,8 +163,8 @@ bool VisionOracle::blind(const World& world, int robot) const {
   return tilt > config_.falling_tilt_deg * kDeg && rate > config_.falling_rate_dps * kDeg;
 }
 
-bool VisionOracle::inImage(const Eigen::Isometry3d& cam, const Eigen::Vector3d& p) const {
-  const Eigen::Vector3d q = cam.inverse() * p;  // camera frame: x along the optical axis
+bool VisionOracle::inView(const Eigen::Isometry3d& to_cam, const Eigen::Vector3d& p) const {
+  const Eigen::Vector3d q = to_cam * p;  // camera frame: x along the optical axis
   return q.x() > 1e-3 && std::abs(q.y()) <= tan_half_h_ * q.x() && std::abs(q.z()) <= tan_half_v_ * q.x();
 }
 
@@ -269,6 +266,7 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
                                  std::vector<SeenObject>& out) {
   const bool noisy = config_.noise;
   const Eigen::Isometry3d cam = cameraPose(world, robot, camera);
+  const Eigen::Isometry3d to_cam = cam.inverse();
   const Eigen::Vector3d eye = cam.translation();
   const GroundFrame g = groundFrame(world, robot);
 
@@ -333,7 +331,7 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
     if (!s.enabled) return -1;
     const double d_mm = g.toRobot(ground).norm() * 1000;
     if (d_mm < s.min_distance_mm || d_mm > s.max_distance_mm) return -1;
-    if (!inImage(cam, look)) return -1;
+    if (!inView(to_cam, look)) return -1;
     const double p = s.probability(d_mm) * factor;
     const double u = r.uniform();  // drawn whether or not it is used: fixed sequence per object
     if (noisy && !(u < p)) return -1;
@@ -365,7 +363,7 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
       const FieldPost& post = features_.posts[k];
       Draws r = drawsFor(Feature::GoalPost, k);
       const Eigen::Vector3d base(post.at.x(), post.at.y(), 0.0);
-      if (!s.enabled || !inImage(cam, base)) continue;
+      if (!s.enabled || !inView(to_cam, base)) continue;
       const double p = detect(s, base + Eigen::Vector3d(0, 0, 0.05), post.at, 0.0, -1, k, 1.0, r);
       if (p >= 0) emit(Feature::GoalPost, noisyPoint(s, g.toRobot(post.at), eye.z(), r), p, k);
     }
@@ -410,7 +408,7 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
         const double a = 2 * M_PI * i / kCircleSamples;
         const Eigen::Vector3d q(c.cx + c.radius * std::cos(a), c.cy + c.radius * std::sin(a), 0.0);
         const double d_mm = g.toRobot(xy(q)).norm() * 1000;
-        if (d_mm >= s.min_distance_mm && d_mm <= s.max_distance_mm && inImage(cam, q) &&
+        if (d_mm >= s.min_distance_mm && d_mm <= s.max_distance_mm && inView(to_cam, q) &&
             !occluded(world, eye, q, 0.02, robot, -1, -1))
           ++visible;
       }
@@ -449,16 +447,27 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
       const LineSegment& l = features_.lines[k];
       const Eigen::Vector2d a(l.ax, l.ay), b(l.bx, l.by);
       const int n = std::max(2, static_cast<int>(std::ceil((b - a).norm() / step)) + 1);
+      // Only the part of the line within max_distance of the feet can be
+      // seen: sample the fixed grid there (same points as sampling it all).
+      const Eigen::Vector2d dv = b - a, m = a - g.origin;
+      const double R = s.max_distance_mm * 1e-3;
+      const double A = dv.squaredNorm(), B = 2 * m.dot(dv), C = m.squaredNorm() - R * R;
+      const double disc = B * B - 4 * A * C;
+      if (disc <= 0) continue;
+      const double t0 = (-B - std::sqrt(disc)) / (2 * A), t1 = (-B + std::sqrt(disc)) / (2 * A);
+      if (t1 < 0 || t0 > 1) continue;
+      const int i0 = std::max(0, static_cast<int>(std::floor(t0 * (n - 1))));
+      const int i1 = std::min(n - 1, static_cast<int>(std::ceil(t1 * (n - 1))));
       int run_start = -1, piece = 0;
       double run_near = 1e18;
-      for (int i = 0; i <= n; ++i) {
+      for (int i = i0; i <= i1 + 1; ++i) {
         bool vis = false;
         double d_mm = 0;
         Eigen::Vector2d q;
-        if (i < n) {
+        if (i <= i1) {
           q = a + (b - a) * (static_cast<double>(i) / (n - 1));
           d_mm = g.toRobot(q).norm() * 1000;
-          vis = d_mm >= s.min_distance_mm && d_mm <= s.max_distance_mm && inImage(cam, {q.x(), q.y(), 0.0}) &&
+          vis = d_mm >= s.min_distance_mm && d_mm <= s.max_distance_mm && inView(to_cam, {q.x(), q.y(), 0.0}) &&
                 !occluded(world, eye, {q.x(), q.y(), 0.0}, 0.02, robot, -1, -1);
         }
         if (vis) {

@@ -30,6 +30,7 @@
 #include <ode/ode.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -43,8 +44,11 @@ namespace simswift::vision {
 // A robot's ground frame: origin midway between the feet on the ground,
 // x along the torso's heading. Field frame, m / rad.
 struct GroundFrame {
+  GroundFrame() = default;
+  GroundFrame(const Eigen::Vector2d& o, double h) : origin(o), heading(h), cos_h(std::cos(h)), sin_h(std::sin(h)) {}
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();
   double heading = 0;
+  double cos_h = 1, sin_h = 0;  // of heading (cached: toRobot runs thousands of times a frame)
   // Field point (m) -> robot-relative (m).
   Eigen::Vector2d toRobot(const Eigen::Vector2d& p) const;
 };
@@ -90,7 +94,9 @@ class VisionOracle {
   // Lying (torso tilted beyond lying_tilt_deg) or falling.
   bool blind(const World& world, int robot) const;
   // Would a point (field, m) be inside camera `camera`'s image?
-  bool inImage(const Eigen::Isometry3d& camera_pose, const Eigen::Vector3d& point) const;
+  bool inImage(const Eigen::Isometry3d& camera_pose, const Eigen::Vector3d& point) const {
+    return inView(camera_pose.inverse(), point);
+  }
 
   const VisionConfig& config() const { return config_; }
   const FieldFeatures& features() const { return features_; }
@@ -99,6 +105,8 @@ class VisionOracle {
  private:
   void observeCamera(const World& world, int robot, int camera, int64_t frame, std::vector<SeenObject>& out);
   void refreshBounds(const World& world);
+  // inImage with the field-to-camera transform already inverted.
+  bool inView(const Eigen::Isometry3d& field_to_camera, const Eigen::Vector3d& point) const;
   // True if something (a robot other than those ignored, or a post other
   // than ignore_post) lies on the segment from `from` to `to` (field, m),
   // stopping `stop_short` before `to`.
