@@ -488,3 +488,47 @@ TEST(VisionRunner, PerceptionThreadReceivesObservations) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every observation a Perception thread received, in order.
+struct Recorder : agent::program::PerceptionStep {
+  std::vector<al::Observation> seen;
+  void step(const al::CameraFrame& f) override {
+    ++frames_;
+    seen.insert(seen.end(), f.observations, f.observations + f.num_observations);
+  }
+};
+
+struct RunRecord {
+  std::vector<al::Observation> seen;
+  uint64_t hash;
+};
+
+RunRecord runRecorded(uint64_t seed, bool vision_on) {
+  runner::Scenario sc = runner::Scenario::parse(
+      "duration: 0.6\nseed: " + std::to_string(seed) + "\nball: {x: -0.2, y: 0.2}\n" +
+          (vision_on ? std::string() : std::string("vision: {enabled: off}\n")) +
+          "robots:\n  - {team: 0, player: 1, x: -1.0, y: 0.0}\n  - {team: 1, player: 2, x: 1.0, y: 0.5, theta: 3.14}\n",
+      "vision_det.yaml");
+  runner::Runner r(sc);
+  auto rec = std::make_unique<Recorder>();
+  Recorder* p = rec.get();
+  r.setPerceptionStep(0, std::move(rec));
+  runner::RunOptions opt;
+  opt.progress = false;
+  const runner::RunStats s = r.run(opt);
+  return {p->seen, s.hash};
+}
+
+TEST(VisionRunner, SameSeedSameObservationsAndTheOracleLeavesTheStateHashAlone) {
+  const RunRecord a = runRecorded(9, true), b = runRecorded(9, true), off = runRecorded(9, false);
+  ASSERT_GT(a.seen.size(), 50u);
+  ASSERT_EQ(a.seen.size(), b.seen.size());
+  EXPECT_EQ(std::memcmp(a.seen.data(), b.seen.data(), a.seen.size() * sizeof(al::Observation)), 0);
+  EXPECT_EQ(a.hash, b.hash);
+  EXPECT_TRUE(off.seen.empty());
+  EXPECT_EQ(a.hash, off.hash);  // observing changes nothing in the world
+}
+
+}  // namespace
