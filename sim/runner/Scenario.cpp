@@ -178,7 +178,13 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     }
     c->finish();
   }
-  if (auto v = top.optionalMap("vision")) sc.vision = vision::readVisionConfig(*v, sc.vision);
+  // vision: on/off, or the detector model's map (sim/vision/VisionConfig.hpp).
+  if (top.has("vision")) {
+    if (root["vision"].IsMap())
+      sc.vision = vision::readVisionConfig(top.map("vision"), sc.vision);
+    else
+      sc.vision.enabled = top.boolean("vision");
+  }
   if (auto b = top.optionalMap("ball")) {
     sc.ball = std::make_pair(b->number("x"), b->number("y"));
     b->finish();

@@ -16,7 +16,7 @@
 //     overview: {mode: fixed|robot|ball, robot: 0, rate_hz: 10,
 //                width: 960, height: 540, dir: overview}   # whole-field PNGs (+ MP4)
 //   vision: {ball: {max_distance_mm: 2500, false_positive_rate: 0.01}, ...}
-//                                  # detector model (sim/vision/VisionConfig.hpp)
+//                                  # detector model (sim/vision/VisionConfig.hpp); or on/off
 //   ball: {x: 1.0, y: 0.0}         # m, field frame
 //   robots:
 //     - {team: 0, player: 1, x: -1.0, y: 0.0, theta: 0.0,   # m, m, rad (field frame)

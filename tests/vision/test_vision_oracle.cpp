@@ -102,6 +102,9 @@ TEST(VisionConfig, ScenarioBlockIsReadAndCheckedWithFileLineAndKey) {
   EXPECT_FALSE(sc.vision[Feature::Robot].enabled);
   EXPECT_TRUE(sc.vision[Feature::GoalPost].enabled);
 
+  EXPECT_FALSE(runner::Scenario::parse("vision: off\nrobots:\n  - {team: 0, player: 1}\n", "v.yaml").vision.enabled);
+  EXPECT_TRUE(runner::Scenario::parse("robots:\n  - {team: 0, player: 1}\n", "v.yaml").vision.enabled);
+
   auto error = [](const std::string& yaml) -> std::string {
     try {
       runner::Scenario::parse(yaml + "robots:\n  - {team: 0, player: 1}\n", "bad.yaml");
