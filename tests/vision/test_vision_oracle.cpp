@@ -382,6 +382,25 @@ TEST_F(OneRobot, FalsePositiveRateMatchesTheConfiguredRate) {
   EXPECT_EQ(any, 0);
 }
 
+TEST_F(OneRobot, DetectionRateFallsWithDistanceAsConfigured) {
+  VisionConfig c;  // ball: p 1 up to 1500 mm, then linearly to 0.7 at 2500 mm
+  VisionOracle o(world.field(), c, 3);
+  const GroundFrame g = o.groundFrame(world, 0);
+  auto rate = [&](double d_mm) {
+    const Eigen::Vector2d b = g.origin + Eigen::Vector2d(d_mm * 1e-3, 0.1);  // off every line
+    world.placeBall(b.x(), b.y());
+    const int n = 3000;
+    int seen = 0;
+    for (int frame = 0; frame < n; ++frame) seen += ofType(o.observe(world, 0, frame), al::ObservationType::Ball, 0).size();
+    return seen / double(n);
+  };
+  const double expect_2000 = c[Feature::Ball].probability(std::hypot(2000.0, 100.0));
+  EXPECT_NEAR(expect_2000, 0.85, 0.01);
+  EXPECT_NEAR(rate(1400), 1.0, 1e-9);
+  EXPECT_NEAR(rate(2000), expect_2000, 0.03);  // binomial sigma 0.0065
+  EXPECT_NEAR(rate(2450), c[Feature::Ball].probability(std::hypot(2450.0, 100.0)), 0.03);
+}
+
 TEST(VisionOracleScene, BallOnALineIsDetectedLessOften) {
   World world(FieldConfig::spl2017());
   world.addRobot(model(), -2.0, 0.0, 0.0, stand());  // ~2 m: top camera only
