@@ -49,7 +49,7 @@ Walking walking(double sim_s) {
   runner::Runner r(sc);
   r.start();
   vision::VisionOracle extra(r.world().field(), sc.vision, sc.seed);
-  extra.setTeams({0, 0, 1});
+  extra.setTeams({0, 0, 1}, {0, 0, 1});
   agent::libagent::CameraFrame f{};
   const int64_t ticks = static_cast<int64_t>(std::llround(sim_s / kTickSeconds));
   int64_t last = -1, frames = 0;
@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
     world.addRobot(model, 1.5, -0.5, M_PI, q);
     world.placeBall(0.2, 0.1);
     vision::VisionOracle oracle(world.field(), vision::VisionConfig{}, 1);
-    oracle.setTeams({0, 0, 1});
+    oracle.setTeams({0, 0, 1}, {0, 0, 1});
     agent::libagent::CameraFrame f{};
     int64_t observations = 0;
     const auto t0 = Clock::now();

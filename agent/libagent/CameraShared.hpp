@@ -56,7 +56,9 @@ constexpr int32_t kObservationRobotFallen = 1;  // Robot: the robot seen is lyin
 //                   FieldLine: from (x, y) to (x2, y2);
 //                   otherwise 0.
 //   corner        LineCorner only: L / T / X; None otherwise.
-//   team          Robot only: team number (0 or 1); -1 otherwise.
+//   team          Robot only: SPL team number of the robot seen (told by its
+//                 jersey colour, whose team the GameController names); -1 otherwise.
+//   colour        Robot only: jersey colour seen, 0 blue, 1 red; -1 otherwise.
 //   confidence    0..1: the detector model's detection probability at this
 //                 distance (1 when noise is off).
 //   flags         kObservation* bits.
@@ -72,6 +74,7 @@ struct Observation {
   float x2, y2;       // mm, robot-relative (FieldLine's second end)
   float confidence;   // 0..1
   int32_t flags;
+  int32_t colour;     // robots: 0 blue, 1 red (or -1)
 };
 
 // Both cameras together. When more is seen, the oracle keeps the most

@@ -131,7 +131,10 @@ VisionOracle::~VisionOracle() {
   if (sight_) dGeomDestroy(sight_);
 }
 
-void VisionOracle::setTeams(std::vector<int> team_of_robot) { teams_ = std::move(team_of_robot); }
+void VisionOracle::setTeams(std::vector<int> team_of_robot, std::vector<int> colour_of_robot) {
+  teams_ = std::move(team_of_robot);
+  colours_ = std::move(colour_of_robot);
+}
 
 Eigen::Isometry3d VisionOracle::cameraPose(const World& world, int robot, int camera) const {
   const RobotBody& body = world.robot(robot);
@@ -312,6 +315,7 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
     o.distance = static_cast<float>(rel_m.norm() * 1000);
     o.heading = static_cast<float>(std::atan2(rel_m.y(), rel_m.x()));
     o.team = -1;
+    o.colour = -1;
     o.corner = al::CornerKind::None;
     o.confidence = static_cast<float>(confidence);
     s.source = source;
@@ -381,6 +385,7 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
       if (p < 0) continue;
       SeenObject& o = emit(Feature::Robot, noisyPoint(s, g.toRobot(og.origin), eye.z(), r), p, i);
       o.obs.team = i < static_cast<int>(teams_.size()) ? teams_[i] : 0;
+      o.obs.colour = i < static_cast<int>(colours_.size()) ? colours_[i] : 0;
       o.obs.orientation = orient(s, og.heading, r);
       const Eigen::Matrix3d R = other.linkPose(other.model().rootLink()).linear();
       if (std::acos(std::clamp(R(2, 2), -1.0, 1.0)) > config_.lying_tilt_deg * kDeg)
@@ -519,7 +524,12 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
       SeenObject& o = emit(f, rel, r.uniform() * s.p_near, -1);
       o.false_positive = true;
       o.obs.orientation = static_cast<float>(wrap(2 * M_PI * r.uniform()));
-      if (f == Feature::Robot) o.obs.team = r.uniform() < 0.5 ? 0 : 1;
+      if (f == Feature::Robot) {  // a phantom in one of the two jerseys
+        o.obs.colour = r.uniform() < 0.5 ? 0 : 1;
+        o.obs.team = -1;
+        for (size_t i = 0; i < teams_.size() && i < colours_.size(); ++i)
+          if (colours_[i] == o.obs.colour) o.obs.team = teams_[i];
+      }
       if (f == Feature::Corner) o.obs.corner = static_cast<al::CornerKind>(1 + static_cast<int>(r.uniform() * 3));
       if (f == Feature::Line) {
         const double len = std::max(config_.min_line_mm, 1000 * r.uniform()) * 1e-3;

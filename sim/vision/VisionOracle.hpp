@@ -77,8 +77,9 @@ class VisionOracle {
   VisionOracle(const VisionOracle&) = delete;
   VisionOracle& operator=(const VisionOracle&) = delete;
 
-  // Team of each World robot (index = robot index); unlisted robots: team 0.
-  void setTeams(std::vector<int> team_of_robot);
+  // SPL team number and jersey colour (0 blue, 1 red) of each World robot
+  // (index = robot index); unlisted robots: team 0, blue.
+  void setTeams(std::vector<int> team_of_robot, std::vector<int> colour_of_robot = {});
 
   // Both cameras of `robot` at camera frame `frame` (top camera first).
   std::vector<SeenObject> observe(const World& world, int robot, int64_t frame);
@@ -118,7 +119,7 @@ class VisionOracle {
   uint64_t seed_;
   double tan_half_h_, tan_half_v_;
   double ball_radius_, line_half_width_;
-  std::vector<int> teams_;
+  std::vector<int> teams_, colours_;
   dGeomID sight_ = nullptr;  // capsule along a line of sight (not in any space)
   double margin_ = 0.02;     // m, its radius
   // Per-robot axis-aligned bounds of the collision geoms (field, m), cached per world tick.

@@ -252,10 +252,11 @@ TEST(VisionOracleScene, BallHiddenBehindARobotIsNotSeen) {
   VisionOracle o(world.field(), exact(), 1);
   EXPECT_TRUE(ofType(o.observe(world, 0, 0), al::ObservationType::Ball).empty());
   // The blocker itself is seen, with its team and facing.
-  o.setTeams({0, 1});
+  o.setTeams({18, 5}, {0, 1});
   const auto robots = ofType(o.observe(world, 0, 0), al::ObservationType::Robot, 0);
   ASSERT_EQ(robots.size(), 1u);
-  EXPECT_EQ(robots[0].obs.team, 1);
+  EXPECT_EQ(robots[0].obs.team, 5);
+  EXPECT_EQ(robots[0].obs.colour, 1);
   EXPECT_NEAR(std::abs(robots[0].obs.orientation), M_PI, 0.05);
   EXPECT_NEAR(robots[0].obs.x, 1000, 30);
   // Step aside: the ball is seen.
@@ -433,7 +434,7 @@ TEST(VisionOracleScene, SameSeedSameObservationsOtherSeedOthers) {
     c[Feature::Ball].false_positive_rate = 0.2;
     c[Feature::Robot].false_positive_rate = 0.2;
     VisionOracle o(world.field(), c, seed);
-    o.setTeams({0, 1, 1});
+    o.setTeams({18, 5, 5}, {0, 1, 1});
     std::vector<al::Observation> all;
     for (int frame = 0; frame < 60; ++frame)
       for (int r = 0; r < 3; ++r)
