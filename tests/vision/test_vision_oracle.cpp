@@ -259,9 +259,20 @@ TEST(VisionOracleScene, BallHiddenBehindARobotIsNotSeen) {
   EXPECT_EQ(robots[0].obs.colour, 1);
   EXPECT_NEAR(std::abs(robots[0].obs.orientation), M_PI, 0.05);
   EXPECT_NEAR(robots[0].obs.x, 1000, 30);
+  EXPECT_EQ(robots[0].obs.flags & al::kObservationRobotFallen, 0);
   // Step aside: the ball is seen.
   world.placeRobot(blocker, 0.0, 1.2, M_PI, stand());
   EXPECT_EQ(ofType(o.observe(world, 0, 0), al::ObservationType::Ball).size(), 1u);
+  for (const SeenObject& s : o.observe(world, 0, 0))
+    if (s.obs.type != al::ObservationType::Robot) EXPECT_EQ(s.obs.colour, -1);
+  // Lying on its back 1 m ahead: still seen, flagged fallen.
+  Eigen::Isometry3d lying = Eigen::Isometry3d::Identity();
+  lying.linear() = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  lying.translation() = Eigen::Vector3d(0.0, 0.3, 0.1);
+  world.robot(blocker).teleport(lying);
+  const auto down = ofType(o.observe(world, 0, 0), al::ObservationType::Robot);
+  ASSERT_GE(down.size(), 1u);
+  EXPECT_NE(down[0].obs.flags & al::kObservationRobotFallen, 0);
 }
 
 TEST(VisionOracleScene, BallHiddenBehindAGoalPostIsNotSeen) {
