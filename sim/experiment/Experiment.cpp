@@ -168,9 +168,8 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
     std::set<std::pair<int, int>> players;
     for (const YamlReader& r : s.list("robots")) {
       ExperimentRobot rob;
-      rob.where = where(s, "robots");
       {
-        YAML::Mark m = r.node().Mark();
+        const YAML::Mark m = r.node().Mark();
         rob.where = r.file() + (m.is_null() ? "" : ":" + std::to_string(m.line + 1)) + ": " + r.path();
       }
       rob.team = r.integer("team", Range::closed(0, 255));
