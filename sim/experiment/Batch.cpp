@@ -182,6 +182,16 @@ void runAndWriteTrial(const Experiment& e, const TrialHooks& hooks, int trial, c
   writeAtomic(trialFile(dir, trial, ".csv"), csvRow(r, static_cast<int>(r.robots.size())));  // last: "done"
 }
 
+std::string runSingleTrial(const Experiment& e, const TrialHooks& hooks, int trial, const std::string& out_dir) {
+  checkBehaviours(e, hooks);
+  if (trial < 0 || trial >= e.numTrials())
+    throw BatchError("--trial " + std::to_string(trial) + ": the experiment has trials 0.." +
+                     std::to_string(e.numTrials() - 1));
+  claimFolder(e, out_dir);
+  runAndWriteTrial(e, hooks, trial, out_dir);
+  return readFile(trialFile(out_dir, trial, ".csv"));
+}
+
 BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchOptions& opt) {
   checkBehaviours(e, hooks);  // before any trial: refuses what this build cannot run
   if (opt.shards < 1 || opt.shard < 1 || opt.shard > opt.shards) throw BatchError("bad shard");

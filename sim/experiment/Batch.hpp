@@ -61,6 +61,11 @@ void assemble(const Experiment& e, const std::string& dir, std::string* notes);
 // (the worker's job; also used by tests).
 void runAndWriteTrial(const Experiment& e, const TrialHooks& hooks, int trial, const std::string& dir);
 
+// `simswift experiment FILE --trial I`: runs trial I in this process (to
+// debug or repeat one trial), writes its files into out_dir/trials and
+// returns its results row.
+std::string runSingleTrial(const Experiment& e, const TrialHooks& hooks, int trial, const std::string& out_dir);
+
 std::string trialFile(const std::string& dir, int trial, const std::string& suffix);  // dir/trials/trial_NNNNNN<suffix>
 
 }  // namespace simswift::experiment

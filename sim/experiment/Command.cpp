@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/experiment/Batch.hpp"
+#include "sim/experiment/Trial.hpp"
 
 namespace simswift::experiment {
 
@@ -24,6 +25,8 @@ const char* kExperimentUsage =
     "  --shard K/N        run only trials K-1, K-1+N, K-1+2N, ... (K = 1..N); join the\n"
     "                     shard folders with `simswift experiment merge`\n"
     "  --progress MODE    bar (default on a terminal), lines (one per trial), none\n"
+    "  --trial I          run only trial I, in this process, and print its results row\n"
+    "                     (to debug or repeat one trial; its seed is in results.csv)\n"
     "  --check            validate the file (and that this build runs its behaviours), run nothing\n"
     "\n"
     "Exit codes: 0 done, 1 a trial or I/O failed, 2 bad command line or file, 130 interrupted.\n";
@@ -57,6 +60,7 @@ int experimentMain(int argc, char** argv, const TrialHooks& hooks) {
   std::string out;
   BatchOptions opt;
   bool check = false;
+  int single = -1;
   for (size_t i = merge ? 1 : 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* name) -> const std::string* {
@@ -86,6 +90,9 @@ int experimentMain(int argc, char** argv, const TrialHooks& hooks) {
       else if (v && *v == "lines") opt.progress = BatchOptions::Progress::Lines;
       else if (v && *v == "none") opt.progress = BatchOptions::Progress::None;
       else return usage("--progress: bar, lines or none");
+    } else if (!merge && a == "--trial") {
+      const std::string* v = value("--trial");
+      if (!v || !parseInt(*v, &single)) return usage("--trial: needs a trial number >= 0");
     } else if (!merge && a == "--check") {
       check = true;
     } else if (!a.empty() && a[0] == '-') {
@@ -115,6 +122,11 @@ int experimentMain(int argc, char** argv, const TrialHooks& hooks) {
                   : opt.shards == 1 ? "results/" + e.name
                                     : "results/" + e.name + "-shard" + std::to_string(opt.shard) + "of" +
                                           std::to_string(opt.shards);
+    if (single >= 0) {
+      const TrialResult r = parseCsvRow(runSingleTrial(e, hooks, single, opt.out_dir));
+      std::printf("%s%s", csvHeader(e.maxRobots()).c_str(), csvRow(r, e.maxRobots()).c_str());
+      return 0;
+    }
     const BatchOutcome o = runBatch(e, hooks, opt);
     std::fprintf(stderr, "%s\n", o.message.c_str());
     if (o.interrupted) return 130;
