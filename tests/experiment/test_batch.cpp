@@ -96,6 +96,8 @@ TEST(Batch, RerunsAndJobCountsGiveIdenticalResults) {
     }
     EXPECT_EQ(r.robots[0].falls, 0);
   }
+  // One trial in this process (--trial) gives the worker's row.
+  EXPECT_EQ(runSingleTrial(e, defaultHooks(), 2, exptest::freshDir("single")), readAll(trialFile(a, 2, ".csv")));
   // Noise on, different seeds: the two position-1 trials differ a little.
   EXPECT_NE(parseCsvRow(lines[1]).seed, parseCsvRow(lines[2]).seed);
 }
