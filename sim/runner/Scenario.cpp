@@ -189,14 +189,38 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     b->finish();
   }
 
-  std::set<int> suffixes;
+  std::set<int> numbers;               // libagent name numbers in use
+  std::vector<std::pair<int, TeamColour>> teams;  // team number -> colour, in order of appearance
+  int bare = 0;
   for (const YamlReader& r : top.list("robots")) {
     RobotSpec rs;
-    rs.team = r.integer("team", Range::closed(0, al::kMaxTeams - 1));
+    rs.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
     rs.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
-    if (!suffixes.insert(al::robotSuffix(rs.team, rs.player)).second)
+    if (!numbers.insert(al::simulationNumber(rs.team, rs.player)).second)
       r.fail("player", "team " + std::to_string(rs.team) + " player " + std::to_string(rs.player) +
                            " appears twice");
+    auto known = std::find_if(teams.begin(), teams.end(), [&](const auto& t) { return t.first == rs.team; });
+    if (r.has("colour")) {
+      rs.colour = r.choice("colour", "blue", {"blue", "red"}) == "blue" ? TeamColour::Blue : TeamColour::Red;
+    } else if (known != teams.end()) {
+      rs.colour = known->second;
+    } else {
+      rs.colour = teams.empty() || teams.front().second == TeamColour::Red ? TeamColour::Blue : TeamColour::Red;
+    }
+    if (known != teams.end() && known->second != rs.colour)
+      r.fail("colour", "team " + std::to_string(rs.team) + " already plays in " +
+                           (known->second == TeamColour::Blue ? "blue" : "red"));
+    if (known == teams.end()) {
+      if (teams.size() == 2) r.fail("team", "a match has two teams (" + std::to_string(teams[0].first) + " and " +
+                                                std::to_string(teams[1].first) + ")");
+      if (!teams.empty() && teams.front().second == rs.colour)
+        r.fail("colour", "team " + std::to_string(teams.front().first) + " already plays in " +
+                             (rs.colour == TeamColour::Blue ? "blue" : "red"));
+      teams.emplace_back(rs.team, rs.colour);
+    }
+    rs.bare_names = r.choice("names", "simulation", {"simulation", "bare"}) == "bare";
+    if (rs.bare_names && ++bare > 1)
+      r.fail("names", "only one robot can have the bare names (/libagent-memory)");
     rs.x = r.number("x", 0.0);
     rs.y = r.number("y", 0.0);
     rs.theta = r.number("theta", 0.0);
