@@ -172,7 +172,7 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
         const YAML::Mark m = r.node().Mark();
         rob.where = r.file() + (m.is_null() ? "" : ":" + std::to_string(m.line + 1)) + ": " + r.path();
       }
-      rob.team = r.integer("team", Range::closed(0, 255));
+      rob.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
       rob.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
       if (!players.insert({rob.team, rob.player}).second)
         r.fail("player", "team " + std::to_string(rob.team) + " player " + std::to_string(rob.player) +
@@ -226,8 +226,7 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
                                std::to_string(b.number));
     std::set<int> teams;
     for (const ExperimentRobot& rob : setup.robots) teams.insert(rob.team);
-    if (static_cast<int>(teams.size()) > al::kMaxTeams)
-      s.fail("robots", "at most " + std::to_string(al::kMaxTeams) + " teams per setup");
+    if (teams.size() > 2) s.fail("robots", "a setup is one match: at most two team numbers");
     s.finish();
     e.setups.push_back(std::move(setup));
   }
@@ -249,11 +248,8 @@ TrialSpec trialSpec(const Experiment& e, int index) {
   return t;
 }
 
-int scenarioTeam(const Setup& s, int spl_team) {
-  std::vector<int> order;
-  for (const ExperimentRobot& r : s.robots)
-    if (std::find(order.begin(), order.end(), r.team) == order.end()) order.push_back(r.team);
-  return static_cast<int>(std::find(order.begin(), order.end(), spl_team) - order.begin());
+runner::TeamColour teamColour(const Setup& s, int spl_team) {
+  return s.robots.empty() || s.robots.front().team == spl_team ? runner::TeamColour::Blue : runner::TeamColour::Red;
 }
 
 runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t) {
@@ -267,7 +263,8 @@ runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t) {
   for (const ExperimentRobot& r : s.robots) {
     runner::RobotSpec rs;
     if (r.behaviour == Behaviour::Script) rs = r.script;
-    rs.team = scenarioTeam(s, r.team);
+    rs.team = r.team;
+    rs.colour = teamColour(s, r.team);
     rs.player = r.player;
     rs.x = r.x;
     rs.y = r.y;

@@ -54,7 +54,7 @@ struct BallPosition {
 };
 
 struct ExperimentRobot {
-  int team = 0;            // SPL team number (GameController), e.g. 19
+  int team = 0;            // SPL team number (GameController, 0..99), e.g. 19
   int player = 2;          // 1..5
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
   Behaviour behaviour = Behaviour::Script;
@@ -119,9 +119,8 @@ TrialSpec trialSpec(const Experiment& e, int index);
 // BehaviourFactory then fills in each robot's behaviour.
 runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t);
 
-// Today's runner knows teams 0..1; SPL team numbers map to them in order of
-// first appearance in the setup. TODO(issue 11): when Scenario takes SPL team
-// numbers, return `team` itself.
-int scenarioTeam(const Setup& s, int spl_team);
+// The side of the match a setup's team plays on: the first team number in
+// the setup blue, a second one red (the scenario's own default).
+runner::TeamColour teamColour(const Setup& s, int spl_team);
 
 }  // namespace simswift::experiment

@@ -186,6 +186,25 @@ TEST(ExperimentFile, ShippedExperiments) {
   EXPECT_NO_THROW(checkBehaviours(script, defaultHooks()));
 }
 
+// SPL team numbers go to the scenario as they are; the first team in a
+// setup plays blue, a second red; a third team is refused.
+TEST(ExperimentFile, TeamsAndColours) {
+  const std::string two = replaced(kGood, "{team: 19, player: 3", "{team: 7, player: 3");
+  const Experiment e = Experiment::parse(two, "two.yaml");
+  const runner::Scenario sc = trialScenario(e, trialSpec(e, 0));
+  ASSERT_EQ(sc.robots.size(), 2u);
+  EXPECT_EQ(sc.robots[0].team, 19);
+  EXPECT_EQ(sc.robots[1].team, 7);
+  EXPECT_EQ(sc.robots[0].colour, runner::TeamColour::Blue);
+  EXPECT_EQ(sc.robots[1].colour, runner::TeamColour::Red);
+  const std::string three = replaced(two, "actions: [{t: 0, action: stand}]}\n      - {team: 7",
+                                     "actions: [{t: 0, action: stand}]}\n      - {team: 8, player: 4, x: 1.0, "
+                                     "y: 2.0, theta: 0, actions: [{t: 0, action: stand}]}\n      - {team: 7");
+  expectError(three, "bad.yaml:12: setups[0].robots", "at most two team numbers");
+  expectError(replaced(kGood, "team: 19, player: 2", "team: 100, player: 2"), "bad.yaml:12: setups[0].robots[0].team",
+              "must be in [0, 99]");
+}
+
 // Trial numbering and seeds: a pure function of (seed, index), distinct.
 TEST(ExperimentFile, TrialSpecs) {
   const Experiment e = Experiment::parse(exptest::tinyExperiment(3), "tiny.yaml");
