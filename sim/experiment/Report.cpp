@@ -194,6 +194,15 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
            "ours are this run's setups that name the table in `thesis_table:`. Found counts are shown as "
            "found/tests.\n\n";
       header = true;
+      // Positions are compared by number: say so where ours lie elsewhere.
+      std::string moved;
+      for (const BallPosition& b : e.balls)
+        for (const ThesisPoint& p : thesisBallPositions())
+          if (p.number == b.number && (std::abs(p.x_mm - b.x * 1000) > 1 || std::abs(p.y_mm - b.y * 1000) > 1))
+            moved += (moved.empty() ? "" : ", ") + std::to_string(b.number);
+      if (!moved.empty())
+        s << "**Note:** ball position(s) " << moved
+          << " of this experiment are not where table 5.2 puts them; those rows compare different places.\n\n";
     }
     s << "### Table " << c.number << ": " << c.title << "\n\n| |";
     std::string rule = "|---|";

@@ -4,6 +4,18 @@
 
 namespace simswift::experiment {
 
+const std::vector<ThesisPoint>& thesisBallPositions() {
+  static const std::vector<ThesisPoint> p = {{1, 2250, 0},      {2, 4000, -2500}, {3, 4000, 2500}, {4, 4500, 3000},
+                                             {5, 2250, 3000},   {6, -4500, 3000}, {7, 4500, 0},    {8, -3500, 0},
+                                             {9, 4500, -3000},  {10, -4500, -1000}};
+  return p;
+}
+
+const std::vector<ThesisPoint>& thesisStartPoints() {
+  static const std::vector<ThesisPoint> p = {{2, -3250, 3000}, {3, -2000, -3000}, {4, -1750, 3000}};
+  return p;
+}
+
 const std::vector<ThesisTable>& thesisTables() {
   static const std::vector<ThesisTable> tables = {
       {"5.3", "2016", 3, false,

@@ -47,6 +47,16 @@ struct ThesisComparison {
   std::vector<double> bottom;               // "Total:" (found) or "Average:" (seconds) row
 };
 
+// Table 5.2: the ball positions (mm, field frame) and table 5.1: the start
+// points of robots 2, 3 and 4 (mm). The shipped experiment files must agree
+// (tests/experiment), and the report marks positions that do not.
+struct ThesisPoint {
+  int number = 0;
+  double x_mm = 0, y_mm = 0;
+};
+const std::vector<ThesisPoint>& thesisBallPositions();  // table 5.2
+const std::vector<ThesisPoint>& thesisStartPoints();    // table 5.1, by robot number
+
 const std::vector<ThesisTable>& thesisTables();
 const ThesisTable* thesisTable(const std::string& number);  // null if unknown
 const std::vector<ThesisComparison>& thesisComparisons();

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 
 #include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/ThesisTables.hpp"
 #include "sim/experiment/TrialHooks.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
 
@@ -175,7 +176,28 @@ TEST(ExperimentFile, ShippedExperiments) {
   EXPECT_EQ(full.setups[0].thesis_table, "5.3");
   EXPECT_EQ(full.setups[1].thesis_table, "5.4");
 
+  // Every ball and start point is the thesis's (tables 5.2 and 5.1).
+  for (const BallPosition& b : full.balls) {
+    const ThesisPoint& p = thesisBallPositions().at(b.number - 1);
+    EXPECT_EQ(p.number, b.number);
+    EXPECT_NEAR(b.x * 1000, p.x_mm, 1e-9) << "position " << b.number;
+    EXPECT_NEAR(b.y * 1000, p.y_mm, 1e-9) << "position " << b.number;
+  }
+  for (const auto& s : full.setups)
+    for (const ExperimentRobot& r : s.robots) {
+      const ThesisPoint& p = thesisStartPoints().at(r.player - 2);
+      EXPECT_NEAR(r.x * 1000, p.x_mm, 1e-9) << "player " << r.player;
+      EXPECT_NEAR(r.y * 1000, p.y_mm, 1e-9) << "player " << r.player;
+    }
+
   const Experiment real = Experiment::loadFile(src + "/scenarios/thesis_findball_real.yaml");
+  for (const BallPosition& b : real.balls) {
+    EXPECT_NEAR(b.x * 1000, thesisBallPositions().at(b.number - 1).x_mm, 1e-9);
+    EXPECT_NEAR(b.y * 1000, thesisBallPositions().at(b.number - 1).y_mm, 1e-9);
+  }
+  // One robot: the top left corner, table 5.1's robot 2 (§5.1).
+  EXPECT_EQ(real.setups[0].robots[0].player, 2);
+  EXPECT_DOUBLE_EQ(real.setups[0].robots[0].x, -3.25);
   EXPECT_EQ(real.numTrials(), 100);  // (1 and 3 robots) x 2 components x 5 positions x 5
   ASSERT_EQ(real.setups.size(), 4u);
   EXPECT_EQ(real.setups[0].robots.size(), 1u);
