@@ -13,7 +13,7 @@ namespace simswift::experiment {
 const char* kExperimentUsage =
     "usage: simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N] [--progress bar|lines|none]\n"
     "       simswift experiment FILE.yaml --check\n"
-    "       simswift experiment merge DIR... [--out DIR]\n"
+    "       simswift experiment merge DIR... --out DIR\n"
     "\n"
     "Runs a find-ball experiment (scenarios/thesis_findball.yaml, ...): every setup x ball\n"
     "position x trial, each trial in its own process, and writes into DIR (default\n"
