@@ -12,7 +12,25 @@
 // vision oracle (issue 11) land, the lead plugs them in here: a factory that
 // maps findball2016/findball2017/striker to the scenario's behaviour: field
 // and passes Experiment::vision_yaml and the robot's config_yaml through,
-// and a FoundRule using the oracle's "seen".
+// and a FoundRule using the oracle's "seen". A sketch (field names are
+// whatever those issues call them):
+//
+//   struct BehaviourHooks : BehaviourFactory {
+//     void check(const Experiment&, const ExperimentRobot&) const override {}  // all built
+//     void configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const override {
+//       const Setup& s = e.setups[t.setup];
+//       for (size_t i = 0; i < s.robots.size(); ++i) {
+//         if (s.robots[i].behaviour == Behaviour::Script) continue;       // actions already set
+//         sc.robots[i].behaviour = behaviourName(s.robots[i].behaviour);  // scenario behaviour:
+//         sc.robots[i].behaviour_overrides = s.robots[i].config_yaml;     // its config overrides
+//       }
+//       sc.vision = e.vision_yaml;                                        // scenario vision:
+//     }
+//     void startPlay(...) const override { /* penalise, clear ball knowledge, PLAYING */ }
+//   };
+//   // app/simswift.cpp:
+//   experimentMain(argc - 1, argv + 1, {std::make_shared<BehaviourHooks>(),
+//                                       std::make_shared<OracleFoundRule>()});
 #pragma once
 
 #include <memory>
