@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/vision/VisionOracle.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
 #include "sim/camera/FrameDumper.hpp"
 #include "sim/camera/Overview.hpp"
@@ -216,6 +217,7 @@ void Runner::start() {
     r.images = r.host->images();
     if (external && free_running_) r.host->setSync(SyncMode::FreeRunning);
     r.latched.joints = initial;
+    r.ext = std::make_unique<al::SimExtensions>();  // before the program starts
     if (!external) {
       std::unique_ptr<ap::MotionGenerator> motion = std::move(r.motion_override);
       if (!motion && (!r.spec.actions.empty() || !r.spec.pushes.empty())) {
@@ -235,7 +237,33 @@ void Runner::start() {
       r.program->start();
     }
   }
+  // Team network and GameController; the robots see the game state at t = 0.
+  network_ = std::make_unique<network::TeamNetwork>(scenario_.team_comms, scenario_.seed);
+  std::vector<game::GameController::RobotId> ids;
+  links_.clear();
+  for (auto& r : robots_) {
+    // Network and GameController work by side (colour index 0/1); the block
+    // carries each side's SPL team number, as the GameController's packet does.
+    const int side = static_cast<int>(r->spec.colour);
+    network_->addEndpoint(side, r->spec.player);
+    ids.push_back({side, r->spec.player, r->spec.team});
+    links_.push_back(&r->ext->team);
+  }
+  game_ = std::make_unique<game::GameController>(scenario_.game, ids);
+  placer_ = std::make_unique<game::PenaltyPlacer>(modelPosture(ap::postureAngles(ap::Posture::Stand)));
+  teamAndGame(0);
   if (scenario_.camera.any()) startCameras();
+  {
+    vision::VisionConfig vc = scenario_.vision;
+    vc.noise = vc.noise && scenario_.noise.on;
+    vision_ = std::make_unique<vision::VisionOracle>(world_->field(), vc, scenario_.seed);
+    std::vector<int> teams, colours;
+    for (auto& r : robots_) {
+      teams.push_back(r->spec.team);
+      colours.push_back(static_cast<int>(r->spec.colour));
+    }
+    vision_->setTeams(teams, colours);
+  }
   wall_start_ = Clock::now();
 }
 
@@ -296,6 +324,13 @@ void Runner::watchdogFail(const Robot& r, const char* thread) const {
 //  6. At 30 Hz of simulated time (when floor(t * 30) advances) every robot
 //     with a Perception thread gets a camera frame and the runner waits for
 //     its perception_done (same watchdog).
+//  7. Team network and GameController (teamAndGame): every robot's outbox is
+//     drained and due packets go into inboxes (TeamNetwork::exchange), the
+//     game state advances (penalised robots to the sideline and back) and is
+//     written into every robot's GameStateBlock. No robot thread runs here
+//     (all answered in 4 and 6; none is posted before step 3 of the next
+//     tick), so the robot code sees the same packets and states at the same
+//     simulated time whatever the thread timing.
 // Threads may run in any order inside 3-4 and 6: the runner reads nothing
 // until they have all answered, so the result does not depend on timing.
 void Runner::tick() {
@@ -377,11 +412,12 @@ void Runner::tick() {
     al::CameraFrame f{};
     f.sim_time_us = t_us;
     f.frame_index = frame;
-    f.num_observations = 0;  // vision oracle: a later issue
+    f.num_observations = 0;
     bool any = false;
     for (size_t i = 0; i < robots_.size(); ++i) {
       Robot& r = *robots_[i];
-      al::CameraFrame fr = f;  // images_valid is per robot
+      al::CameraFrame fr = f;  // images_valid and observations are per robot
+      if (r.perception) vision_->fill(*world_, static_cast<int>(i), fr);  // both cameras (sim/vision)
       renderFrame(frame, t_us, fr, r, static_cast<int>(i));
       if (r.perception) {
         r.host->publishFrame(fr);
@@ -392,6 +428,22 @@ void Runner::tick() {
       for (auto& r : robots_)
         if (r->perception && !r->host->waitPerceptionDone(scenario_.watchdog_s)) watchdogFail(*r, "perception");
   }
+  // 7.
+  teamAndGame(t_us);
+}
+
+void Runner::teamAndGame(int64_t t_us) {
+  network_->exchange(t_us, links_);
+  for (const game::GameEvent& e : game_->update(t_us)) {
+    Robot& r = *robots_[e.robot];
+    if (e.kind == game::GameEvent::Kind::Penalised) {
+      placer_->penalise(*world_, e.robot, r.spec.team);
+    } else {
+      placer_->unpenalise(*world_, e.robot, scenario_.game.on_unpenalise == game::GameConfig::Return::Previous);
+    }
+    r.sensors->reset(*world_);  // the robot was carried: no velocity spike in the IMU
+  }
+  for (auto& r : robots_) game_->fill(r->ext->game);
 }
 
 RunStats Runner::stats() const {

@@ -27,9 +27,13 @@
 #include <string>
 #include <vector>
 
+#include "agent/libagent/SimExtensions.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "sim/bridge/BodyHost.hpp"
+#include "sim/game/GameController.hpp"
+#include "sim/game/Sideline.hpp"
+#include "sim/network/TeamNetwork.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
@@ -39,6 +43,10 @@ class RobotCameras;
 class FrameDumper;
 class OverviewCamera;
 }  // namespace simswift::camera
+
+namespace simswift::vision {
+class VisionOracle;
+}
 
 namespace simswift::runner {
 
@@ -127,6 +135,14 @@ class Runner {
   const agent::libagent::CameraImages* images(int i) const { return robots_[i]->images; }
   int64_t framesDumped() const;     // PNGs written by --dump-frames
   int64_t overviewFrames() const;   // overview PNGs written
+
+  // Team communication and game states (after start()). Robot i's extension
+  // objects beside its libagent block: the game state and the team link
+  // (see agent/libagent/SimExtensions.hpp). The runner touches them only in
+  // tick step 7, while no robot thread runs.
+  agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext.get(); }
+  const network::TeamNetwork& teamNetwork() const { return *network_; }
+  const game::GameController& gameController() const { return *game_; }
   // After run(): the overview video line (empty if no overview).
   const std::string& overviewMessage() const { return overview_message_; }
   // Ends the overview (assembles the video) and returns its message; run() calls it.
@@ -150,6 +166,7 @@ class Runner {
     bool fallen = false;
     int falls = 0;
     size_t next_push = 0;  // next of spec.pushes to apply
+    std::unique_ptr<agent::libagent::SimExtensions> ext;  // game state + team link
   };
 
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
@@ -163,6 +180,7 @@ class Runner {
   bool started_ = false;
   bool stopped_ = false;
   int64_t last_frame_ = -1;
+  std::unique_ptr<vision::VisionOracle> vision_;  // observations in every camera frame
   std::unique_ptr<camera::RobotCameras> cameras_;
   std::unique_ptr<camera::FrameDumper> dumper_;
   std::unique_ptr<camera::OverviewCamera> overview_;
@@ -172,6 +190,11 @@ class Runner {
   void startCameras();
   void renderFrame(int64_t frame, int64_t t_us, agent::libagent::CameraFrame& f, Robot& r, int index);
   int blowups_ = 0;
+  std::unique_ptr<network::TeamNetwork> network_;
+  std::unique_ptr<game::GameController> game_;
+  std::unique_ptr<game::PenaltyPlacer> placer_;
+  std::vector<agent::libagent::TeamLink*> links_;  // by robot index, for the network
+  void teamAndGame(int64_t t_us);  // tick step 7
   std::chrono::steady_clock::time_point wall_start_;
 };
 

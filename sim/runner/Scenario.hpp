@@ -15,6 +15,8 @@
 //     resolution: 640x480          # or 1280x960
 //     overview: {mode: fixed|robot|ball, robot: 0, rate_hz: 10,
 //                width: 960, height: 540, dir: overview}   # whole-field PNGs (+ MP4)
+//   vision: {ball: {max_distance_mm: 2500, false_positive_rate: 0.01}, ...}
+//                                  # detector model (sim/vision/VisionConfig.hpp); or on/off
 //   ball: {x: 1.0, y: 0.0}         # m, field frame
 //   robots:
 //     - {team: 19, player: 1, x: -1.0, y: 0.0, theta: 0.0,  # m, m, rad (field frame)
@@ -28,6 +30,16 @@
 //                  {t: 9.0, push: {x: 3.0, y: 0.0}}]}   # m/s added to the torso (field axes)
 //      actions run the robot's Motion (agent/motion) from a timed list: walk, stand,
 //      kick, getup_front, getup_back, dead, crouch, limp, none.
+//   team_comms: {loss: 0.1, delay_ms: 100, budget: 0}   # see sim/network/TeamNetwork.hpp
+//      loss 0..1 per packet and teammate, delay ms, budget packets per team per game (0 = none)
+//   game:                          # the GameController (sim/game); absent = PLAYING throughout
+//     state: initial               # state at t = 0 (default playing)
+//     kickoff_team: 0              # team index
+//     half_duration: 600           # s
+//     on_unpenalise: previous      # or sideline: where an unpenalised robot goes
+//     timeline: [{t: 0, state: ready}, {t: 45, state: set}, {t: 50, state: playing, kickoff_team: 1}]
+//     penalties: [{t: 10, robot: 0, penalty: request_for_pickup, duration: 30}]  # robot: scenario index;
+//                                  # duration s (< 0: until {penalty: none}); penalised robots wait on the sideline
 //
 // `team` is the SPL team number (0..99, as in the GameController). A match
 // has at most two teams, told apart by colour: a robot's `colour` (blue or
@@ -48,7 +60,10 @@
 #include "agent/motion/ActionScript.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/Postures.hpp"
+#include "sim/game/GameController.hpp"
+#include "sim/network/TeamNetwork.hpp"
 #include "sim/sensors/Buttons.hpp"
+#include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/World.hpp"
 
@@ -125,8 +140,13 @@ struct Scenario {
   std::string solver = WorldConfig{}.solver == WorldConfig::Solver::Quick ? "quick" : "exact";
   int quick_iterations = WorldConfig{}.quick_iterations;
   CameraSpec camera;
+  // The vision oracle's detector model (`vision:`). Its noise is off too
+  // when the scenario's noise master switch is off (see Runner::start).
+  vision::VisionConfig vision;
   std::optional<std::pair<double, double>> ball;  // m, field frame
   std::vector<RobotSpec> robots;
+  network::TeamNetworkConfig team_comms;  // team_comms: (defaults: no loss, no delay, no budget)
+  game::GameConfig game;                  // game: (default: PLAYING, no penalties)
 
   // Absolute paths of the model and field files.
   std::string modelFile() const;
