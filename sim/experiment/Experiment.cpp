@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/vision/VisionConfig.hpp"
 #include "sim/world/YamlReader.hpp"
 
 namespace simswift::experiment {
@@ -120,8 +121,11 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
     t->finish();
   }
   if (top.has("vision")) {
+    // The scenario's vision: block, read (and checked) by the vision
+    // oracle's own reader; every trial's scenario gets it.
     if (!root["vision"].IsMap()) top.fail("vision", "must be a map (the scenario's vision: block)");
     e.vision_yaml = flow(root["vision"]);
+    e.base.vision = vision::readVisionConfig(top.map("vision"), e.base.vision);
   }
 
   // Everything must lie on the carpet (m, field frame).

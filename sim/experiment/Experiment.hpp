@@ -13,8 +13,9 @@
 //                                  # to the sideline, as the thesis did
 //   tracks: {every: 0.5}           # s between robot track samples
 //   noise: on                      # sensor noise (the scenario's noise: switch)
-//   vision: {...}                  # detector model and noise: opaque here, handed to
-//                                  # the trial scenario's vision: block unchanged
+//   vision: {ball: {max_distance_mm: 2500}}   # detector model and noise: the
+//                                  # scenario's vision: block (sim/vision/VisionConfig.hpp),
+//                                  # read by its reader, given to every trial
 //   balls:                         # table 5.2 (m, field frame)
 //     - {position: 1, x: 2.25, y: 0.0, note: Right middle}
 //   setups:                        # each runs every ball position x trials_per_position
@@ -91,7 +92,8 @@ struct Experiment {
   FoundSpec found;
   FallenSpec fallen;
   double track_every = 0.5;  // s
-  std::string vision_yaml;   // opaque vision: block (YAML flow text; "" = none)
+  std::string vision_yaml;   // the vision: block as written (YAML flow text; "" = none);
+                             // parsed into base.vision
   std::vector<BallPosition> balls;
   std::vector<Setup> setups;
 

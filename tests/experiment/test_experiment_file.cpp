@@ -208,6 +208,16 @@ TEST(ExperimentFile, ShippedExperiments) {
   EXPECT_NO_THROW(checkBehaviours(script, defaultHooks()));
 }
 
+// The vision: block is the scenario's (read by sim/vision's reader): checked
+// at load time, given to every trial's scenario.
+TEST(ExperimentFile, VisionBlock) {
+  const std::string with = replaced(kGood, "found: {distance: 0.3}\n",
+                                    "found: {distance: 0.3}\nvision: {ball: {max_distance_mm: 1500}}\n");
+  const Experiment e = Experiment::parse(with, "v.yaml");
+  EXPECT_DOUBLE_EQ(trialScenario(e, trialSpec(e, 0)).vision[vision::Feature::Ball].max_distance_mm, 1500);
+  expectError(replaced(with, "max_distance_mm: 1500", "max_distance: 1.5"), "bad.yaml:6:", "unknown key 'max_distance'");
+}
+
 // SPL team numbers go to the scenario as they are; the first team in a
 // setup plays blue, a second red; a third team is refused.
 TEST(ExperimentFile, TeamsAndColours) {
