@@ -484,6 +484,13 @@ RunStats Runner::stats() const {
   return s;
 }
 
+void Runner::placeRobot(int i, double x, double y, double theta) {
+  if (!started_) start();
+  if (i < 0 || i >= numRobots()) throw RunnerError("placeRobot: no robot " + std::to_string(i));
+  world_->placeRobot(i, x, y, theta, modelPosture(ap::postureAngles(ap::Posture::Stand)));
+  robots_[i]->sensors->reset(*world_);
+}
+
 RunStats Runner::run(const RunOptions& opt) {
   if (opt.realtime) setFreeRunning(true);
   start();

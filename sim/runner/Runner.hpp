@@ -124,6 +124,9 @@ class Runner {
   const sensors::SensorSuite& sensors(int i) const { return *robots_[i]->sensors; }
   int64_t ticks() const { return world_ ? world_->tick() : 0; }
   RunStats stats() const;  // so far
+  // Teleports robot i, standing, to (x, y) m facing theta rad (field frame)
+  // and restarts its sensors from rest (the experiment's sideline rule).
+  void placeRobot(int i, double x, double y, double theta);
 
   // Cameras (scenario camera:, --dump-frames, --overview). Rendering needs a
   // build with SIMSWIFT_HAVE_CAMERAS; start() throws RunnerError otherwise.

@@ -69,6 +69,10 @@
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/World.hpp"
 
+namespace simswift {
+class YamlReader;
+}
+
 namespace simswift::runner {
 
 enum class TeamColour : int { Blue = 0, Red = 1 };
@@ -153,6 +157,10 @@ struct Scenario {
   static Scenario loadFile(const std::string& path);
   static Scenario parse(const std::string& text, const std::string& source_name);
 };
+
+// A robot entry's `actions:` list into rs.actions and rs.pushes (also the
+// experiment files' script robots, sim/experiment).
+void readActions(const YamlReader& robot, RobotSpec& rs);
 
 // The source tree (compile definition), where default paths resolve.
 std::string sourceDir();
