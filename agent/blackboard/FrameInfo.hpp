@@ -1,16 +1,16 @@
 // What the Perception thread receives at each camera frame (30 Hz of
 // simulated time): the frame's time, the body's sensor values at that time
-// (joint angles for the camera matrix), the odometry then, and the frame's
-// detector observations. Written by the robot program before the Perception
-// modules run; read by the vision adapter, localisation, ball tracker and
-// behaviour.
+// (joint angles for the camera matrix) and the frame's detector
+// observations. Written by the robot program before the Perception modules
+// run; read by the vision adapter, localisation, ball tracker and behaviour.
+// Odometry and posture at frame time are in the Motion section (the Motion
+// thread is between ticks while a frame is processed).
 // Units: s, us, mm, rad. Observations are robot-relative (origin between the
 // feet on the ground, x forward, y left).
 #pragma once
 
 #include <cstdint>
 
-#include "agent/blackboard/Odometry.hpp"
 #include "agent/libagent/AgentShared.hpp"
 #include "agent/libagent/CameraShared.hpp"
 
@@ -23,8 +23,6 @@ struct FrameInfo {
   double dt = 0;            // s since the previous frame (0 on the first)
   // Sensors at frame time (the Motion tick that ended just before the frame).
   libagent::SensorValues sensors{};
-  Odometry odometry;        // Motion's odometry at frame time
-  bool fallen = false;      // Motion's posture says falling / lying / getting up
   int32_t num_observations = 0;
   libagent::Observation observations[libagent::kMaxObservations]{};
   bool images_valid = false;  // the CameraImages block holds this frame

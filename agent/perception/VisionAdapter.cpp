@@ -27,11 +27,12 @@ bool toPoint(const libagent::Observation& o, double max_distance, blackboard::RR
 }
 }  // namespace
 
-blackboard::VisionMeasurements adaptVision(const blackboard::FrameInfo& frame, const VisionAdapterConfig& cfg) {
+blackboard::VisionMeasurements adaptVision(const blackboard::FrameInfo& frame, bool fallen,
+                                           const VisionAdapterConfig& cfg) {
   blackboard::VisionMeasurements v;
   v.frame_index = frame.frame_index;
   v.time = frame.time;
-  if (frame.fallen) return v;
+  if (fallen) return v;
   const int n = std::min<int>(frame.num_observations, libagent::kMaxObservations);
   for (int i = 0; i < n; ++i) {
     const libagent::Observation& o = frame.observations[i];

@@ -19,6 +19,8 @@ struct VisionAdapterConfig {
   double max_distance = 9000.0;  // mm: farther detections are dropped
 };
 
-blackboard::VisionMeasurements adaptVision(const blackboard::FrameInfo& frame, const VisionAdapterConfig& cfg = {});
+// `fallen`: Motion's posture says falling, lying or getting up.
+blackboard::VisionMeasurements adaptVision(const blackboard::FrameInfo& frame, bool fallen,
+                                           const VisionAdapterConfig& cfg = {});
 
 }  // namespace agent::perception

@@ -38,7 +38,7 @@ TEST(VisionAdapter, SplitsDetectionsForTheirConsumers) {
   polar.distance = 1000;
   polar.heading = static_cast<float>(M_PI / 2);
   f.observations[f.num_observations++] = polar;
-  const bb::VisionMeasurements v = agent::perception::adaptVision(f);
+  const bb::VisionMeasurements v = agent::perception::adaptVision(f, false);
   EXPECT_EQ(v.frame_index, 7);
   ASSERT_TRUE(v.ball_seen);
   EXPECT_FLOAT_EQ(v.ball.x, 900);
@@ -60,11 +60,10 @@ TEST(VisionAdapter, NothingWhileFallenOrBeyondRange) {
   f.observations[f.num_observations++] = obs(al::ObservationType::Ball, 500, 0);
   f.observations[f.num_observations++] = obs(al::ObservationType::GoalPost, 9500, 0);  // beyond 9 m
   f.observations[f.num_observations++] = obs(al::ObservationType::GoalPost, NAN, 0);
-  bb::VisionMeasurements v = agent::perception::adaptVision(f);
+  bb::VisionMeasurements v = agent::perception::adaptVision(f, false);
   EXPECT_TRUE(v.ball_seen);
   EXPECT_EQ(v.num_features, 0);
-  f.fallen = true;
-  v = agent::perception::adaptVision(f);
+  v = agent::perception::adaptVision(f, true);
   EXPECT_FALSE(v.ball_seen);
   EXPECT_EQ(v.num_features, 0);
 }
