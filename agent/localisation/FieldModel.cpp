@@ -50,15 +50,24 @@ std::vector<LineSegment> FieldModel::lines() const {
 }
 
 double distanceToLines(const Vec2& p, const std::vector<LineSegment>& lines, double circle_radius) {
-  // Squared distances (no hypot in the loop: this runs per particle per line point).
+  // Squared distances (no hypot in the loop: this runs per particle per line
+  // point). Axis-parallel segments (all of the SPL field's) need no division.
   const double circle = std::sqrt(p.x * p.x + p.y * p.y) - circle_radius;
   double best2 = circle * circle;
   for (const LineSegment& s : lines) {
-    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-    const double len2 = dx * dx + dy * dy;
-    double t = len2 > 0 ? ((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / len2 : 0;
-    t = std::clamp(t, 0.0, 1.0);
-    const double ex = p.x - (s.a.x + t * dx), ey = p.y - (s.a.y + t * dy);
+    double ex, ey;
+    if (s.a.y == s.b.y) {
+      ex = p.x - std::clamp(p.x, std::min(s.a.x, s.b.x), std::max(s.a.x, s.b.x));
+      ey = p.y - s.a.y;
+    } else if (s.a.x == s.b.x) {
+      ex = p.x - s.a.x;
+      ey = p.y - std::clamp(p.y, std::min(s.a.y, s.b.y), std::max(s.a.y, s.b.y));
+    } else {
+      const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+      const double t = std::clamp(((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      ex = p.x - (s.a.x + t * dx);
+      ey = p.y - (s.a.y + t * dy);
+    }
     best2 = std::min(best2, ex * ex + ey * ey);
   }
   return std::sqrt(best2);

@@ -36,7 +36,7 @@
 namespace agent::localisation {
 
 struct LocaliserConfig {
-  int particles = 300;
+  int particles = 200;
   uint64_t seed = 1;
   // Odometry noise per frame: sigma = floor + fraction * step.
   double odo_trans_fraction = 0.15;  // of the distance walked
@@ -51,13 +51,13 @@ struct LocaliserConfig {
   double line_floor = 60.0;          // mm, line points: floor + fraction * distance
   double line_fraction = 0.08;
   double outlier = 0.1;              // likelihood floor of any one observation
-  int max_line_points = 8;           // per frame (they are correlated)
+  int max_line_points = 6;           // per frame (they are correlated)
   // Re-localisation.
   double slow_rate = 0.02, fast_rate = 0.25;  // averaging rates of the frame likelihood
   double inject_ratio = 0.6;         // inject when fast < ratio * slow
   double inject_below = 0.3;         // ... or when fast (per-observation fit, 0..1) is below this
   double inject_fraction = 0.25;     // of the particles replaced per frame at most
-  int max_candidates = 1500;         // poses evaluated per injection
+  int max_candidates = 800;          // poses evaluated per injection
   int inject_modes = 12;             // distinct poses injected at once
   // Probing: even when the belief fits, every probe_interval s a few
   // particles (probe_fraction) go to the poses the frame implies, so an alias
