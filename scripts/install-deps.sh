@@ -3,7 +3,7 @@
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config git
       libode-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev
-      libassimp-dev libosmesa6-dev libpng-dev
+      libassimp-dev libosmesa6-dev libpng-dev libcairo2-dev
       libgtest-dev libbenchmark-dev ffmpeg)
 missing=()
 for p in "${pkgs[@]}"; do

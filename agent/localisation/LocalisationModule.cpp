@@ -10,7 +10,9 @@ void LocalisationModule::run(blackboard::Blackboard& board) {
   const blackboard::GameInfo game = board.game.read();
   double f = 0, l = 0, t = 0;
   if (!started_) {
-    if (game.known)
+    // Robots walk in from the sideline at the start of a game; a game that
+    // starts in PLAYING is a test field with robots placed by hand.
+    if (game.known && (game.state == blackboard::GameStateId::INITIAL || game.state == blackboard::GameStateId::READY))
       filter_.reset(InitialPose::SidelineEntry);
     else if (cfg_.known_start)
       filter_.resetTo(*cfg_.known_start, 50, 0.05);

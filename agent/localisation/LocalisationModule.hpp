@@ -1,11 +1,12 @@
 // Localisation as a Perception module: frame + vision + motion (odometry,
 // posture) + game state -> localisation.
 //
-// Initial poses come from the game state: when the game is known, the belief
-// starts on the own half's touch lines (robots enter from the sideline) and
-// restarts at the penalty return spot when a penalty ends; with no game
-// (a test field) it starts over the own half, or at `known_start` when the
-// team configured one (as on a test bench).
+// Initial poses come from the game state: when the game starts in INITIAL or
+// READY, the belief starts on the own half's touch lines (robots enter from
+// the sideline); it restarts at the penalty return spot when a penalty ends.
+// With no game, or one that starts in PLAYING (a test field, robots placed
+// by hand), it starts at `known_start` when the team configured one (as on a
+// test bench), otherwise anywhere in the own half.
 #pragma once
 
 #include <optional>

@@ -13,22 +13,34 @@ ScriptedBehaviour::ScriptedBehaviour(std::vector<ActionStep> steps) : steps_(std
 
 void ScriptedBehaviour::run(blackboard::Blackboard& board) { runAt(board.frame.read().time, board); }
 
+void ScriptedBehaviour::request(blackboard::Blackboard& board, const blackboard::BodyCommand& body,
+                                const blackboard::HeadCommand* head) {
+  board.motion_request.update([&](blackboard::MotionRequest& r) {
+    r.body = body;
+    if (head) r.head = *head;
+    ++r.sequence;  // a new request (a repeated kick kicks again)
+  });
+}
+
 void ScriptedBehaviour::runAt(double t, blackboard::Blackboard& board) {
+  using blackboard::GameStateId;
+  const blackboard::GameInfo game = board.game.read();
+  const bool hold = game.known && (game.penalised || game.state == GameStateId::INITIAL ||
+                                   game.state == GameStateId::SET || game.state == GameStateId::FINISHED);
+  blackboard::BodyCommand stand;
+  stand.type = blackboard::ActionType::STAND;
   if (!started_) {
-    board.motion_request.update([](blackboard::MotionRequest& r) {
-      r.body.type = blackboard::ActionType::STAND;
-      ++r.sequence;
-    });
+    current_ = stand;
+    request(board, stand, nullptr);
     started_ = true;
   }
   while (next_ < steps_.size() && steps_[next_].t <= t + 1e-9) {
     const ActionStep& s = steps_[next_++];
-    board.motion_request.update([&](blackboard::MotionRequest& r) {
-      r.body = s.body;
-      if (s.has_head) r.head = s.head;
-      ++r.sequence;  // a new request (a repeated kick kicks again)
-    });
+    if (s.body.type != blackboard::ActionType::NONE) current_ = s.body;
+    if (!hold) request(board, s.body, s.has_head ? &s.head : nullptr);
   }
+  if (hold != held_) request(board, hold ? stand : current_, nullptr);
+  held_ = hold;
 }
 
 bool parseActionType(const std::string& name, blackboard::ActionType* out) {

@@ -2,7 +2,10 @@
 // (walk at forward/left/turn, stand, kick, ...) written to the Blackboard's
 // behaviour request as simulated time passes. It is a Behaviour module in
 // the Perception thread (30 Hz, frame time), so a scripted robot and a
-// behaving robot reach Motion by the same path.
+// behaving robot reach Motion by the same path. Like any behaviour it obeys
+// the game: while the robot is penalised, or the game is INITIAL, SET or
+// FINISHED, it asks Motion to stand; when released the script's current
+// action resumes.
 // Units: s, mm/s, rad/s, rad.
 #pragma once
 
@@ -29,13 +32,18 @@ class ScriptedBehaviour : public program::Module {
   explicit ScriptedBehaviour(std::vector<ActionStep> steps);
 
   const char* name() const override { return "behaviour (action script)"; }
-  std::vector<program::SectionId> reads() const override { return {program::SectionId::Frame}; }
+  std::vector<program::SectionId> reads() const override {
+    return {program::SectionId::Frame, program::SectionId::GameState};
+  }
   std::vector<program::SectionId> writes() const override { return {program::SectionId::BehaviourRequest}; }
   void run(blackboard::Blackboard& board) override;
   // The same at `time_s` (tests and tools).
   void runAt(double time_s, blackboard::Blackboard& board);
 
  private:
+  void request(blackboard::Blackboard& board, const blackboard::BodyCommand& body, const blackboard::HeadCommand* head);
+  blackboard::BodyCommand current_;  // the script's action now (STAND before the first)
+  bool held_ = false;                // standing for the game (penalty, INITIAL/SET/FINISHED)
   std::vector<ActionStep> steps_;
   size_t next_ = 0;
   bool started_ = false;

@@ -18,6 +18,7 @@
 #include <optional>
 #include <vector>
 
+#include "agent/libagent/SimExtensions.hpp"
 #include "agent/localisation/LocalisationModule.hpp"
 #include "agent/motion/ActionScript.hpp"
 #include "agent/motion/MotionModule.hpp"
@@ -41,7 +42,9 @@ struct ProgramConfig {
   localisation::LocalisationModuleConfig localisation;
   perception::BallTrackerConfig ball;
   perception::VisionAdapterConfig vision;
-  GameStateModule::Source game_source;
+  // The simulator's extension objects (game state, team link); null: no
+  // game (unknown, PLAYING) and no teammates.
+  libagent::SimExtensions* extensions = nullptr;
 };
 
 // Fills `schedule` in the standard order. `board` is the program's Blackboard

@@ -57,13 +57,14 @@ void RobotProgram::start() {
       p->step().setImages(conn_.images());
       step_module_ = p;
     }
-  motion_thread_ = std::thread([this] { motionLoop(); });
   // Perception runs at every frame whether or not images are rendered.
   const bool with_perception = conn_.hasCamera();
-  if (with_perception) perception_thread_ = std::thread([this] { perceptionLoop(); });
-  // Ticks already posted wait in the semaphores, so announcing after the
-  // threads were created (not necessarily waiting yet) is safe.
+  // Announce first: the simulator decides whether to send camera frames once
+  // Motion has answered its first tick, which may happen as soon as the
+  // thread exists.
   conn_.announce(with_perception);
+  motion_thread_ = std::thread([this] { motionLoop(); });
+  if (with_perception) perception_thread_ = std::thread([this] { perceptionLoop(); });
 }
 
 void RobotProgram::join() {

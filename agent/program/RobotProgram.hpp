@@ -11,8 +11,9 @@
 //
 // start() checks the modules' declared reads and writes first: a module
 // reading a section nobody provides throws ModuleError naming both.
-// Robot code sees simulated time only (lockstep.sim_time_us). The threads end
-// when the body side sets shutdown and wakes them.
+// Robot code sees simulated time only (the sensor slot's time in the
+// extension object). The threads end when the body side sets shutdown and
+// wakes them, or when a simulator attached by name has gone.
 #pragma once
 
 #include <atomic>
@@ -44,9 +45,9 @@ class RobotProgram {
 
   // Replace the Motion step by a generator (before start()).
   void setMotion(std::unique_ptr<MotionGenerator> motion);
-  // Checks and orders the modules, starts the threads, then announces the
-  // program to the body side. Throws ModuleError (nothing started) if a
-  // module reads a section nobody provides.
+  // Checks and orders the modules, announces the program to the body side,
+  // then starts the threads. Throws ModuleError (nothing announced or
+  // started) if a module reads a section nobody provides.
   void start();
   // Waits for the threads to end (they end on shutdown).
   void join();
@@ -61,6 +62,8 @@ class RobotProgram {
   int64_t perceptionFrames() const { return perception_frames_.load(); }
   // The camera images the Perception thread reads (null: no rendering).
   const agent::libagent::CameraImages* images() const { return conn_.images(); }
+  // Attached by name: the simulator process has gone (killed) without ending the run.
+  bool simulatorGone() const { return !conn_.shutdown() && !conn_.simulatorAlive(); }
   // First exception a thread died of (empty if none).
   std::string error() const;
 

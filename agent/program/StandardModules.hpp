@@ -6,6 +6,11 @@
 #include <functional>
 #include <memory>
 
+#include "agent/comms/GameStateReader.hpp"
+#include "agent/comms/TeamReceiver.hpp"
+#include "agent/comms/TeamSender.hpp"
+#include "agent/comms/TeamTransport.hpp"
+#include "agent/libagent/GameState.hpp"
 #include "agent/motion/MotionModule.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/Module.hpp"
@@ -94,12 +99,13 @@ class PerceptionStepModule : public Module {
   const libagent::CameraFrame* frame_ = nullptr;
 };
 
-// -> game state. Until a GameController source is connected the game is
+// -> game state, from the game-state extension object (GameStateReader).
+// Without one (null: a program attached by name, a bench tool) the game is
 // unknown (known = false: a test field, always PLAYING).
 class GameStateModule : public Module {
  public:
-  using Source = std::function<bool(blackboard::GameInfo*)>;  // true if it filled a new state
-  GameStateModule(int team, int player, Source source = {}) : source_(std::move(source)) {
+  GameStateModule(int team, int player, const libagent::GameStateBlock* block)
+      : reader_(team, player), block_(block) {
     info_.team_number = team;
     info_.player_number = player;
   }
@@ -109,36 +115,50 @@ class GameStateModule : public Module {
   void run(blackboard::Blackboard& board) override;
 
  private:
-  Source source_;
+  comms::GameStateReader reader_;
+  const libagent::GameStateBlock* block_;
   blackboard::GameInfo info_;
 };
 
-// -> team: teammates' reports. Until a transport is connected nothing
-// arrives (the section says who we are and that no mate was heard).
+// -> team: teammates' SPL standard messages through the transport
+// (TeamReceiver parses them; malformed ones are counted and dropped), as
+// field-frame reports. Without a transport nothing arrives.
 class TeamReceiveModule : public Module {
  public:
-  TeamReceiveModule(int team, int player) {
+  TeamReceiveModule(int team, int player, std::shared_ptr<comms::TeamTransport> transport)
+      : receiver_(team, player), transport_(std::move(transport)) {
     info_.team_number = team;
     info_.player_number = player;
   }
   const char* name() const override { return "team receive"; }
   std::vector<SectionId> reads() const override { return {SectionId::Frame}; }
   std::vector<SectionId> writes() const override { return {SectionId::Team}; }
-  void run(blackboard::Blackboard& board) override { board.team.write(info_); }
+  void run(blackboard::Blackboard& board) override;
 
  private:
+  comms::TeamReceiver receiver_;
+  std::shared_ptr<comms::TeamTransport> transport_;
   blackboard::TeamInfo info_;
 };
 
-// localisation + ball + game state -> teammates (nothing connected yet).
+// localisation + ball + motion (fallen) -> teammates: our SPL standard
+// message at 5 Hz (TeamSender) through the transport.
 class TeamSendModule : public Module {
  public:
+  TeamSendModule(int team, int player, std::shared_ptr<comms::TeamTransport> transport)
+      : sender_(team, player), transport_(std::move(transport)), player_(player) {}
   const char* name() const override { return "team send"; }
   std::vector<SectionId> reads() const override {
-    return {SectionId::Frame, SectionId::Localisation, SectionId::Ball, SectionId::GameState};
+    return {SectionId::Frame, SectionId::Localisation, SectionId::Ball, SectionId::Motion};
   }
   std::vector<SectionId> writes() const override { return {}; }
-  void run(blackboard::Blackboard&) override {}
+  void run(blackboard::Blackboard& board) override;
+  const comms::TeamSender& sender() const { return sender_; }
+
+ private:
+  comms::TeamSender sender_;
+  std::shared_ptr<comms::TeamTransport> transport_;
+  int player_;
 };
 
 }  // namespace agent::program

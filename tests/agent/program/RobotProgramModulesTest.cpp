@@ -16,41 +16,48 @@ namespace bb = agent::blackboard;
 namespace {
 // An in-process body side without a simulator: ticks and frames by hand.
 struct Body {
-  std::unique_ptr<al::SimRobotShm> shm{new al::SimRobotShm()};
+  std::unique_ptr<al::AgentData> block{new al::AgentData()};
+  std::unique_ptr<al::SimExtension> ext{new al::SimExtension()};
   sem_t tick;
   Body() {
     sem_init(&tick, 0, 0);
-    sem_init(&shm->agent.lockstep.motion_done, 1, 0);
-    sem_init(&shm->camera.frame_ready, 1, 0);
-    sem_init(&shm->camera.perception_done, 1, 0);
-    shm->agent.magic = al::kMagic;
-    shm->agent.version = al::kVersion;
-    shm->camera.magic = al::kMagic;
+    sem_init(&ext->answered, 1, 0);
+    sem_init(&ext->camera.frame_ready, 1, 0);
+    sem_init(&ext->camera.perception_done, 1, 0);
+    ext->magic = al::kExtensionMagic;
+    ext->version = al::kExtensionVersion;
   }
-  ~Body() { sem_destroy(&tick); }
-  al::AgentConnection connect() { return al::AgentConnection(&shm->agent, &tick, &shm->camera); }
+  ~Body() {
+    sem_destroy(&tick);
+    sem_destroy(&ext->answered);
+    sem_destroy(&ext->camera.frame_ready);
+    sem_destroy(&ext->camera.perception_done);
+  }
+  al::AgentConnection connect() { return al::AgentConnection(block.get(), &tick, ext.get()); }
   static bool wait(sem_t* s) {
     timespec d{};
     clock_gettime(CLOCK_REALTIME, &d);
     d.tv_sec += 5;
     return sem_timedwait(s, &d) == 0;
   }
+  // One tick: sensors' time, park the actuators, post, wait for the answer.
   bool step(int64_t t_us) {
-    shm->agent.lockstep.sim_time_us = t_us;
+    ext->slot_time_us[0] = t_us;
+    al::storeIndex(block->actuators_latest, al::kActuatorsParked);
     sem_post(&tick);
-    return wait(&shm->agent.lockstep.motion_done);
+    return wait(&ext->answered);
   }
   bool frame(int64_t t_us, int64_t index) {
-    shm->camera.frame.sim_time_us = t_us;
-    shm->camera.frame.frame_index = index;
-    sem_post(&shm->camera.frame_ready);
-    return wait(&shm->camera.perception_done);
+    ext->camera.frame.sim_time_us = t_us;
+    ext->camera.frame.frame_index = index;
+    sem_post(&ext->camera.frame_ready);
+    return wait(&ext->camera.perception_done);
   }
   void shutdown() {
-    shm->agent.lockstep.shutdown = 1;
-    shm->camera.shutdown = 1;
+    ext->shutdown = 1;
+    ext->camera.shutdown = 1;
     sem_post(&tick);
-    sem_post(&shm->camera.frame_ready);
+    sem_post(&ext->camera.frame_ready);
   }
 };
 }  // namespace
@@ -67,7 +74,7 @@ TEST(RobotProgramModules, MotionWithoutABehaviourFailsStartUpNamingBoth) {
     EXPECT_NE(m.find("'motion'"), std::string::npos) << m;
     EXPECT_NE(m.find("'behaviour request'"), std::string::npos) << m;
   }
-  EXPECT_EQ(body.shm->agent.lockstep.attached.load(), 0);  // nothing announced
+  EXPECT_EQ(body.ext->client_pid.load(), 0);  // nothing announced
 }
 
 TEST(RobotProgramModules, ActionsReachMotionThroughTheBehaviourRequestAtFrameTime) {
