@@ -18,10 +18,50 @@
 
 namespace agent::libagent {
 
+// What was seen. Values are fixed (the block is shared between processes):
+// append only. LineCorner is a line intersection (kind in Observation::corner).
 enum class ObservationType : int32_t { Ball = 0, GoalPost, Robot, LineCorner, FieldLine, CentreCircle, PenaltyCross };
 
-// One detection, relative to the robot (origin between the feet on the
-// ground, x forward, y left). Distance mm, heading rad (left positive).
+// Kind of a line intersection: L (two lines end at a corner), T (one line
+// ends on another), X (two lines cross).
+enum class CornerKind : int32_t { None = 0, L = 1, T = 2, X = 3 };
+
+// Observation::flags bits.
+constexpr int32_t kObservationRobotFallen = 1;  // Robot: the robot seen is lying on the ground
+
+// One detection, as a detector on the robot would report it (the vision
+// oracle's output, already noisy).
+//
+// Frame: robot-relative, origin on the ground midway between the feet, x
+// forward (the torso's heading projected on the ground), y left, z up.
+// Units: mm and rad; angles counter-clockwise positive (left).
+//
+// What each field means per type:
+//   x, y          ground point of the object: ball centre's projection,
+//                 post base centre, robot (midway between its feet),
+//                 intersection point, circle centre, mark centre; for a
+//                 FieldLine the first end of the piece seen.
+//   distance      mm, sqrt(x^2 + y^2); for a FieldLine the distance to the
+//                 nearest point of the piece seen.
+//   heading       rad, atan2(y, x) of the same point.
+//   x2, y2        FieldLine only: the other end of the piece seen (mm).
+//   orientation   rad, robot-relative direction:
+//                   Robot: the seen robot's facing;
+//                   LineCorner L: bisector of the two arms, pointing into
+//                     the corner's inside; T: along the stem, away from the
+//                     bar; X: along one of the crossing lines (ambiguous by
+//                     a quarter turn for line-line, half a turn for the
+//                     halfway line crossing the centre circle);
+//                   CentreCircle: along the halfway line (ambiguous by pi);
+//                   FieldLine: from (x, y) to (x2, y2);
+//                   otherwise 0.
+//   corner        LineCorner only: L / T / X; None otherwise.
+//   team          Robot only: SPL team number of the robot seen (told by its
+//                 jersey colour, whose team the GameController names); -1 otherwise.
+//   colour        Robot only: jersey colour seen, 0 blue, 1 red; -1 otherwise.
+//   confidence    0..1: the detector model's detection probability at this
+//                 distance (1 when noise is off).
+//   flags         kObservation* bits.
 struct Observation {
   ObservationType type;
   int32_t camera;   // 0 = top, 1 = bottom
@@ -29,8 +69,16 @@ struct Observation {
   float heading;    // rad
   float x, y;       // mm, robot-relative
   int32_t team;     // robots: team number seen (or -1)
+  CornerKind corner;
+  float orientation;  // rad, robot-relative
+  float x2, y2;       // mm, robot-relative (FieldLine's second end)
+  float confidence;   // 0..1
+  int32_t flags;
+  int32_t colour;     // robots: 0 blue, 1 red (or -1)
 };
 
+// Both cameras together. When more is seen, the oracle keeps the most
+// useful (ball, posts, robots, marks, circle, corners, then lines).
 constexpr int kMaxObservations = 64;
 
 struct CameraFrame {

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/vision/VisionOracle.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
 #include "sim/camera/FrameDumper.hpp"
 #include "sim/camera/Overview.hpp"
@@ -250,14 +251,28 @@ void Runner::start() {
   std::vector<game::GameController::RobotId> ids;
   links_.clear();
   for (auto& r : robots_) {
-    network_->addEndpoint(r->spec.team, r->spec.player);
-    ids.push_back({r->spec.team, r->spec.player});
+    // Network and GameController work by side (colour index 0/1); the block
+    // carries each side's SPL team number, as the GameController's packet does.
+    const int side = static_cast<int>(r->spec.colour);
+    network_->addEndpoint(side, r->spec.player);
+    ids.push_back({side, r->spec.player, r->spec.team});
     links_.push_back(&r->ext->team);
   }
   game_ = std::make_unique<game::GameController>(scenario_.game, ids);
   placer_ = std::make_unique<game::PenaltyPlacer>(modelPosture(ap::postureAngles(ap::Posture::Stand)));
   teamAndGame(0);
   if (scenario_.camera.any()) startCameras();
+  {
+    vision::VisionConfig vc = scenario_.vision;
+    vc.noise = vc.noise && scenario_.noise.on;
+    vision_ = std::make_unique<vision::VisionOracle>(world_->field(), vc, scenario_.seed);
+    std::vector<int> teams, colours;
+    for (auto& r : robots_) {
+      teams.push_back(r->spec.team);
+      colours.push_back(static_cast<int>(r->spec.colour));
+    }
+    vision_->setTeams(teams, colours);
+  }
   wall_start_ = Clock::now();
 }
 
@@ -408,11 +423,12 @@ void Runner::tick() {
     al::CameraFrame f{};
     f.sim_time_us = t_us;
     f.frame_index = frame;
-    f.num_observations = 0;  // vision oracle: a later issue
+    f.num_observations = 0;
     bool any = false;
     for (size_t i = 0; i < robots_.size(); ++i) {
       Robot& r = *robots_[i];
-      al::CameraFrame fr = f;  // images_valid is per robot
+      al::CameraFrame fr = f;  // images_valid and observations are per robot
+      if (r.perception) vision_->fill(*world_, static_cast<int>(i), fr);  // both cameras (sim/vision)
       renderFrame(frame, t_us, fr, r, static_cast<int>(i));
       if (r.perception) {
         r.host->publishFrame(fr);

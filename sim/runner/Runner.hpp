@@ -44,6 +44,10 @@ class FrameDumper;
 class OverviewCamera;
 }  // namespace simswift::camera
 
+namespace simswift::vision {
+class VisionOracle;
+}
+
 namespace simswift::runner {
 
 struct WatchdogError : std::runtime_error {
@@ -176,6 +180,7 @@ class Runner {
   bool started_ = false;
   bool stopped_ = false;
   int64_t last_frame_ = -1;
+  std::unique_ptr<vision::VisionOracle> vision_;  // observations in every camera frame
   std::unique_ptr<camera::RobotCameras> cameras_;
   std::unique_ptr<camera::FrameDumper> dumper_;
   std::unique_ptr<camera::OverviewCamera> overview_;

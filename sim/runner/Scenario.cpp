@@ -239,6 +239,13 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     }
     c->finish();
   }
+  // vision: on/off, or the detector model's map (sim/vision/VisionConfig.hpp).
+  if (top.has("vision")) {
+    if (root["vision"].IsMap())
+      sc.vision = vision::readVisionConfig(top.map("vision"), sc.vision);
+    else
+      sc.vision.enabled = top.boolean("vision");
+  }
   if (auto b = top.optionalMap("ball")) {
     sc.ball = std::make_pair(b->number("x"), b->number("y"));
     b->finish();

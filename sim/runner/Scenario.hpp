@@ -15,6 +15,8 @@
 //     resolution: 640x480          # or 1280x960
 //     overview: {mode: fixed|robot|ball, robot: 0, rate_hz: 10,
 //                width: 960, height: 540, dir: overview}   # whole-field PNGs (+ MP4)
+//   vision: {ball: {max_distance_mm: 2500, false_positive_rate: 0.01}, ...}
+//                                  # detector model (sim/vision/VisionConfig.hpp); or on/off
 //   ball: {x: 1.0, y: 0.0}         # m, field frame
 //   robots:
 //     - {team: 19, player: 1, x: -1.0, y: 0.0, theta: 0.0,  # m, m, rad (field frame)
@@ -61,6 +63,7 @@
 #include "sim/game/GameController.hpp"
 #include "sim/network/TeamNetwork.hpp"
 #include "sim/sensors/Buttons.hpp"
+#include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/World.hpp"
 
@@ -133,6 +136,9 @@ struct Scenario {
   std::string solver = WorldConfig{}.solver == WorldConfig::Solver::Quick ? "quick" : "exact";
   int quick_iterations = WorldConfig{}.quick_iterations;
   CameraSpec camera;
+  // The vision oracle's detector model (`vision:`). Its noise is off too
+  // when the scenario's noise master switch is off (see Runner::start).
+  vision::VisionConfig vision;
   std::optional<std::pair<double, double>> ball;  // m, field frame
   std::vector<RobotSpec> robots;
   network::TeamNetworkConfig team_comms;  // team_comms: (defaults: no loss, no delay, no budget)
