@@ -1,4 +1,5 @@
-// The Blackboard: the store the robot program's threads share.
+// The Blackboard: the store the robot program's threads share. One per
+// robot program, owned by RobotProgram.
 //
 // It is split into sections, one per producing module. Each section is a
 // plain value struct guarded by its own mutex (Section<T>); readers take a
@@ -7,10 +8,21 @@
 // computes. Sections are small (well under a kilobyte) so copying is cheap
 // compared with the 10 ms Motion tick.
 //
-// Who reads and writes what (one line per module; later modules add theirs):
-//   Behaviour  writes motion_request; reads motion (odometry, posture).
-//   Motion     reads motion_request; writes motion (odometry, posture,
-//              support foot, active action).
+// Who reads and writes what is declared by the modules themselves
+// (agent/program/Module.hpp: reads() / writes() by SectionId) and checked
+// at start-up; the order per thread is in agent/program/ModuleOrder.cpp.
+// Sections (SectionId in parentheses):
+//   sensors         (Sensors)          program, every Motion tick
+//   frame           (Frame)            program, every camera frame (30 Hz)
+//   touch           (Touch)            touch module
+//   vision          (Vision)           vision adapter
+//   localisation    (Localisation)     localisation
+//   ball            (Ball)             ball tracker
+//   team            (Team)             team receive
+//   game            (GameState)        game state reader
+//   motion_request  (BehaviourRequest) behaviour (or a scenario's action script)
+//   motion          (Motion)           motion
+//   actuators       (Actuators)        motion (the effector sends them)
 //
 // Units: distances mm, speeds mm/s, angles rad, angular speeds rad/s.
 // Frame: robot-relative (x forward, y left, z up), as on the NAO.
@@ -20,6 +32,14 @@
 #include <cstring>
 #include <mutex>
 
+#include "agent/blackboard/Ball.hpp"
+#include "agent/blackboard/FrameInfo.hpp"
+#include "agent/blackboard/GameInfo.hpp"
+#include "agent/blackboard/Localisation.hpp"
+#include "agent/blackboard/Odometry.hpp"
+#include "agent/blackboard/Team.hpp"
+#include "agent/blackboard/Touch.hpp"
+#include "agent/blackboard/Vision.hpp"
 #include "agent/libagent/AgentShared.hpp"
 
 namespace agent::blackboard {
@@ -108,18 +128,6 @@ enum class Posture : int32_t {
 };
 const char* postureName(Posture p);
 
-// Dead-reckoned motion of the robot, accumulated since Motion started, in
-// the robot frame integrated step by step (x forward mm, y left mm, turn rad).
-struct Odometry {
-  double forward = 0;  // mm
-  double left = 0;     // mm
-  double turn = 0;     // rad
-  // Field-style integration of the same steps: position of the robot in the
-  // frame it had when Motion started (mm, mm, rad). Easier for a caller that
-  // wants "where am I relative to where I began".
-  double x = 0, y = 0, theta = 0;
-};
-
 // Written by Motion, read by everyone.
 struct MotionState {
   Odometry odometry;
@@ -134,9 +142,25 @@ struct MotionState {
 
 // ---------------------------------------------------------------- the store
 
+// The joint command Motion computed this tick (the effector sends it).
+struct ActuatorRequest {
+  libagent::JointValues joints{};  // angles rad, stiffnesses 0..1 (-1 limp)
+  libagent::LedCommand leds{};
+  int64_t tick = 0;
+};
+
 struct Blackboard {
-  Section<MotionRequest> motion_request;  // Behaviour -> Motion
-  Section<MotionState> motion;            // Motion -> all
+  Section<SensorFrame> sensors;              // program (Motion tick) -> all
+  Section<FrameInfo> frame;                  // program (camera frame) -> Perception
+  Section<TouchState> touch;                 // touch -> behaviour
+  Section<VisionMeasurements> vision;        // vision adapter -> localisation, ball, behaviour
+  Section<LocalisationEstimate> localisation;  // localisation -> ball, behaviour, team send
+  Section<BallEstimate> ball;                // ball tracker -> behaviour, team send
+  Section<TeamInfo> team;                    // team receive -> ball, behaviour
+  Section<GameInfo> game;                    // game state -> localisation, behaviour
+  Section<MotionRequest> motion_request;     // Behaviour -> Motion
+  Section<MotionState> motion;               // Motion -> all
+  Section<ActuatorRequest> actuators;        // Motion -> effector
 };
 
 inline const char* actionName(ActionType t) {

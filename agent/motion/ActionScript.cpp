@@ -6,26 +6,41 @@
 
 namespace agent::motion {
 
-ActionScriptMotion::ActionScriptMotion(std::vector<ActionStep> steps, const MotionConfig& cfg)
-    : module_(std::make_unique<MotionModule>(board_, cfg)), steps_(std::move(steps)) {
+ScriptedBehaviour::ScriptedBehaviour(std::vector<ActionStep> steps) : steps_(std::move(steps)) {
   std::stable_sort(steps_.begin(), steps_.end(),
                    [](const ActionStep& a, const ActionStep& b) { return a.t < b.t; });
-  // Until the first step: stand.
-  board_.motion_request.update([](blackboard::MotionRequest& r) { r.body.type = blackboard::ActionType::STAND; });
 }
 
-void ActionScriptMotion::tick(const libagent::SensorValues& sensors, int64_t sim_time_us,
-                              libagent::JointValues& out) {
-  const double t = static_cast<double>(sim_time_us) * 1e-6;
+void ScriptedBehaviour::run(blackboard::Blackboard& board) { runAt(board.frame.read().time, board); }
+
+void ScriptedBehaviour::request(blackboard::Blackboard& board, const blackboard::BodyCommand& body,
+                                const blackboard::HeadCommand* head) {
+  board.motion_request.update([&](blackboard::MotionRequest& r) {
+    r.body = body;
+    if (head) r.head = *head;
+    ++r.sequence;  // a new request (a repeated kick kicks again)
+  });
+}
+
+void ScriptedBehaviour::runAt(double t, blackboard::Blackboard& board) {
+  using blackboard::GameStateId;
+  const blackboard::GameInfo game = board.game.read();
+  const bool hold = game.known && (game.penalised || game.state == GameStateId::INITIAL ||
+                                   game.state == GameStateId::SET || game.state == GameStateId::FINISHED);
+  blackboard::BodyCommand stand;
+  stand.type = blackboard::ActionType::STAND;
+  if (!started_) {
+    current_ = stand;
+    request(board, stand, nullptr);
+    started_ = true;
+  }
   while (next_ < steps_.size() && steps_[next_].t <= t + 1e-9) {
     const ActionStep& s = steps_[next_++];
-    board_.motion_request.update([&](blackboard::MotionRequest& r) {
-      r.body = s.body;
-      if (s.has_head) r.head = s.head;
-      ++r.sequence;  // a new request (a repeated kick kicks again)
-    });
+    if (s.body.type != blackboard::ActionType::NONE) current_ = s.body;
+    if (!hold) request(board, s.body, s.has_head ? &s.head : nullptr);
   }
-  module_->tick(sensors, sim_time_us, out);
+  if (hold != held_) request(board, hold ? stand : current_, nullptr);
+  held_ = hold;
 }
 
 bool parseActionType(const std::string& name, blackboard::ActionType* out) {

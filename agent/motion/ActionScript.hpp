@@ -1,16 +1,19 @@
-// Behaviour stand-in for scenarios and tests: a timed list of body actions
+// Scripted behaviour for scenarios and tests: a timed list of body actions
 // (walk at forward/left/turn, stand, kick, ...) written to the Blackboard's
-// MotionRequest as simulated time passes, in front of a MotionModule. It
-// runs inside the Motion tick, so it is as deterministic as the tick.
+// behaviour request as simulated time passes. It is a Behaviour module in
+// the Perception thread (30 Hz, frame time), so a scripted robot and a
+// behaving robot reach Motion by the same path. Like any behaviour it obeys
+// the game: while the robot is penalised, or the game is INITIAL, SET or
+// FINISHED, it asks Motion to stand; when released the script's current
+// action resumes.
 // Units: s, mm/s, rad/s, rad.
 #pragma once
 
-#include <memory>
+#include <string>
 #include <vector>
 
 #include "agent/blackboard/Blackboard.hpp"
-#include "agent/motion/MotionModule.hpp"
-#include "agent/program/MotionGenerator.hpp"
+#include "agent/program/Module.hpp"
 
 namespace agent::motion {
 
@@ -21,21 +24,29 @@ struct ActionStep {
   blackboard::HeadCommand head;
 };
 
-class ActionScriptMotion : public agent::program::MotionGenerator {
+// frame (time) -> behaviour request.
+class ScriptedBehaviour : public program::Module {
  public:
-  // Steps are sorted by time here; the first applies at its t.
-  explicit ActionScriptMotion(std::vector<ActionStep> steps, const MotionConfig& cfg = MotionConfig());
+  // Steps are sorted by time here; each applies at the first frame at or
+  // after its t. Until the first: STAND.
+  explicit ScriptedBehaviour(std::vector<ActionStep> steps);
 
-  void tick(const libagent::SensorValues& sensors, int64_t sim_time_us, libagent::JointValues& out) override;
-
-  blackboard::Blackboard& board() { return board_; }
-  MotionModule& module() { return *module_; }
+  const char* name() const override { return "behaviour (action script)"; }
+  std::vector<program::SectionId> reads() const override {
+    return {program::SectionId::Frame, program::SectionId::GameState};
+  }
+  std::vector<program::SectionId> writes() const override { return {program::SectionId::BehaviourRequest}; }
+  void run(blackboard::Blackboard& board) override;
+  // The same at `time_s` (tests and tools).
+  void runAt(double time_s, blackboard::Blackboard& board);
 
  private:
-  blackboard::Blackboard board_;
-  std::unique_ptr<MotionModule> module_;
+  void request(blackboard::Blackboard& board, const blackboard::BodyCommand& body, const blackboard::HeadCommand* head);
+  blackboard::BodyCommand current_;  // the script's action now (STAND before the first)
+  bool held_ = false;                // standing for the game (penalty, INITIAL/SET/FINISHED)
   std::vector<ActionStep> steps_;
   size_t next_ = 0;
+  bool started_ = false;
 };
 
 // Parses an action name ("walk", "stand", "kick", "getup_front", "getup_back",

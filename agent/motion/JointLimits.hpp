@@ -1,21 +1,18 @@
-// NAO V5 joint limits and maximum speeds in libagent order (facts.md
-// section 1), and the Clipper that keeps every command inside them.
+// NAO V5 joint limits and maximum speeds in libagent order (from
+// agent/nao/NaoFacts.hpp), and the Clipper that keeps every command inside them.
 // Angles rad (Hand: 0..1 fraction open), speeds rad/s (Hand: fraction/s).
 #pragma once
 
 #include <array>
 
 #include "agent/libagent/AgentShared.hpp"
+#include "agent/nao/NaoFacts.hpp"
 
 namespace agent::motion {
 
-struct JointLimit {
-  float lower, upper;   // rad
-  float max_velocity;   // rad/s
-};
-
-// Indexed by libagent::Joints::JointCode.
-const std::array<JointLimit, libagent::kNumJoints>& jointLimits();
+// The limits themselves are NAO hardware facts (agent/nao/NaoFacts.hpp).
+using JointLimit = nao::JointLimit;
+using nao::jointLimits;  // indexed by libagent::Joints::JointCode
 
 // The Motion thread's tick (s): commands move at most max_velocity * tick.
 constexpr double kMotionTick = 0.010;

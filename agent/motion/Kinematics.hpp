@@ -10,16 +10,12 @@
 
 #include <array>
 
+#include "agent/nao/NaoFacts.hpp"
+
 namespace agent::motion {
 
-// Link lengths (mm), facts.md section 1.
-namespace NaoDims {
-constexpr double kHipOffsetY = 50.0;
-constexpr double kHipOffsetZ = 85.0;
-constexpr double kThighLength = 100.0;
-constexpr double kTibiaLength = 102.9;
-constexpr double kFootHeight = 45.19;
-}  // namespace NaoDims
+// Link lengths (mm): the NAO hardware facts (agent/nao/NaoFacts.hpp).
+namespace NaoDims = nao::links;
 
 struct Vec3 {
   double x = 0, y = 0, z = 0;

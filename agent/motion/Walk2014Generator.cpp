@@ -40,9 +40,6 @@ double smoothBlend(double f) {
   return 0.5 - 0.5 * std::cos(kPi * f);
 }
 
-// FSR positions in the left ankle frame (mm), facts.md section 1; the right
-// foot mirrors y. Order: FrontLeft, FrontRight, RearLeft, RearRight.
-constexpr double kFsrY[4] = {29.9, -23.1, 29.9, -19.1};
 
 }  // namespace
 
@@ -79,8 +76,11 @@ FootPressure footPressure(const float* s) {
     const double fr = std::max(0.0f, s[rbase + i]);
     p.left += fl;
     p.right += fr;
-    moment += fl * (NaoDims::kHipOffsetY + kFsrY[i]);
-    moment += fr * (-NaoDims::kHipOffsetY - kFsrY[i]);
+    // Sensor positions in each ankle frame (agent/nao/NaoFacts.hpp), shifted
+    // by the hips' offset: y of the centre of pressure about the torso (mm).
+    const auto which = static_cast<nao::Fsr>(i);
+    moment += fl * (NaoDims::kHipOffsetY + nao::fsrPosition(nao::Side::Left, which).y);
+    moment += fr * (-NaoDims::kHipOffsetY + nao::fsrPosition(nao::Side::Right, which).y);
   }
   p.total = p.left + p.right;
   p.cop_y = p.total > 1e-6 ? moment / p.total : 0.0;

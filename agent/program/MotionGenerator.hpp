@@ -74,8 +74,8 @@ class ScriptedMotion : public MotionGenerator {
   size_t next_ = 0;
 };
 
-// The Perception thread's step: one camera frame in, behaviour decisions out.
-// In this issue it only counts frames and remembers the latest observations.
+// An extra Perception step for tests and tools (e.g. reading the rendered
+// images): run first in the Perception thread with each camera frame.
 class PerceptionStep {
  public:
   virtual ~PerceptionStep() = default;

@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "agent/libagent/SharedNames.hpp"
@@ -16,33 +17,54 @@ void nameThisThread(const std::string& name) {
   // Linux limits thread names to 15 characters.
   pthread_setname_np(pthread_self(), name.substr(0, 15).c_str());
 }
+
+struct NullGenerator : MotionGenerator {
+  void tick(const SensorValues&, int64_t, JointValues&) override {}
+};
+
+ProgramConfig shorthand(int team, int player, std::unique_ptr<MotionGenerator> motion,
+                        std::unique_ptr<PerceptionStep> perception) {
+  ProgramConfig c;
+  c.team = team;
+  c.player = player;
+  c.motion_generator = std::move(motion);
+  c.perception_step = std::move(perception);
+  // No generator: GeneratorModule holds the measured angles.
+  if (!c.motion_generator) c.motion_generator = std::make_unique<NullGenerator>();
+  return c;
+}
 }  // namespace
+
+RobotProgram::RobotProgram(agent::libagent::AgentConnection connection, ProgramConfig cfg)
+    : conn_(std::move(connection)), tag_(agent::libagent::robotTag(cfg.team, cfg.player)), cfg_(std::move(cfg)) {}
 
 RobotProgram::RobotProgram(agent::libagent::AgentConnection connection, int team, int player,
                            std::unique_ptr<MotionGenerator> motion, std::unique_ptr<PerceptionStep> perception)
-    : conn_(std::move(connection)),
-      tag_(agent::libagent::robotTag(team, player)),
-      motion_(std::move(motion)),
-      perception_(std::move(perception)) {}
+    : RobotProgram(std::move(connection), shorthand(team, player, std::move(motion), std::move(perception))) {}
 
 RobotProgram::~RobotProgram() { join(); }
 
 void RobotProgram::setMotion(std::unique_ptr<MotionGenerator> motion) {
   if (motion_thread_.joinable()) throw std::logic_error("RobotProgram::setMotion after start");
-  motion_ = std::move(motion);
+  cfg_.motion_generator = std::move(motion);
 }
 
 void RobotProgram::start() {
-  const bool with_perception = conn_.hasCamera() && perception_ != nullptr;
+  buildSchedule(cfg_, board_, [this](const blackboard::ActuatorRequest& a) { pending_ = a.joints; }, schedule_);
+  schedule_.check();  // throws ModuleError before any thread starts
+  for (const auto& m : schedule_.modules(ThreadId::Perception))
+    if (auto* p = dynamic_cast<PerceptionStepModule*>(m.get())) {
+      p->step().setImages(conn_.images());
+      step_module_ = p;
+    }
+  // Perception runs at every frame whether or not images are rendered.
+  const bool with_perception = conn_.hasCamera();
   // Announce first: the simulator decides whether to send camera frames once
   // Motion has answered its first tick, which may happen as soon as the
   // thread exists.
   conn_.announce(with_perception);
   motion_thread_ = std::thread([this] { motionLoop(); });
-  if (with_perception) {
-    perception_->setImages(conn_.images());
-    perception_thread_ = std::thread([this] { perceptionLoop(); });
-  }
+  if (with_perception) perception_thread_ = std::thread([this] { perceptionLoop(); });
 }
 
 void RobotProgram::join() {
@@ -64,24 +86,16 @@ void RobotProgram::fail(const std::string& thread, const std::exception& e) {
 void RobotProgram::motionLoop() {
   nameThisThread(tag_ + "-motion");
   try {
-    JointValues cmd{};
-    bool first = true;
     while (conn_.waitTick()) {
-      const SensorValues sensors = conn_.readSensors();
-      const int64_t t = conn_.simTimeUs();
-      if (first) {
-        // Start from the measured angles, so a generator that only touches
-        // some joints leaves the others where they are.
-        for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
-          cmd.angles[i] = sensors.joints.angles[i];
-          cmd.stiffnesses[i] = 1.0f;
-        }
-        first = false;
-      }
-      if (motion_) motion_->tick(sensors, t, cmd);
-      conn_.writeActuators(cmd);
+      blackboard::SensorFrame s;
+      s.values = conn_.readSensors();
+      s.sim_time_us = conn_.simTimeUs();
+      s.time = static_cast<double>(s.sim_time_us) * 1e-6;
+      board_.sensors.write(s);
+      schedule_.run(ThreadId::Motion, board_);  // touch -> motion -> effector
+      conn_.writeActuators(pending_);
       motion_ticks_.fetch_add(1);
-      if (after_tick_) after_tick_(sensors, t);
+      if (after_tick_) after_tick_(s.values, s.sim_time_us);
     }
   } catch (const std::exception& e) {
     // No acknowledgement follows: the simulator's watchdog reports this robot.
@@ -92,8 +106,25 @@ void RobotProgram::motionLoop() {
 void RobotProgram::perceptionLoop() {
   nameThisThread(tag_ + "-percept");
   try {
+    double last_time = -1;
     while (conn_.waitFrame()) {
-      perception_->step(conn_.frame());
+      const agent::libagent::CameraFrame& cf = conn_.frame();
+      // The Motion thread is between ticks while a frame is processed (the
+      // body side waits for motion_done before posting a frame), so the
+      // sensors section holds the sensors of the tick at frame time.
+      blackboard::FrameInfo f;
+      f.sim_time_us = cf.sim_time_us;
+      f.frame_index = cf.frame_index;
+      f.time = static_cast<double>(cf.sim_time_us) * 1e-6;
+      f.dt = last_time < 0 ? 0 : f.time - last_time;
+      last_time = f.time;
+      f.sensors = board_.sensors.read().values;
+      f.num_observations = std::clamp<int32_t>(cf.num_observations, 0, agent::libagent::kMaxObservations);
+      std::copy(cf.observations, cf.observations + f.num_observations, f.observations);
+      f.images_valid = cf.images_valid != 0;
+      board_.frame.write(f);
+      if (step_module_) step_module_->setFrame(&cf);
+      schedule_.run(ThreadId::Perception, board_);
       perception_frames_.fetch_add(1);
       conn_.perceptionDone();
     }

@@ -1,10 +1,16 @@
-// A robot program: the robot code's threads around one AgentConnection.
+// A robot program: the robot code's threads around one AgentConnection, its
+// Blackboard, and the modules each thread runs (ordered in ModuleOrder.cpp).
 //
-//   Motion     (thread "t<T>p<P>-motion"):  loop { waitTick; readSensors;
-//              generator->tick; writeActuators }  (libagent's cycle)
-//   Perception (thread "t<T>p<P>-percept"): loop { wait frame_ready;
-//              perception step; post perception_done }
+//   Motion     (thread "t<T>p<P>-motion"):  loop { waitTick; readSensors ->
+//              sensors section; touch -> motion -> effector; writeActuators
+//              (posts motion_done) }
+//   Perception (thread "t<T>p<P>-percept"): loop { wait frame_ready; frame
+//              (+ the sensors of the tick just done) -> frame section;
+//              game state -> vision adapter -> localisation -> ball tracker
+//              -> team receive -> behaviour -> team send; post perception_done }
 //
+// start() checks the modules' declared reads and writes first: a module
+// reading a section nobody provides throws ModuleError naming both.
 // Robot code sees simulated time only (the sensor slot's time in the
 // extension object). The threads end when the body side sets shutdown and
 // wakes them, or when a simulator attached by name has gone.
@@ -17,23 +23,31 @@
 #include <string>
 #include <thread>
 
+#include "agent/blackboard/Blackboard.hpp"
 #include "agent/libagent/AgentConnection.hpp"
+#include "agent/program/ModuleOrder.hpp"
 #include "agent/program/MotionGenerator.hpp"
+#include "agent/program/Module.hpp"
 
 namespace agent::program {
 
 class RobotProgram {
  public:
+  // The standard modules; `cfg` says which motion and behaviour.
+  RobotProgram(agent::libagent::AgentConnection connection, ProgramConfig cfg);
+  // Shorthand: a MotionGenerator for Motion, no behaviour, an optional
+  // PerceptionStep run first in the Perception thread.
   RobotProgram(agent::libagent::AgentConnection connection, int team, int player,
-               std::unique_ptr<MotionGenerator> motion,
-               std::unique_ptr<PerceptionStep> perception = std::make_unique<PerceptionStep>());
+               std::unique_ptr<MotionGenerator> motion, std::unique_ptr<PerceptionStep> perception = nullptr);
   ~RobotProgram();  // joins (call the body side's shutdown first)
   RobotProgram(const RobotProgram&) = delete;
   RobotProgram& operator=(const RobotProgram&) = delete;
 
-  // Replace the Motion step (before start()).
+  // Replace the Motion step by a generator (before start()).
   void setMotion(std::unique_ptr<MotionGenerator> motion);
-  // Announces the program to the body side, then starts the threads.
+  // Checks and orders the modules, announces the program to the body side,
+  // then starts the threads. Throws ModuleError (nothing announced or
+  // started) if a module reads a section nobody provides.
   void start();
   // Waits for the threads to end (they end on shutdown).
   void join();
@@ -53,6 +67,10 @@ class RobotProgram {
   // First exception a thread died of (empty if none).
   std::string error() const;
 
+  // The program's Blackboard (read it between lock-step cycles, e.g. in tests).
+  blackboard::Blackboard& board() { return board_; }
+  const ModuleSchedule& schedule() const { return schedule_; }
+
  private:
   void motionLoop();
   void perceptionLoop();
@@ -60,8 +78,11 @@ class RobotProgram {
 
   agent::libagent::AgentConnection conn_;
   std::string tag_;
-  std::unique_ptr<MotionGenerator> motion_;
-  std::unique_ptr<PerceptionStep> perception_;
+  ProgramConfig cfg_;
+  blackboard::Blackboard board_;
+  ModuleSchedule schedule_;
+  PerceptionStepModule* step_module_ = nullptr;
+  agent::libagent::JointValues pending_{};  // the effector's command, sent after the Motion modules
   std::function<void(const agent::libagent::SensorValues&, int64_t)> after_tick_;
   std::thread motion_thread_, perception_thread_;
   std::atomic<int64_t> motion_ticks_{0}, perception_frames_{0};

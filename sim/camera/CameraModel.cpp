@@ -3,12 +3,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "agent/nao/NaoFacts.hpp"
+
 namespace simswift::camera {
 
 namespace {
-constexpr double kDeg = M_PI / 180.0;
-constexpr double kNaoHfov = 60.9 * kDeg;  // facts.md section 1
-constexpr double kNaoVfov = 47.6 * kDeg;
+constexpr double kNaoHfov = agent::nao::kCameraHorizontalFov;  // the robot code's hardware facts
+constexpr double kNaoVfov = agent::nao::kCameraVerticalFov;
 }  // namespace
 
 Intrinsics Intrinsics::nao(int width, int height) {
@@ -33,9 +34,13 @@ Intrinsics Intrinsics::fromHorizontalFov(int width, int height, double hfov) {
 }
 
 NaoCameraMount naoCameraMount(CameraId id) {
-  // facts.md section 1 (mm in the HeadPitch frame, degrees down).
-  if (id == kTop) return {Eigen::Vector3d(0.05871, 0, 0.06364), 1.2 * kDeg};
-  if (id == kBottom) return {Eigen::Vector3d(0.05071, 0, 0.01774), 39.7 * kDeg};
+  // The robot code's hardware facts (agent/nao/NaoFacts.hpp: mm in the
+  // HeadPitch frame, rad down), in m.
+  if (id == kTop || id == kBottom) {
+    const agent::nao::CameraMount& m = agent::nao::cameraMount(id == kTop ? agent::nao::Camera::Top
+                                                                         : agent::nao::Camera::Bottom);
+    return {Eigen::Vector3d(m.x, m.y, m.z) * 1e-3, m.pitch_down};
+  }
   throw std::invalid_argument("naoCameraMount: camera id must be 0 (top) or 1 (bottom)");
 }
 

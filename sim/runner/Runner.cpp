@@ -226,21 +226,30 @@ void Runner::start() {
     r.latched.joints = initial;
     r.ext = r.host->extension();  // game state + team link, beside the block
     if (!external) {
-      std::unique_ptr<ap::MotionGenerator> motion = std::move(r.motion_override);
-      if (!motion && (!r.spec.actions.empty() || !r.spec.pushes.empty())) {
-        motion = std::make_unique<agent::motion::ActionScriptMotion>(r.spec.actions);  // the Motion module
-      }
-      if (!motion) {
+      // The robot program: the standard modules (agent/program/ModuleOrder).
+      // Scenario actions become its behaviour (the Motion module walks);
+      // otherwise Motion is a generator: the test's, or the scripted posture.
+      ap::ProgramConfig pc;
+      pc.team = r.spec.team;
+      pc.player = r.spec.player;
+      pc.seed = scenario_.seed * 1000003ULL + static_cast<uint64_t>(i);
+      pc.motion_generator = std::move(r.motion_override);
+      if (!pc.motion_generator && (!r.spec.actions.empty() || !r.spec.pushes.empty())) {
+        pc.actions = r.spec.actions;
+        if (pc.actions.empty()) pc.actions.push_back({});  // pushes only: a NONE step keeps the script's STAND
+      } else if (!pc.motion_generator) {
         auto scripted = std::make_unique<ap::ScriptedMotion>(r.spec.posture, r.spec.script);
         scripted->setAnkleGyroDamping(kBuiltinAnkleGyroGain);
-        motion = std::move(scripted);
+        pc.motion_generator = std::move(scripted);
       }
+      pc.perception_step = std::move(r.perception_override);
+      // The game state and team link reach the program's modules. A test's
+      // PerceptionStep that talks to the extension objects itself (through
+      // extensions(i)) keeps them to itself: two readers would split the inbox.
+      if (!pc.perception_step) pc.extensions = r.ext.get();
       al::AgentConnection conn = r.host->connect();
       conn.setImages(r.images);
-      std::unique_ptr<ap::PerceptionStep> perception = std::move(r.perception_override);
-      if (!perception) perception = std::make_unique<ap::PerceptionStep>();
-      r.program = std::make_unique<ap::RobotProgram>(std::move(conn), r.spec.team, r.spec.player,
-                                                     std::move(motion), std::move(perception));
+      r.program = std::make_unique<ap::RobotProgram>(std::move(conn), std::move(pc));
       r.program->start();
     }
   }
@@ -324,8 +333,10 @@ void Runner::watchdogFail(const Robot& r, const char* thread) const {
 //     not waited for.
 //  5. Each robot's actuators are latched (used in step 1 of the next tick).
 //  6. At 30 Hz of simulated time (when floor(t * 30) advances) every robot
-//     with a Perception thread gets a camera frame and the runner waits for
-//     its perception_done (same watchdog).
+//     with a Perception thread (every builtin program has one) gets a camera
+//     frame -- rendered or not -- and the runner waits for its
+//     perception_done (same watchdog). The robot program reads the sensors of
+//     the tick just done (step 3) as the frame's sensors.
 //  7. Team network and GameController (teamAndGame): every robot's outbox is
 //     drained and due packets go into inboxes (TeamNetwork::exchange), the
 //     game state advances (penalised robots to the sideline and back) and is

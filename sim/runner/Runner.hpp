@@ -123,6 +123,9 @@ class Runner {
   bridge::BodyHost& host(int i) { return *robots_[i]->host; }
   const sensors::SensorSuite& sensors(int i) const { return *robots_[i]->sensors; }
   int64_t ticks() const { return world_ ? world_->tick() : 0; }
+  // Robot i's builtin program (null for an external one); read its
+  // Blackboard between ticks (tests, benchmarks).
+  agent::program::RobotProgram* program(int i) const { return robots_[i]->program.get(); }
   RunStats stats() const;  // so far
   // Teleports robot i, standing, to (x, y) m facing theta rad (field frame)
   // and restarts its sensors from rest (the experiment's sideline rule).

@@ -3,16 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agent/nao/NaoFacts.hpp"
+
 namespace simswift::sensors {
 
 FsrLayout FsrLayout::left() {
-  // NAO V5 left foot, mm in the ankle frame (facts.md): the sensors do not
-  // form an exact rectangle, hence the inverse bilinear map below.
+  // NAO V5 left foot in the ankle frame: the robot code's hardware facts
+  // (agent/nao/NaoFacts.hpp, mm) in m. The sensors do not form an exact
+  // rectangle, hence the inverse bilinear map below.
   FsrLayout l;
-  l.sensor[FrontLeft] = {0.07025, 0.0299};
-  l.sensor[FrontRight] = {0.07025, -0.0231};
-  l.sensor[RearLeft] = {-0.03025, 0.0299};
-  l.sensor[RearRight] = {-0.02965, -0.0191};
+  for (int i = 0; i < 4; ++i) {
+    const agent::nao::Point2 p = agent::nao::fsrPosition(agent::nao::Side::Left, static_cast<agent::nao::Fsr>(i));
+    l.sensor[i] = {p.x * 1e-3, p.y * 1e-3};
+  }
   return l;
 }
 

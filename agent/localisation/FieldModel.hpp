@@ -1,0 +1,55 @@
+// The robot code's model of the SPL 2017 field (the rules' dimensions, as a
+// team would write them down), for localisation and behaviour. The simulator's
+// field lives in fields/spl_2017.yaml; tests/world/test_field_model_agreement.cpp holds
+// the two against each other.
+//
+// Field frame: origin at the centre spot, x toward the opponent goal, y left;
+// mm. Lines are their centre lines.
+#pragma once
+
+#include <vector>
+
+#include "agent/blackboard/Vision.hpp"
+
+namespace agent::localisation {
+
+struct Vec2 {
+  double x = 0, y = 0;  // mm
+};
+
+struct LineSegment {
+  Vec2 a, b;  // mm
+};
+
+using blackboard::CornerShape;
+
+struct Landmark {
+  blackboard::FeatureKind kind;
+  Vec2 at;  // mm, field frame
+  CornerShape shape = CornerShape::Unknown;  // corners: L, T or X
+};
+
+struct FieldModel {
+  double length = 9000, width = 6000;        // mm, between the lines' centres
+  double penalty_area_depth = 600, penalty_area_width = 2200;
+  double penalty_mark_distance = 1300;       // from the goal line
+  double centre_circle_radius = 750;
+  double goal_post_separation = 1600;        // between the posts' centres
+  double line_width = 50;
+
+  // The SPL 2017 field.
+  static FieldModel spl2017() { return FieldModel{}; }
+
+  // Point landmarks (goal posts, penalty crosses, centre circle centre, line
+  // corners L/T/X) and the straight lines, derived from the dimensions.
+  std::vector<Landmark> landmarks() const;
+  std::vector<LineSegment> lines() const;
+  double halfLength() const { return length / 2; }
+  double halfWidth() const { return width / 2; }
+};
+
+// Distance (mm) from `p` to the nearest painted line (straight lines and the
+// centre circle), for `lines` = field.lines() and the circle's radius.
+double distanceToLines(const Vec2& p, const std::vector<LineSegment>& lines, double circle_radius);
+
+}  // namespace agent::localisation

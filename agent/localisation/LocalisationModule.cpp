@@ -1,0 +1,34 @@
+#include "agent/localisation/LocalisationModule.hpp"
+
+#include "agent/perception/PerceptionModules.hpp"
+
+namespace agent::localisation {
+
+void LocalisationModule::run(blackboard::Blackboard& board) {
+  const blackboard::FrameInfo frame = board.frame.read();
+  const blackboard::MotionState motion = board.motion.read();
+  const blackboard::GameInfo game = board.game.read();
+  double f = 0, l = 0, t = 0;
+  if (!started_) {
+    // Robots walk in from the sideline at the start of a game; a game that
+    // starts in PLAYING is a test field with robots placed by hand.
+    if (game.known && (game.state == blackboard::GameStateId::INITIAL || game.state == blackboard::GameStateId::READY))
+      filter_.reset(InitialPose::SidelineEntry);
+    else if (cfg_.known_start)
+      filter_.resetTo(*cfg_.known_start, 50, 0.05);
+    else
+      filter_.reset(InitialPose::OwnHalf);
+    started_ = true;
+  } else {
+    perception::odometryStep(last_, motion.odometry, &f, &l, &t);
+  }
+  last_ = motion.odometry;
+  // A penalised robot is carried off and put back at the sideline.
+  if (was_penalised_ && !game.penalised) filter_.reset(InitialPose::PenaltyReturn);
+  was_penalised_ = game.penalised;
+  filter_.update(f, l, t, board.vision.read(), frame.time,
+                 game.penalised || perception::postureIsDown(motion.posture));
+  board.localisation.write(filter_.estimate());
+}
+
+}  // namespace agent::localisation

@@ -1,0 +1,81 @@
+// NAO V5 (H25) hardware facts for the robot code: link lengths, camera
+// mountings and fields of view, FSR positions, joint limits and speeds.
+// The one home of these numbers: agent/ uses them for kinematics, the walk
+// and the camera matrix; sim/ includes this header for the same facts (the
+// simulator may include agent/ headers, never the reverse). The figures are
+// the published Aldebaran ones restated in facts.md section 1;
+// tests/agent/nao/NaoFactsTest.cpp holds them against models/nao_v5.urdf.
+//
+// Units: mm, rad, rad/s. Frames: x forward, y left, z up (NAO convention).
+#pragma once
+
+#include <array>
+
+#include "agent/libagent/AgentShared.hpp"
+
+namespace agent::nao {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+
+// ---------------------------------------------------------------- links (mm)
+namespace links {
+constexpr double kNeckOffsetZ = 126.5;    // torso origin -> HeadYaw axis
+constexpr double kHipOffsetY = 50.0;      // torso origin -> hip joint, sideways
+constexpr double kHipOffsetZ = 85.0;      // torso origin -> hip joint, down
+constexpr double kThighLength = 100.0;    // hip -> knee
+constexpr double kTibiaLength = 102.9;    // knee -> ankle
+constexpr double kFootHeight = 45.19;     // ankle -> sole
+constexpr double kShoulderOffsetY = 98.0;
+constexpr double kShoulderOffsetZ = 100.0;
+constexpr double kUpperArmLength = 105.0;
+constexpr double kElbowOffsetY = 15.0;
+constexpr double kLowerArmLength = 55.95;
+}  // namespace links
+
+// ---------------------------------------------------------------- cameras
+enum class Camera : int { Top = 0, Bottom = 1 };
+
+// Fixed mounting in the frame of the link HeadPitch moves ("head frame").
+struct CameraMount {
+  double x, y, z;     // mm, camera centre in the head frame
+  double pitch_down;  // rad, optical axis tipped down from the head's x axis
+};
+constexpr CameraMount kTopCamera{58.71, 0.0, 63.64, 1.2 * kDeg};
+constexpr CameraMount kBottomCamera{50.71, 0.0, 17.74, 39.7 * kDeg};
+constexpr const CameraMount& cameraMount(Camera c) { return c == Camera::Top ? kTopCamera : kBottomCamera; }
+
+// Both cameras: the same lens.
+constexpr double kCameraHorizontalFov = 60.9 * kDeg;  // rad
+constexpr double kCameraVerticalFov = 47.6 * kDeg;    // rad
+constexpr double kCameraRateHz = 30.0;                // frames per second (Perception's rate)
+
+// ---------------------------------------------------------------- FSRs
+// Order as in libagent: FrontLeft, FrontRight, RearLeft, RearRight.
+enum class Fsr : int { FrontLeft = 0, FrontRight = 1, RearLeft = 2, RearRight = 3 };
+enum class Side : int { Left = 0, Right = 1 };
+
+struct Point2 {
+  double x, y;  // mm
+};
+// Left foot, in the left ankle frame (mm). Not an exact rectangle.
+constexpr std::array<Point2, 4> kLeftFsr{{{70.25, 29.9}, {70.25, -23.1}, {-30.25, 29.9}, {-29.65, -19.1}}};
+
+// A sensor's position in its own foot's ankle frame (mm). The right foot is
+// the mirror image: its front-left sensor mirrors the left foot's front-right.
+constexpr Point2 fsrPosition(Side side, Fsr which) {
+  const int i = static_cast<int>(which);
+  if (side == Side::Left) return kLeftFsr[i];
+  const int mirror = i ^ 1;  // FrontLeft <-> FrontRight, RearLeft <-> RearRight
+  return {kLeftFsr[mirror].x, -kLeftFsr[mirror].y};
+}
+
+// ---------------------------------------------------------------- joints
+struct JointLimit {
+  float lower, upper;  // rad (Hand: 0..1 fraction open)
+  float max_velocity;  // rad/s (Hand: fraction/s)
+};
+// Indexed by libagent::Joints::JointCode.
+const std::array<JointLimit, libagent::kNumJoints>& jointLimits();
+
+}  // namespace agent::nao

@@ -1,0 +1,40 @@
+#include "agent/program/ModuleOrder.hpp"
+
+#include "agent/comms/TeamTransport.hpp"
+
+namespace agent::program {
+
+void buildSchedule(ProgramConfig& cfg, blackboard::Blackboard& board, EffectorModule::Sink effector,
+                   ModuleSchedule& s) {
+  using T = ThreadId;
+  s.providedByProgram(T::Motion, SectionId::Sensors);
+  s.providedByProgram(T::Perception, SectionId::Frame);
+
+  // Perception.
+  if (cfg.perception_step) s.add(T::Perception, std::make_unique<PerceptionStepModule>(std::move(cfg.perception_step)));
+  std::shared_ptr<comms::TeamTransport> link;
+  if (cfg.extensions) link = std::make_shared<comms::TeamLinkTransport>(&cfg.extensions->team);
+  s.add(T::Perception, std::make_unique<GameStateModule>(cfg.team, cfg.player,
+                                                         cfg.extensions ? &cfg.extensions->game : nullptr));
+  s.add(T::Perception, std::make_unique<perception::VisionAdapterModule>(cfg.vision));
+  localisation::LocalisationModuleConfig lc = cfg.localisation;
+  lc.filter.seed = lc.filter.seed * 0x9e3779b97f4a7c15ULL + cfg.seed;  // per robot, from the scenario
+  s.add(T::Perception, std::make_unique<localisation::LocalisationModule>(lc));
+  s.add(T::Perception, std::make_unique<perception::BallTrackerModule>(cfg.ball));
+  s.add(T::Perception, std::make_unique<TeamReceiveModule>(cfg.team, cfg.player, link));
+  if (cfg.behaviour)
+    s.add(T::Perception, std::move(cfg.behaviour));
+  else if (!cfg.actions.empty())
+    s.add(T::Perception, std::make_unique<motion::ScriptedBehaviour>(std::move(cfg.actions)));
+  s.add(T::Perception, std::make_unique<TeamSendModule>(cfg.team, cfg.player, link));
+
+  // Motion.
+  s.add(T::Motion, std::make_unique<TouchModule>());
+  if (cfg.motion_generator)
+    s.add(T::Motion, std::make_unique<GeneratorModule>(std::move(cfg.motion_generator)));
+  else
+    s.add(T::Motion, std::make_unique<MotionThreadModule>(board, cfg.motion));
+  s.add(T::Motion, std::make_unique<EffectorModule>(std::move(effector)));
+}
+
+}  // namespace agent::program
