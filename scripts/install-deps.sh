@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages simswift builds with, if any are missing.
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config git
-      libode-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev
+      libode-dev libeigen3-dev liburdfdom-dev libtinyxml-dev libyaml-cpp-dev
       libassimp-dev libosmesa6-dev libpng-dev
       libgtest-dev libbenchmark-dev ffmpeg)
 missing=()

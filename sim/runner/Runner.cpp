@@ -14,6 +14,7 @@
 #include <cstring>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/runner/Tracer.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
 #include "sim/camera/FrameDumper.hpp"
 #include "sim/camera/Overview.hpp"
@@ -225,6 +226,7 @@ void Runner::start() {
   started_ = true;
   model_ = std::make_shared<const NaoModel>(NaoModel::loadUrdf(scenario_.modelFile()));
   const FieldConfig field = FieldConfig::loadYaml(scenario_.fieldFile());
+  scenario_.checkAgainstField(field);
   WorldConfig wc;
   wc.substeps = scenario_.substeps;
   wc.solver = scenario_.solver == "quick" ? WorldConfig::Solver::Quick : WorldConfig::Solver::Exact;
@@ -316,6 +318,12 @@ void Runner::waitForAttach() {
   }
 }
 
+// The watchdog ends a run only when it is on and no debugger is attached: a
+// thread stopped at a breakpoint keeps the run waiting (README "Debugging in
+// gdb"). Off (watchdog: off / --watchdog off), the runner waits in 1 s slices.
+double Runner::watchdogWait() const { return scenario_.watchdog_s > 0 ? scenario_.watchdog_s : 1.0; }
+bool Runner::watchdogArmed() const { return scenario_.watchdog_s > 0 && !tracerAttached(); }
+
 void Runner::watchdogFail(const Robot& r, const char* thread) const {
   std::ostringstream m;
   m << "robot " << r.tag << ": " << thread << " thread did not answer within " << scenario_.watchdog_s << " s (tick "
@@ -353,14 +361,12 @@ void Runner::tick() {
     world_->robot(static_cast<int>(i)).setCommand(angles, stiff);
     r.sensors->setSonarMode(r.latched.sonar);
   }
-  // Scenario pushes (actions: {t, push}) due by now: add to the torso's velocity.
+  // Scenario pushes (actions: {t, push}) due by now: impulses (N*s) through the World.
   for (size_t i = 0; i < robots_.size(); ++i) {
     Robot& r = *robots_[i];
     while (r.next_push < r.spec.pushes.size() && r.spec.pushes[r.next_push].t_s <= world_->time() + 1e-9) {
       const RobotSpec::Push& p = r.spec.pushes[r.next_push++];
-      dBodyID torso = world_->robot(static_cast<int>(i)).torsoBody();
-      const dReal* v = dBodyGetLinearVel(torso);
-      dBodySetLinearVel(torso, v[0] + p.vx, v[1] + p.vy, v[2]);
+      world_->applyImpulse(static_cast<int>(i), Eigen::Vector3d(p.jx, p.jy, 0.0));
     }
   }
   // 2.
@@ -390,7 +396,8 @@ void Runner::tick() {
   for (auto& r : robots_) r->host->publishSensors(r->values, t_us, tick);
   // 4.
   for (auto& r : robots_)
-    if (!r->host->waitMotionDone(scenario_.watchdog_s)) watchdogFail(*r, "motion");
+    while (!r->host->waitMotionDone(watchdogWait()))
+      if (watchdogArmed()) watchdogFail(*r, "motion");
   // 5.
   for (auto& r : robots_) r->latched = r->host->readActuators();
 
@@ -427,7 +434,9 @@ void Runner::tick() {
     }
     if (any)
       for (auto& r : robots_)
-        if (r->perception && !r->host->waitPerceptionDone(scenario_.watchdog_s)) watchdogFail(*r, "perception");
+        if (r->perception)
+          while (!r->host->waitPerceptionDone(watchdogWait()))
+            if (watchdogArmed()) watchdogFail(*r, "perception");
   }
 }
 

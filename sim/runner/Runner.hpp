@@ -141,6 +141,8 @@ class Runner {
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
   void waitForAttach();
   [[noreturn]] void watchdogFail(const Robot& r, const char* thread) const;
+  double watchdogWait() const;  // s per wait
+  bool watchdogArmed() const;   // on, and no debugger attached
 
   Scenario scenario_;
   std::shared_ptr<const NaoModel> model_;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -44,6 +45,8 @@ std::string Range::describe() const {
 }
 
 YAML::Node YamlReader::parse(const std::string& text, const std::string& file) {
+  if (text.size() > kMaxConfigBytes)
+    throw ConfigError(file + ":1: " + std::to_string(text.size()) + " bytes is more than a configuration file can be (1 MB)");
   try {
     YAML::Node root = YAML::Load(text);
     return root;
@@ -55,8 +58,13 @@ YAML::Node YamlReader::parse(const std::string& text, const std::string& file) {
 }
 
 YAML::Node YamlReader::parseFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ":1: is a directory, not a file");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxConfigBytes)
+    throw ConfigError(path + ":1: " + std::to_string(size) + " bytes is more than a configuration file can be (1 MB)");
   std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot open file");
+  if (!in) throw ConfigError(path + ":1: cannot open file");
   std::ostringstream ss;
   ss << in.rdbuf();
   return parse(ss.str(), path);
