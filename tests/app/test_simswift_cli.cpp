@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -84,4 +85,34 @@ TEST(Cli, GoodScenarioRunsAndExitsZero) {
       write("good.yaml", "duration: 0.05\nrobots:\n  - {team: 0, player: 1, x: -1, y: 0}\n");
   const Result r = run(s);
   EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// README "Debugging in gdb": a robot thread held 3 s at a breakpoint with a
+// 1 s watchdog; the run still ends normally with the hash of a run without
+// gdb (the runner waits for every thread each tick).
+TEST(Cli, BreakpointInGdbDoesNotTripTheWatchdog) {
+  if (std::system("command -v gdb >/dev/null 2>&1") != 0) GTEST_SKIP() << "gdb not installed";
+  const std::string scenario = std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/walk_one.yaml";
+  const std::string args = scenario + " --duration 1 --watchdog 1 --quiet";
+  auto capture = [](const std::string& cmd) {
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[512];
+    while (fgets(buf, sizeof buf, p)) out += buf;
+    pclose(p);
+    return out;
+  };
+  auto hashOf = [](const std::string& out) {
+    const size_t h = out.find("| hash ");
+    return h == std::string::npos ? std::string("none") : out.substr(h + 7, 16);
+  };
+  const std::string plain = capture(std::string(SIMSWIFT_BINARY_DIR) + "/simswift run " + args);
+  const std::string gdb = capture(
+      "gdb -q -batch -ex 'set pagination off' -ex 'break agent::motion::Walk2014Generator::tick' -ex run "
+      "-ex 'shell sleep 3' -ex delete -ex continue --args " +
+      std::string(SIMSWIFT_BINARY_DIR) + "/simswift run " + args + " 2>&1");
+  EXPECT_NE(gdb.find("hit Breakpoint 1"), std::string::npos) << gdb;
+  EXPECT_EQ(gdb.find("did not answer"), std::string::npos) << gdb;
+  EXPECT_NE(gdb.find("exited normally"), std::string::npos) << gdb;
+  EXPECT_EQ(hashOf(gdb), hashOf(plain)) << gdb << "\n" << plain;
 }
