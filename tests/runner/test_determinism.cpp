@@ -1,0 +1,117 @@
+// Determinism, pinned (as Box2D pins its hashes): a fixed scenario must end
+// with kPinnedHash, and still does when the robot threads are jittered with
+// seeded random sleeps in every Motion and Perception step (the lock-step
+// runner must not let thread timing into the physics).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <thread>
+
+#include "agent/motion/ActionScript.hpp"
+#include "sim/runner/Runner.hpp"
+
+using namespace simswift::runner;
+
+namespace {
+
+// THE pinned state hash of kScenario at its end. Any change to physics,
+// contacts, servos, sensors, noise or the walk changes it; that is the point.
+// If the change is intended, regenerate it with
+//   build/tests/test_runner --gtest_filter='Determinism.*'
+// (the failure prints the new value) or
+//   build/simswift run <kScenario saved as a file> --quiet
+// and paste the hash here, saying in the commit why physics changed.
+constexpr uint64_t kPinnedHash = 0x98f78b60275ed6caull;
+
+const char* kScenario =
+    "duration: 3\n"
+    "seed: 7\n"
+    "noise: on\n"
+    "ball: {x: 0.5, y: 0.2}\n"
+    "robots:\n"
+    "  - team: 0\n    player: 1\n    x: -1.0\n    y: 0.0\n"
+    "    actions:\n"
+    "      - {t: 0.2, action: walk, forward: 200, turn: 0.2}\n"
+    "      - {t: 2.0, push: {x: 1.0, y: 0.5}}\n"
+    "  - team: 1\n    player: 2\n    x: 1.5\n    y: 0.5\n    theta: 3.0\n"
+    "    actions:\n"
+    "      - {t: 0.5, action: walk, left: 100}\n";
+
+// Sleeps 0..max_us (seeded) before handing on: scrambles which thread runs
+// when, never what it computes.
+class Jitter {
+ public:
+  Jitter(uint64_t seed, int max_us) : rng_(seed), max_us_(max_us) {}
+  void sleep() {
+    std::this_thread::sleep_for(std::chrono::microseconds(std::uniform_int_distribution<int>(0, max_us_)(rng_)));
+  }
+
+ private:
+  std::mt19937_64 rng_;
+  int max_us_;
+};
+
+class JitteredMotion : public agent::program::MotionGenerator {
+ public:
+  JitteredMotion(std::unique_ptr<MotionGenerator> inner, uint64_t seed) : inner_(std::move(inner)), jitter_(seed, 400) {}
+  void tick(const agent::libagent::SensorValues& s, int64_t t_us, agent::libagent::JointValues& out) override {
+    jitter_.sleep();
+    inner_->tick(s, t_us, out);
+    jitter_.sleep();
+  }
+
+ private:
+  std::unique_ptr<MotionGenerator> inner_;
+  Jitter jitter_;
+};
+
+class JitteredPerception : public agent::program::PerceptionStep {
+ public:
+  explicit JitteredPerception(uint64_t seed) : jitter_(seed, 2000) {}
+  void step(const agent::libagent::CameraFrame& f) override {
+    jitter_.sleep();
+    PerceptionStep::step(f);
+  }
+
+ private:
+  Jitter jitter_;
+};
+
+uint64_t runHash(bool jitter, uint64_t jitter_seed) {
+  Runner runner(Scenario::parse(kScenario, "determinism.yaml"));
+  if (jitter) {
+    const Scenario& sc = runner.scenario();
+    for (int i = 0; i < static_cast<int>(sc.robots.size()); ++i) {
+      runner.setMotionGenerator(i, std::make_unique<JitteredMotion>(
+                                       std::make_unique<agent::motion::ActionScriptMotion>(sc.robots[i].actions),
+                                       jitter_seed * 10 + i));
+      runner.setPerceptionStep(i, std::make_unique<JitteredPerception>(jitter_seed * 100 + i));
+    }
+  }
+  RunOptions opt;
+  opt.progress = false;
+  return runner.run(opt).hash;
+}
+
+std::string hex(uint64_t v) {
+  char b[24];
+  std::snprintf(b, sizeof b, "0x%016llxull", static_cast<unsigned long long>(v));
+  return b;
+}
+
+}  // namespace
+
+TEST(Determinism, PinnedHash) {
+  const uint64_t h = runHash(false, 0);
+  EXPECT_EQ(h, kPinnedHash) << "state hash is " << hex(h) << ", pinned " << hex(kPinnedHash)
+                            << ": if physics changed on purpose, update kPinnedHash in " << __FILE__;
+}
+
+TEST(Determinism, JitteredRobotThreadsGiveThePinnedHash) {
+  for (uint64_t seed : {1u, 2u}) {
+    const uint64_t h = runHash(true, seed);
+    EXPECT_EQ(h, kPinnedHash) << "jitter seed " << seed << ": " << hex(h);
+  }
+}
