@@ -4,7 +4,8 @@ set -euo pipefail
 pkgs=(build-essential cmake pkg-config git
       libode-dev libeigen3-dev liburdfdom-dev libtinyxml-dev libyaml-cpp-dev
       libassimp-dev libosmesa6-dev libpng-dev
-      libgtest-dev libbenchmark-dev ffmpeg gdb)
+      libgtest-dev libbenchmark-dev ffmpeg gdb
+      clang libclang-rt-14-dev)   # libFuzzer targets (README "Tests, sanitizers and fuzzing")
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
