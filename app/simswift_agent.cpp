@@ -1,12 +1,14 @@
 // simswift-agent: a stand-alone robot program in its own process. It attaches
 // to a simulated robot's named shared memory (a robot with `program:
-// external` in a running simswift scenario), exactly as robot code attaches
-// to libagent, and holds a pose or moves one joint.
+// external` in a running simswift scenario) by libagent's simulation names
+// (/libagent-memory<N>, N = team x 11 + player) or the bare ones, and holds
+// a pose or moves one joint.
 //
-//   simswift-agent --team T --player P [--posture stand|crouch|limp|zero]
+//   simswift-agent --team T --player P [--bare] [--posture stand|crouch|limp|zero]
 //                  [--move JOINT ANGLE [--at S]] [--print] [--attach-timeout S]
 //
-// It runs until the simulator ends the run.
+// It runs until the simulator ends the run; if the simulator is killed it
+// notices within a second and exits with status 1 and a message.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +23,9 @@ namespace {
 
 const char* kUsage =
     "usage: simswift-agent --team T --player P [options]\n"
+    "  --team T             SPL team number (0..99); with --player P the robot's\n"
+    "                       objects are /libagent-memory<N>, N = T x 11 + P\n"
+    "  --bare               use the robot build's bare names (/libagent-memory)\n"
     "  --posture NAME       stand (default), crouch, limp or zero\n"
     "  --move JOINT ANGLE   move one joint (NAO name, e.g. HeadYaw) to ANGLE rad\n"
     "  --at S               ... at simulated time S s (default 0)\n"
@@ -58,7 +63,7 @@ int main(int argc, char** argv) {
   ap::Posture posture = ap::Posture::Stand;
   std::string move_joint;
   double move_angle = 0, move_at = 0, attach_timeout = 10;
-  bool print = false;
+  bool print = false, bare = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&](const char* what) -> const char* {
@@ -77,13 +82,16 @@ int main(int argc, char** argv) {
       move_angle = number(next("--move"), "--move ANGLE");
     } else if (a == "--at") move_at = number(next("--at"), "--at");
     else if (a == "--print") print = true;
+    else if (a == "--bare") bare = true;
     else if (a == "--attach-timeout") attach_timeout = number(next("--attach-timeout"), "--attach-timeout");
     else if (a == "--help" || a == "-h") {
       std::printf("%s", kUsage);
       return 0;
     } else usageError("unknown argument '" + a + "'");
   }
-  if (team < 0 || team >= al::kMaxTeams) usageError("--team must be 0.." + std::to_string(al::kMaxTeams - 1));
+  if (team < al::kMinTeamNumber || team > al::kMaxTeamNumber)
+    usageError("--team must be an SPL team number " + std::to_string(al::kMinTeamNumber) + ".." +
+               std::to_string(al::kMaxTeamNumber));
   if (player < al::kMinPlayer || player > al::kMaxPlayer)
     usageError("--player must be " + std::to_string(al::kMinPlayer) + ".." + std::to_string(al::kMaxPlayer));
 
@@ -102,7 +110,8 @@ int main(int argc, char** argv) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(attach_timeout);
   for (;;) {
     try {
-      al::AgentConnection conn = al::AgentConnection::attachByName(team, player);
+      al::AgentConnection conn =
+          al::AgentConnection::attach(bare ? al::bareNames() : al::simulationNames(team, player));
       std::fprintf(stderr, "simswift-agent: attached to %s\n", conn.name().c_str());
       ap::RobotProgram program(std::move(conn), team, player,
                                std::make_unique<ap::ScriptedMotion>(posture, script));
@@ -112,6 +121,11 @@ int main(int argc, char** argv) {
         });
       program.start();
       program.join();
+      if (program.simulatorGone()) {
+        std::fprintf(stderr, "simswift-agent: the simulator is gone (killed?) after %lld ticks: exiting\n",
+                     static_cast<long long>(program.motionTicks()));
+        return 1;
+      }
       std::fprintf(stderr, "simswift-agent: run ended after %lld ticks\n",
                    static_cast<long long>(program.motionTicks()));
       return program.error().empty() ? 0 : 1;

@@ -3,7 +3,7 @@
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config git
       libode-dev libeigen3-dev liburdfdom-dev libtinyxml-dev libyaml-cpp-dev
-      libassimp-dev libosmesa6-dev libpng-dev
+      libassimp-dev libosmesa6-dev libpng-dev libcairo2-dev
       libgtest-dev libbenchmark-dev ffmpeg gdb
       clang libclang-rt-14-dev)   # libFuzzer targets (README "Tests, sanitizers and fuzzing")
 missing=()

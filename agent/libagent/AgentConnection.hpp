@@ -2,11 +2,14 @@
 // the body, whether the body is simswift in the same process, simswift in
 // another process (named shared memory), or -- with the bare names -- a NAO.
 //
-// Lock-step protocol (simswift): the body publishes sensors and posts the
-// tick semaphore; Motion's waitTick() returns, it reads sensors, computes, and
-// writeActuators() publishes the command and posts lockstep.motion_done, which
-// the simulator waits for before the next physics tick. Perception likewise
-// waits on camera.frame_ready and posts camera.perception_done.
+// Per 10 ms cycle Motion does exactly what libagent's clients do: waitTick()
+// (sem_wait on the tick semaphore), readSensors() (copy sensors_latest into
+// sensors_read, read that slot), compute, writeActuators() (fill a slot that
+// is neither latest nor being read, then set actuators_latest). With simswift
+// it also uses the extension object (SimExtension.hpp): simulated time,
+// announce(), the camera frame handshake, shutdown, and a wake-up post after
+// each command. Attached by name it notices a simulator that died (its pid
+// in the extension) within a second and ends instead of waiting forever.
 #pragma once
 
 #include <semaphore.h>
@@ -18,6 +21,8 @@
 #include "agent/libagent/AgentShared.hpp"
 #include "agent/libagent/CameraImages.hpp"
 #include "agent/libagent/CameraShared.hpp"
+#include "agent/libagent/SharedNames.hpp"
+#include "agent/libagent/SimExtension.hpp"
 
 namespace agent::libagent {
 
@@ -36,40 +41,42 @@ struct ActuatorCommand {
 
 class AgentConnection {
  public:
-  // In-process: the simulator owns `block`, `tick` and `camera` (camera may
-  // be null: no Perception handshake).
-  AgentConnection(AgentBlock* block, sem_t* tick, CameraBlock* camera = nullptr);
+  // In-process: the simulator owns `block`, `tick` and `ext`.
+  AgentConnection(AgentData* block, sem_t* tick, SimExtension* ext);
 
-  // By name: maps /libagent-memory-<suffix> and opens /libagent-semaphore-<suffix>
-  // (suffix = team * kMaxPlayers + player). Checks magic and version.
-  // Throws AgentError with a message saying what to check.
+  // By name (simulation rule: N = team * 11 + player). Throws AgentError
+  // with a message saying what to check.
   static AgentConnection attachByName(int team, int player);
-  // The same with explicit names (e.g. the bare robot names).
-  static AgentConnection attachNamed(const std::string& memory, const std::string& semaphore);
+  // The same with explicit names (e.g. bareNames()).
+  static AgentConnection attach(const RobotNames& names);
 
   AgentConnection(AgentConnection&& other) noexcept;
   AgentConnection& operator=(AgentConnection&&) = delete;
   AgentConnection(const AgentConnection&) = delete;
   ~AgentConnection();
 
-  // Tells the simulator this robot program is ready (threads about to wait).
-  // `perception` = a thread will wait on camera frames.
+  // Tells the simulator this is a simswift-aware program; call before the
+  // threads answer their first tick. `perception` = a thread will wait on
+  // camera frames.
   void announce(bool perception);
 
-  // Blocks until the body posts the next tick. False when the run is over.
+  // Blocks until the body posts the next tick. False when the run is over or
+  // the simulator is gone (then a message on stderr says which).
   bool waitTick();
   // Triple-buffer read of the latest sensors (copy).
   SensorValues readSensors();
-  // Triple-buffer write of a command, then posts lockstep.motion_done.
+  // The button presses of the slot last read.
+  ButtonPresses buttons() const { return block_->buttons[last_slot_]; }
+  // Triple-buffer write of a command, then the wake-up post.
   void writeActuators(const ActuatorCommand& cmd);
   void writeActuators(const JointValues& joints, const LedCommand* leds = nullptr,
                       SonarMode sonar = 0, bool stiffen = false, const std::string& say = {});
   void setStanding(bool standing) { block_->standing = standing; }
 
   // Perception side. waitFrame() returns false when the run is over.
-  bool hasCamera() const { return camera_ != nullptr; }
+  bool hasCamera() const { return ext_ != nullptr; }
   bool waitFrame();
-  const CameraFrame& frame() const { return camera_->frame; }
+  const CameraFrame& frame() const { return ext_->camera.frame; }
   void perceptionDone();
   // The rendered camera images, or null when the simulator does not render.
   // Valid for a frame when frame().images_valid is 1; read them between
@@ -79,28 +86,35 @@ class AgentConnection {
   // In-process: the simulator hands over its images block (before start).
   void setImages(const CameraImages* images) { images_ = images; }
 
-  // Simulated time (us) and tick of the sensors in the latest slot.
-  int64_t simTimeUs() const { return block_->lockstep.sim_time_us; }
-  int64_t tick() const { return block_->lockstep.tick; }
-  bool shutdown() const { return block_->lockstep.shutdown.load() != 0; }
+  // Simulated time (us) and tick of the sensors last read.
+  int64_t simTimeUs() const { return ext_->slot_time_us[last_slot_]; }
+  int64_t tick() const { return ext_->slot_tick[last_slot_]; }
+  bool shutdown() const { return ext_->shutdown.load() != 0; }
+  // Attached by name: false once the simulator process has gone.
+  bool simulatorAlive() const;
 
-  AgentBlock* block() { return block_; }
-  const std::string& name() const { return memory_name_; }
+  AgentData* block() { return block_; }
+  SimExtension* extension() { return ext_; }
+  const std::string& name() const { return names_.memory; }
 
  private:
   AgentConnection() = default;
   void release();
+  bool waitOn(sem_t* s, const char* what);
 
-  AgentBlock* block_ = nullptr;
+  AgentData* block_ = nullptr;
   sem_t* tick_ = nullptr;
-  CameraBlock* camera_ = nullptr;
+  SimExtension* ext_ = nullptr;
   const CameraImages* images_ = nullptr;
+  int last_slot_ = 0;
   // Named mode only:
-  void* images_mapping_ = nullptr;  // read-only map of the images block
-  void* mapping_ = nullptr;
-  size_t mapping_size_ = 0;
-  bool named_sem_ = false;
-  std::string memory_name_ = "<in-process>";
+  bool named_ = false;
+  RobotNames names_{"<in-process>", "", "", ""};
+  void* block_map_ = nullptr;
+  void* ext_map_ = nullptr;
+  void* images_map_ = nullptr;
+  int sim_pid_ = 0;
+  uint64_t sim_start_ = 0;
 };
 
 }  // namespace agent::libagent

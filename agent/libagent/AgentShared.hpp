@@ -1,23 +1,21 @@
 // The libagent shared block: the only boundary between the robot code and the
 // body it drives (a real NAO through libagent, or simswift).
 //
-// Layout follows the public rUNSWift libagent (facts.md section 2): four
-// triple-buffer indices, three slots each of sensors, button presses, joint
-// commands, LEDs, sonar mode and stiffen request, three say-texts and the
-// `standing` flag. simswift adds, at the end, a lock-step extension (the
-// simulated clock and an acknowledgement semaphore) that a libagent-era robot
-// program simply never touches.
+// AgentData is, byte for byte, the block of the public rUNSWift 2017 release
+// (facts.md section 2): four uint8_t triple-buffer indices; three slots each
+// of sensors, button presses, joint commands, LEDs, sonar mode, stiffen
+// request and say-text; the `standing` flag. sizeof = 3284 on x86-64 and
+// i386; tests/agent/test_libagent_layout.cpp pins every offset. Nothing is
+// appended: what simswift adds lives in a separate object (SimExtension.hpp).
 //
-// Units: angles rad, angular rates rad/s, accelerations m/s^2, forces N,
-// distances m (sonar), temperatures deg C, currents A. Frames: NAO torso axes
-// (x forward, y left, z up).
+// Units, as the NAO reports them (NAOqi / LoLA): angles rad, angular rates
+// rad/s, accelerations m/s^2, FSR kg (force / g), centre of pressure m,
+// sonar m, temperatures deg C, currents A, battery charge 0..1. Frames: NAO
+// torso axes (x forward, y left, z up).
 #pragma once
 
-#include <semaphore.h>
-
-#include <atomic>
+#include <cstddef>
 #include <cstdint>
-
 namespace agent::libagent {
 
 // ---- Joints: the 25 commanded joints in libagent order. There is no
@@ -65,6 +63,10 @@ static_assert(kNumSensors == 37, "libagent has 37 sensor slots");
 constexpr int kNumSonars = 20;
 constexpr float kSonarNoEcho = 2.55f;
 
+// The NAO reports each FSR in kilograms: the force on it (N) over g. The
+// eight of a standing robot sum to its mass (about 5.3 kg).
+constexpr double kFsrNewtonsPerKilogram = 9.81;  // m/s^2
+
 // Stiffness below this (0, or -1 for "off") leaves the joint limp.
 constexpr float kStiffnessLimp = 0.0f;
 
@@ -77,83 +79,81 @@ struct JointValues {
 
 struct SensorValues {
   JointValues joints;
-  float sensors[kNumSensors];
-  float sonar[kNumSonars];  // m
+  float sensors[kNumSensors];  // units above (FSR kg)
+  float sonar[kNumSonars];     // m
 };
 
-// Button presses counted since the last read (chest clicks, head touches).
-struct ButtonPresses {
-  int32_t chest_presses;
-  int32_t head_front, head_middle, head_rear;
+// Button presses of one cycle: one byte, a bit per touch sensor. simswift
+// sets a bit when that sensor went from released to pressed in the cycle.
+using ButtonPresses = uint8_t;
+namespace Buttons {
+constexpr ButtonPresses kChest = 1u << 0;
+constexpr ButtonPresses kHeadFront = 1u << 1;
+constexpr ButtonPresses kHeadMiddle = 1u << 2;
+constexpr ButtonPresses kHeadRear = 1u << 3;
+}  // namespace Buttons
+
+// One RGB LED (or group) on or off per colour.
+struct Rgb {
+  bool red, green, blue;
 };
 
-// LED command. Intensities 0..1; colours are RGB triples.
+// LED command: the ears are 10-bit masks (bit i = ear LED i on), the rest
+// RGB triples.
 struct LedCommand {
-  float left_ear[10];
-  float right_ear[10];
-  float left_eye[8][3];
-  float right_eye[8][3];
-  float chest[3];
-  float left_foot[3];
-  float right_foot[3];
+  uint16_t left_ear;
+  uint16_t right_ear;
+  Rgb left_eye, right_eye, chest, left_foot, right_foot;
 };
+using LED = LedCommand;
 
 // Sonar mode word as written to the US actuator (left/right emitter, period).
 using SonarMode = float;
 
-constexpr int kSayTextLength = 128;
+// Stiffen request: STIFFEN asks the body side to stiffen all joints.
+enum StiffenCommand : int32_t { NONE = 0, STIFFEN };
+
+constexpr int kSayTextLength = 35;  // chars per slot, including the terminating 0
 constexpr int kSlots = 3;
 
-// simswift's lock-step extension: the simulated clock and acknowledgement.
-struct LockStep {
-  int64_t sim_time_us;          // simulated time of the sensors in the latest slot
-  int64_t tick;                 // 10 ms cycles since the run started
-  std::atomic<int32_t> skipped; // cycles whose post was skipped (semaphore > 0)
-  // Posted by the robot program after each joint command it writes; the
-  // simulator waits on it (with a wall-clock watchdog) before stepping on.
-  sem_t motion_done;
-  // Set by the simulator when the run ends so robot threads can exit.
-  std::atomic<int32_t> shutdown;
-  // Set by the robot program once it is attached and its threads wait (the
-  // process id, or 1 in-process); the simulator waits for it before tick 0.
-  std::atomic<int32_t> attached;
-};
-
-constexpr uint32_t kMagic = 0x53574654;  // "SWFT"
-constexpr uint32_t kVersion = 1;
-
-struct AgentBlock {
-  uint32_t magic;
-  uint32_t version;
-
-  // Triple-buffer indices (0..2). Sensors: written by the body side, read by
-  // Motion. Actuators (joints, LEDs, sonar, stiffen): written by Motion, read
-  // by the body side. The writer fills the slot that is neither latest nor
-  // being read, then publishes it as latest; the reader copies latest to read.
-  std::atomic<int32_t> sensors_read;
-  std::atomic<int32_t> sensors_latest;
-  std::atomic<int32_t> actuators_latest;
-  std::atomic<int32_t> actuators_read;
+// The shared block. The indices are volatile bytes as in libagent; both
+// sides access them through loadIndex()/storeIndex() (sequentially
+// consistent) below.
+struct AgentData {
+  volatile uint8_t sensors_read;
+  volatile uint8_t sensors_latest;
+  volatile uint8_t actuators_latest;
+  volatile uint8_t actuators_read;
 
   SensorValues sensors[kSlots];
   ButtonPresses buttons[kSlots];
   JointValues joints[kSlots];   // commanded angles and stiffnesses
   LedCommand leds[kSlots];
   SonarMode sonar[kSlots];
-  bool stiffen[kSlots];
-  char say_text[kSlots][kSayTextLength];
-  bool standing;                // robot program's "I am standing" flag
-
-  LockStep lockstep;
+  StiffenCommand stiffen[kSlots];
+  char sayTexts[kSlots][kSayTextLength];
+  volatile bool standing;       // set by the body side, cleared by the program
 };
+using AgentBlock = AgentData;
 
-// Names of the shared objects. On the robot these are the bare names; in
-// simulation each robot's are suffixed by (team * kMaxPlayers + player).
-constexpr const char* kMemoryName = "/libagent-memory";
-constexpr const char* kSemaphoreName = "/libagent-semaphore";
-constexpr int kMaxPlayers = 6;
+static_assert(sizeof(SensorValues) == 628, "SensorValues is 628 bytes in libagent");
+static_assert(sizeof(JointValues) == 400, "JointValues is 400 bytes in libagent");
+static_assert(sizeof(LedCommand) == 20, "LED is 20 bytes in libagent");
+static_assert(sizeof(StiffenCommand) == 4, "the stiffen enum is 4 bytes in libagent");
+static_assert(sizeof(AgentData) == 3284, "AgentData is 3284 bytes in rUNSWift 2017");
 
-// Returns the picked slot for a writer: neither `latest` nor `being_read`.
+// Index access with full ordering: the slot's contents are written before the
+// index that publishes it, and read after the index that claims it.
+inline uint8_t loadIndex(const volatile uint8_t& i) {
+  return __atomic_load_n(const_cast<const uint8_t*>(&i), __ATOMIC_SEQ_CST);
+}
+inline void storeIndex(volatile uint8_t& i, uint8_t v) {
+  __atomic_store_n(const_cast<uint8_t*>(&i), v, __ATOMIC_SEQ_CST);
+}
+inline bool validSlot(int i) { return i >= 0 && i < kSlots; }
+
+// Returns the slot for a writer: neither `latest` nor `being_read` (either
+// may be out of range, e.g. the parked actuators_latest).
 inline int freeSlot(int latest, int being_read) {
   for (int s = 0; s < kSlots; ++s)
     if (s != latest && s != being_read) return s;

@@ -21,9 +21,7 @@ constexpr int kMaxImageHeight = 960;
 constexpr int kNumCameras = 2;  // 0 = top, 1 = bottom
 constexpr uint32_t kCameraImagesMagic = 0x53574349;  // "SWCI"
 
-// Shared-memory name for the images; in simulation suffixed like the
-// libagent block by (team * kMaxPlayers + player).
-constexpr const char* kCameraImagesName = "/libagent-camera-images";
+// Shared-memory name: SharedNames.hpp (RobotNames::images).
 
 struct CameraImages {
   uint32_t magic;

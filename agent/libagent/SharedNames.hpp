@@ -1,45 +1,54 @@
-// Names and layout of a simulated robot's named shared objects.
+// Names of a robot's named shared objects, as the team's code builds them.
 //
-// On a NAO there is one robot per machine, so libagent uses the bare names.
-// In simulation every robot gets its own pair, suffixed by
-// team * kMaxPlayers + player (facts.md section 2), e.g. team 1 player 2 ->
-// "/libagent-memory-8" and "/libagent-semaphore-8".
+// On a NAO there is one robot per machine: libagent opens the bare names
+// /libagent-memory and /libagent-semaphore. rUNSWift's simulation build
+// appends N = SPL team number x 11 + player number, with no separator
+// (facts.md section 2): team 19, player 1 -> /libagent-memory210 and
+// /libagent-semaphore210. simswift uses that rule by default and the bare
+// names for a single robot on request.
 //
-// The shared-memory object holds the AgentBlock first (so a libagent-era
-// program that maps only sizeof(AgentBlock) sees exactly what it expects),
-// followed by the camera block simswift's Perception handshake uses.
+// Beside the two libagent objects simswift creates its own, which an
+// unchanged libagent program never opens: the extension (SimExtension.hpp:
+// simulated time, owner pid, attach, camera handshake, shutdown) and, while
+// it renders, the camera images (CameraImages.hpp). They take the same
+// suffix.
 #pragma once
 
 #include <string>
 
-#include "agent/libagent/AgentShared.hpp"
-#include "agent/libagent/CameraImages.hpp"
-#include "agent/libagent/CameraShared.hpp"
-
 namespace agent::libagent {
 
-struct SimRobotShm {
-  AgentBlock agent;
-  CameraBlock camera;
+constexpr const char* kMemoryName = "/libagent-memory";
+constexpr const char* kSemaphoreName = "/libagent-semaphore";
+constexpr const char* kExtensionName = "/libagent-simswift";
+constexpr const char* kImagesName = "/libagent-simswift-images";
+
+// SPL team numbers (the GameController's list) and players (SPL 2017: five
+// per team). N = team * 11 + player is unique for players below 11.
+constexpr int kMinTeamNumber = 0;
+constexpr int kMaxTeamNumber = 99;
+constexpr int kMinPlayer = 1;
+constexpr int kMaxPlayer = 5;
+constexpr int kNameTeamFactor = 11;
+
+struct RobotNames {
+  std::string memory, semaphore, extension, images;
 };
 
-// Teams 0..1, players 1..kMaxPlayers-1 (SPL 2017: five per team).
-constexpr int kMaxTeams = 2;
-constexpr int kMinPlayer = 1;
-constexpr int kMaxPlayer = kMaxPlayers - 1;
+// N of the simulation-build rule.
+inline int simulationNumber(int team, int player) { return team * kNameTeamFactor + player; }
 
-inline int robotSuffix(int team, int player) { return team * kMaxPlayers + player; }
-inline std::string memoryName(int team, int player) {
-  return std::string(kMemoryName) + "-" + std::to_string(robotSuffix(team, player));
+inline RobotNames namesWithSuffix(const std::string& suffix) {
+  return {kMemoryName + suffix, kSemaphoreName + suffix, kExtensionName + suffix, kImagesName + suffix};
 }
-inline std::string semaphoreName(int team, int player) {
-  return std::string(kSemaphoreName) + "-" + std::to_string(robotSuffix(team, player));
+// The simulation build's names (default).
+inline RobotNames simulationNames(int team, int player) {
+  return namesWithSuffix(std::to_string(simulationNumber(team, player)));
 }
-// The camera images block (only while the simulator renders).
-inline std::string cameraImagesName(int team, int player) {
-  return std::string(kCameraImagesName) + "-" + std::to_string(robotSuffix(team, player));
-}
-// "t1p2": used in thread names and messages.
+// The robot build's bare names (one robot only).
+inline RobotNames bareNames() { return namesWithSuffix(""); }
+
+// "t19p1": used in thread names and messages.
 inline std::string robotTag(int team, int player) {
   return "t" + std::to_string(team) + "p" + std::to_string(player);
 }

@@ -38,11 +38,12 @@ WalkSpeed ellipsoidClamp(const WalkSpeed& cmd, const WalkConfig& cfg);
 WalkSpeed ratchet(const WalkSpeed& current, const WalkSpeed& target, const WalkConfig& cfg);
 
 // Lateral centre of pressure (mm, + = left, robot frame between the hips) and
-// total weight (N) from the eight FSRs of a libagent sensor array.
+// total weight (kg, the NAO's FSR unit) from the eight FSRs of a libagent
+// sensor array.
 struct FootPressure {
   double cop_y = 0;  // mm
-  double total = 0;  // N
-  double left = 0, right = 0;  // N per foot
+  double total = 0;  // kg
+  double left = 0, right = 0;  // kg per foot
 };
 FootPressure footPressure(const float* sensors);
 

@@ -1,9 +1,11 @@
 // Every parameter of the Walk2014-style walk in one typed struct, with units.
 // Defaults follow facts.md section 3 except where a comment says otherwise.
-// Units: mm, mm/s, rad, rad/s, s, N.
+// Units: mm, mm/s, rad, rad/s, s, kg (FSRs, as the NAO reports them).
 #pragma once
 
 #include <array>
+
+#include "agent/libagent/AgentShared.hpp"
 
 namespace agent::motion {
 
@@ -47,8 +49,9 @@ struct WalkConfig {
   // --- Support-foot switching from the FSRs' lateral centre of pressure
   double switch_min_fraction = 0.75;  // of the period before a CoP sign change counts
   double switch_forced_periods = 3.0; // switch regardless after this many periods
-  double min_foot_weight = 2.0;       // N on both feet together to trust the FSRs;
-                                      // below it (robot lifted) switch on time (1 period)
+  // kg on both feet together to trust the FSRs (2 N); below it (robot
+  // lifted) switch on time (1 period)
+  double min_foot_weight = 2.0 / agent::libagent::kFsrNewtonsPerKilogram;
 
   // --- Gyro balance feedback on the support ankle
   double gyro_filter = 0.8;        // filtered = f * filtered + (1 - f) * gyro

@@ -33,15 +33,16 @@ void RobotProgram::setMotion(std::unique_ptr<MotionGenerator> motion) {
 }
 
 void RobotProgram::start() {
-  motion_thread_ = std::thread([this] { motionLoop(); });
   const bool with_perception = conn_.hasCamera() && perception_ != nullptr;
+  // Announce first: the simulator decides whether to send camera frames once
+  // Motion has answered its first tick, which may happen as soon as the
+  // thread exists.
+  conn_.announce(with_perception);
+  motion_thread_ = std::thread([this] { motionLoop(); });
   if (with_perception) {
     perception_->setImages(conn_.images());
     perception_thread_ = std::thread([this] { perceptionLoop(); });
   }
-  // Ticks already posted wait in the semaphores, so announcing after the
-  // threads were created (not necessarily waiting yet) is safe.
-  conn_.announce(with_perception);
 }
 
 void RobotProgram::join() {

@@ -1,12 +1,13 @@
 // A robot program: the robot code's threads around one AgentConnection.
 //
 //   Motion     (thread "t<T>p<P>-motion"):  loop { waitTick; readSensors;
-//              generator->tick; writeActuators (posts motion_done) }
+//              generator->tick; writeActuators }  (libagent's cycle)
 //   Perception (thread "t<T>p<P>-percept"): loop { wait frame_ready;
 //              perception step; post perception_done }
 //
-// Robot code sees simulated time only (lockstep.sim_time_us). The threads end
-// when the body side sets shutdown and wakes them.
+// Robot code sees simulated time only (the sensor slot's time in the
+// extension object). The threads end when the body side sets shutdown and
+// wakes them, or when a simulator attached by name has gone.
 #pragma once
 
 #include <atomic>
@@ -32,7 +33,7 @@ class RobotProgram {
 
   // Replace the Motion step (before start()).
   void setMotion(std::unique_ptr<MotionGenerator> motion);
-  // Starts the threads, then announces the program to the body side.
+  // Announces the program to the body side, then starts the threads.
   void start();
   // Waits for the threads to end (they end on shutdown).
   void join();
@@ -47,6 +48,8 @@ class RobotProgram {
   int64_t perceptionFrames() const { return perception_frames_.load(); }
   // The camera images the Perception thread reads (null: no rendering).
   const agent::libagent::CameraImages* images() const { return conn_.images(); }
+  // Attached by name: the simulator process has gone (killed) without ending the run.
+  bool simulatorGone() const { return !conn_.shutdown() && !conn_.simulatorAlive(); }
   // First exception a thread died of (empty if none).
   std::string error() const;
 

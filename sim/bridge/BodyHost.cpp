@@ -1,6 +1,8 @@
 #include "sim/bridge/BodyHost.hpp"
 
 #include <fcntl.h>
+#include <sched.h>
+#include <sys/file.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -10,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <new>
 
 #include "agent/libagent/TripleBuffer.hpp"
 
@@ -20,140 +23,245 @@ namespace al = agent::libagent;
 namespace {
 std::string sysError(const std::string& what) { return what + ": " + std::strerror(errno); }
 
-// Absolute CLOCK_MONOTONIC deadline `timeout_s` from now (watchdog only).
-timespec deadlineIn(double timeout_s) {
-  timespec now{};
-  clock_gettime(CLOCK_MONOTONIC, &now);
-  const double whole = std::floor(timeout_s);
-  now.tv_sec += static_cast<time_t>(whole);
-  now.tv_nsec += static_cast<long>((timeout_s - whole) * 1e9);
-  if (now.tv_nsec >= 1000000000L) {
-    now.tv_sec += 1;
-    now.tv_nsec -= 1000000000L;
+// Absolute CLOCK_MONOTONIC time `s` seconds from now (watchdog only).
+timespec monotonicIn(double s) {
+  timespec t{};
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  const double whole = std::floor(s);
+  t.tv_sec += static_cast<time_t>(whole);
+  t.tv_nsec += static_cast<long>((s - whole) * 1e9);
+  if (t.tv_nsec >= 1000000000L) {
+    t.tv_sec += 1;
+    t.tv_nsec -= 1000000000L;
   }
-  return now;
+  return t;
+}
+bool before(const timespec& a, const timespec& b) {
+  return a.tv_sec < b.tv_sec || (a.tv_sec == b.tv_sec && a.tv_nsec < b.tv_nsec);
 }
 
 bool waitWithTimeout(sem_t* s, double timeout_s) {
-  const timespec deadline = deadlineIn(timeout_s);
+  const timespec deadline = monotonicIn(timeout_s);
   for (;;) {
     if (sem_clockwait(s, CLOCK_MONOTONIC, &deadline) == 0) return true;
     if (errno == ETIMEDOUT) return false;
     if (errno != EINTR) throw BridgeError(sysError("sem_clockwait"));
   }
 }
+
+// Opens (creating if needed) a 0600 shm object and sizes it to `size`.
+// Returns the mapping; `fd_out` (if given) keeps the descriptor open.
+void* openSized(const std::string& name, size_t size, int* fd_out = nullptr) {
+  const int fd = shm_open(name.c_str(), O_CREAT | O_RDWR, 0600);
+  if (fd < 0) throw BridgeError(sysError("shm_open " + name));
+  fchmod(fd, 0600);  // independent of the umask
+  struct stat st {};
+  if (fstat(fd, &st) != 0 || static_cast<size_t>(st.st_size) != size) {
+    // Empty (created by a program that started first) or another size (a
+    // different build): size it. Pages past the old end read as zero.
+    if (ftruncate(fd, static_cast<off_t>(size)) != 0) {
+      const std::string e = sysError("ftruncate " + name);
+      close(fd);
+      throw BridgeError(e);
+    }
+  }
+  void* p = mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  if (p == MAP_FAILED) {
+    const std::string e = sysError("mmap " + name);
+    close(fd);
+    throw BridgeError(e);
+  }
+  if (fd_out) *fd_out = fd;
+  else close(fd);
+  return p;
+}
+
+// Sets bit `bit` of the press mask on a rising edge of `value` (0/1 sensor).
+void edge(float value, al::ButtonPresses bit, al::ButtonPresses& held, al::ButtonPresses& pressed) {
+  const bool down = value > 0.5f;
+  if (down && !(held & bit)) pressed |= bit;
+  held = down ? (held | bit) : (held & ~bit);
+}
 }  // namespace
 
-BodyHost::BodyHost(int team, int player, Mode mode, const al::JointValues& initial)
-    : team_(team), player_(player), tag_(al::robotTag(team, player)), mode_(mode) {
-  if (team < 0 || team >= al::kMaxTeams || player < al::kMinPlayer || player > al::kMaxPlayer)
-    throw BridgeError("robot " + tag_ + ": team must be 0.." + std::to_string(al::kMaxTeams - 1) +
-                      " and player 1.." + std::to_string(al::kMaxPlayer));
+BodyHost::BodyHost(int team, int player, Mode mode, const al::JointValues& initial, const BodyHostOptions& options)
+    : team_(team), player_(player), tag_(al::robotTag(team, player)), mode_(mode), options_(options) {
+  if (team < al::kMinTeamNumber || team > al::kMaxTeamNumber || player < al::kMinPlayer || player > al::kMaxPlayer)
+    throw BridgeError("robot " + tag_ + ": the team must be an SPL team number " + std::to_string(al::kMinTeamNumber) +
+                      ".." + std::to_string(al::kMaxTeamNumber) + " and the player " +
+                      std::to_string(al::kMinPlayer) + ".." + std::to_string(al::kMaxPlayer));
+  names_ = options.bare_names ? al::bareNames() : al::simulationNames(team, player);
   if (mode == Mode::InProcess) {
-    owned_.reset(new al::SimRobotShm());  // value-initialised: all zero
-    shm_ = owned_.get();
+    names_ = {"<in-process " + tag_ + ">", "", "", ""};
+    own_block_.reset(new AgentData());  // value-initialised: all zero
+    own_ext_.reset(new SimExtension());
+    block_ = own_block_.get();
+    ext_ = own_ext_.get();
+    if (options.images) {
+      own_images_.reset(new al::CameraImages());
+      images_ = own_images_.get();
+    }
     if (sem_init(&tick_local_, 0, 0) != 0) throw BridgeError(sysError("sem_init"));
     tick_ = &tick_local_;
   } else {
-    memory_name_ = al::memoryName(team, player);
-    semaphore_name_ = al::semaphoreName(team, player);
-    const int fd = shm_open(memory_name_.c_str(), O_CREAT | O_EXCL | O_RDWR, 0600);
-    if (fd < 0) {
-      if (errno == EEXIST)
-        throw BridgeError(memory_name_ + " already exists: another simswift runs robot " + tag_ +
-                          ", or a crashed run left it behind (remove /dev/shm" + memory_name_ + ")");
-      throw BridgeError(sysError("shm_open " + memory_name_));
-    }
-    cleanup::registerShm(memory_name_);
-    fchmod(fd, 0600);  // independent of the umask
-    if (ftruncate(fd, sizeof(al::SimRobotShm)) != 0) {
-      const std::string e = sysError("ftruncate " + memory_name_);
-      close(fd);
-      shm_unlink(memory_name_.c_str());
-      cleanup::unregister(memory_name_);
-      throw BridgeError(e);
-    }
-    void* p = mmap(nullptr, sizeof(al::SimRobotShm), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
-    close(fd);
-    if (p == MAP_FAILED) {
-      const std::string e = sysError("mmap " + memory_name_);
-      shm_unlink(memory_name_.c_str());
-      cleanup::unregister(memory_name_);
-      throw BridgeError(e);
-    }
-    shm_ = static_cast<al::SimRobotShm*>(p);  // ftruncate zero-fills
-    sem_t* s = sem_open(semaphore_name_.c_str(), O_CREAT | O_EXCL, 0600, 0);
-    if (s == SEM_FAILED) {
-      const std::string e = errno == EEXIST
-                                ? semaphore_name_ + " already exists: another simswift runs robot " + tag_ +
-                                      ", or a crashed run left it (remove /dev/shm/sem." +
-                                      semaphore_name_.substr(1) + ")"
-                                : sysError("sem_open " + semaphore_name_);
-      munmap(shm_, sizeof(al::SimRobotShm));
-      shm_unlink(memory_name_.c_str());
-      cleanup::unregister(memory_name_);
-      throw BridgeError(e);
-    }
-    cleanup::registerSem(semaphore_name_);
-    tick_ = s;
+    setUpNamed();
   }
+  initialise(initial);
+}
 
-  al::AgentBlock& b = shm_->agent;
-  b.version = al::kVersion;
-  b.sensors_read = 0;
-  b.sensors_latest = 0;
-  b.actuators_latest = 0;
-  b.actuators_read = 0;
-  for (int s = 0; s < al::kSlots; ++s) {
-    b.joints[s] = initial;
-    b.sonar[s] = 0;
-    b.stiffen[s] = false;
-    b.say_text[s][0] = '\0';
+// Takes the robot for this process, holding an flock on the extension object
+// so that two simulators starting together cannot both take it.
+void BodyHost::takeOwnership(int fd) {
+  SimExtension& x = *ext_;
+  const int old_pid = x.magic == al::kExtensionMagic ? x.simulator_pid.load() : 0;
+  const uint64_t old_start = x.magic == al::kExtensionMagic ? x.simulator_start.load() : 0;
+  if (old_pid != 0 && al::processAlive(old_pid, old_start)) {
+    flock(fd, LOCK_UN);
+    close(fd);
+    munmap(ext_, sizeof(SimExtension));
+    ext_ = nullptr;
+    throw BridgeError("robot " + tag_ + ": " + names_.memory + " belongs to a running simswift (pid " +
+                      std::to_string(old_pid) + "): stop that run first, or give this robot another team or player");
   }
+  if (old_pid != 0)
+    std::fprintf(stderr, "robot %s: taking over %s left by a killed run (simulator pid %d is gone)\n", tag_.c_str(),
+                 names_.memory.c_str(), old_pid);
+  x.magic = 0;  // until initialise() has finished
+  x.simulator_pid.store(static_cast<int32_t>(getpid()));
+  x.simulator_start.store(al::processStartTime(getpid()));
+}
+
+void BodyHost::setUpNamed() {
+  int fd = -1;
+  void* p = openSized(names_.extension, sizeof(SimExtension), &fd);
+  ext_ = static_cast<SimExtension*>(p);
+  if (flock(fd, LOCK_EX) != 0) {
+    const std::string e = sysError("flock " + names_.extension);
+    close(fd);
+    throw BridgeError(e);
+  }
+  takeOwnership(fd);  // throws (leaving everything as it was) if a live simulator owns the robot
+  cleanup::registerShm(names_.extension);
+  named_set_up_ = true;
+  try {
+    block_ = static_cast<AgentData*>(openSized(names_.memory, sizeof(AgentData)));
+    cleanup::registerShm(names_.memory);
+    sem_t* s = sem_open(names_.semaphore.c_str(), O_CREAT, 0600, 0);
+    if (s == SEM_FAILED) throw BridgeError(sysError("sem_open " + names_.semaphore));
+    cleanup::registerSem(names_.semaphore);
+    tick_ = s;
+    // A semaphore adopted from a program that started first, or left by a
+    // killed run, may hold posts: start from 0.
+    while (sem_trywait(tick_) == 0) {
+    }
+    if (options_.images) {
+      images_ = static_cast<al::CameraImages*>(openSized(names_.images, sizeof(al::CameraImages)));
+      cleanup::registerShm(names_.images);
+    }
+  } catch (...) {
+    flock(fd, LOCK_UN);
+    close(fd);
+    releaseNamed();
+    throw;
+  }
+  flock(fd, LOCK_UN);
+  close(fd);
+}
+
+void BodyHost::initialise(const al::JointValues& initial) {
+  AgentData& b = *block_;
+  std::memset(static_cast<void*>(&b), 0, sizeof b);
+  for (int s = 0; s < al::kSlots; ++s) b.joints[s] = initial;
+  al::storeIndex(b.sensors_read, 0);
+  al::storeIndex(b.sensors_latest, 0);
+  al::storeIndex(b.actuators_read, 0);
+  // Parked: no command yet (the program's first one unparks it).
+  al::storeIndex(b.actuators_latest, al::kActuatorsParked);
+  last_.joints = initial;
+
+  SimExtension& x = *ext_;
+  const int32_t pid = x.simulator_pid.load();
+  const uint64_t start = x.simulator_start.load();
+  // Zero everything after the header; the semaphores are (re)initialised.
+  std::memset(static_cast<void*>(&x), 0, sizeof x);
+  x.simulator_pid.store(mode_ == Mode::Named ? pid : 0);
+  x.simulator_start.store(mode_ == Mode::Named ? start : 0);
+  x.sync_mode.store(static_cast<int32_t>(sync_));
   // pshared = 1: the other end may be another process.
-  sem_init(&b.lockstep.motion_done, 1, 0);
-  sem_init(&shm_->camera.frame_ready, 1, 0);
-  sem_init(&shm_->camera.perception_done, 1, 0);
-  shm_->camera.magic = al::kMagic;
-  // The magic goes last: an agent that sees it sees an initialised block.
+  sem_init(&x.answered, 1, 0);
+  sem_init(&x.camera.frame_ready, 1, 0);
+  sem_init(&x.camera.perception_done, 1, 0);
+  x.camera.magic = al::kExtensionMagic;
+  x.version = al::kExtensionVersion;
+  if (images_) images_->magic = al::kCameraImagesMagic;
+  // The magic goes last: a program that sees it sees an initialised robot.
   std::atomic_thread_fence(std::memory_order_seq_cst);
-  b.magic = al::kMagic;
+  x.magic = al::kExtensionMagic;
   std::atomic_thread_fence(std::memory_order_seq_cst);
 }
 
+void BodyHost::releaseNamed() {
+  if (!named_set_up_) return;
+  named_set_up_ = false;
+  if (images_) munmap(images_, sizeof(al::CameraImages));
+  if (block_) munmap(block_, sizeof(AgentData));
+  if (ext_) munmap(ext_, sizeof(SimExtension));
+  if (tick_) sem_close(tick_);
+  images_ = nullptr;
+  block_ = nullptr;
+  ext_ = nullptr;
+  tick_ = nullptr;
+  for (const std::string& n : {names_.images, names_.memory, names_.extension}) {
+    shm_unlink(n.c_str());
+    cleanup::unregister(n);
+  }
+  sem_unlink(names_.semaphore.c_str());
+  cleanup::unregister(names_.semaphore);
+}
+
 BodyHost::~BodyHost() {
-  sem_destroy(&shm_->agent.lockstep.motion_done);
-  sem_destroy(&shm_->camera.frame_ready);
-  sem_destroy(&shm_->camera.perception_done);
+  if (ext_) {
+    sem_destroy(&ext_->answered);
+    sem_destroy(&ext_->camera.frame_ready);
+    sem_destroy(&ext_->camera.perception_done);
+  }
   if (mode_ == Mode::InProcess) {
     sem_destroy(&tick_local_);
     return;
   }
-  munmap(shm_, sizeof(al::SimRobotShm));
-  shm_unlink(memory_name_.c_str());
-  cleanup::unregister(memory_name_);
-  sem_close(tick_);
-  sem_unlink(semaphore_name_.c_str());
-  cleanup::unregister(semaphore_name_);
+  releaseNamed();
 }
 
-al::AgentConnection BodyHost::connect() { return al::AgentConnection(&shm_->agent, tick_, &shm_->camera); }
+al::AgentConnection BodyHost::connect() { return al::AgentConnection(block_, tick_, ext_); }
+
+void BodyHost::setSync(SyncMode mode) {
+  sync_ = mode;
+  ext_->sync_mode.store(static_cast<int32_t>(mode));
+}
 
 bool BodyHost::publishSensors(const SensorValues& values, int64_t sim_time_us, int64_t tick) {
-  al::AgentBlock& b = shm_->agent;
+  AgentData& b = *block_;
+  namespace S = al::Sensors;
+  al::ButtonPresses pressed = 0;
+  edge(values.sensors[S::ChestBoard_Button], al::Buttons::kChest, held_, pressed);
+  edge(values.sensors[S::Head_Touch_Front], al::Buttons::kHeadFront, held_, pressed);
+  edge(values.sensors[S::Head_Touch_Middle], al::Buttons::kHeadMiddle, held_, pressed);
+  edge(values.sensors[S::Head_Touch_Rear], al::Buttons::kHeadRear, held_, pressed);
+
   const int slot = al::writerSlot(b.sensors_latest, b.sensors_read);
   b.sensors[slot] = values;
-  b.lockstep.sim_time_us = sim_time_us;
-  b.lockstep.tick = tick;
-  b.sensors_latest.store(slot);
+  b.buttons[slot] = pressed;
+  ext_->slot_time_us[slot] = sim_time_us;
+  ext_->slot_tick[slot] = tick;
+  al::storeIndex(b.sensors_latest, static_cast<uint8_t>(slot));
 
   int value = 0;
   sem_getvalue(tick_, &value);
   if (value <= 0) {
     sem_post(tick_);
+    if (contact_lost_)
+      std::fprintf(stderr, "robot %s: contact regained at tick %lld\n", tag_.c_str(), static_cast<long long>(tick));
     skipped_run_ = 0;
-    if (contact_lost_) std::fprintf(stderr, "robot %s: contact regained at tick %lld\n", tag_.c_str(),
-                                    static_cast<long long>(tick));
     contact_lost_ = false;
     return true;
   }
@@ -161,7 +269,7 @@ bool BodyHost::publishSensors(const SensorValues& values, int64_t sim_time_us, i
   // up ticks; count the cycle as skipped.
   ++skipped_total_;
   ++skipped_run_;
-  b.lockstep.skipped.fetch_add(1);
+  ext_->skipped.fetch_add(1);
   if (skipped_run_ >= kContactLostCycles && !contact_lost_) {
     contact_lost_ = true;
     ++contact_lost_events_;
@@ -171,39 +279,66 @@ bool BodyHost::publishSensors(const SensorValues& values, int64_t sim_time_us, i
   return false;
 }
 
-ActuatorCommand BodyHost::readActuators() {
-  ActuatorCommand cmd;
-  if (contact_lost_) {
-    cmd.joints = agent::program::postureCommand(agent::program::Posture::Crouch);
-    for (float& s : cmd.joints.stiffnesses) s = agent::program::kSafeSitStiffness;
-    return cmd;
+bool BodyHost::answered() const { return al::validSlot(al::loadIndex(block_->actuators_latest)); }
+
+bool BodyHost::waitAnswer(double timeout_s) {
+  const timespec deadline = monotonicIn(timeout_s);
+  int polls = 0;
+  for (;;) {
+    if (answered()) return true;
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    if (!before(now, deadline)) return answered();
+    if (clientAnnounced()) {
+      // A simswift-aware program posts `answered` after publishing: sleep on
+      // it (bounded, so a missed post costs at most 1 ms).
+      timespec t = monotonicIn(0.001);
+      if (before(deadline, t)) t = deadline;
+      sem_clockwait(&ext_->answered, CLOCK_MONOTONIC, &t);
+    } else if (++polls < 200) {
+      sched_yield();  // an unchanged libagent program: poll the index
+    } else {
+      timespec nap{0, 20000};  // 20 us
+      nanosleep(&nap, nullptr);
+    }
   }
-  al::AgentBlock& b = shm_->agent;
+}
+
+ActuatorCommand BodyHost::readActuators() {
+  if (contact_lost_) {
+    ActuatorCommand sit;
+    sit.joints = agent::program::postureCommand(agent::program::Posture::Crouch);
+    for (float& s : sit.joints.stiffnesses) s = agent::program::kSafeSitStiffness;
+    return sit;
+  }
+  AgentData& b = *block_;
+  if (!answered()) return last_;  // nothing new: the previous command stands
   const int slot = al::claimLatest(b.actuators_latest, b.actuators_read);
-  cmd.joints = b.joints[slot];
-  cmd.leds = b.leds[slot];
-  cmd.sonar = b.sonar[slot];
-  cmd.stiffen = b.stiffen[slot];
-  cmd.say.assign(b.say_text[slot], strnlen(b.say_text[slot], al::kSayTextLength));
-  return cmd;
+  last_.joints = b.joints[slot];
+  last_.leds = b.leds[slot];
+  last_.sonar = b.sonar[slot];
+  last_.stiffen = b.stiffen[slot] == al::STIFFEN;
+  last_.say.assign(b.sayTexts[slot], strnlen(b.sayTexts[slot], al::kSayTextLength));
+  ++commands_read_;
+  // Lock-step: consumed; the next valid index is the next answer.
+  if (sync_ == SyncMode::LockStep) al::storeIndex(b.actuators_latest, al::kActuatorsParked);
+  return last_;
 }
 
-bool BodyHost::waitMotionDone(double timeout_s) { return waitWithTimeout(&shm_->agent.lockstep.motion_done, timeout_s); }
-
-void BodyHost::publishFrame(const agent::libagent::CameraFrame& frame) {
-  shm_->camera.frame = frame;
-  sem_post(&shm_->camera.frame_ready);
+void BodyHost::publishFrame(const al::CameraFrame& frame) {
+  ext_->camera.frame = frame;
+  sem_post(&ext_->camera.frame_ready);
 }
 
-bool BodyHost::waitPerceptionDone(double timeout_s) {
-  return waitWithTimeout(&shm_->camera.perception_done, timeout_s);
-}
+bool BodyHost::waitPerceptionDone(double timeout_s) { return waitWithTimeout(&ext_->camera.perception_done, timeout_s); }
 
 void BodyHost::shutdown() {
-  shm_->agent.lockstep.shutdown.store(1);
-  shm_->camera.shutdown.store(1);
-  sem_post(tick_);
-  sem_post(&shm_->camera.frame_ready);
+  ext_->shutdown.store(1);
+  ext_->camera.shutdown.store(1);
+  int value = 0;
+  sem_getvalue(tick_, &value);
+  if (value <= 0) sem_post(tick_);
+  sem_post(&ext_->camera.frame_ready);
 }
 
 }  // namespace simswift::bridge

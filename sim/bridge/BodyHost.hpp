@@ -1,15 +1,32 @@
 // The body's end of libagent: the simulator plays the NAO's DCM side for one
-// robot. It owns the robot's AgentBlock (+ CameraBlock) and tick semaphore,
-// either in this process's memory (builtin robot programs) or as named POSIX
-// objects another process attaches to (external robot programs).
+// robot. It sets up all of the robot's shared objects in one place (the
+// libagent block and semaphore, simswift's extension object and, when
+// rendering, the camera images), either in this process's memory (builtin
+// robot programs) or as named POSIX objects another process attaches to
+// (external robot programs; names in agent/libagent/SharedNames.hpp).
 //
-// Per 10 ms cycle: publishSensors() fills a triple-buffer slot and posts the
-// tick semaphore -- only if its value is <= 0, otherwise the robot program
-// did not consume the last tick and the cycle counts as skipped. After
-// kContactLostCycles consecutive skipped cycles contact is lost:
-// readActuators() then returns the safe sit (crouch posture, stiffness
-// agent::program::kSafeSitStiffness) instead of the stale command, until the
-// program consumes a tick again.
+// Per 10 ms cycle: publishSensors() fills a sensor slot and posts the tick
+// semaphore -- only if its value is <= 0, otherwise the program did not take
+// the last tick and the cycle counts as skipped.
+//
+// Lock-step (default): after consuming a command readActuators() parks
+// actuators_latest on kActuatorsParked; waitAnswer() returns once a valid
+// index reappears, i.e. once the program's Motion wrote a slot and set
+// actuators_latest exactly as libagent's clients do. Nothing else is asked
+// of the program.
+//
+// Free-running (SyncMode::FreeRunning, --realtime): nothing waits;
+// readActuators() returns the latest command. After kContactLostCycles
+// consecutive skipped cycles contact is lost: readActuators() returns the
+// safe sit (crouch posture at agent::program::kSafeSitStiffness) until the
+// program takes a tick again.
+//
+// Named objects: opened with O_CREAT (a program that started first and
+// created empty ones is adopted: the block is sized and initialised), mode
+// 0600. The extension records this simulator's pid; objects left by a killed
+// run (owner pid gone) are taken over, a robot owned by a live simulator is
+// refused with an error naming its pid. All are unlinked on destruction, at
+// exit and on SIGINT/SIGTERM.
 #pragma once
 
 #include <semaphore.h>
@@ -20,15 +37,19 @@
 
 #include "agent/libagent/AgentConnection.hpp"
 #include "agent/libagent/AgentShared.hpp"
+#include "agent/libagent/CameraImages.hpp"
 #include "agent/libagent/SharedNames.hpp"
+#include "agent/libagent/SimExtension.hpp"
 #include "agent/program/Postures.hpp"
 
 namespace simswift::bridge {
 
 using agent::libagent::ActuatorCommand;
-using agent::libagent::AgentBlock;
+using agent::libagent::AgentData;
 using agent::libagent::CameraBlock;
 using agent::libagent::SensorValues;
+using agent::libagent::SimExtension;
+using agent::libagent::SyncMode;
 
 struct BridgeError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -36,48 +57,64 @@ struct BridgeError : std::runtime_error {
 
 constexpr int kContactLostCycles = 50;
 
+struct BodyHostOptions {
+  bool bare_names = false;  // /libagent-memory etc. without the team/player suffix
+  bool images = false;      // set up the camera images block too
+};
+
 class BodyHost {
  public:
   enum class Mode { InProcess, Named };
-  // Named mode creates /libagent-memory-<suffix> and /libagent-semaphore-<suffix>
-  // with mode 0600 and O_EXCL (a leftover of a crashed run is an error naming
-  // the object and how to remove it). `initial` is the command readActuators()
-  // returns until the program writes one.
+  // `initial` is the command readActuators() returns until the program
+  // writes one. Throws BridgeError (bad team/player, objects owned by a
+  // live simulator, system errors).
   BodyHost(int team, int player, Mode mode,
-           const agent::libagent::JointValues& initial = agent::program::postureCommand(agent::program::Posture::Stand));
+           const agent::libagent::JointValues& initial = agent::program::postureCommand(agent::program::Posture::Stand),
+           const BodyHostOptions& options = {});
   ~BodyHost();  // unlinks the named objects
   BodyHost(const BodyHost&) = delete;
   BodyHost& operator=(const BodyHost&) = delete;
 
   int team() const { return team_; }
   int player() const { return player_; }
-  const std::string& tag() const { return tag_; }  // "t1p2"
+  const std::string& tag() const { return tag_; }  // "t19p2"
   Mode mode() const { return mode_; }
-  const std::string& memoryName() const { return memory_name_; }
-  const std::string& semaphoreName() const { return semaphore_name_; }
+  const agent::libagent::RobotNames& names() const { return names_; }
+  const std::string& memoryName() const { return names_.memory; }
+  const std::string& semaphoreName() const { return names_.semaphore; }
 
-  AgentBlock* block() { return &shm_->agent; }
-  CameraBlock* camera() { return &shm_->camera; }
+  AgentData* block() { return block_; }
+  SimExtension* extension() { return ext_; }
+  CameraBlock* camera() { return &ext_->camera; }
   sem_t* tickSemaphore() { return tick_; }
+  // The camera images (null unless options.images).
+  agent::libagent::CameraImages* images() { return images_; }
   // An in-process connection for a builtin robot program.
   agent::libagent::AgentConnection connect();
 
-  // Writes sensors (+ sim time, tick) as the latest slot, then posts the tick
-  // semaphore or counts a skipped cycle. Returns true if it posted.
+  void setSync(SyncMode mode);
+  SyncMode sync() const { return sync_; }
+
+  // Writes sensors (+ sim time, tick, button presses) as the latest slot,
+  // then posts the tick semaphore or counts a skipped cycle. Returns true if
+  // it posted.
   bool publishSensors(const SensorValues& values, int64_t sim_time_us, int64_t tick);
-  // The latest actuator command (or the safe sit if contact is lost).
+  // True once the program has published a command not yet consumed.
+  bool answered() const;
+  // Lock-step: waits (wall clock, for the watchdog only) until answered().
+  // False on timeout.
+  bool waitAnswer(double timeout_s);
+  // The latest command (consumed: lock-step parks actuators_latest), the
+  // previous one if none is new, or the safe sit if contact is lost.
   ActuatorCommand readActuators();
 
-  // Lock-step: waits (wall clock, for the watchdog only) for motion_done.
-  // False on timeout.
-  bool waitMotionDone(double timeout_s);
+  // A simswift-aware program has announced itself (AgentConnection::announce).
+  bool clientAnnounced() const { return ext_->client_pid.load() != 0; }
   // 30 Hz camera handshake (only if the program has a Perception thread).
-  bool hasPerception() const { return shm_->camera.consumer.load() != 0; }
+  bool hasPerception() const { return ext_->camera.consumer.load() != 0; }
   void publishFrame(const agent::libagent::CameraFrame& frame);
   bool waitPerceptionDone(double timeout_s);
 
-  // Set by the program when it is ready (see AgentConnection::announce).
-  bool attached() const { return shm_->agent.lockstep.attached.load() != 0; }
   // Sets shutdown and wakes the program's threads.
   void shutdown();
 
@@ -85,19 +122,37 @@ class BodyHost {
   int64_t skippedCycles() const { return skipped_total_; }
   int consecutiveSkipped() const { return skipped_run_; }
   int64_t contactLostEvents() const { return contact_lost_events_; }
+  int64_t commandsRead() const { return commands_read_; }
 
  private:
+  void setUpNamed();
+  void takeOwnership(int fd);
+  void initialise(const agent::libagent::JointValues& initial);
+  void releaseNamed();
+
   int team_, player_;
   std::string tag_;
   Mode mode_;
-  std::string memory_name_, semaphore_name_;
-  agent::libagent::SimRobotShm* shm_ = nullptr;
-  std::unique_ptr<agent::libagent::SimRobotShm> owned_;  // in-process
-  sem_t* tick_ = nullptr;
+  BodyHostOptions options_;
+  agent::libagent::RobotNames names_;
+  AgentData* block_ = nullptr;
+  SimExtension* ext_ = nullptr;
+  agent::libagent::CameraImages* images_ = nullptr;
+  // In-process storage.
+  std::unique_ptr<AgentData> own_block_;
+  std::unique_ptr<SimExtension> own_ext_;
+  std::unique_ptr<agent::libagent::CameraImages> own_images_;
   sem_t tick_local_{};
+  sem_t* tick_ = nullptr;
+  bool named_set_up_ = false;
+
+  SyncMode sync_ = SyncMode::LockStep;
+  ActuatorCommand last_;
+  agent::libagent::ButtonPresses held_ = 0;  // touch sensors pressed last cycle
   int skipped_run_ = 0;
   int64_t skipped_total_ = 0;
   int64_t contact_lost_events_ = 0;
+  int64_t commands_read_ = 0;
   bool contact_lost_ = false;
 };
 

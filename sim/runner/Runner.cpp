@@ -5,14 +5,6 @@
 #include <sstream>
 #include <thread>
 
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-
 #include "agent/libagent/SharedNames.hpp"
 #include "sim/runner/Tracer.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
@@ -32,6 +24,7 @@ namespace simswift::runner {
 
 namespace al = agent::libagent;
 namespace ap = agent::program;
+using agent::libagent::SyncMode;
 using Clock = std::chrono::steady_clock;
 
 namespace {
@@ -103,54 +96,6 @@ bool Runner::camerasAvailable() {
 #endif
 }
 
-// The robot's CameraImages block. A builtin program shares this process, so
-// the heap will do; an external one maps /libagent-camera-images-<suffix>
-// (created 0600 with O_EXCL before the robot's libagent block, so a program
-// that attaches finds it; unlinked in releaseImages and at exit).
-void Runner::createImages(Robot& r) {
-  if (r.spec.program != RobotSpec::Program::External) {
-    r.images_heap = std::make_unique<al::CameraImages>();
-    r.images = r.images_heap.get();
-  } else {
-    const std::string name = al::cameraImagesName(r.spec.team, r.spec.player);
-    const int fd = shm_open(name.c_str(), O_CREAT | O_EXCL | O_RDWR, 0600);
-    if (fd < 0) {
-      if (errno == EEXIST)
-        throw RunnerError(name + " already exists (left over from a crashed run?): remove /dev/shm" + name);
-      throw RunnerError("shm_open " + name + ": " + std::strerror(errno));
-    }
-    bridge::cleanup::registerShm(name);
-    r.images_shm_name = name;
-    fchmod(fd, 0600);  // independent of the umask
-    if (ftruncate(fd, sizeof(al::CameraImages)) != 0) {
-      const std::string e = std::strerror(errno);
-      close(fd);
-      releaseImages(r);
-      throw RunnerError("ftruncate " + name + ": " + e);
-    }
-    void* p = mmap(nullptr, sizeof(al::CameraImages), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
-    close(fd);
-    if (p == MAP_FAILED) {
-      const std::string e = std::strerror(errno);
-      releaseImages(r);
-      throw RunnerError("mmap " + name + ": " + e);
-    }
-    r.images = static_cast<al::CameraImages*>(p);  // ftruncate zero-fills
-  }
-  r.images->magic = al::kCameraImagesMagic;
-}
-
-void Runner::releaseImages(Robot& r) {
-  if (!r.images_shm_name.empty()) {
-    if (r.images) munmap(r.images, sizeof(al::CameraImages));
-    shm_unlink(r.images_shm_name.c_str());
-    bridge::cleanup::unregister(r.images_shm_name);
-    r.images_shm_name.clear();
-  }
-  r.images = nullptr;
-  r.images_heap.reset();
-}
-
 void Runner::startCameras() {
 #ifdef SIMSWIFT_HAVE_CAMERAS
   const CameraSpec& cs = scenario_.camera;
@@ -159,7 +104,8 @@ void Runner::startCameras() {
   cc.height = cs.height;
   cameras_ = std::make_unique<camera::RobotCameras>(*world_, cc);
   std::vector<int> teams;
-  for (auto& r : robots_) teams.push_back(r->spec.team);
+  // Jerseys by side (colour), whatever the SPL team numbers.
+  for (auto& r : robots_) teams.push_back(static_cast<int>(r->spec.colour));
   cameras_->setTeams(teams);
   if (!cs.dump_dir.empty()) dumper_ = std::make_unique<camera::FrameDumper>(cs.dump_dir, cs.dump_every);
   if (cs.overview.enabled) {
@@ -263,11 +209,16 @@ void Runner::start() {
     r.sensors = std::make_unique<sensors::SensorSuite>(*world_, index, sc);
     const al::JointValues initial = ap::postureCommand(r.spec.posture);
     const bool external = r.spec.program == RobotSpec::Program::External;
-    if (scenario_.camera.renderRobots()) createImages(r);  // before the host: an attaching program finds it
+    bridge::BodyHostOptions ho;
+    ho.bare_names = r.spec.bare_names;
+    ho.images = scenario_.camera.renderRobots();
     r.host = std::make_unique<bridge::BodyHost>(
         r.spec.team, r.spec.player, external ? bridge::BodyHost::Mode::Named : bridge::BodyHost::Mode::InProcess,
-        initial);
+        initial, ho);
+    r.images = r.host->images();
+    if (external && free_running_) r.host->setSync(SyncMode::FreeRunning);
     r.latched.joints = initial;
+    r.ext = std::make_unique<al::SimExtensions>();  // before the program starts
     if (!external) {
       std::unique_ptr<ap::MotionGenerator> motion = std::move(r.motion_override);
       if (!motion && (!r.spec.actions.empty() || !r.spec.pushes.empty())) {
@@ -287,35 +238,53 @@ void Runner::start() {
       r.program->start();
     }
   }
+  // Team network and GameController; the robots see the game state at t = 0.
+  network_ = std::make_unique<network::TeamNetwork>(scenario_.team_comms, scenario_.seed);
+  std::vector<game::GameController::RobotId> ids;
+  links_.clear();
+  for (auto& r : robots_) {
+    network_->addEndpoint(r->spec.team, r->spec.player);
+    ids.push_back({r->spec.team, r->spec.player});
+    links_.push_back(&r->ext->team);
+  }
+  game_ = std::make_unique<game::GameController>(scenario_.game, ids);
+  placer_ = std::make_unique<game::PenaltyPlacer>(modelPosture(ap::postureAngles(ap::Posture::Stand)));
+  teamAndGame(0);
   if (scenario_.camera.any()) startCameras();
-  waitForAttach();
-  for (auto& r : robots_) r->perception = r->host->hasPerception();
   wall_start_ = Clock::now();
 }
 
-void Runner::waitForAttach() {
-  // Wall clock: only how long to wait for another process, never simulation.
-  const auto deadline = Clock::now() + std::chrono::duration<double>(scenario_.attach_timeout_s);
-  for (auto& r : robots_) {
-    bool announced = false;
-    while (!r->host->attached()) {
-      if (!announced && r->spec.program == RobotSpec::Program::External) {
-        std::fprintf(stderr, "waiting for robot %s: start e.g. `simswift-agent --team %d --player %d`\n",
-                     r->tag.c_str(), r->spec.team, r->spec.player);
-        announced = true;
-      }
-      if (Clock::now() > deadline) {
-        std::ostringstream m;
-        m << "robot " << r->tag << ": no robot program attached to " << r->host->memoryName() << " within "
-          << scenario_.attach_timeout_s << " s";
-        if (r->spec.program == RobotSpec::Program::External)
-          m << " (program: external: start one, e.g. simswift-agent --team " << r->spec.team << " --player "
-            << r->spec.player << ")";
-        throw RunnerError(m.str());
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+void Runner::setFreeRunning(bool on) {
+  free_running_ = on;
+  for (auto& r : robots_)
+    if (r && r->host && r->spec.program == RobotSpec::Program::External)
+      r->host->setSync(on ? SyncMode::FreeRunning : SyncMode::LockStep);
+}
+
+// A robot's first answer: its program may start before or after the
+// simulator, so this waits up to attach_timeout (wall clock: only how long
+// to wait for another process, never simulation).
+void Runner::waitForFirstAnswer(Robot& r) {
+  const bool external = r.spec.program == RobotSpec::Program::External;
+  if (!r.host->waitAnswer(external ? 0.5 : scenario_.attach_timeout_s)) {
+    if (external)
+      std::fprintf(stderr,
+                   "waiting for robot %s on %s: start its robot program, e.g. `simswift-agent --team %d --player "
+                   "%d%s`\n",
+                   r.tag.c_str(), r.host->memoryName().c_str(), r.spec.team, r.spec.player,
+                   r.spec.bare_names ? " --bare" : "");
+    if (!r.host->waitAnswer(scenario_.attach_timeout_s)) {
+      std::ostringstream m;
+      m << "robot " << r.tag << ": no robot program answered on " << r.host->memoryName() << " within "
+        << scenario_.attach_timeout_s << " s";
+      if (external)
+        m << " (program: external: start one, e.g. simswift-agent --team " << r.spec.team << " --player "
+          << r.spec.player << ")";
+      throw RunnerError(m.str());
     }
   }
+  r.attached = true;
+  r.perception = r.host->hasPerception();
 }
 
 // The watchdog ends a run only when it is on and no debugger is attached: a
@@ -340,11 +309,21 @@ void Runner::watchdogFail(const Robot& r, const char* thread) const {
 //  3. Sensors are read from the new state and published into each robot's
 //     triple buffer with the simulated time; then all tick semaphores are
 //     posted, releasing every robot's Motion thread.
-//  4. The runner waits for every robot's motion_done (watchdog: wall clock).
+//  4. The runner waits until every robot's Motion has answered, i.e. written
+//     a command and set actuators_latest (watchdog: wall clock; the first
+//     tick waits up to attach_timeout). Free-running external robots are
+//     not waited for.
 //  5. Each robot's actuators are latched (used in step 1 of the next tick).
 //  6. At 30 Hz of simulated time (when floor(t * 30) advances) every robot
 //     with a Perception thread gets a camera frame and the runner waits for
 //     its perception_done (same watchdog).
+//  7. Team network and GameController (teamAndGame): every robot's outbox is
+//     drained and due packets go into inboxes (TeamNetwork::exchange), the
+//     game state advances (penalised robots to the sideline and back) and is
+//     written into every robot's GameStateBlock. No robot thread runs here
+//     (all answered in 4 and 6; none is posted before step 3 of the next
+//     tick), so the robot code sees the same packets and states at the same
+//     simulated time whatever the thread timing.
 // Threads may run in any order inside 3-4 and 6: the runner reads nothing
 // until they have all answered, so the result does not depend on timing.
 void Runner::tick() {
@@ -395,9 +374,13 @@ void Runner::tick() {
   }
   for (auto& r : robots_) r->host->publishSensors(r->values, t_us, tick);
   // 4.
-  for (auto& r : robots_)
-    while (!r->host->waitMotionDone(watchdogWait()))
-      if (watchdogArmed()) watchdogFail(*r, "motion");
+  for (auto& rp : robots_) {
+    Robot& r = *rp;
+    if (!r.attached) waitForFirstAnswer(r);
+    else if (r.host->sync() == SyncMode::LockStep)
+      while (!r.host->waitAnswer(watchdogWait()))
+        if (watchdogArmed()) watchdogFail(r, "motion");
+  }
   // 5.
   for (auto& r : robots_) r->latched = r->host->readActuators();
 
@@ -438,6 +421,22 @@ void Runner::tick() {
           while (!r->host->waitPerceptionDone(watchdogWait()))
             if (watchdogArmed()) watchdogFail(*r, "perception");
   }
+  // 7.
+  teamAndGame(t_us);
+}
+
+void Runner::teamAndGame(int64_t t_us) {
+  network_->exchange(t_us, links_);
+  for (const game::GameEvent& e : game_->update(t_us)) {
+    Robot& r = *robots_[e.robot];
+    if (e.kind == game::GameEvent::Kind::Penalised) {
+      placer_->penalise(*world_, e.robot, r.spec.team);
+    } else {
+      placer_->unpenalise(*world_, e.robot, scenario_.game.on_unpenalise == game::GameConfig::Return::Previous);
+    }
+    r.sensors->reset(*world_);  // the robot was carried: no velocity spike in the IMU
+  }
+  for (auto& r : robots_) game_->fill(r->ext->game);
 }
 
 RunStats Runner::stats() const {
@@ -470,6 +469,7 @@ RunStats Runner::stats() const {
 }
 
 RunStats Runner::run(const RunOptions& opt) {
+  if (opt.realtime) setFreeRunning(true);
   start();
   const int64_t total = static_cast<int64_t>(std::llround(scenario_.duration / kTickSeconds));
   const int64_t progress_every =
@@ -508,9 +508,6 @@ void Runner::shutdown() {
     if (r && r->program) r->program->join();
   for (auto& r : robots_)
     if (r) r->program.reset();
-  // Named images go with the run; heap ones stay readable until destruction.
-  for (auto& r : robots_)
-    if (r && !r->images_shm_name.empty()) releaseImages(*r);
 }
 
 }  // namespace simswift::runner

@@ -5,8 +5,18 @@
 // before physics moves on, so the outcome does not depend on thread timing:
 // the same scenario and seed give the same state hash.
 //
-// A robot thread that does not answer within the watchdog (wall clock) stops
+// A robot program answers a tick the way libagent's clients do (it writes a
+// joint command and sets actuators_latest; see sim/bridge/BodyHost.hpp), so
+// an unchanged libagent program runs in lock-step. The first tick waits up
+// to the scenario's attach_timeout for each robot's first answer (an
+// external program may start before or after the simulator); after that a
+// robot thread that does not answer within the watchdog (wall clock) stops
 // the run with a WatchdogError naming the robot and the thread.
+//
+// Free-running (setFreeRunning, `simswift run --realtime`): external robot
+// programs are not waited for after their first answer; they may miss
+// cycles as on a NAO (counted as skipped; after 50 in a row the body sits
+// down). Builtin programs stay in lock-step.
 #pragma once
 
 #include <chrono>
@@ -17,9 +27,13 @@
 #include <string>
 #include <vector>
 
+#include "agent/libagent/SimExtensions.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "sim/bridge/BodyHost.hpp"
+#include "sim/game/GameController.hpp"
+#include "sim/game/Sideline.hpp"
+#include "sim/network/TeamNetwork.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
@@ -40,7 +54,7 @@ struct RunnerError : std::runtime_error {
 };
 
 struct RunOptions {
-  bool realtime = false;        // pace with the wall clock (pacing only)
+  bool realtime = false;        // pace with the wall clock; external robots free-running
   int64_t print_hash_every = 0; // ticks; 0 = never (stdout)
   double progress_every_s = 5;  // simulated s between progress lines (stderr); <= 0 = never
   bool progress = true;
@@ -88,8 +102,10 @@ class Runner {
   // Before start(): replace a builtin robot's Perception step.
   void setPerceptionStep(int robot, std::unique_ptr<agent::program::PerceptionStep> perception);
 
-  // Builds the world, hosts and programs; waits for external robots to attach.
+  // Builds the world, hosts and programs.
   void start();
+  // External robots free-running (see above); RunOptions::realtime sets it.
+  void setFreeRunning(bool on);
   // One 10 ms tick. Throws WatchdogError.
   void tick();
   // start() if needed, then ticks until the scenario's duration.
@@ -112,6 +128,14 @@ class Runner {
   const agent::libagent::CameraImages* images(int i) const { return robots_[i]->images; }
   int64_t framesDumped() const;     // PNGs written by --dump-frames
   int64_t overviewFrames() const;   // overview PNGs written
+
+  // Team communication and game states (after start()). Robot i's extension
+  // objects beside its libagent block: the game state and the team link
+  // (see agent/libagent/SimExtensions.hpp). The runner touches them only in
+  // tick step 7, while no robot thread runs.
+  agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext.get(); }
+  const network::TeamNetwork& teamNetwork() const { return *network_; }
+  const game::GameController& gameController() const { return *game_; }
   // After run(): the overview video line (empty if no overview).
   const std::string& overviewMessage() const { return overview_message_; }
   // Ends the overview (assembles the video) and returns its message; run() calls it.
@@ -125,21 +149,21 @@ class Runner {
     std::unique_ptr<sensors::SensorSuite> sensors;
     std::unique_ptr<agent::program::MotionGenerator> motion_override;
     std::unique_ptr<agent::program::PerceptionStep> perception_override;
-    // Camera images: heap (builtin) or a named 0600 shm block (external).
+    // Camera images (set up by the host when rendering).
     agent::libagent::CameraImages* images = nullptr;
-    std::unique_ptr<agent::libagent::CameraImages> images_heap;
-    std::string images_shm_name;
     std::unique_ptr<agent::program::RobotProgram> program;  // builtin only
     agent::libagent::SensorValues values{};
     agent::libagent::ActuatorCommand latched;
     bool perception = false;
+    bool attached = false;  // has answered its first tick
     bool fallen = false;
     int falls = 0;
     size_t next_push = 0;  // next of spec.pushes to apply
+    std::unique_ptr<agent::libagent::SimExtensions> ext;  // game state + team link
   };
 
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
-  void waitForAttach();
+  void waitForFirstAnswer(Robot& r);
   [[noreturn]] void watchdogFail(const Robot& r, const char* thread) const;
   double watchdogWait() const;  // s per wait
   bool watchdogArmed() const;   // on, and no debugger attached
@@ -156,11 +180,15 @@ class Runner {
   std::unique_ptr<camera::OverviewCamera> overview_;
   bool overview_finished_ = false;
   std::string overview_message_;
-  void createImages(Robot& r);
-  void releaseImages(Robot& r);
+  bool free_running_ = false;
   void startCameras();
   void renderFrame(int64_t frame, int64_t t_us, agent::libagent::CameraFrame& f, Robot& r, int index);
   int blowups_ = 0;
+  std::unique_ptr<network::TeamNetwork> network_;
+  std::unique_ptr<game::GameController> game_;
+  std::unique_ptr<game::PenaltyPlacer> placer_;
+  std::vector<agent::libagent::TeamLink*> links_;  // by robot index, for the network
+  void teamAndGame(int64_t t_us);  // tick step 7
   std::chrono::steady_clock::time_point wall_start_;
 };
 

@@ -135,6 +135,67 @@ RobotSpec::ButtonPress readButton(const YamlReader& r) {
   return b;
 }
 
+// team_comms: {loss, delay_ms, budget}
+network::TeamNetworkConfig readTeamComms(const YamlReader& r) {
+  network::TeamNetworkConfig c;
+  c.loss = r.number("loss", c.loss, Range::closed(0, 1));
+  c.delay_ms = r.number("delay_ms", c.delay_ms, Range::closed(0, 60000));
+  c.budget = r.integer("budget", 0, Range::nonNegative());
+  r.finish();
+  return c;
+}
+
+// game: the GameController's timeline and penalties (robots already read).
+game::GameConfig readGame(const YamlReader& r, int num_robots) {
+  game::GameConfig g;
+  auto state = [](const YamlReader& m, const std::string& key, const std::string& def) {
+    game::GameStateValue v;
+    game::parseState(m.choice(key, def, game::stateNames()), &v);
+    return v;
+  };
+  g.initial_state = state(r, "state", "playing");
+  g.kickoff_team = r.integer("kickoff_team", 0, Range::closed(0, 1));
+  g.half_duration_s = r.number("half_duration", 600.0, Range::closed(1, 3600));
+  g.first_half = r.boolean("first_half", true);
+  g.on_unpenalise = r.choice("on_unpenalise", "previous", {"previous", "sideline"}) == "sideline"
+                        ? game::GameConfig::Return::Sideline
+                        : game::GameConfig::Return::Previous;
+  double last = 0;
+  for (const YamlReader& e : r.list("timeline")) {
+    game::GameConfig::StateChange c;
+    c.t_s = e.number("t", Range::nonNegative());
+    if (c.t_s < last) e.fail("t", "timeline entries must be in time order");
+    last = c.t_s;
+    if (!e.has("state")) e.fail("state", "a timeline entry needs a state");
+    c.state = state(e, "state", "playing");
+    const std::string sec = e.choice("secondary", "normal", {"normal", "penalty_shoot", "overtime", "timeout"});
+    c.secondary = sec == "normal"          ? game::SecondaryState::Normal
+                  : sec == "penalty_shoot" ? game::SecondaryState::PenaltyShoot
+                  : sec == "overtime"      ? game::SecondaryState::Overtime
+                                           : game::SecondaryState::Timeout;
+    c.kickoff_team = e.integer("kickoff_team", -1, Range::closed(-1, 1));
+    e.finish();
+    g.timeline.push_back(c);
+  }
+  last = 0;
+  for (const YamlReader& e : r.list("penalties")) {
+    game::GameConfig::PenaltyEvent p;
+    p.t_s = e.number("t", Range::nonNegative());
+    if (p.t_s < last) e.fail("t", "penalties must be in time order");
+    last = p.t_s;
+    p.robot = e.integer("robot", Range::nonNegative());
+    if (p.robot >= num_robots)
+      e.fail("robot", "no robot " + std::to_string(p.robot) + " (the scenario has " + std::to_string(num_robots) +
+                          "; robot is the index in robots:)");
+    game::parsePenalty(e.choice("penalty", "request_for_pickup", game::penaltyNames()), &p.penalty);
+    p.duration_s = e.number("duration", 30.0, Range::atLeast(-1));
+    e.finish();
+    g.penalties.push_back(p);
+  }
+  r.finish();
+  return g;
+}
+
 }  // namespace
 
 bool RobotSpec::buttonHeld(sensors::Button b, double t_s) const {
@@ -261,15 +322,39 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     b->finish();
   }
 
-  std::set<int> suffixes;
+  std::set<int> numbers;               // libagent name numbers in use
+  std::vector<std::pair<int, TeamColour>> teams;  // team number -> colour, in order of appearance
+  int bare = 0;
   for (const YamlReader& r : top.list("robots")) {
     RobotSpec rs;
     rs.line = r.node().Mark().line + 1;
-    rs.team = r.integer("team", Range::closed(0, al::kMaxTeams - 1));
+    rs.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
     rs.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
-    if (!suffixes.insert(al::robotSuffix(rs.team, rs.player)).second)
+    if (!numbers.insert(al::simulationNumber(rs.team, rs.player)).second)
       r.fail("player", "team " + std::to_string(rs.team) + " player " + std::to_string(rs.player) +
                            " appears twice");
+    auto known = std::find_if(teams.begin(), teams.end(), [&](const auto& t) { return t.first == rs.team; });
+    if (r.has("colour")) {
+      rs.colour = r.choice("colour", "blue", {"blue", "red"}) == "blue" ? TeamColour::Blue : TeamColour::Red;
+    } else if (known != teams.end()) {
+      rs.colour = known->second;
+    } else {
+      rs.colour = teams.empty() || teams.front().second == TeamColour::Red ? TeamColour::Blue : TeamColour::Red;
+    }
+    if (known != teams.end() && known->second != rs.colour)
+      r.fail("colour", "team " + std::to_string(rs.team) + " already plays in " +
+                           (known->second == TeamColour::Blue ? "blue" : "red"));
+    if (known == teams.end()) {
+      if (teams.size() == 2) r.fail("team", "a match has two teams (" + std::to_string(teams[0].first) + " and " +
+                                                std::to_string(teams[1].first) + ")");
+      if (!teams.empty() && teams.front().second == rs.colour)
+        r.fail("colour", "team " + std::to_string(teams.front().first) + " already plays in " +
+                             (rs.colour == TeamColour::Blue ? "blue" : "red"));
+      teams.emplace_back(rs.team, rs.colour);
+    }
+    rs.bare_names = r.choice("names", "simulation", {"simulation", "bare"}) == "bare";
+    if (rs.bare_names && ++bare > 1)
+      r.fail("names", "only one robot can have the bare names (/libagent-memory)");
     const Range pos = Range::closed(-limits::kMaxPosition, limits::kMaxPosition);
     rs.x = r.number("x", 0.0, pos);
     rs.y = r.number("y", 0.0, pos);
@@ -297,6 +382,8 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     sc.robots.push_back(std::move(rs));
   }
   if (sc.robots.empty()) top.fail("robots", "a scenario needs at least one robot");
+  if (auto t = top.optionalMap("team_comms")) sc.team_comms = readTeamComms(*t);
+  if (auto g = top.optionalMap("game")) sc.game = readGame(*g, static_cast<int>(sc.robots.size()));
   if (overview_reader && sc.camera.overview.robot >= static_cast<int>(sc.robots.size()))
     overview_reader->fail("robot", "no robot " + std::to_string(sc.camera.overview.robot) + " (the scenario has " +
                                        std::to_string(sc.robots.size()) + ")");

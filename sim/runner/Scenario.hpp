@@ -17,7 +17,9 @@
 //                width: 960, height: 540, dir: overview}   # whole-field PNGs (+ MP4)
 //   ball: {x: 1.0, y: 0.0}         # m, field frame
 //   robots:
-//     - {team: 0, player: 1, x: -1.0, y: 0.0, theta: 0.0,   # m, m, rad (field frame)
+//     - {team: 19, player: 1, x: -1.0, y: 0.0, theta: 0.0,  # m, m, rad (field frame)
+//        colour: blue,                 # side of the match (blue or red), see below
+//        names: simulation,            # libagent names: simulation (N = team x 11 + player) or bare
 //        posture: stand, program: builtin,
 //        script: [{t: 2.0, joint: HeadYaw, angle: 0.5, duration: 0.5}],
 //        buttons: [{t: 3.0, button: chest, duration: 0.1}],
@@ -26,9 +28,26 @@
 //                  {t: 9.0, push: {x: 3.0, y: 0.0}}]}   # impulse N*s at the torso (field axes)
 //      actions run the robot's Motion (agent/motion) from a timed list: walk, stand,
 //      kick, getup_front, getup_back, dead, crouch, limp, none.
+//   team_comms: {loss: 0.1, delay_ms: 100, budget: 0}   # see sim/network/TeamNetwork.hpp
+//      loss 0..1 per packet and teammate, delay ms, budget packets per team per game (0 = none)
+//   game:                          # the GameController (sim/game); absent = PLAYING throughout
+//     state: initial               # state at t = 0 (default playing)
+//     kickoff_team: 0              # team index
+//     half_duration: 600           # s
+//     on_unpenalise: previous      # or sideline: where an unpenalised robot goes
+//     timeline: [{t: 0, state: ready}, {t: 45, state: set}, {t: 50, state: playing, kickoff_team: 1}]
+//     penalties: [{t: 10, robot: 0, penalty: request_for_pickup, duration: 30}]  # robot: scenario index;
+//                                  # duration s (< 0: until {penalty: none}); penalised robots wait on the sideline
+//
+// `team` is the SPL team number (0..99, as in the GameController). A match
+// has at most two teams, told apart by colour: a robot's `colour` (blue or
+// red) defaults to blue for the first team number in the file and red for
+// the second; all robots of a team share one colour, the two teams differ.
+// `names: bare` gives one robot the robot build's /libagent-memory and
+// /libagent-semaphore.
 //
 // Unknown keys and bad values throw ConfigError naming file, line and key:
-//   scenario.yaml:7: robots[1].team: must be 0..1 (got 3)
+//   scenario.yaml:7: robots[1].team: must be 0..99 (got 300)
 #pragma once
 
 #include <cstdint>
@@ -39,6 +58,8 @@
 #include "agent/motion/ActionScript.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/Postures.hpp"
+#include "sim/game/GameController.hpp"
+#include "sim/network/TeamNetwork.hpp"
 #include "sim/sensors/Buttons.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/FieldConfig.hpp"
@@ -46,10 +67,14 @@
 
 namespace simswift::runner {
 
+enum class TeamColour : int { Blue = 0, Red = 1 };
+
 struct RobotSpec {
   int line = 0;  // of the robot's entry in the scenario file (for errors)
-  int team = 0;
+  int team = 0;    // SPL team number
   int player = 1;
+  TeamColour colour = TeamColour::Blue;  // side of the match
+  bool bare_names = false;               // /libagent-memory without suffix
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
   agent::program::Posture posture = agent::program::Posture::Stand;
   enum class Program { Builtin, External } program = Program::Builtin;
@@ -116,6 +141,8 @@ struct Scenario {
   std::optional<std::pair<double, double>> ball;  // m, field frame
   int ball_line = 0;
   std::vector<RobotSpec> robots;
+  network::TeamNetworkConfig team_comms;  // team_comms: (defaults: no loss, no delay, no budget)
+  game::GameConfig game;                  // game: (default: PLAYING, no penalties)
 
   // Placement checked against the field (ConfigError "file:line: key: ..."):
   // every robot and the ball on the carpet, not inside a goal post, robots

@@ -17,6 +17,10 @@ void copyToAgent(const SensorReading& r, la::SensorValues& out) {
   std::copy(r.joint_temperatures.begin(), r.joint_temperatures.end(), out.joints.temperatures);
   std::copy(r.joint_currents.begin(), r.joint_currents.end(), out.joints.currents);
   std::copy(r.sensors.begin(), r.sensors.end(), out.sensors);
+  // The FSRs in the NAO's unit: kg (N / g).
+  for (int first : {S::LFoot_FSR_FrontLeft, S::RFoot_FSR_FrontLeft})
+    for (int k = first; k < first + 4; ++k)
+      out.sensors[k] = static_cast<float>(r.sensors[k] / la::kFsrNewtonsPerKilogram);
   std::copy(r.sonar.begin(), r.sonar.end(), out.sonar);
 }
 

@@ -83,49 +83,55 @@ std::set<std::string> threadNames() {
 // The program's Motion thread answers each tick with a command; Perception
 // answers each frame; both threads are named after the robot.
 TEST(RobotProgram, RunsMotionAndPerceptionInLockStep) {
-  std::unique_ptr<al::SimRobotShm> shm(new al::SimRobotShm());
+  std::unique_ptr<al::AgentData> block(new al::AgentData());
+  std::unique_ptr<al::SimExtension> ext(new al::SimExtension());
   sem_t tick;
   sem_init(&tick, 0, 0);
-  sem_init(&shm->agent.lockstep.motion_done, 1, 0);
-  sem_init(&shm->camera.frame_ready, 1, 0);
-  sem_init(&shm->camera.perception_done, 1, 0);
-  shm->agent.magic = al::kMagic;
-  shm->agent.version = al::kVersion;
-  shm->camera.magic = al::kMagic;
+  sem_init(&ext->answered, 1, 0);
+  sem_init(&ext->camera.frame_ready, 1, 0);
+  sem_init(&ext->camera.perception_done, 1, 0);
+  ext->magic = al::kExtensionMagic;
+  ext->version = al::kExtensionVersion;
 
   {
-    ap::RobotProgram program(al::AgentConnection(&shm->agent, &tick, &shm->camera), 1, 2,
+    ap::RobotProgram program(al::AgentConnection(block.get(), &tick, ext.get()), 1, 2,
                              std::make_unique<ap::PoseGenerator>(ap::Posture::Crouch));
     program.start();
-    EXPECT_EQ(shm->agent.lockstep.attached.load(), 1);
-    EXPECT_EQ(shm->camera.consumer.load(), 1);
+    EXPECT_EQ(ext->client_pid.load(), 1);
+    EXPECT_EQ(ext->camera.consumer.load(), 1);
     for (int k = 1; k <= 5; ++k) {
-      shm->agent.lockstep.sim_time_us = k * 10000;
+      // The body side: sensors, park the actuators, post, wait for the answer.
+      ext->slot_time_us[0] = k * 10000;
+      al::storeIndex(block->actuators_latest, al::kActuatorsParked);
       sem_post(&tick);
       timespec deadline{};
       clock_gettime(CLOCK_REALTIME, &deadline);
       deadline.tv_sec += 5;
-      ASSERT_EQ(sem_timedwait(&shm->agent.lockstep.motion_done, &deadline), 0) << "tick " << k;
+      ASSERT_EQ(sem_timedwait(&ext->answered, &deadline), 0) << "tick " << k;
+      EXPECT_TRUE(al::validSlot(al::loadIndex(block->actuators_latest))) << "tick " << k;
     }
-    sem_post(&shm->camera.frame_ready);
+    sem_post(&ext->camera.frame_ready);
     timespec deadline{};
     clock_gettime(CLOCK_REALTIME, &deadline);
     deadline.tv_sec += 5;
-    ASSERT_EQ(sem_timedwait(&shm->camera.perception_done, &deadline), 0);
+    ASSERT_EQ(sem_timedwait(&ext->camera.perception_done, &deadline), 0);
 
     const std::set<std::string> names = threadNames();
     EXPECT_TRUE(names.count("t1p2-motion")) << "thread names not set";
     EXPECT_TRUE(names.count("t1p2-percept"));
 
-    const int slot = shm->agent.actuators_latest.load();
-    EXPECT_EQ(shm->agent.joints[slot].angles[J::LKneePitch], ap::postureAngles(ap::Posture::Crouch)[J::LKneePitch]);
+    const int slot = al::loadIndex(block->actuators_latest);
+    EXPECT_EQ(block->joints[slot].angles[J::LKneePitch], ap::postureAngles(ap::Posture::Crouch)[J::LKneePitch]);
     EXPECT_EQ(program.motionTicks(), 5);
     EXPECT_EQ(program.perceptionFrames(), 1);
 
-    shm->agent.lockstep.shutdown = 1;
-    shm->camera.shutdown = 1;
+    ext->shutdown = 1;
+    ext->camera.shutdown = 1;
     sem_post(&tick);
-    sem_post(&shm->camera.frame_ready);
+    sem_post(&ext->camera.frame_ready);
   }  // joins
   sem_destroy(&tick);
+  sem_destroy(&ext->answered);
+  sem_destroy(&ext->camera.frame_ready);
+  sem_destroy(&ext->camera.perception_done);
 }

@@ -1,31 +1,41 @@
-// The body side of libagent: round trips, skipped cycles and contact loss,
-// and the named objects' permissions and lifetime.
+// The body side of libagent: round trips, lock-step answers detected from
+// libagent's own protocol (including the Effector's slot-loop quirk),
+// skipped cycles and contact loss, and the named objects' permissions,
+// adoption, ownership and lifetime.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <semaphore.h>
 #include <signal.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <thread>
 
 #include "agent/libagent/AgentConnection.hpp"
+#include "agent/libagent/TripleBuffer.hpp"
 #include "sim/bridge/BodyHost.hpp"
 
 namespace al = agent::libagent;
 namespace ap = agent::program;
 using simswift::bridge::BodyHost;
 using simswift::bridge::BridgeError;
+using Clock = std::chrono::steady_clock;
 
 TEST(BodyHost, SensorsAndActuatorsRoundTrip) {
-  BodyHost host(0, 3, BodyHost::Mode::InProcess);
+  BodyHost host(19, 3, BodyHost::Mode::InProcess);
   al::AgentConnection conn = host.connect();
 
   // Until the program writes, the body reads the initial (stand) command.
+  EXPECT_FALSE(host.answered());
   EXPECT_EQ(host.readActuators().joints.angles[al::Joints::LKneePitch],
             ap::postureAngles(ap::Posture::Stand)[al::Joints::LKneePitch]);
 
   al::SensorValues v{};
   v.sensors[al::Sensors::InertialSensor_AccZ] = -9.81f;
+  v.sensors[al::Sensors::ChestBoard_Button] = 1.0f;
   v.joints.angles[al::Joints::HeadPitch] = 0.125f;
   v.sonar[3] = 0.42f;
   EXPECT_TRUE(host.publishSensors(v, 250000, 25));
@@ -37,6 +47,7 @@ TEST(BodyHost, SensorsAndActuatorsRoundTrip) {
   EXPECT_EQ(got.sonar[3], 0.42f);
   EXPECT_EQ(conn.simTimeUs(), 250000);
   EXPECT_EQ(conn.tick(), 25);
+  EXPECT_EQ(conn.buttons(), al::Buttons::kChest);  // pressed this cycle
 
   al::ActuatorCommand cmd;
   cmd.joints.angles[al::Joints::LShoulderPitch] = 0.75f;
@@ -44,39 +55,82 @@ TEST(BodyHost, SensorsAndActuatorsRoundTrip) {
   cmd.sonar = 68.0f;
   cmd.stiffen = true;
   cmd.say = "ready";
-  cmd.leds.chest[1] = 1.0f;
+  cmd.leds.chest.red = true;
+  cmd.leds.right_ear = 0x155;
   conn.writeActuators(cmd);
-  ASSERT_TRUE(host.waitMotionDone(1.0));
+  ASSERT_TRUE(host.waitAnswer(1.0));
   const al::ActuatorCommand back = host.readActuators();
   EXPECT_EQ(back.joints.angles[al::Joints::LShoulderPitch], 0.75f);
   EXPECT_EQ(back.joints.stiffnesses[al::Joints::LShoulderPitch], 0.5f);
   EXPECT_EQ(back.sonar, 68.0f);
   EXPECT_TRUE(back.stiffen);
   EXPECT_EQ(back.say, "ready");
-  EXPECT_EQ(back.leds.chest[1], 1.0f);
+  EXPECT_TRUE(back.leds.chest.red);
+  EXPECT_EQ(back.leds.right_ear, 0x155);
+  // Consumed: actuators_latest is parked until the next answer.
+  EXPECT_EQ(al::loadIndex(host.block()->actuators_latest), al::kActuatorsParked);
+  EXPECT_FALSE(host.answered());
   EXPECT_EQ(host.skippedCycles(), 0);
+
+  // Held, not pressed again: no press bit in the next cycle.
+  EXPECT_TRUE(host.publishSensors(v, 260000, 26));
+  ASSERT_TRUE(conn.waitTick());
+  conn.readSensors();
+  EXPECT_EQ(conn.buttons(), 0);
 }
 
-TEST(BodyHost, WaitMotionDoneTimesOut) {
-  BodyHost host(0, 2, BodyHost::Mode::InProcess);
-  const auto t0 = std::chrono::steady_clock::now();
-  EXPECT_FALSE(host.waitMotionDone(0.05));
-  const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+TEST(BodyHost, WaitAnswerTimesOut) {
+  BodyHost host(19, 2, BodyHost::Mode::InProcess);
+  const auto t0 = Clock::now();
+  EXPECT_FALSE(host.waitAnswer(0.05));
+  const double waited = std::chrono::duration<double>(Clock::now() - t0).count();
   EXPECT_GE(waited, 0.045);
   EXPECT_LT(waited, 2.0);
 }
 
-// A program that does not wait on the semaphore: the body posts once, then
-// counts every cycle as skipped; after 50 in a row it sits the robot down,
-// and recovers once the program takes a tick again.
-TEST(BodyHost, CountsSkippedCyclesAndSitsDownWhenContactIsLost) {
-  BodyHost host(1, 1, BodyHost::Mode::InProcess);
+// rUNSWift's Effector picks its slot with
+//   for (i = 0; i != actuators_latest && i != actuators_read; ++i);
+// which, with actuators_latest parked, stops on the read slot: the index
+// then comes back with the value it had before parking. The answer must
+// still be seen, every tick, by a program that posts nothing.
+TEST(BodyHost, LockStepSeesAnswersFromTheEffectorSlotLoopQuirk) {
+  BodyHost host(19, 4, BodyHost::Mode::InProcess);
+  al::AgentData& b = *host.block();
+  sem_t* tick = host.tickSemaphore();
+  al::SensorValues v{};
+  for (int k = 1; k <= 5; ++k) {
+    ASSERT_TRUE(host.publishSensors(v, k * 10000, k));
+    std::thread client([&] {
+      sem_wait(tick);
+      al::storeIndex(b.sensors_read, al::loadIndex(b.sensors_latest));
+      int i = 0;
+      for (; i != b.actuators_latest && i != b.actuators_read; ++i) {
+      }
+      b.joints[i].angles[al::Joints::HeadYaw] = 0.1f * k;
+      al::storeIndex(b.actuators_latest, static_cast<uint8_t>(i));
+    });
+    ASSERT_TRUE(host.waitAnswer(2.0)) << "tick " << k;
+    client.join();
+    const int read_before = al::loadIndex(b.actuators_read);
+    EXPECT_EQ(host.readActuators().joints.angles[al::Joints::HeadYaw], 0.1f * k) << "tick " << k;
+    EXPECT_EQ(al::loadIndex(b.actuators_read), read_before) << "the loop landed on the read slot";
+    EXPECT_FALSE(host.answered());
+  }
+  EXPECT_EQ(host.commandsRead(), 5);
+}
+
+// Free-running: a program that does not wait on the semaphore: the body
+// posts once, then counts every cycle as skipped; after 50 in a row it sits
+// the robot down, and recovers once the program takes a tick again.
+TEST(BodyHost, FreeRunningCountsSkippedCyclesAndSitsDownWhenContactIsLost) {
+  BodyHost host(5, 1, BodyHost::Mode::InProcess);
+  host.setSync(al::SyncMode::FreeRunning);
   al::AgentConnection conn = host.connect();
   al::SensorValues v{};
   EXPECT_TRUE(host.publishSensors(v, 10000, 1));
   for (int k = 2; k <= 50; ++k) EXPECT_FALSE(host.publishSensors(v, k * 10000, k));
   EXPECT_EQ(host.skippedCycles(), 49);
-  EXPECT_EQ(host.block()->lockstep.skipped.load(), 49);
+  EXPECT_EQ(host.extension()->skipped.load(), 49);
   EXPECT_FALSE(host.contactLost());
   EXPECT_FALSE(host.publishSensors(v, 510000, 51));
   EXPECT_TRUE(host.contactLost());  // 50 consecutive skipped cycles
@@ -94,6 +148,13 @@ TEST(BodyHost, CountsSkippedCyclesAndSitsDownWhenContactIsLost) {
   EXPECT_TRUE(host.publishSensors(v, 520000, 52));
   EXPECT_FALSE(host.contactLost());
   EXPECT_EQ(host.consecutiveSkipped(), 0);
+  // Free-running: a command is read without being consumed (not parked).
+  conn.readSensors();
+  al::JointValues j{};
+  j.angles[al::Joints::HeadYaw] = 0.4f;
+  conn.writeActuators(j);
+  EXPECT_EQ(host.readActuators().joints.angles[al::Joints::HeadYaw], 0.4f);
+  EXPECT_TRUE(host.answered());
 }
 
 namespace {
@@ -103,34 +164,47 @@ bool exists(const std::string& path, mode_t* mode = nullptr) {
   if (mode) *mode = st.st_mode & 0777;
   return true;
 }
+std::string shmFile(const std::string& name) { return "/dev/shm" + name; }
+std::string semFile(const std::string& name) { return "/dev/shm/sem." + name.substr(1); }
 }  // namespace
 
-TEST(BodyHost, NamedObjectsAre0600AndRemovedOnDestruction) {
-  // Team 1 player 5: suffix 11, used by no other test.
-  const std::string shm_file = "/dev/shm/libagent-memory-11";
-  const std::string sem_file = "/dev/shm/sem.libagent-semaphore-11";
+TEST(BodyHost, NamedObjectsAre0600AndRemovedOnDestructionAndASecondSimulatorNamesTheFirst) {
+  // Team 91 player 5 (N = 1006): used by no other test.
+  const al::RobotNames n = al::simulationNames(91, 5);
+  ASSERT_EQ(n.memory, "/libagent-memory1006");
   {
-    BodyHost host(1, 5, BodyHost::Mode::Named);
-    EXPECT_EQ(host.memoryName(), "/libagent-memory-11");
+    simswift::bridge::BodyHostOptions o;
+    o.images = true;
+    BodyHost host(91, 5, BodyHost::Mode::Named, ap::postureCommand(ap::Posture::Stand), o);
+    EXPECT_EQ(host.memoryName(), n.memory);
     mode_t mode = 0;
-    ASSERT_TRUE(exists(shm_file, &mode));
-    EXPECT_EQ(mode, 0600u);
-    ASSERT_TRUE(exists(sem_file, &mode));
-    EXPECT_EQ(mode & 0077u, 0u);  // no access for group/others (umask may only remove bits)
-
-    // A second simulator for the same robot is refused with a clear message.
-    try {
-      BodyHost again(1, 5, BodyHost::Mode::Named);
-      FAIL() << "second BodyHost for t1p5 was created";
-    } catch (const BridgeError& e) {
-      EXPECT_NE(std::string(e.what()).find("already exists"), std::string::npos) << e.what();
+    for (const std::string& f : {shmFile(n.memory), shmFile(n.extension), shmFile(n.images)}) {
+      ASSERT_TRUE(exists(f, &mode)) << f;
+      EXPECT_EQ(mode, 0600u) << f;
     }
-    ASSERT_TRUE(exists(shm_file)) << "the failed second host removed the first one's object";
+    ASSERT_TRUE(exists(semFile(n.semaphore), &mode));
+    EXPECT_EQ(mode & 0077u, 0u);  // no access for group/others (umask may only remove bits)
+    struct stat st {};
+    ASSERT_EQ(stat(shmFile(n.memory).c_str(), &st), 0);
+    EXPECT_EQ(st.st_size, 3284);  // exactly AgentData: nothing appended
+    ASSERT_NE(host.images(), nullptr);
+
+    // A second simulator for the same robot is refused, naming the live one.
+    try {
+      BodyHost again(91, 5, BodyHost::Mode::Named);
+      FAIL() << "second BodyHost for t91p5 was created";
+    } catch (const BridgeError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("belongs to a running simswift (pid " + std::to_string(getpid()) + ")"), std::string::npos)
+          << m;
+    }
+    ASSERT_TRUE(exists(shmFile(n.memory))) << "the failed second host removed the first one's object";
 
     // Attach by name (as another process would) and round-trip once.
-    al::AgentConnection conn = al::AgentConnection::attachByName(1, 5);
+    al::AgentConnection conn = al::AgentConnection::attachByName(91, 5);
     conn.announce(false);
-    EXPECT_TRUE(host.attached());
+    EXPECT_TRUE(host.clientAnnounced());
+    EXPECT_NE(conn.images(), nullptr);
     al::SensorValues v{};
     v.sensors[0] = 1.5f;
     host.publishSensors(v, 10000, 1);
@@ -139,26 +213,59 @@ TEST(BodyHost, NamedObjectsAre0600AndRemovedOnDestruction) {
     al::JointValues j{};
     j.angles[al::Joints::HeadYaw] = -0.3f;
     conn.writeActuators(j);
-    ASSERT_TRUE(host.waitMotionDone(1.0));
+    ASSERT_TRUE(host.waitAnswer(1.0));
     EXPECT_EQ(host.readActuators().joints.angles[al::Joints::HeadYaw], -0.3f);
   }
-  EXPECT_FALSE(exists(shm_file));
-  EXPECT_FALSE(exists(sem_file));
+  for (const std::string& f : {shmFile(n.memory), shmFile(n.extension), shmFile(n.images), semFile(n.semaphore)})
+    EXPECT_FALSE(exists(f)) << f;
+}
+
+// A libagent program that starts first creates the objects (O_CREAT, empty)
+// and maps sizeof(AgentData) bytes; the simulator adopts and sizes them, so
+// the program's mapping and semaphore become the live ones.
+TEST(BodyHost, AdoptsObjectsAProgramCreatedFirst) {
+  const al::RobotNames n = al::simulationNames(92, 1);
+  const int fd = shm_open(n.memory.c_str(), O_CREAT | O_RDWR, 0600);
+  ASSERT_GE(fd, 0);
+  void* p = mmap(nullptr, sizeof(al::AgentData), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  close(fd);
+  ASSERT_NE(p, MAP_FAILED);
+  sem_t* sem = sem_open(n.semaphore.c_str(), O_CREAT, 0600, 0);
+  ASSERT_NE(sem, SEM_FAILED);
+  sem_post(sem);  // a stray post must not become a tick
+  auto* block = static_cast<al::AgentData*>(p);
+  {
+    BodyHost host(92, 1, BodyHost::Mode::Named);
+    // The program's mapping is now backed (reading it before would SIGBUS).
+    EXPECT_EQ(al::loadIndex(block->actuators_latest), al::kActuatorsParked);
+    int value = -1;
+    sem_getvalue(sem, &value);
+    EXPECT_EQ(value, 0);
+    al::SensorValues v{};
+    v.sensors[al::Sensors::InertialSensor_AccZ] = -9.5f;
+    ASSERT_TRUE(host.publishSensors(v, 10000, 1));
+    ASSERT_EQ(sem_trywait(sem), 0);  // the program's own semaphore got the tick
+    const int slot = al::loadIndex(block->sensors_latest);
+    EXPECT_EQ(block->sensors[slot].sensors[al::Sensors::InertialSensor_AccZ], -9.5f);
+  }
+  munmap(p, sizeof(al::AgentData));
+  sem_close(sem);
 }
 
 TEST(BodyHost, RejectsRobotsOutsideTheTeamsAndPlayers) {
-  EXPECT_THROW(BodyHost(2, 1, BodyHost::Mode::InProcess), BridgeError);
-  EXPECT_THROW(BodyHost(0, 0, BodyHost::Mode::InProcess), BridgeError);
-  EXPECT_THROW(BodyHost(0, 6, BodyHost::Mode::InProcess), BridgeError);
+  EXPECT_THROW(BodyHost(100, 1, BodyHost::Mode::InProcess), BridgeError);
+  EXPECT_THROW(BodyHost(-1, 1, BodyHost::Mode::InProcess), BridgeError);
+  EXPECT_THROW(BodyHost(19, 0, BodyHost::Mode::InProcess), BridgeError);
+  EXPECT_THROW(BodyHost(19, 6, BodyHost::Mode::InProcess), BridgeError);
 }
 
 // A simulator killed by SIGTERM leaves nothing behind in /dev/shm.
 TEST(BodyHost, NamedObjectsAreRemovedOnSigterm) {
+  const al::RobotNames n = al::simulationNames(93, 2);
   const pid_t child = fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
-    // Team 1 player 3: suffix 9, used by no other test.
-    BodyHost host(1, 3, BodyHost::Mode::Named);
+    BodyHost host(93, 2, BodyHost::Mode::Named);
     raise(SIGTERM);
     _exit(0);  // not reached: SIGTERM's default action ends the process
   }
@@ -166,6 +273,45 @@ TEST(BodyHost, NamedObjectsAreRemovedOnSigterm) {
   ASSERT_EQ(waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFSIGNALED(status));
   EXPECT_EQ(WTERMSIG(status), SIGTERM);
-  EXPECT_FALSE(exists("/dev/shm/libagent-memory-9"));
-  EXPECT_FALSE(exists("/dev/shm/sem.libagent-semaphore-9"));
+  for (const std::string& f : {shmFile(n.memory), shmFile(n.extension), semFile(n.semaphore)})
+    EXPECT_FALSE(exists(f)) << f;
+}
+
+// A simulator killed by SIGKILL cleans nothing: its attached program notices
+// within 2 s and stops waiting, and the next simulator for the robot takes
+// the stale objects over.
+TEST(BodyHost, AfterSigkillTheProgramStopsAndTheNextRunTakesOver) {
+  const al::RobotNames n = al::simulationNames(93, 3);
+  int ready[2];
+  ASSERT_EQ(pipe(ready), 0);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    BodyHost host(93, 3, BodyHost::Mode::Named);
+    const char c = 1;
+    if (write(ready[1], &c, 1) != 1) _exit(1);
+    for (;;) pause();
+  }
+  char c = 0;
+  ASSERT_EQ(read(ready[0], &c, 1), 1);
+  close(ready[0]);
+  close(ready[1]);
+  {
+    al::AgentConnection conn = al::AgentConnection::attachByName(93, 3);
+    kill(child, SIGKILL);
+    waitpid(child, nullptr, 0);
+    const auto t0 = Clock::now();
+    EXPECT_FALSE(conn.waitTick());
+    const double waited = std::chrono::duration<double>(Clock::now() - t0).count();
+    EXPECT_LT(waited, 2.0);
+    EXPECT_FALSE(conn.simulatorAlive());
+  }
+  ASSERT_TRUE(exists(shmFile(n.extension))) << "SIGKILL cleans nothing";
+  {
+    BodyHost next(93, 3, BodyHost::Mode::Named);  // stale objects: taken over, no error
+    EXPECT_EQ(next.extension()->simulator_pid.load(), getpid());
+    al::AgentConnection conn = al::AgentConnection::attachByName(93, 3);
+    EXPECT_TRUE(conn.simulatorAlive());
+  }
+  EXPECT_FALSE(exists(shmFile(n.extension)));
 }

@@ -61,10 +61,10 @@ TEST(Scenario, BadTeamNamesTheLineAndKey) {
       "duration: 2\n"
       "robots:\n"
       "  - {team: 0, player: 1}\n"
-      "  - team: 3\n"
+      "  - team: 300\n"
       "    player: 2\n");
   EXPECT_NE(m.find("scenario.yaml:4: robots[1].team:"), std::string::npos) << m;
-  EXPECT_NE(m.find("got 3"), std::string::npos) << m;
+  EXPECT_NE(m.find("got 300"), std::string::npos) << m;
 }
 
 TEST(Scenario, UnknownKeysAreErrors) {

@@ -281,11 +281,17 @@ TEST(SensorsPhysics, ButtonsAndSonarModeAreEchoed) {
   EXPECT_EQ(s[S::Head_Touch_Front], 0.0f);
   EXPECT_EQ(s[S::Head_Touch_Middle], 0.0f);
   EXPECT_EQ(s[S::US], 68.0f);
-  // The libagent slot receives every value; stiffnesses are left alone.
+  // The libagent slot receives every value, the FSRs in the NAO's kg (N / g);
+  // stiffnesses are left alone.
   agent::libagent::SensorValues slot{};
   slot.joints.stiffnesses[3] = 0.7f;
   copyToAgent(suite.reading(), slot);
-  for (int k = 0; k < agent::libagent::kNumSensors; ++k) EXPECT_EQ(slot.sensors[k], s[k]);
+  for (int k = 0; k < agent::libagent::kNumSensors; ++k) {
+    const bool fsr = (k >= S::LFoot_FSR_FrontLeft && k <= S::LFoot_FSR_RearRight) ||
+                     (k >= S::RFoot_FSR_FrontLeft && k <= S::RFoot_FSR_RearRight);
+    if (fsr) EXPECT_FLOAT_EQ(slot.sensors[k], s[k] / 9.81f) << k;
+    else EXPECT_EQ(slot.sensors[k], s[k]) << k;
+  }
   for (int k = 0; k < agent::libagent::kNumJoints; ++k) {
     EXPECT_EQ(slot.joints.angles[k], suite.reading().joint_angles[k]);
     EXPECT_EQ(slot.joints.currents[k], suite.reading().joint_currents[k]);

@@ -28,8 +28,8 @@ agent::libagent::SensorValues standingSensors(const agent::libagent::JointValues
   agent::libagent::SensorValues s{};
   s.joints = joints;
   for (int i = 0; i < 4; ++i) {
-    s.sensors[S::LFoot_FSR_FrontLeft + i] = 6.5f;
-    s.sensors[S::RFoot_FSR_FrontLeft + i] = 6.5f;
+    s.sensors[S::LFoot_FSR_FrontLeft + i] = 0.66f;  // kg: 5.3 kg over eight sensors
+    s.sensors[S::RFoot_FSR_FrontLeft + i] = 0.66f;
   }
   return s;
 }
@@ -157,8 +157,8 @@ TEST(MotionModule, WalksPublishesOdometryAndStaysWithinLimits) {
     const bool landed = w.stepping() && w.stepTime() > 0.8 * w.stepPeriod();
     const bool on_left = w.leftIsSwing() ? landed : !landed;
     for (int i = 0; i < 4; ++i) {
-      s.sensors[S::LFoot_FSR_FrontLeft + i] = on_left ? 10.0f : 0.5f;
-      s.sensors[S::RFoot_FSR_FrontLeft + i] = on_left ? 0.5f : 10.0f;
+      s.sensors[S::LFoot_FSR_FrontLeft + i] = on_left ? 1.0f : 0.05f;  // kg
+      s.sensors[S::RFoot_FSR_FrontLeft + i] = on_left ? 0.05f : 1.0f;
     }
   }
   const bb::MotionState st = board.motion.read();

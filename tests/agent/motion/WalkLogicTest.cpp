@@ -18,12 +18,14 @@ double ellipsoid(const WalkSpeed& w, const WalkConfig& c) {
          std::pow(w.turn / c.max_turn, 2);
 }
 
-// Sensors with `left_n` / `right_n` newtons spread evenly over each foot's FSRs.
+// Sensors with `left_n` / `right_n` newtons spread evenly over each foot's
+// FSRs, in the NAO's unit (kg).
 agent::libagent::SensorValues withWeight(double left_n, double right_n) {
   agent::libagent::SensorValues s{};
+  const double g = agent::libagent::kFsrNewtonsPerKilogram;
   for (int i = 0; i < 4; ++i) {
-    s.sensors[S::LFoot_FSR_FrontLeft + i] = static_cast<float>(left_n / 4);
-    s.sensors[S::RFoot_FSR_FrontLeft + i] = static_cast<float>(right_n / 4);
+    s.sensors[S::LFoot_FSR_FrontLeft + i] = static_cast<float>(left_n / g / 4);
+    s.sensors[S::RFoot_FSR_FrontLeft + i] = static_cast<float>(right_n / g / 4);
   }
   return s;
 }

@@ -1,0 +1,154 @@
+// Every weight, rate and threshold of the behaviour in one typed struct,
+// with defaults and units. A scenario may override any field (the YAML
+// loader lives sim-side); the robot code only ever sees this struct.
+// Units: mm, mm/s, rad, rad/s, s; probabilities are unitless.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "agent/behaviour/Geometry.hpp"
+
+namespace agent::behaviour {
+
+// Field geometry the behaviour plans with (SPL 2017, inside the lines).
+struct FieldGeometry {
+  double length = 9000.0;        // mm, goal line to goal line
+  double width = 6000.0;         // mm, touch line to touch line
+  double goal_post_y = 800.0;    // mm, post centres at x = +-length/2, y = +-goal_post_y
+  double goal_post_radius = 50.0;  // mm
+};
+
+// PositionalDistribution's grid (thesis 4.2.1).
+struct GridConfig {
+  int columns = 3;  // segments along x (3 x 3 gives table 4.1's centres)
+  int rows = 3;     // segments along y
+  // If true, columns/rows are ignored and the smallest grid is chosen whose
+  // segments' centre-to-corner distance is at most
+  // reliable_detection_distance - detection_margin (thesis 4.2.1).
+  bool derive_from_detection = false;
+  double reliable_detection_distance = 2500.0;  // mm (thesis chapter 5)
+  double detection_margin = 200.0;              // mm kept back for estimation error
+};
+
+// CompositeDistributionGenerator's components (thesis 4.2.1.1). Rates are
+// per second so the result does not depend on the behaviour's tick rate.
+struct DistributionConfig {
+  // BallPosComponent: probability mass added to the ball's segment per second
+  // of sighting (before normalisation).
+  double ball_pos_rate = 5.0;  // 1/s
+  // EntropyComponent: each segment moves toward 1/J by the fraction
+  // 1 - exp(-entropy_rate * dt) per update.
+  double entropy_rate = 0.01;  // 1/s (time constant 100 s)
+  // RobotPosComponent: the robot's own segment is multiplied by
+  // exp(-robot_pos_rate * dt) per update while the ball is not seen.
+  double robot_pos_rate = 0.3;  // 1/s
+  // FlipFilterComponent: reset on the flip signal, or when the pose
+  // confidence falls below this (0 disables the confidence test).
+  double flip_min_confidence = 0.0;  // 0..1
+};
+
+// Strategy (thesis 4.2.2).
+struct StrategyConfig {
+  bool distributed = true;  // DistributedUtilityCalculator over SimpleUtilityCalculator
+  // Time(pos, centre) never goes below this, so a robot standing on a
+  // segment's centre does not get an infinite utility.
+  double min_travel_time = 1.0;  // s
+  // Teammates heard longer ago than this are ignored (their distribution
+  // and their chosen segment).
+  double teammate_timeout = 2.0;  // s
+  // Within this distance of the centre the turn to face it is not counted.
+  double face_distance = 300.0;  // mm
+};
+
+// The FindBall behaviours (2017 thesis 4.2.3 and 2016 thesis 2.3.2).
+struct SearchBehaviourConfig {
+  double arrive_distance = 300.0;  // mm: at the search point
+  bool scan_at_point = true;       // head scan on arrival
+  bool spin_at_point = true;       // then one full turn
+  bool scan_while_walking = true;  // head sweeps while walking between points
+  // 2017: while walking, switch to a new suggestion only if its utility is
+  // this many times the current target's (1 = always follow, large = latch).
+  double switch_hysteresis = 1.5;
+  // 2016 FindBall: table 2.1's points (field frame, mm).
+  std::vector<Point2> points_2016{{-3000, 0},  {-2000, 2000}, {0, 1000},   {2000, 2000},
+                                  {3000, 0},   {2000, -2000}, {0, -1000},  {-2000, -2000}};
+};
+
+// Skills.
+struct SkillConfig {
+  // WalkTo
+  double walk_gain = 1.5;             // 1/s: speed = gain * distance near the target
+  double turn_gain = 1.5;             // 1/s: turn rate = gain * heading error
+  double face_target_distance = 500;  // mm: beyond it, face the direction of travel
+  double final_angle_tolerance = 0.15;  // rad
+  double translate_max_heading_error = 1.0;  // rad: beyond it, turn on the spot first
+  double robot_radius = 150.0;        // mm, for avoidance
+  double avoid_distance = 600.0;      // mm: obstacles further (surface to surface) are ignored
+  double avoid_gain = 60000.0;        // mm^2/s: repulsion = gain * (1/d - 1/avoid_distance)
+  double obstacle_timeout = 2.0;      // s: teammates heard longer ago are not avoided
+  // HeadScan
+  double scan_yaw = 1.0;           // rad, sweep between -scan_yaw and +scan_yaw
+  double scan_speed = 1.0;         // rad/s (HeadYaw can do 8.27 rad/s; slower keeps images sharp)
+  double scan_pitch = 0.05;        // rad, + = down
+  double head_yaw_limit = 2.0;     // rad, kept inside HeadYaw's +-2.0857
+  double head_speed_limit = 8.0;   // rad/s, inside HeadYaw's 8.27 rad/s
+  double camera_hfov = 1.0629;     // rad (60.9 deg)
+  double scan_lead = 1.25;         // head speed command / sweep speed (keeps up with the target)
+  double head_pitch_speed = 1.0;   // rad/s while scanning
+  // Looking at a ball: pitch = atan(head_height / distance) - look_pitch_offset,
+  // clamped to 0 .. look_max_pitch (the top camera looks 1.2 deg down, the
+  // bottom one 39.7 deg, so the ball stays in one of them).
+  double head_height = 450.0;      // mm, camera above the ground (standing)
+  double look_pitch_offset = 0.2;  // rad
+  double look_max_pitch = 0.45;    // rad
+  double look_yaw_speed = 3.0;     // rad/s
+  double look_pitch_speed = 2.0;   // rad/s
+  // Spin
+  double spin_speed = 0.8;         // rad/s (clamped to the walk's max_turn)
+  // ApproachBall / Kick
+  double approach_distance = 180.0;   // mm, robot centre to ball centre when lined up
+  double approach_tolerance = 60.0;   // mm
+  double kick_angle_tolerance = 0.2;  // rad
+  double kick_duration = 2.0;         // s the kick request is held
+  double kick_power = 1.0;            // 0..1
+  double ball_lost_time = 3.0;        // s without a sighting before the ball counts as lost
+  double team_ball_max_age = 2.0;     // s: a teammate's sighting older than this is ignored
+  Point2 kick_target{4500, 0};        // mm, opponent goal centre
+};
+
+enum class BehaviourKind : int32_t { FINDBALL_2016 = 0, FINDBALL_2017, STRIKER };
+
+// The scenario's spelling: "findball2016", "findball2017", "striker".
+inline const char* behaviourKindName(BehaviourKind k) {
+  switch (k) {
+    case BehaviourKind::FINDBALL_2016: return "findball2016";
+    case BehaviourKind::FINDBALL_2017: return "findball2017";
+    case BehaviourKind::STRIKER: return "striker";
+  }
+  return "?";
+}
+// False (kind untouched) for an unknown name, so a loader can report it.
+inline bool parseBehaviourKind(const std::string& name, BehaviourKind* kind) {
+  for (BehaviourKind k : {BehaviourKind::FINDBALL_2016, BehaviourKind::FINDBALL_2017,
+                          BehaviourKind::STRIKER})
+    if (name == behaviourKindName(k)) {
+      *kind = k;
+      return true;
+    }
+  return false;
+}
+
+struct BehaviourConfig {
+  BehaviourKind kind = BehaviourKind::FINDBALL_2017;
+  FieldGeometry field;
+  GridConfig grid;
+  DistributionConfig distribution;
+  StrategyConfig strategy;
+  SearchBehaviourConfig search;
+  SkillConfig skills;
+};
+
+}  // namespace agent::behaviour

@@ -1,0 +1,98 @@
+#include "agent/behaviour/WalkTo.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace agent::behaviour {
+
+using blackboard::ActionType;
+using blackboard::BodyCommand;
+
+BodyCommand WalkTo::clampToWalk(BodyCommand b, const WalkLimits& w) {
+  const double s = std::hypot(b.forward / w.max_forward, b.left / w.max_left);
+  if (s > 1) {
+    b.forward = static_cast<float>(b.forward / s);
+    b.left = static_cast<float>(b.left / s);
+  }
+  b.turn = static_cast<float>(std::clamp<double>(b.turn, -w.max_turn, w.max_turn));
+  return b;
+}
+
+Point2 WalkTo::repulsion(const BehaviourInputs& in, Point2 target) const {
+  struct Obstacle {
+    Point2 at;
+    double radius;
+  };
+  std::vector<Obstacle> obs;
+  for (const Teammate& t : in.teammates)
+    if (!t.penalised && t.time_since_heard <= s_.obstacle_timeout) obs.push_back({position(t.pose), s_.robot_radius});
+  for (double sx : {-1.0, 1.0})
+    for (double sy : {-1.0, 1.0})
+      obs.push_back({{sx * f_.length / 2, sy * f_.goal_post_y}, f_.goal_post_radius});
+
+  const Point2 me = position(in.self.pose);
+  const double tx = target.x - me.x, ty = target.y - me.y;
+  const double tn = std::max(1e-6, std::hypot(tx, ty));
+  Point2 rep{0, 0};
+  for (const Obstacle& o : obs) {
+    const double dx = me.x - o.at.x, dy = me.y - o.at.y;
+    const double centre = std::hypot(dx, dy);
+    if (centre < 1e-6) continue;
+    // An obstacle standing on the target and further away than it is not
+    // pushed against: the robot may stop next to it.
+    if (distance(target, o.at) < o.radius + s_.robot_radius && centre > tn) continue;
+    const double gap = std::max(50.0, centre - o.radius - s_.robot_radius);  // mm, surface to surface
+    if (gap >= s_.avoid_distance) continue;
+    const double mag = s_.avoid_gain * (1.0 / gap - 1.0 / s_.avoid_distance);  // mm/s
+    const double ux = dx / centre, uy = dy / centre;
+    rep.x += mag * ux;
+    rep.y += mag * uy;
+    // A sideways push as well, on the side of the obstacle away from the
+    // line to the target, so a head-on obstacle is walked round instead of
+    // stalling in the field's local minimum.
+    const double side = (tx * uy - ty * ux) >= 0 ? 1.0 : -1.0;
+    rep.x += side * mag * (-ty / tn);
+    rep.y += side * mag * (tx / tn);
+  }
+  return rep;
+}
+
+WalkToResult WalkTo::tick(const BehaviourInputs& in, Point2 target, std::optional<double> heading,
+                          double arrive_distance) const {
+  const Pose2& me = in.self.pose;
+  const double dist = distance(position(me), target);
+  const double final_err = heading ? wrapAngle(*heading - me.theta) : 0.0;
+  WalkToResult r;
+  if (dist <= arrive_distance && std::abs(final_err) <= s_.final_angle_tolerance) {
+    r.arrived = true;
+    r.body.type = ActionType::STAND;
+    return r;
+  }
+  // Desired field-frame velocity: attraction (capped at max_forward) plus repulsion.
+  const double speed = std::min(in.walk.max_forward, s_.walk_gain * dist);
+  Point2 v{0, 0};
+  if (dist > 1e-6) v = {(target.x - me.x) / dist * speed, (target.y - me.y) / dist * speed};
+  const Point2 rep = repulsion(in, target);
+  v.x += rep.x;
+  v.y += rep.y;
+
+  double want_heading = heading ? *heading : me.theta;
+  bool travelling = dist > s_.face_target_distance;
+  if (travelling && std::hypot(v.x, v.y) > 1e-6) want_heading = std::atan2(v.y, v.x);
+  const double err = wrapAngle(want_heading - me.theta);
+
+  const double c = std::cos(me.theta), s = std::sin(me.theta);
+  double fwd = c * v.x + s * v.y, left = -s * v.x + c * v.y;
+  if (travelling && std::abs(err) > s_.translate_max_heading_error) fwd = left = 0;  // turn first
+  if (dist <= arrive_distance) fwd = left = 0;  // there; only the heading is left
+
+  r.body.type = ActionType::WALK;
+  r.body.forward = static_cast<float>(fwd);
+  r.body.left = static_cast<float>(left);
+  r.body.turn = static_cast<float>(s_.turn_gain * err);
+  r.body = clampToWalk(r.body, in.walk);
+  return r;
+}
+
+}  // namespace agent::behaviour

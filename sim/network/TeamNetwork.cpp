@@ -1,0 +1,86 @@
+#include "sim/network/TeamNetwork.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace simswift::network {
+
+namespace al = agent::libagent;
+
+TeamNetwork::TeamNetwork(const TeamNetworkConfig& config, uint64_t seed)
+    : config_(config),
+      delay_us_(static_cast<int64_t>(std::llround(config.delay_ms * 1000.0))),
+      // Its own stream: the network's draws never shift another seeded source.
+      rng_(seed ^ 0x7465616d6e6574ULL) {
+  if (!(config.loss >= 0 && config.loss <= 1)) throw std::invalid_argument("team network: loss must be 0..1");
+  if (!(config.delay_ms >= 0)) throw std::invalid_argument("team network: delay_ms must be >= 0");
+  if (config.budget < 0) throw std::invalid_argument("team network: budget must be >= 0");
+}
+
+int TeamNetwork::addEndpoint(int team, int player) {
+  if (team < 0 || team > 1) throw std::invalid_argument("team network: team " + std::to_string(team));
+  endpoints_.push_back({team, player});
+  return static_cast<int>(endpoints_.size()) - 1;
+}
+
+double TeamNetwork::uniform() { return static_cast<double>(rng_() >> 11) * (1.0 / 9007199254740992.0); }
+
+int64_t TeamNetwork::teamBudgetLeft(int team) const {
+  if (config_.budget == 0) return -1;
+  return std::max<int64_t>(0, config_.budget - stats_.team_sent[team]);
+}
+
+void TeamNetwork::send(int from, const uint8_t* bytes, size_t size, int64_t t_us) {
+  const Endpoint& src = endpoints_.at(from);
+  if (config_.budget > 0 && stats_.team_sent[src.team] >= config_.budget) {
+    ++stats_.over_budget;
+    return;
+  }
+  ++stats_.sent;
+  ++stats_.team_sent[src.team];
+  for (int to = 0; to < numEndpoints(); ++to) {
+    if (to == from || endpoints_[to].team != src.team) continue;
+    // Always draw, even with loss 0 or 1, so changing the rate does not
+    // shift which later draws belong to which pair.
+    const bool lost = uniform() < config_.loss;
+    if (lost) {
+      ++stats_.lost;
+      continue;
+    }
+    Delivery d;
+    d.to = to;
+    d.from = from;
+    d.sent_us = t_us;
+    d.arrival_us = t_us + delay_us_;
+    d.bytes.assign(bytes, bytes + size);
+    pending_.emplace(std::make_pair(d.arrival_us, sequence_++), std::move(d));
+  }
+}
+
+std::vector<Delivery> TeamNetwork::deliver(int64_t t_us) {
+  std::vector<Delivery> out;
+  auto it = pending_.begin();
+  while (it != pending_.end() && it->first.first <= t_us) {
+    out.push_back(std::move(it->second));
+    it = pending_.erase(it);
+  }
+  stats_.delivered += static_cast<int64_t>(out.size());
+  return out;
+}
+
+void TeamNetwork::exchange(int64_t t_us, const std::vector<al::TeamLink*>& links) {
+  al::TeamPacket p;
+  for (int i = 0; i < numEndpoints() && i < static_cast<int>(links.size()); ++i) {
+    if (!links[i]) continue;
+    while (links[i]->outbox.pop(p)) send(i, p.bytes, p.size, t_us);
+  }
+  for (const Delivery& d : deliver(t_us)) {
+    al::TeamLink* link = d.to < static_cast<int>(links.size()) ? links[d.to] : nullptr;
+    if (!link || !link->inbox.push(d.bytes.data(), d.bytes.size(), t_us, endpoints_[d.from].player))
+      ++stats_.inbox_overflow;
+  }
+}
+
+}  // namespace simswift::network

@@ -1,0 +1,166 @@
+// LOGIC TEST, not physics: the FindBall behaviours in closed loop with the
+// kinematic stand-in of KinematicWorld.hpp (perfect walk integration, ball
+// seen within 2500 mm and the camera's 60.9 deg field of view, no noise).
+// The physics test (noise on, in the simulator) needs the perception
+// integration and comes after it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <random>
+
+#include "KinematicWorld.hpp"
+
+using namespace agent::behaviour;
+
+namespace {
+
+// Table 5.1's robot starts (on the touch line, facing into the field).
+const Pose2 kRobot2{-3250, 3000, -kPi / 2};
+const Pose2 kRobot3{-2000, -3000, kPi / 2};
+const Pose2 kRobot4{-1750, 3000, -kPi / 2};
+// Table 5.2's ball positions 1..5.
+const Point2 kBalls[5] = {{2250, 0}, {4000, -2500}, {4000, 2500}, {4500, 3000}, {2250, 3000}};
+
+BehaviourConfig config(BehaviourKind k) {
+  BehaviourConfig c;
+  c.kind = k;
+  return c;
+}
+
+// Start poses jittered by the seed (0 = table 5.1 exactly): +-150 mm, +-0.3 rad,
+// kept on the field. The kinematic world has no noise of its own.
+Pose2 jitter(Pose2 p, unsigned seed) {
+  if (seed == 0) return p;
+  std::mt19937 rng(seed * 7919u + static_cast<unsigned>(p.x));
+  std::uniform_real_distribution<double> mm(-150, 150), rad(-0.3, 0.3);
+  p.x += mm(rng);
+  p.y = std::clamp(p.y + mm(rng), -3000.0, 3000.0);
+  p.theta += rad(rng);
+  return p;
+}
+
+double findTime(BehaviourKind kind, int robots, Point2 ball, double limit = 180.0,
+                unsigned seed = 0) {
+  kin::World w;
+  w.ball = ball;
+  w.add(2, jitter(kRobot2, seed), config(kind));
+  if (robots == 3) {
+    w.add(3, jitter(kRobot3, seed), config(kind));
+    w.add(4, jitter(kRobot4, seed), config(kind));
+  }
+  return w.runUntilFound(limit);
+}
+
+}  // namespace
+
+TEST(FindBallLogic, OneRobot2017FindsTable52Balls1235Within180s) {
+  // Table 5.1's exact start (seed 0) and five jittered ones.
+  for (int i : {1, 2, 3, 5})
+    for (unsigned seed = 0; seed <= 5; ++seed) {
+      const double t = findTime(BehaviourKind::FINDBALL_2017, 1, kBalls[i - 1], 180.0, seed);
+      if (seed == 0) std::printf("2017, 1 robot, ball %d: found after %.1f s\n", i, t);
+      EXPECT_LE(t, 180.0) << "ball position " << i << ", start seed " << seed;
+    }
+}
+
+TEST(FindBallLogic, TimesTable) {
+  // Kinematic times (s) for the README: mean [min, max] over start-pose
+  // seeds 1..5; 400 = not found within 400 s.
+  for (int robots : {1, 3})
+    for (auto kind : {BehaviourKind::FINDBALL_2016, BehaviourKind::FINDBALL_2017}) {
+      std::printf("%s, %d robot(s):", kind == BehaviourKind::FINDBALL_2016 ? "2016" : "2017", robots);
+      for (const Point2& b : kBalls) {
+        double sum = 0, lo = 1e9, hi = 0;
+        for (unsigned seed = 1; seed <= 5; ++seed) {
+          const double t = std::min(400.0, findTime(kind, robots, b, 400.0, seed));
+          sum += t;
+          lo = std::min(lo, t);
+          hi = std::max(hi, t);
+        }
+        std::printf("  %5.1f [%5.1f, %5.1f]", sum / 5, lo, hi);
+      }
+      std::printf("\n");
+    }
+}
+
+namespace {
+// Fraction of ticks (all three searching) in which the three robots' chosen
+// segments are pairwise different, over 120 s with the ball off the field.
+double distinctFraction(bool distributed, int* ticks_out) {
+  BehaviourConfig c = config(BehaviourKind::FINDBALL_2017);
+  c.strategy.distributed = distributed;
+  kin::World w;
+  w.ball = {20000, 20000};
+  w.add(2, kRobot2, c);
+  w.add(3, kRobot3, c);
+  w.add(4, kRobot4, c);
+  int ticks = 0, distinct = 0;
+  while (w.time < 120.0) {
+    w.step();
+    const int a = w.robots[0].behaviour->searchSegment();
+    const int b = w.robots[1].behaviour->searchSegment();
+    const int d = w.robots[2].behaviour->searchSegment();
+    if (a < 0 || b < 0 || d < 0) continue;
+    ++ticks;
+    if (a != b && b != d && a != d) ++distinct;
+  }
+  *ticks_out = ticks;
+  return static_cast<double>(distinct) / ticks;
+}
+}  // namespace
+
+TEST(FindBallLogic, ThreeRobotsMostlyChooseDifferentSegments) {
+  int ticks = 0, ticks_local = 0;
+  const double fraction = distinctFraction(true, &ticks);
+  const double local = distinctFraction(false, &ticks_local);
+  std::printf("three robots, 120 s: chosen segments all different in %.2f %% of %d ticks "
+              "(%.2f %% with the local SimpleUtilityCalculator only)\n",
+              100 * fraction, ticks, 100 * local);
+  EXPECT_GT(ticks, 3000);
+  EXPECT_GT(fraction, 0.5);
+  EXPECT_GT(fraction, local);  // the division by visitors is what spreads them
+}
+
+TEST(FindBallLogic, PenalisedRobotResetsItsDistribution) {
+  kin::World w;
+  w.ball = {20000, 20000};
+  w.add(2, kRobot2, config(BehaviourKind::FINDBALL_2017));
+  while (w.time < 30.0) w.step();
+  const auto& d = w.robots[0].behaviour->findBall()->local;
+  EXPECT_LT(d.probability(0), 0.05);  // segment 1 searched: unlikely now
+  w.robots[0].penalised = true;
+  w.step();
+  for (int j = 0; j < 9; ++j)
+    EXPECT_DOUBLE_EQ(w.robots[0].behaviour->findBall()->local.probability(j), 1.0 / 9);
+  EXPECT_EQ(w.robots[0].last.request.body.type, agent::blackboard::ActionType::STAND);
+  EXPECT_EQ(w.robots[0].last.payload->segment, -1);
+}
+
+TEST(FindBall2016Logic, StartsNearestTheLastBallThenVisitsInOrder) {
+  const BehaviourConfig c;
+  // Nearest to a ball last seen at (2500, 1800): point 4 (2000, 2000).
+  EXPECT_EQ(FindBall2016::startIndex(c.search.points_2016, {2500, 1800}), 3);
+  EXPECT_EQ(FindBall2016::startIndex(c.search.points_2016, {-3500, 0}), 0);
+  EXPECT_EQ(FindBall2016::startIndex(c.search.points_2016, {-100, -1200}), 6);
+  EXPECT_EQ(FindBall2016::nextIndex(7, 8), 0);
+
+  // Closed loop: the robot saw the ball at (2500, 1800) once, it was then
+  // taken away; the points visited must be 4, 5, 6, 7, 8, 1, 2, 3, 4.
+  kin::World w;
+  w.ball = {2500, 1800};
+  w.add(2, {1000, 1500, 0}, config(BehaviourKind::FINDBALL_2016));
+  w.step();
+  ASSERT_TRUE(w.robots[0].ever_seen);
+  w.ball = {20000, 20000};
+  std::vector<int> visited;
+  while (w.time < 400.0 && visited.size() < 9) {
+    w.step();
+    const Point2 p = w.robots[0].behaviour->searchPoint();
+    int idx = -1;
+    for (int k = 0; k < 8; ++k)
+      if (p.x == c.search.points_2016[k].x && p.y == c.search.points_2016[k].y) idx = k;
+    if (idx >= 0 && (visited.empty() || visited.back() != idx + 1)) visited.push_back(idx + 1);
+  }
+  EXPECT_EQ(visited, (std::vector<int>{4, 5, 6, 7, 8, 1, 2, 3, 4}));
+}

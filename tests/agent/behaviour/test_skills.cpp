@@ -1,0 +1,188 @@
+// Skills: WalkTo (limits, arrival, avoidance), HeadScan (limits, coverage),
+// Spin (one full turn), ApproachBall, Kick; the striker end to end
+// (kinematic logic test, no physics).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "KinematicWorld.hpp"
+#include "agent/behaviour/ApproachBall.hpp"
+#include "agent/behaviour/HeadScan.hpp"
+#include "agent/behaviour/Kick.hpp"
+#include "agent/behaviour/Spin.hpp"
+#include "agent/behaviour/WalkTo.hpp"
+
+using namespace agent::behaviour;
+using agent::blackboard::ActionType;
+
+namespace {
+
+bool withinLimits(const agent::blackboard::BodyCommand& b, const WalkLimits& w) {
+  const double e = std::hypot(b.forward / w.max_forward, b.left / w.max_left);
+  return e <= 1.0 + 1e-6 && std::abs(b.turn) <= w.max_turn + 1e-6;
+}
+
+// Integrates a body command exactly for dt s.
+void integrate(Pose2& p, const agent::blackboard::BodyCommand& b, double dt) {
+  if (b.type != ActionType::WALK) return;
+  const double c = std::cos(p.theta), s = std::sin(p.theta);
+  p.x += (c * b.forward - s * b.left) * dt;
+  p.y += (s * b.forward + c * b.left) * dt;
+  p.theta = wrapAngle(p.theta + b.turn * dt);
+}
+
+}  // namespace
+
+TEST(WalkTo, CommandsStayWithinTheWalksLimits) {
+  const SkillConfig s;
+  const WalkTo walk(s, FieldGeometry{});
+  BehaviourInputs in;
+  Teammate t;
+  t.time_since_heard = 0;
+  t.pose = {100, 100, 0};
+  in.teammates = {t};  // a close teammate: strong repulsion too
+  int n = 0;
+  for (double x = -4000; x <= 4000; x += 700)
+    for (double y = -2800; y <= 2800; y += 700)
+      for (double th = -3; th <= 3; th += 1.0) {
+        in.self.pose = {x, y, th};
+        const auto r = walk.tick(in, {2500, -1000}, 1.0, 100);
+        EXPECT_TRUE(withinLimits(r.body, in.walk)) << x << " " << y << " " << th;
+        ++n;
+      }
+  EXPECT_GT(n, 500);
+}
+
+TEST(WalkTo, ArrivesAtThePoseAndHeading) {
+  const SkillConfig s;
+  const WalkTo walk(s, FieldGeometry{});
+  BehaviourInputs in;
+  in.self.pose = {-3000, -2000, 2.5};
+  double t = 0;
+  bool arrived = false;
+  for (; t < 60 && !arrived; t += 0.02) {
+    const auto r = walk.tick(in, {1000, 1500}, -1.0, 100);
+    arrived = r.arrived;
+    integrate(in.self.pose, r.body, 0.02);
+  }
+  ASSERT_TRUE(arrived);
+  EXPECT_LT(distance(position(in.self.pose), {1000, 1500}), 100.0);
+  EXPECT_LT(std::abs(wrapAngle(in.self.pose.theta + 1.0)), s.final_angle_tolerance);
+  // 5315 mm at 300 mm/s is 17.7 s; turns and slowing down near the end add a few.
+  EXPECT_LT(t, 30.0);
+}
+
+TEST(WalkTo, WalksRoundATeammateInTheWay) {
+  const SkillConfig s;
+  const WalkTo walk(s, FieldGeometry{});
+  BehaviourInputs in;
+  in.self.pose = {-2000, 0, 0};
+  Teammate t;
+  t.time_since_heard = 0;
+  t.pose = {0, 30, 0};  // standing on the straight line to the target
+  in.teammates = {t};
+  double closest = 1e9;
+  bool arrived = false;
+  for (double time = 0; time < 60 && !arrived; time += 0.02) {
+    const auto r = walk.tick(in, {2000, 0}, std::nullopt, 150);
+    arrived = r.arrived;
+    integrate(in.self.pose, r.body, 0.02);
+    closest = std::min(closest, distance(position(in.self.pose), position(t.pose)));
+  }
+  EXPECT_TRUE(arrived);
+  EXPECT_GT(closest, 2 * s.robot_radius);  // never touched it (two 150 mm robots)
+}
+
+TEST(HeadScan, SweepCoversTheFieldOfViewWithinTheHeadsLimits) {
+  const SkillConfig s;
+  HeadScan scan(s);
+  scan.start(10.0);
+  EXPECT_NEAR(scan.sweepDuration(), 4.0, 1e-12);  // 4 x 1 rad at 1 rad/s
+  const double dt = 0.01;
+  double lo = 1e9, hi = -1e9, prev = scan.yawAt(10.0);
+  std::vector<std::pair<double, double>> seen;
+  for (double t = 10.0; t <= 10.0 + scan.sweepDuration() + 1e-9; t += dt) {
+    const auto h = scan.tick(t);
+    EXPECT_LE(std::abs(h.yaw), s.head_yaw_limit);
+    EXPECT_LE(h.yaw_speed, 8.27);
+    EXPECT_LE(std::abs(h.yaw - prev), s.scan_speed * dt + 1e-6);  // the target moves at the scan speed
+    prev = h.yaw;
+    lo = std::min(lo, h.yaw - s.camera_hfov / 2);
+    hi = std::max(hi, h.yaw + s.camera_hfov / 2);
+  }
+  // The camera saw +-(scan_yaw + hfov/2) = +-1.531 rad: 175 deg around the body.
+  EXPECT_NEAR(lo, -(1.0 + s.camera_hfov / 2), 0.02);
+  EXPECT_NEAR(hi, 1.0 + s.camera_hfov / 2, 0.02);
+  EXPECT_TRUE(scan.sweepDone(14.0));
+  EXPECT_FALSE(scan.sweepDone(13.9));
+}
+
+TEST(Spin, TurnsOnceInPlace) {
+  const SkillConfig s;
+  Spin spin(s);
+  BehaviourInputs in;
+  in.self.pose = {500, -700, 3.0};  // starting near the +-pi wrap
+  spin.start(in.self.pose);
+  double t = 0;
+  for (; t < 20; t += 0.02) {
+    const auto o = spin.tick(in);
+    if (o.done) break;
+    EXPECT_EQ(o.body.forward, 0.0f);
+    EXPECT_EQ(o.body.left, 0.0f);
+    EXPECT_LE(o.body.turn, in.walk.max_turn + 1e-6);
+    integrate(in.self.pose, o.body, 0.02);
+  }
+  EXPECT_NEAR(t, 2 * kPi / 0.8, 0.05);  // 7.85 s at 0.8 rad/s
+  EXPECT_NEAR(in.self.pose.x, 500, 1e-9);
+  EXPECT_NEAR(wrapAngle(in.self.pose.theta - 3.0), 0.0, 0.02);
+}
+
+TEST(ApproachBallAndKick, LineUpBehindTheBallAndKickTowardTheGoal) {
+  const SkillConfig s;
+  ApproachBall approach(s, FieldGeometry{});
+  const Point2 ball{2000, 1000};
+  const Pose2 stand = approach.standOff(ball);
+  // On the goal-ball line, approach_distance behind the ball, facing the goal.
+  EXPECT_NEAR(distance({stand.x, stand.y}, ball), s.approach_distance, 1e-9);
+  EXPECT_NEAR(stand.theta, std::atan2(0 - 1000, 4500 - 2000), 1e-12);
+  BehaviourInputs in;
+  in.self.pose = {-1000, -1000, 0};
+  bool lined = false;
+  for (double t = 0; t < 60 && !lined; t += 0.02) {
+    const auto o = approach.tick(in, ball);
+    lined = o.lined_up;
+    integrate(in.self.pose, o.body, 0.02);
+  }
+  ASSERT_TRUE(lined);
+  in.ball.relative = toRobotFrame(in.self.pose, ball);
+  in.time = 5.0;
+  Kick kick(s);
+  kick.start(in);
+  const auto k = kick.tick(in);
+  EXPECT_EQ(k.body.type, ActionType::KICK);
+  EXPECT_NEAR(k.body.kick_direction, 0.0, s.kick_angle_tolerance);  // facing the goal
+  in.time = 5.0 + s.kick_duration;
+  EXPECT_TRUE(kick.tick(in).done);
+  // The foot on the ball's side.
+  in.ball.relative = {150, -40};
+  kick.start(in);
+  EXPECT_EQ(kick.tick(in).body.foot, agent::blackboard::Foot::RIGHT);
+}
+
+TEST(StrikerLogic, FindsTheBallAndKicksIt) {
+  // Kinematic logic test: the striker searches (2017), approaches, kicks.
+  kin::World w;
+  w.ball = {2250, 0};
+  BehaviourConfig c;
+  c.kind = BehaviourKind::STRIKER;
+  w.add(2, {-3250, 3000, -kPi / 2}, c);
+  bool kicked = false;
+  while (w.time < 180 && !kicked) {
+    w.step();
+    kicked = w.robots[0].last.request.body.type == ActionType::KICK;
+  }
+  ASSERT_TRUE(kicked);
+  EXPECT_LT(distance(position(w.robots[0].pose), w.ball), 300.0);
+}

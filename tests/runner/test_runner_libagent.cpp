@@ -1,0 +1,405 @@
+// The libagent interface end to end: a robot program as a team brings it
+// (tests/libagent_client: rUNSWift 2017's block declared from facts.md, no
+// project header, libagent's protocol only) runs in lock-step, started
+// before or after the simulator, with the same state hash as the same moves
+// done in-process; FSRs in kg; free-running mode sits a silent robot down;
+// a program outlives a SIGKILLed simulator by < 2 s; SPL team numbers.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "agent/libagent/SharedNames.hpp"
+#include "agent/libagent/SimExtension.hpp"
+#include "sim/runner/Runner.hpp"
+
+namespace al = agent::libagent;
+namespace ap = agent::program;
+using simswift::runner::RunOptions;
+using simswift::runner::Runner;
+using simswift::runner::RunStats;
+using simswift::runner::Scenario;
+using simswift::runner::TeamColour;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+const std::string kBin = SIMSWIFT_BINARY_DIR;
+
+RunOptions quiet() {
+  RunOptions o;
+  o.progress = false;
+  return o;
+}
+
+// Starts `args` (argv[0] = path); stdout / stderr to files if given.
+pid_t spawn(const std::vector<std::string>& args, const std::string& out = "", const std::string& err = "") {
+  const pid_t pid = fork();
+  if (pid != 0) return pid;
+  if (!out.empty()) {
+    const int fd = open(out.c_str(), O_CREAT | O_TRUNC | O_WRONLY, 0600);
+    dup2(fd, 1);
+  }
+  if (!err.empty()) {
+    const int fd = open(err.c_str(), O_CREAT | O_TRUNC | O_WRONLY, 0600);
+    dup2(fd, 2);
+  }
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  execv(argv[0], argv.data());
+  _exit(127);
+}
+
+// Exit status, or -1 if still running after `timeout_s` (then killed).
+int waitExit(pid_t pid, double timeout_s, double* took = nullptr) {
+  const auto t0 = Clock::now();
+  for (;;) {
+    int status = 0;
+    if (waitpid(pid, &status, WNOHANG) == pid) {
+      if (took) *took = std::chrono::duration<double>(Clock::now() - t0).count();
+      return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    }
+    if (std::chrono::duration<double>(Clock::now() - t0).count() > timeout_s) {
+      kill(pid, SIGKILL);
+      waitpid(pid, nullptr, 0);
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+bool existsInShm(const std::string& name) {
+  struct stat st {};
+  return stat(("/dev/shm" + name).c_str(), &st) == 0;
+}
+
+std::string tmpPath(const std::string& what) {
+  return "/tmp/simswift-test-" + std::to_string(getpid()) + "-" + what;
+}
+
+Scenario robotScenario(double duration, int team, int player, const std::string& program) {
+  Scenario s = Scenario::parse("duration: " + std::to_string(duration) +
+                                   "\nseed: 3\nattach_timeout: 20\nwatchdog: 10\nrobots:\n  - {team: " +
+                                   std::to_string(team) + ", player: " + std::to_string(player) +
+                                   ", x: -1.0, program: " + program + "}\n",
+                               "test.yaml");
+  return s;
+}
+
+std::vector<std::string> clientArgs(int team, int player, long ticks, std::vector<std::string> extra = {}) {
+  std::vector<std::string> a = {kBin + "/libagent2017-client", "--team", std::to_string(team), "--player",
+                                std::to_string(player), "--ticks", std::to_string(ticks), "--timeout", "20"};
+  a.insert(a.end(), extra.begin(), extra.end());
+  return a;
+}
+
+double modelJoint(Runner& r, const char* name) {
+  const simswift::RobotBody& body = r.world().robot(0);
+  return body.jointAngle(body.model().jointIndex(name));
+}
+
+// The client's moves (tests/libagent_client/libagent2017_client.cpp), done
+// by the in-process robot program with the same float arithmetic. k counts
+// ticks from the first (t = 10 ms -> k = 1).
+float ramp(long k, long t0, long t1) {
+  if (k <= t0) return 0.0f;
+  if (k >= t1) return 1.0f;
+  return static_cast<float>(k - t0) / static_cast<float>(t1 - t0);
+}
+struct SameMoves : ap::MotionGenerator {
+  al::JointValues hold{};
+  void tick(const al::SensorValues& s, int64_t t_us, al::JointValues& out) override {
+    namespace J = al::Joints;
+    const long k = static_cast<long>(t_us / 10000);
+    if (k == 1) {
+      hold = s.joints;
+      for (float& st : hold.stiffnesses) st = 1.0f;
+    }
+    al::JointValues cmd = hold;
+    cmd.angles[J::HeadYaw] = hold.angles[J::HeadYaw] + 0.5f * ramp(k, 50, 100);
+    const float d = 0.2f * (ramp(k, 100, 200) - ramp(k, 250, 350));
+    for (int hip : {J::LHipPitch, J::RHipPitch}) cmd.angles[hip] = hold.angles[hip] - d;
+    for (int knee : {J::LKneePitch, J::RKneePitch}) cmd.angles[knee] = hold.angles[knee] + 2.0f * d;
+    for (int ankle : {J::LAnklePitch, J::RAnklePitch}) cmd.angles[ankle] = hold.angles[ankle] - d;
+    out = cmd;
+  }
+};
+
+}  // namespace
+
+// The unchanged libagent program walks the robot through the scripted head
+// and leg move in lock-step. Started before the simulator (it creates the
+// objects, the simulator adopts them) and after it, the state hash is the
+// same, and equal to the in-process program doing the same moves.
+TEST(LibagentClient, LockStepMoveSameHashStartedBeforeOrAfterAndInProcess) {
+  const int team = 94, player = 1;  // N = 1035: used by no other test
+  const al::RobotNames names = al::simulationNames(team, player);
+  const long ticks = 400;
+  const Scenario ext = robotScenario(ticks / 100.0, team, player, "external");
+
+  // Before: the program creates the (empty) objects and waits in sem_wait.
+  RunStats before;
+  double head_before = 0, knee_before = 0;
+  {
+    ASSERT_FALSE(existsInShm(names.memory)) << "left over from another run";
+    const pid_t client = spawn(clientArgs(team, player, ticks));
+    const auto t0 = Clock::now();
+    while (!existsInShm(names.memory) && Clock::now() - t0 < std::chrono::seconds(10))
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_TRUE(existsInShm(names.memory)) << "the client did not create " << names.memory;
+    Runner r(ext);
+    try {
+      before = r.run(quiet());
+    } catch (...) {
+      kill(client, SIGKILL);
+      waitpid(client, nullptr, 0);
+      throw;
+    }
+    EXPECT_EQ(waitExit(client, 10), 0);
+    head_before = modelJoint(r, "HeadYaw");
+    knee_before = modelJoint(r, "LKneePitch");
+  }
+  // After: the simulator has set the objects up when the program starts.
+  RunStats after;
+  {
+    Runner r(ext);
+    r.start();
+    ASSERT_TRUE(existsInShm(names.memory));
+    const pid_t client = spawn(clientArgs(team, player, ticks));
+    try {
+      after = r.run(quiet());
+    } catch (...) {
+      kill(client, SIGKILL);
+      waitpid(client, nullptr, 0);
+      throw;
+    }
+    EXPECT_EQ(waitExit(client, 10), 0);
+  }
+  // In-process: the robot program in the simulator's process, same moves.
+  RunStats inproc;
+  {
+    Runner r(robotScenario(ticks / 100.0, team, player, "builtin"));
+    r.setMotionGenerator(0, std::make_unique<SameMoves>());
+    inproc = r.run(quiet());
+  }
+  EXPECT_EQ(before.ticks, ticks);
+  EXPECT_EQ(before.hash, after.hash);
+  EXPECT_EQ(before.hash, inproc.hash);
+  EXPECT_EQ(before.skipped_cycles, 0);
+  EXPECT_EQ(before.falls, 0);
+  // The moves happened: head turned 0.5 rad (standing posture: 0), knees back.
+  EXPECT_NEAR(head_before, 0.5, 0.05);
+  EXPECT_NEAR(knee_before, 0.8, 0.1);
+  EXPECT_FALSE(existsInShm(names.memory)) << "the simulator removes its objects";
+}
+
+// The knee bend in the middle of the script is seen by the simulated body
+// while it happens (a command written at tick k drives tick k + 1).
+TEST(LibagentClient, LegMoveReachesTheBody) {
+  const int team = 94, player = 4;
+  Runner r(robotScenario(2.5, team, player, "external"));
+  r.start();
+  const pid_t client = spawn(clientArgs(team, player, 250));
+  double knee_max = 0;
+  try {
+    while (r.ticks() < 250) {
+      r.tick();
+      knee_max = std::max(knee_max, modelJoint(r, "LKneePitch"));
+    }
+  } catch (...) {
+    kill(client, SIGKILL);
+    waitpid(client, nullptr, 0);
+    throw;
+  }
+  r.shutdown();
+  EXPECT_EQ(waitExit(client, 10), 0);
+  EXPECT_NEAR(knee_max, 0.8 + 0.4, 0.08);  // stand 0.8 rad + 2 x 0.2 rad
+}
+
+// Through the raw 2017 block, a standing robot's eight FSRs sum to its mass
+// in kg (the NAO's unit), within 5 %.
+TEST(LibagentClient, StandingRobotsFsrsSumToItsMassInKg) {
+  const int team = 94, player = 2;
+  Runner r(robotScenario(2.0, team, player, "external"));
+  r.start();
+  const std::string out = tmpPath("fsr.txt");
+  const pid_t client = spawn(clientArgs(team, player, 200, {"--hold", "--print-fsr"}), out);
+  try {
+    r.run(quiet());
+  } catch (...) {
+    kill(client, SIGKILL);
+    waitpid(client, nullptr, 0);
+    throw;
+  }
+  ASSERT_EQ(waitExit(client, 10), 0);
+  const std::string text = slurp(out);
+  std::remove(out.c_str());
+  const size_t at = text.find("fsr-sum-kg ");
+  ASSERT_NE(at, std::string::npos) << text;
+  const double sum = std::stod(text.substr(at + 11));
+  const double mass = r.world().robot(0).model().totalMass();
+  std::printf("FSR sum %.3f kg, model mass %.3f kg (%.2f %%)\n", sum, mass, 100 * (sum - mass) / mass);
+  EXPECT_NEAR(sum, mass, 0.05 * mass);
+  EXPECT_GT(mass, 4.5);  // a NAO: about 5.3 kg
+}
+
+// Free-running (--realtime): the program sleeps 600 ms; the simulator keeps
+// its pace, counts the skipped cycles and, after 50, sits the body down.
+TEST(LibagentClient, FreeRunningClientThatSleepsIsSatDownAndSkipsAreCounted) {
+  const int team = 94, player = 5;
+  Runner r(robotScenario(2.0, team, player, "external"));
+  r.setFreeRunning(true);
+  r.start();
+  const pid_t client = spawn(clientArgs(team, player, 100000, {"--hold", "--sleep-at", "50", "600", "--timeout", "2"}));
+  bool lost = false;
+  double knee_start = 0, knee_max = 0;
+  std::string summary;
+  try {
+    r.tick();  // waits for the program's first answer (attach)
+    knee_start = modelJoint(r, "LKneePitch");
+    const auto wall0 = Clock::now();
+    while (r.ticks() < 200) {
+      r.tick();
+      lost = lost || r.host(0).contactLost();
+      knee_max = std::max(knee_max, modelJoint(r, "LKneePitch"));
+      std::this_thread::sleep_until(wall0 + std::chrono::microseconds((r.ticks() - 1) * 10000));
+    }
+    summary = r.stats().summary();
+  } catch (...) {
+    kill(client, SIGKILL);
+    waitpid(client, nullptr, 0);
+    throw;
+  }
+  r.shutdown();
+  waitExit(client, 5);
+  std::printf("skipped %lld cycles, knee %.3f -> max %.3f rad; %s\n",
+              static_cast<long long>(r.host(0).skippedCycles()), knee_start, knee_max, summary.c_str());
+  EXPECT_TRUE(lost);
+  EXPECT_GE(r.host(0).skippedCycles(), 50);
+  EXPECT_EQ(r.host(0).contactLostEvents(), 1);
+  EXPECT_NE(summary.find("skipped "), std::string::npos) << summary;
+  // Sitting: the knees bend well past the standing 0.8 rad toward the crouch's 1.6.
+  EXPECT_GT(knee_max, knee_start + 0.3);
+}
+
+// simswift killed with SIGKILL: the attached simswift-agent notices within
+// 2 s and exits with a message; the next run for the robot starts cleanly
+// on the stale objects.
+TEST(SimswiftAgent, OutlivesAKilledSimulatorByLessThanTwoSecondsAndTheNextRunStartsCleanly) {
+  const int team = 94, player = 3;
+  const al::RobotNames names = al::simulationNames(team, player);
+  const std::string yaml = tmpPath("kill.yaml"), sim_err = tmpPath("sim.err"), agent_err = tmpPath("agent.err");
+  {
+    std::ofstream f(yaml);
+    f << "duration: 120\nattach_timeout: 20\nrobots:\n  - {team: 94, player: 3, program: external}\n";
+  }
+  const pid_t sim = spawn({kBin + "/simswift", "run", yaml, "--quiet"}, "", sim_err);
+  const pid_t agent = spawn({kBin + "/simswift-agent", "--team", "94", "--player", "3", "--attach-timeout", "20"},
+                            "", agent_err);
+  // Wait until the robot runs: the agent announced and ticks advance.
+  bool running = false;
+  const auto t0 = Clock::now();
+  while (!running && Clock::now() - t0 < std::chrono::seconds(20)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    const int fd = shm_open(names.extension.c_str(), O_RDONLY, 0);
+    if (fd < 0) continue;
+    struct stat st {};
+    if (fstat(fd, &st) == 0 && static_cast<size_t>(st.st_size) >= sizeof(al::SimExtension)) {
+      void* p = mmap(nullptr, sizeof(al::SimExtension), PROT_READ, MAP_SHARED, fd, 0);
+      if (p != MAP_FAILED) {
+        const auto* x = static_cast<const al::SimExtension*>(p);
+        running = x->client_pid.load() != 0 && x->slot_tick[0] + x->slot_tick[1] + x->slot_tick[2] > 60;
+        munmap(p, sizeof(al::SimExtension));
+      }
+    }
+    close(fd);
+  }
+  if (!running) {
+    kill(sim, SIGKILL);
+    kill(agent, SIGKILL);
+  }
+  ASSERT_TRUE(running) << slurp(sim_err) << slurp(agent_err);
+  kill(sim, SIGKILL);
+  waitpid(sim, nullptr, 0);
+  double took = 0;
+  const int status = waitExit(agent, 5, &took);
+  const std::string agent_text = slurp(agent_err);
+  std::printf("simswift-agent exited %.2f s after the simulator was killed: %s", took, agent_text.c_str());
+  EXPECT_EQ(status, 1);
+  EXPECT_LT(took, 2.0);
+  EXPECT_NE(agent_text.find("simulator is gone"), std::string::npos) << agent_text;
+  EXPECT_TRUE(existsInShm(names.memory)) << "SIGKILL leaves the objects behind";
+
+  // The next run: takes the stale objects over and runs with a new program.
+  {
+    Runner r(robotScenario(0.5, team, player, "external"));
+    r.start();
+    const pid_t next = spawn({kBin + "/simswift-agent", "--team", "94", "--player", "3"});
+    RunStats st;
+    try {
+      st = r.run(quiet());
+    } catch (...) {
+      kill(next, SIGKILL);
+      waitpid(next, nullptr, 0);
+      throw;
+    }
+    EXPECT_EQ(waitExit(next, 10), 0);
+    EXPECT_EQ(st.ticks, 50);
+  }
+  EXPECT_FALSE(existsInShm(names.memory));
+  for (const std::string& f : {yaml, sim_err, agent_err}) std::remove(f.c_str());
+}
+
+TEST(ScenarioTeams, SplTeamNumbersAndColours) {
+  const Scenario s = Scenario::parse(
+      "robots:\n"
+      "  - {team: 19, player: 1}\n"
+      "  - {team: 5, player: 1}\n"
+      "  - {team: 19, player: 2, names: bare}\n",
+      "teams.yaml");
+  EXPECT_EQ(s.robots[0].team, 19);
+  EXPECT_EQ(s.robots[0].colour, TeamColour::Blue);  // first team number: blue
+  EXPECT_EQ(s.robots[1].colour, TeamColour::Red);   // second: red
+  EXPECT_EQ(s.robots[2].colour, TeamColour::Blue);  // a team keeps its colour
+  EXPECT_TRUE(s.robots[2].bare_names);
+  const Scenario red_first = Scenario::parse(
+      "robots:\n  - {team: 19, player: 1, colour: red}\n  - {team: 5, player: 1}\n", "teams.yaml");
+  EXPECT_EQ(red_first.robots[1].colour, TeamColour::Blue);
+
+  auto error = [](const std::string& text) {
+    try {
+      Scenario::parse(text, "teams.yaml");
+    } catch (const simswift::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string third =
+      error("robots:\n  - {team: 19, player: 1}\n  - {team: 5, player: 1}\n  - {team: 7, player: 1}\n");
+  EXPECT_NE(third.find("teams.yaml:4: robots[2].team: a match has two teams (19 and 5)"), std::string::npos) << third;
+  const std::string clash =
+      error("robots:\n  - {team: 19, player: 1}\n  - {team: 5, player: 1, colour: blue}\n");
+  EXPECT_NE(clash.find("robots[1].colour: team 19 already plays in blue"), std::string::npos) << clash;
+  const std::string two_bare =
+      error("robots:\n  - {team: 19, player: 1, names: bare}\n  - {team: 19, player: 2, names: bare}\n");
+  EXPECT_NE(two_bare.find("robots[1].names: only one robot"), std::string::npos) << two_bare;
+}
