@@ -31,7 +31,9 @@ stamp "Release suite"
 # llvmpipe JIT is not instrumented and dominates the run time; the camera
 # code itself is covered by the Release suite.
 heavy='MotionWalk\.|MotionKickGetup\.|MotionGetupTuning\.|MotionKinematics\.'
-san_cmake=(-DCMAKE_BUILD_TYPE=Release -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF)
+# -O1: the sanitizers' recommended level, and half the compile time of -O3.
+san_cmake=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG"
+           -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF)
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"

@@ -389,9 +389,9 @@ double NaoModel::totalMass() const {
   return m;
 }
 
-std::vector<double> NaoModel::postureFromLibagent(const std::array<float, 25>& angles) const {
+std::vector<double> NaoModel::postureFromLibagent(const std::array<float, la::kNumJoints>& angles) const {
   std::vector<double> q(joints_.size(), 0.0);
-  for (int i = 0; i < 25; ++i)
+  for (int i = 0; i < la::kNumJoints; ++i)
     if (libagent_to_joint_[i] >= 0) q[libagent_to_joint_[i]] = angles[i];
   for (size_t j = 0; j < joints_.size(); ++j)
     if (joints_[j].mimic) {

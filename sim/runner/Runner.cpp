@@ -42,25 +42,6 @@ std::string hex64(uint64_t v) {
 constexpr float kBuiltinAnkleGyroGain = 0.05f;
 }  // namespace
 
-std::string RunStats::summary() const {
-  std::ostringstream s;
-  s << "sim " << fmt("%.2f", sim_s) << " s | wall " << fmt("%.2f", wall_s) << " s | "
-    << fmt("%.1f", real_time_factor) << "x real time | falls " << falls << " | blowups " << blowups;
-  if (nan_commands || clamped_angles || clamped_stiffness)
-    s << " | nan " << nan_commands << " clamped " << clamped_angles << "+" << clamped_stiffness;
-  if (skipped_cycles) s << " | skipped " << skipped_cycles;
-  s << " | hash " << hex64(hash);
-  return s.str();
-}
-
-std::string RunStats::robotLines() const {
-  std::ostringstream s;
-  for (const RobotEnd& r : robots)
-    s << "  t" << r.team << "p" << r.player << ": x " << fmt("%.3f", r.x) << " m  y " << fmt("%.3f", r.y)
-      << " m  theta " << fmt("%.3f", r.theta) << " rad  falls " << r.falls << (r.down ? "  down" : "  up") << "\n";
-  return s.str();
-}
-
 Runner::Runner(Scenario scenario) : scenario_(std::move(scenario)) {}
 
 Runner::~Runner() { shutdown(); }
@@ -332,7 +313,7 @@ void Runner::tick() {
   // 1.
   for (size_t i = 0; i < robots_.size(); ++i) {
     Robot& r = *robots_[i];
-    std::array<float, 25> angles, stiff;
+    std::array<float, al::kNumJoints> angles, stiff;
     for (int j = 0; j < al::kNumJoints; ++j) {
       angles[j] = r.latched.joints.angles[j];
       stiff[j] = r.latched.joints.stiffnesses[j];
@@ -386,15 +367,8 @@ void Runner::tick() {
 
   // Fall bookkeeping (torso frame origin height, m).
   for (size_t i = 0; i < robots_.size(); ++i) {
-    Robot& r = *robots_[i];
     const RobotBody& body = world_->robot(static_cast<int>(i));
-    const double z = body.linkPose(body.model().rootLink()).translation().z();
-    if (!r.fallen && z < kFallHeight) {
-      r.fallen = true;
-      ++r.falls;
-    } else if (r.fallen && z > kStandHeight) {
-      r.fallen = false;
-    }
+    robots_[i]->fall.update(body.linkPose(body.model().rootLink()).translation().z());
   }
 
   // 6. Integer arithmetic: frame k is due once t_us * 30 / 1e6 reaches k.
@@ -447,14 +421,14 @@ RunStats Runner::stats() const {
   s.real_time_factor = s.wall_s > 0 ? s.sim_s / s.wall_s : 0;
   s.blowups = blowups_;
   for (size_t i = 0; i < robots_.size(); ++i) {
-    s.falls += robots_[i]->falls;
+    s.falls += robots_[i]->fall.falls;
     if (world_ && static_cast<int>(i) < world_->numRobots() && i < scenario_.robots.size()) {
       const RobotBody& body = world_->robot(static_cast<int>(i));
       const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
       const Eigen::Vector3d fwd = torso.linear().col(0);  // torso x axis in the field frame
       s.robots.push_back({scenario_.robots[i].team, scenario_.robots[i].player, torso.translation().x(),
-                          torso.translation().y(), std::atan2(fwd.y(), fwd.x()), robots_[i]->falls,
-                          robots_[i]->fallen});
+                          torso.translation().y(), std::atan2(fwd.y(), fwd.x()), robots_[i]->fall.falls,
+                          robots_[i]->fall.fallen});
     }
     if (robots_[i]->host) s.skipped_cycles += robots_[i]->host->skippedCycles();
     if (world_ && static_cast<int>(i) < world_->numRobots()) {

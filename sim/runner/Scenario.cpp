@@ -52,6 +52,20 @@ constexpr double kRobotRadius = 0.15;      // m: a NAO's footprint, centre to th
 
 namespace {
 
+// The names a scenario may use, each list once (parsePosture and
+// parseActionType in agent/ map them to the robot code's enums).
+const std::vector<std::string> kPostureNames = {"stand", "crouch", "limp", "zero"};
+const std::vector<std::string> kActionNames = {"walk",       "stand", "kick",   "getup_front", "getup_back",
+                                               "dead",       "crouch", "limp",  "none"};
+struct ButtonName {
+  const char* name;
+  sensors::Button button;
+};
+const ButtonName kButtonNames[] = {{"chest", sensors::Button::Chest},
+                                   {"head_front", sensors::Button::HeadFront},
+                                   {"head_middle", sensors::Button::HeadMiddle},
+                                   {"head_rear", sensors::Button::HeadRear}};
+
 std::string resolve(const std::string& base, const std::string& p) {
   if (p.empty() || p[0] == '/' || base.empty()) return p;
   return base + "/" + p;
@@ -71,7 +85,7 @@ ScriptStep readStep(const YamlReader& r) {
     s.duration_s = r.number("duration", 0.0, Range::closed(0, limits::kMaxTime));
     if (r.has("stiffness")) s.stiffness = static_cast<float>(r.number("stiffness", Range::closed(-1, 1)));
   } else {
-    const std::string p = r.choice("posture", "stand", {"stand", "crouch", "limp", "zero"});
+    const std::string p = r.choice("posture", "stand", kPostureNames);
     s.posture = *agent::program::parsePosture(p);
   }
   r.finish();
@@ -98,9 +112,7 @@ void readAction(const YamlReader& r, RobotSpec& rs) {
   }
   agent::motion::ActionStep a;
   a.t = t;
-  const std::string name = r.choice("action", "stand",
-                                    {"walk", "stand", "kick", "getup_front", "getup_back", "dead", "crouch",
-                                     "limp", "none"});
+  const std::string name = r.choice("action", "stand", kActionNames);
   agent::motion::parseActionType(name, &a.body.type);
   // The walk's own limits (WalkConfig, one home): faster requests are
   // refused rather than clamped in silence.
@@ -126,11 +138,11 @@ RobotSpec::ButtonPress readButton(const YamlReader& r) {
   RobotSpec::ButtonPress b;
   b.t_s = r.number("t", Range::closed(0, limits::kMaxTime));
   b.duration_s = r.number("duration", 0.1, Range::closed(0, limits::kMaxTime));
-  const std::string name = r.choice("button", "chest", {"chest", "head_front", "head_middle", "head_rear"});
-  b.button = name == "chest"        ? sensors::Button::Chest
-             : name == "head_front" ? sensors::Button::HeadFront
-             : name == "head_middle" ? sensors::Button::HeadMiddle
-                                     : sensors::Button::HeadRear;
+  std::vector<std::string> names;
+  for (const ButtonName& n : kButtonNames) names.push_back(n.name);
+  const std::string name = r.choice("button", "chest", names);
+  for (const ButtonName& n : kButtonNames)
+    if (name == n.name) b.button = n.button;
   r.finish();
   return b;
 }
@@ -359,7 +371,7 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     rs.x = r.number("x", 0.0, pos);
     rs.y = r.number("y", 0.0, pos);
     rs.theta = r.number("theta", 0.0, Range::closed(-limits::kMaxHeading, limits::kMaxHeading));
-    rs.posture = *agent::program::parsePosture(r.choice("posture", "stand", {"stand", "crouch", "limp", "zero"}));
+    rs.posture = *agent::program::parsePosture(r.choice("posture", "stand", kPostureNames));
     rs.program = r.choice("program", "builtin", {"builtin", "external"}) == "external"
                      ? RobotSpec::Program::External
                      : RobotSpec::Program::Builtin;
