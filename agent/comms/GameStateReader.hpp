@@ -16,7 +16,7 @@ struct GameState {
   agent::libagent::Penalty penalty = agent::libagent::Penalty::None;
   int secs_till_unpenalised = 0;          // s
   int secs_remaining = 0;                 // s in the half
-  int kickoff_team = -1;                  // team index, -1 drop ball / unknown
+  int kickoff_team = -1;                  // SPL team number, -1 drop ball / unknown
   bool our_kickoff = false;
   bool first_half = true;
   int our_score = 0, their_score = 0;
@@ -31,6 +31,8 @@ struct GameState {
 
 class GameStateReader {
  public:
+  // team: this robot's SPL team number (found in the block's teams[], as a
+  // robot finds itself in the GameController's packet); player 1..
   GameStateReader(int team, int player) : team_(team), player_(player) {}
   // A copy of `block` is taken first, so a half-written block cannot mix two
   // states (the simulator writes between ticks anyway). Null or a bad magic

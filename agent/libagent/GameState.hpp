@@ -41,7 +41,7 @@ struct GamePlayerInfo {
 };
 
 struct GameTeamInfo {
-  uint8_t team_number;  // simswift team index
+  uint8_t team_number;  // SPL team number
   uint8_t team_colour;  // 0 blue, 1 red (GameController colours)
   uint8_t score;
   uint8_t reserved;
@@ -55,7 +55,7 @@ struct GameStateBlock {
   uint8_t state;             // GameStateValue
   uint8_t secondary_state;   // SecondaryState
   uint8_t first_half;        // 1 = first half
-  uint8_t kickoff_team;      // team index with the kick-off (255 = drop ball)
+  uint8_t kickoff_team;      // SPL team number with the kick-off (255 = drop ball)
   uint16_t secs_remaining;   // s left in the half (counts down while PLAYING)
   uint16_t secondary_time;   // s shown as secondary time (e.g. READY's 45 s)
   GameTeamInfo teams[2];     // by team index

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "agent/libagent/GameState.hpp"
+#include "agent/libagent/SharedNames.hpp"
 #include "agent/libagent/TeamLink.hpp"
 
 namespace agent::libagent {
@@ -21,9 +22,9 @@ struct SimExtensions {
   TeamLink team;
 };
 
-// Suffixed like the libagent block: team * 6 + player.
+// Suffixed like the libagent block (SharedNames.hpp: N = team x 11 + player).
 inline std::string extensionsName(int team, int player) {
-  return std::string(kSimExtensionsName) + "-" + std::to_string(team * 6 + player);
+  return std::string(kSimExtensionsName) + std::to_string(simulationNumber(team, player));
 }
 
 }  // namespace agent::libagent

@@ -118,6 +118,12 @@ double GameController::secsTillUnpenalised(int robot) const {
   return std::max<double>(0.0, (r.until_us - now_us_) * 1e-6);
 }
 
+int GameController::teamNumber(int side) const {
+  for (const RobotState& r : robots_)
+    if (r.id.team == side && r.id.team_number >= 0) return r.id.team_number;
+  return side;  // no robot gave a number: the side index stands in
+}
+
 void GameController::fill(al::GameStateBlock& b) const {
   b.magic = al::kGameStateMagic;
   b.updates = updates_;
@@ -125,7 +131,9 @@ void GameController::fill(al::GameStateBlock& b) const {
   b.state = static_cast<uint8_t>(state_);
   b.secondary_state = static_cast<uint8_t>(secondary_);
   b.first_half = config_.first_half ? 1 : 0;
-  b.kickoff_team = static_cast<uint8_t>(kickoff_team_);
+  // As the GameController sends it: the kick-off team's SPL number (255 = drop ball).
+  b.kickoff_team = kickoff_team_ == 0 || kickoff_team_ == 1 ? static_cast<uint8_t>(teamNumber(kickoff_team_))
+                                                            : static_cast<uint8_t>(kickoff_team_);
   b.secs_remaining = static_cast<uint16_t>(std::ceil(secsRemaining() - 1e-9));
   b.secondary_time = 0;
   if (state_ == GameStateValue::Ready) {
@@ -135,7 +143,7 @@ void GameController::fill(al::GameStateBlock& b) const {
   for (int t = 0; t < 2; ++t) {
     al::GameTeamInfo& team = b.teams[t];
     team = al::GameTeamInfo{};
-    team.team_number = static_cast<uint8_t>(t);
+    team.team_number = static_cast<uint8_t>(teamNumber(t));
     team.team_colour = static_cast<uint8_t>(t);
   }
   for (size_t i = 0; i < robots_.size(); ++i) {

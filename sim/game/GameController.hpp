@@ -55,7 +55,9 @@ struct GameEvent {
 
 class GameController {
  public:
-  struct RobotId { int team, player; };
+  // team: the side index (0 = blue, 1 = red: the order of teams[] in the
+  // game state block); team_number: the SPL team number (-1 = same as team).
+  struct RobotId { int team, player, team_number = -1; };
   GameController(GameConfig config, std::vector<RobotId> robots);
 
   // Advances to simulated time t_us (monotonic; call once per tick). Returns
@@ -66,7 +68,8 @@ class GameController {
 
   GameStateValue state() const { return state_; }
   SecondaryState secondary() const { return secondary_; }
-  int kickoffTeam() const { return kickoff_team_; }
+  int kickoffTeam() const { return kickoff_team_; }  // side index (0/1), 255 drop ball
+  int teamNumber(int side) const;                     // SPL team number playing on `side`
   double secsRemaining() const;                 // s, fractional
   bool penalised(int robot) const { return robots_.at(robot).penalty != Penalty::None; }
   Penalty penalty(int robot) const { return robots_.at(robot).penalty; }

@@ -224,8 +224,11 @@ void Runner::start() {
   std::vector<game::GameController::RobotId> ids;
   links_.clear();
   for (auto& r : robots_) {
-    network_->addEndpoint(r->spec.team, r->spec.player);
-    ids.push_back({r->spec.team, r->spec.player});
+    // Network and GameController work by side (colour index 0/1); the block
+    // carries each side's SPL team number, as the GameController's packet does.
+    const int side = static_cast<int>(r->spec.colour);
+    network_->addEndpoint(side, r->spec.player);
+    ids.push_back({side, r->spec.player, r->spec.team});
     links_.push_back(&r->ext->team);
   }
   game_ = std::make_unique<game::GameController>(scenario_.game, ids);

@@ -112,7 +112,7 @@ TEST(TeamLink, RingsAreFifoAndCountOverflow) {
 }
 
 TEST(GameStateReader, ReadsStatePenaltyAndTimers) {
-  GameStateReader reader(1, 3);
+  GameStateReader reader(5, 3);  // SPL team 5, player 3
   EXPECT_FALSE(reader.read(nullptr).valid);
   al::GameStateBlock b{};
   EXPECT_FALSE(reader.read(&b).valid);  // never written
@@ -120,7 +120,9 @@ TEST(GameStateReader, ReadsStatePenaltyAndTimers) {
   b.magic = al::kGameStateMagic;
   b.updates = 1;
   b.state = static_cast<uint8_t>(al::GameStateValue::Playing);
-  b.kickoff_team = 1;
+  b.teams[0].team_number = 19;  // the block names each side by its SPL number
+  b.teams[1].team_number = 5;
+  b.kickoff_team = 5;
   b.secs_remaining = 412;
   b.teams[1].players[2].penalty = static_cast<uint8_t>(al::Penalty::PlayerPushing);
   b.teams[1].players[2].secs_till_unpenalised = 27;
@@ -132,14 +134,16 @@ TEST(GameStateReader, ReadsStatePenaltyAndTimers) {
   EXPECT_EQ(g.secs_till_unpenalised, 27);
   EXPECT_EQ(g.secs_remaining, 412);
   EXPECT_TRUE(g.our_kickoff);
+  EXPECT_EQ(g.kickoff_team, 5);
+  EXPECT_FALSE(GameStateReader(7, 3).read(&b).valid);  // a team not in this game
   EXPECT_FALSE(g.mayMove());  // penalised
   // Another robot of the same team is not penalised.
-  g = GameStateReader(1, 2).read(&b);
+  g = GameStateReader(5, 2).read(&b);
   EXPECT_FALSE(g.penalised);
   EXPECT_TRUE(g.mayMove());
-  EXPECT_FALSE(GameStateReader(0, 2).read(&b).our_kickoff);
+  EXPECT_FALSE(GameStateReader(19, 2).read(&b).our_kickoff);
   b.state = static_cast<uint8_t>(al::GameStateValue::Set);
-  EXPECT_FALSE(GameStateReader(1, 2).read(&b).mayMove());
+  EXPECT_FALSE(GameStateReader(5, 2).read(&b).mayMove());
   b.state = 77;  // garbage: treated as INITIAL (stand)
-  EXPECT_EQ(GameStateReader(1, 2).read(&b).state, al::GameStateValue::Initial);
+  EXPECT_EQ(GameStateReader(5, 2).read(&b).state, al::GameStateValue::Initial);
 }
