@@ -107,8 +107,9 @@ TEST(Cli, BreakpointInGdbDoesNotTripTheWatchdog) {
     return h == std::string::npos ? std::string("none") : out.substr(h + 7, 16);
   };
   const std::string plain = capture(std::string(SIMSWIFT_BINARY_DIR) + "/simswift run " + args);
+  // LeakSanitizer cannot run under ptrace (sanitizer builds): off for gdb.
   const std::string gdb = capture(
-      "gdb -q -batch -ex 'set pagination off' -ex 'break agent::motion::Walk2014Generator::tick' -ex run "
+      "ASAN_OPTIONS=detect_leaks=0 gdb -q -batch -ex 'set pagination off' -ex 'break agent::motion::Walk2014Generator::tick' -ex run "
       "-ex 'shell sleep 3' -ex delete -ex continue --args " +
       std::string(SIMSWIFT_BINARY_DIR) + "/simswift run " + args + " 2>&1");
   EXPECT_NE(gdb.find("hit Breakpoint 1"), std::string::npos) << gdb;
