@@ -4,14 +4,17 @@
 //   simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]
 //   simswift experiment merge DIR... --out DIR      (sim/experiment/Command.cpp)
 //   simswift run SCENARIO.yaml [--realtime] [--duration S] [--seed N]
-//                [--no-noise] [--watchdog S] [--print-hash-every N]
+//                [--no-noise] [--watchdog S|off] [--print-hash-every N]
+//                [--model URDF] [--field YAML]
 //                [--dump-frames DIR [--every N]] [--overview DIR] [--resolution WxH]
 //
-// Exit codes: 0 success, 1 run failure (watchdog, physics, I/O), 2 bad
-// command line or scenario.
+// Exit codes: 0 success, 1 run failure (watchdog, I/O), 2 bad command line
+// or bad input file (scenario, model, field: the message names file and line).
 #include <cstdio>
 #include <cstdlib>
+#include <cstdint>
 #include <exception>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -40,7 +43,10 @@ const char* kUsage =
     "  --duration S           simulated seconds (overrides the scenario)\n"
     "  --seed N               noise seed (overrides the scenario)\n"
     "  --no-noise             exact sensors\n"
-    "  --watchdog S           wall-clock seconds a robot thread may take to answer (default 5)\n"
+    "  --watchdog S|off       wall-clock seconds a robot thread may take to answer (default 5);\n"
+    "                         off, or a debugger attached, never ends the run (README: Debugging in gdb)\n"
+    "  --model URDF           robot model (overrides the scenario's model:)\n"
+    "  --field YAML           field (overrides the scenario's field:)\n"
     "  --attach-timeout S     wall-clock seconds to wait for external robots (default 30)\n"
     "  --print-hash-every N   print the state hash every N ticks (10 ms each)\n"
     "  --quiet                no progress lines\n"
@@ -55,13 +61,26 @@ const char* kUsage =
   std::exit(2);
 }
 
-double numberArg(int& i, int argc, char** argv, const char* name, double lo) {
+double numberArg(int& i, int argc, char** argv, const char* name, double lo, double hi) {
   if (i + 1 >= argc) usageError(std::string(name) + " needs a value");
   const std::string v = argv[++i];
   char* end = nullptr;
   const double d = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !(d >= lo)) usageError(std::string(name) + ": bad value '" + v + "'");
+  if (v.empty() || *end != '\0' || !(d >= lo) || !(d <= hi))
+    usageError(std::string(name) + ": bad value '" + v + "' (must be in [" + std::to_string(lo) + ", " +
+               std::to_string(hi) + "])");
   return d;
+}
+
+// A whole number in [0, 2^53] (the scenario's seed range), digits only.
+uint64_t seedArg(int& i, int argc, char** argv) {
+  if (i + 1 >= argc) usageError("--seed needs a value");
+  const std::string v = argv[++i];
+  if (v.empty() || v.size() > 16 || v.find_first_not_of("0123456789") != std::string::npos)
+    usageError("--seed: must be a whole number in [0, 2^53] (got '" + v + "')");
+  const uint64_t n = std::stoull(v);
+  if (n > (uint64_t{1} << 53)) usageError("--seed: must be a whole number in [0, 2^53] (got '" + v + "')");
+  return n;
 }
 
 }  // namespace
@@ -86,7 +105,7 @@ int main(int argc, char** argv) {
   std::optional<double> duration, watchdog, attach;
   std::optional<uint64_t> seed;
   bool no_noise = false;
-  std::optional<std::string> dump_dir, overview_dir, resolution;
+  std::optional<std::string> dump_dir, overview_dir, resolution, model, field;
   std::optional<int> every;
   auto stringArg = [&](int& i, const char* name) {
     if (i + 1 >= argc) usageError(std::string(name) + " needs a value");
@@ -95,18 +114,26 @@ int main(int argc, char** argv) {
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--realtime") opt.realtime = true;
-    else if (a == "--duration") duration = numberArg(i, argc, argv, "--duration", 1e-9);
-    else if (a == "--seed") seed = static_cast<uint64_t>(numberArg(i, argc, argv, "--seed", 0));
+    else if (a == "--duration") duration = numberArg(i, argc, argv, "--duration", 0.01, 1e6);
+    else if (a == "--seed") seed = seedArg(i, argc, argv);
     else if (a == "--no-noise") no_noise = true;
-    else if (a == "--watchdog") watchdog = numberArg(i, argc, argv, "--watchdog", 1e-3);
-    else if (a == "--attach-timeout") attach = numberArg(i, argc, argv, "--attach-timeout", 1e-3);
+    else if (a == "--watchdog") {
+      if (i + 1 < argc && std::string(argv[i + 1]) == "off") {
+        ++i;
+        watchdog = 0.0;  // off
+      } else {
+        watchdog = numberArg(i, argc, argv, "--watchdog", 1e-3, 3600);
+      }
+    } else if (a == "--attach-timeout") attach = numberArg(i, argc, argv, "--attach-timeout", 1e-3, 3600);
+    else if (a == "--model") model = stringArg(i, "--model");
+    else if (a == "--field") field = stringArg(i, "--field");
     else if (a == "--print-hash-every")
-      opt.print_hash_every = static_cast<int64_t>(numberArg(i, argc, argv, "--print-hash-every", 1));
+      opt.print_hash_every = static_cast<int64_t>(numberArg(i, argc, argv, "--print-hash-every", 1, 1e12));
     else if (a == "--quiet") opt.progress = false;
     else if (a == "--dump-frames") dump_dir = stringArg(i, "--dump-frames");
     else if (a == "--overview") overview_dir = stringArg(i, "--overview");
     else if (a == "--every") {
-      const double n = numberArg(i, argc, argv, "--every", 1);
+      const double n = numberArg(i, argc, argv, "--every", 1, 1e6);
       if (n != static_cast<int>(n)) usageError("--every: must be a whole number of frames");
       every = static_cast<int>(n);
     } else if (a == "--resolution") {
@@ -140,6 +167,10 @@ int main(int argc, char** argv) {
   if (no_noise) sc.noise.on = false;
   if (watchdog) sc.watchdog_s = *watchdog;
   if (attach) sc.attach_timeout_s = *attach;
+  // Command-line paths resolve against the working directory.
+  auto absolute = [](const std::string& p) { return std::filesystem::absolute(p).string(); };
+  if (model) sc.model_path = absolute(*model);
+  if (field) sc.field_path = absolute(*field);
   if (dump_dir) sc.camera.dump_dir = *dump_dir;
   if (every) sc.camera.dump_every = *every;
   if (resolution) {
@@ -168,6 +199,9 @@ int main(int argc, char** argv) {
       _exit(1);
     }
   } catch (const simswift::ConfigError& e) {
+    std::fprintf(stderr, "simswift: %s\n", e.what());
+    return 2;
+  } catch (const simswift::ModelError& e) {
     std::fprintf(stderr, "simswift: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {

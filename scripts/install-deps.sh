@@ -2,10 +2,11 @@
 # Installs the Debian 12 packages simswift builds with, if any are missing.
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config git
-      libode-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev
+      libode-dev libeigen3-dev liburdfdom-dev libtinyxml-dev libyaml-cpp-dev
       libassimp-dev libosmesa6-dev libpng-dev libcairo2-dev
-      libgtest-dev libbenchmark-dev ffmpeg
-      gnuplot-nox parallel)
+      libgtest-dev libbenchmark-dev ffmpeg gdb
+      gnuplot-nox parallel
+      clang libclang-rt-14-dev)   # libFuzzer targets (README "Tests, sanitizers and fuzzing")
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,8 +1,51 @@
 #!/usr/bin/env bash
-# Builds everything (Release) and runs every test.
+# Builds and runs every test, then the sanitizer builds (what CI runs via
+# .ci/run). Three build folders, run one after the other:
+#   build/       Release, the whole suite (incl. the loader mutation fuzzer)
+#   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer: the suite
+#                minus the heavy physics statistics (ASAN_EXCLUDE below)
+#   build-tsan/  ThreadSanitizer: the robot-program (agent) and runner tests
+#                minus the same heavy physics statistics
+# Any sanitizer report fails the test that produced it. Timings go to stderr.
+#   SIMSWIFT_SKIP_SANITIZERS=1 bash scripts/test.sh   # Release suite only
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+jobs="$(nproc)"
+start=$SECONDS
+stamp() { echo "simswift test.sh: $1 after $((SECONDS - start)) s" >&2; }
+
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
-cd build && ctest --output-on-failure -j"$(nproc)" --timeout 900
+cmake --build build -j"$jobs"
+stamp "Release build"
+(cd build && ctest --output-on-failure -j"$jobs" --timeout 900)
+stamp "Release suite"
+
+[ "${SIMSWIFT_SKIP_SANITIZERS:-0}" = 1 ] && exit 0
+
+# Heavy physics statistics (MotionPhysics.*: many seeds of walking, kicking
+# and getting up, 1-5 s each in Release, 10-30x that under a sanitizer): the
+# code they run (walk, kick, get-up, the runner's lock-step) is already run
+# under the sanitizers by MotionScenario.*, Determinism.* and the agent's
+# walk/motion logic tests, so they would add time, not coverage. Cameras are off in the sanitizer builds: OSMesa's
+# llvmpipe JIT is not instrumented and dominates the run time; the camera
+# code itself is covered by the Release suite.
+heavy='MotionPhysics\.'
+# -O1: the sanitizers' recommended level, and half the compile time of -O3.
+san_cmake=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG"
+           -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF)
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
+
+cmake -S . -B build-asan -DSIMSWIFT_SANITIZE=address,undefined "${san_cmake[@]}" >/dev/null
+cmake --build build-asan -j"$jobs"
+stamp "ASan+UBSan build"
+(cd build-asan && ctest --output-on-failure -j"$jobs" --timeout 900 -E "$heavy")
+stamp "ASan+UBSan suite"
+
+cmake -S . -B build-tsan -DSIMSWIFT_SANITIZE=thread "${san_cmake[@]}" >/dev/null
+cmake --build build-tsan -j"$jobs" --target test_agent test_runner simswift-agent
+stamp "TSan build"
+(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 -L 'agent|runner' -E "$heavy")
+stamp "TSan suite"

@@ -381,10 +381,6 @@ void KickGenerator::tick(const libagent::SensorValues& sensors, double dt, libag
 
 // ------------------------------------------------------------------ limp
 
-void deadJoints(libagent::JointValues& out) {
-  for (int i = 0; i < libagent::kNumJoints; ++i) out.stiffnesses[i] = -1.0f;
-}
-
 void limpJoints(const libagent::SensorValues& sensors, float stiffness, libagent::JointValues& out) {
   for (int i = 0; i < libagent::kNumJoints; ++i) {
     const float a = sensors.joints.angles[i];

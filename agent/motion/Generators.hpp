@@ -122,8 +122,6 @@ class KickGenerator {
 
 // ------------------------------------------------------------------ limp
 
-// All joints off (-1): the DEAD action, and the safe fall.
-void deadJoints(libagent::JointValues& out);
 // Holds the measured angles at low stiffness (LIMP): the robot can be posed.
 void limpJoints(const libagent::SensorValues& sensors, float stiffness, libagent::JointValues& out);
 

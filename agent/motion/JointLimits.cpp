@@ -22,7 +22,7 @@ void Clipper::clip(libagent::JointValues& cmd, const libagent::JointValues& sens
       last_[i] = std::min(hi, std::max(lo, s));
     }
     // A hair under the limit so float rounding never exceeds it.
-    const float step = static_cast<float>(lim[i].max_velocity * kMotionTick * speed_fraction_) * 0.9999f;
+    const float step = static_cast<float>(lim[i].max_velocity * kMotionTick) * 0.9999f;
     a = std::min(last_[i] + step, std::max(last_[i] - step, a));
     a = std::min(hi, std::max(lo, a));
     cmd.angles[i] = a;

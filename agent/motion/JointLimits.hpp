@@ -25,13 +25,9 @@ class Clipper {
   // Clips `cmd` in place. `sensed` = the measured angles this tick.
   void clip(libagent::JointValues& cmd, const libagent::JointValues& sensed);
   void reset() { primed_ = false; }
-  // Fraction of the per-tick step allowed (1 = the joint's full speed); a
-  // safety margin below the hardware limit.
-  void setSpeedFraction(double f) { speed_fraction_ = f; }
 
  private:
   bool primed_ = false;
-  double speed_fraction_ = 1.0;
   std::array<float, libagent::kNumJoints> last_{};
 };
 

@@ -14,6 +14,7 @@
 // (a held posture or joint script) -- the start-up check says so otherwise.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -45,6 +46,10 @@ struct ProgramConfig {
   // The simulator's extension objects (game state, team link); null: no
   // game (unknown, PLAYING) and no teammates.
   libagent::SimExtensions* extensions = nullptr;
+  // Called by each thread before every step (Motion tick, Perception frame),
+  // from that thread. For tests (seeded sleeps that scramble thread timing);
+  // empty: nothing.
+  std::function<void(ThreadId)> step_hook;
 };
 
 // Fills `schedule` in the standard order. `board` is the program's Blackboard

@@ -92,6 +92,7 @@ void RobotProgram::motionLoop() {
       s.sim_time_us = conn_.simTimeUs();
       s.time = static_cast<double>(s.sim_time_us) * 1e-6;
       board_.sensors.write(s);
+      if (cfg_.step_hook) cfg_.step_hook(ThreadId::Motion);
       schedule_.run(ThreadId::Motion, board_);  // touch -> motion -> effector
       conn_.writeActuators(pending_);
       motion_ticks_.fetch_add(1);
@@ -124,6 +125,7 @@ void RobotProgram::perceptionLoop() {
       f.images_valid = cf.images_valid != 0;
       board_.frame.write(f);
       if (step_module_) step_module_->setFrame(&cf);
+      if (cfg_.step_hook) cfg_.step_hook(ThreadId::Perception);
       schedule_.run(ThreadId::Perception, board_);
       perception_frames_.fetch_add(1);
       conn_.perceptionDone();

@@ -3,29 +3,12 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 
 #include "sim/camera/Yuv.hpp"
 
 namespace simswift::camera {
 
 namespace {
-// The World may or may not expose the ball's orientation; use it when it
-// does (World::ballOrientation() returning a quaternion), else draw the ball
-// unrotated.
-template <typename W, typename = void>
-struct HasBallOrientation : std::false_type {};
-template <typename W>
-struct HasBallOrientation<W, std::void_t<decltype(std::declval<const W&>().ballOrientation())>> : std::true_type {};
-
-template <typename W>
-Eigen::Quaterniond ballOrientationOf(const W& world) {
-  if constexpr (HasBallOrientation<W>::value)
-    return Eigen::Quaterniond(world.ballOrientation());
-  else
-    return Eigen::Quaterniond::Identity();
-}
-
 constexpr double kCameraHz = 30.0;  // NAO camera frame rate (simulated time)
 }  // namespace
 
@@ -65,7 +48,7 @@ void RobotCameras::syncScene(const World& world) {
     for (int l = 0; l < links; ++l) s.link_poses[l] = body.linkPose(l);
   }
   scene_.ball_position = world.ballPosition();
-  scene_.ball_orientation = ballOrientationOf(world);
+  scene_.ball_orientation = world.ballOrientation();
 }
 
 CameraModel RobotCameras::camera(const World& world, int robot, CameraId id) const {

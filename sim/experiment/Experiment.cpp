@@ -1,3 +1,4 @@
+#include <filesystem>
 #include "sim/experiment/Experiment.hpp"
 
 #include <algorithm>
@@ -89,7 +90,8 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
   if (e.name.empty() || e.name.find_first_of("/\\ \t") != std::string::npos)
     top.fail("name", "must be a non-empty word without spaces or slashes (it names the results folder)");
   e.base.source = source_name;
-  e.base.base_dir = top.string("base_dir", runner::sourceDir());
+  // Relative paths resolve as a scenario's do: this file's folder, then the data folders.
+  e.base.base_dir = top.string("base_dir", std::filesystem::path(source_name).parent_path().string());
   e.base.model_path = top.string("model", "models/nao_v5.urdf");
   e.base.field_path = top.string("field", "fields/spl_2017.yaml");
   e.base.noise.on = top.boolean("noise", true);

@@ -101,7 +101,8 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
   const int64_t limit = std::llround(e.time_limit / kTickSeconds);
   const int64_t track_every = std::max<int64_t>(1, std::llround(e.track_every / kTickSeconds));
   const int64_t sideline_ticks = std::max<int64_t>(1, std::llround(e.fallen.sideline_after / kTickSeconds));
-  std::vector<int64_t> down_since(n, -1);
+  std::vector<int64_t> down_since(n, -1);  // tick the robot went down, -1 = up
+  std::vector<runner::FallDetector> down(n);
   std::vector<Pose2> last(n);
   auto sample = [&](int i, bool count) {
     const Pose2 p = torsoPose(w, i);
@@ -115,12 +116,14 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
     run.tick();  // 1.
     const int64_t tick = run.ticks();
     for (int i = 0; i < n; ++i) {  // 2.
-      const double z = torsoPose(w, i).z;
-      if (down_since[i] < 0 && z < runner::kFallHeight) {
-        down_since[i] = tick;
-      } else if (down_since[i] >= 0 && z > runner::kStandHeight) {
+      // Down and up by the runner's one fall detector (same thresholds as its
+      // fall count); falls themselves are counted by the runner.
+      down[i].update(torsoPose(w, i).z);
+      if (!down[i].fallen) {
         down_since[i] = -1;
-      } else if (down_since[i] >= 0 && tick - down_since[i] >= sideline_ticks) {
+      } else if (down_since[i] < 0) {
+        down_since[i] = tick;
+      } else if (tick - down_since[i] >= sideline_ticks) {
         double x, y, theta;
         sidelineSpot(e, w, i, &x, &y, &theta);
         sample(i, true);  // the walk up to the move counts, the move does not

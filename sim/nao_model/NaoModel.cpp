@@ -9,12 +9,14 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
 #include <sstream>
 
 #include "agent/libagent/AgentShared.hpp"
+#include "sim/nao_model/UrdfLines.hpp"
 
 namespace simswift {
 
@@ -51,8 +53,40 @@ std::mutex& parserMutex() {
   return m;
 }
 
-[[noreturn]] void fail(const std::string& source, const std::string& what) {
-  throw ModelError(source + ": " + what);
+[[noreturn]] void fail(const std::string& source, int line, const std::string& what) {
+  throw ModelError(source + ":" + std::to_string(line) + ": " + what);
+}
+
+// Sane ranges for every number the loader accepts (SI units). Wide enough
+// for any humanoid; narrow enough that nothing reaching ODE can overflow.
+constexpr double kMaxOffset = 10.0;       // m: any origin component
+constexpr double kMinMass = 1e-4;         // kg
+constexpr double kMaxMass = 100.0;        // kg per link
+constexpr double kMinInertia = 1e-12;     // kg*m^2, smallest principal moment
+constexpr double kMaxInertia = 100.0;     // kg*m^2
+constexpr double kMaxShapeSize = 10.0;    // m: box edge, radius, length
+constexpr double kMaxAxisComponent = 1e6; // before normalising (no overflow in the norm)
+constexpr double kMaxVelocity = 1e3;      // rad/s
+constexpr double kMaxEffort = 1e4;        // N*m
+constexpr double kMaxMimicMultiplier = 10.0;
+
+std::string num(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+std::string vec(const Eigen::Vector3d& v) { return "(" + num(v.x()) + " " + num(v.y()) + " " + num(v.z()) + ")"; }
+
+// "" if fine, else what is wrong with an <origin>.
+std::string badPose(const urdf::Pose& p) {
+  const Eigen::Vector3d xyz(p.position.x, p.position.y, p.position.z);
+  if (!xyz.allFinite()) return "xyz " + vec(xyz) + " is not finite";
+  if ((xyz.array().abs() > kMaxOffset).any())
+    return "xyz " + vec(xyz) + " is more than " + num(kMaxOffset) + " m from the parent frame";
+  const Eigen::Vector4d q(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z);
+  if (!q.allFinite()) return "rpy is not finite";
+  return "";
 }
 
 Pose3 toPose(const urdf::Pose& p) {
@@ -64,27 +98,31 @@ Pose3 toPose(const urdf::Pose& p) {
   return out;
 }
 
-bool finite3(const Eigen::Vector3d& v) { return v.allFinite(); }
+bool sizeOk(double v) { return std::isfinite(v) && v > 0 && v <= kMaxShapeSize; }
 
 ShapeSpec toShape(const urdf::GeometrySharedPtr& g, const urdf::Pose& origin, bool collision,
-                  const std::string& source, const std::string& link) {
-  const std::string where = std::string(collision ? "collision" : "visual") + " of link '" + link + "'";
-  if (!g) fail(source, where + " has no <geometry>");
+                  const std::string& source, int line, const std::string& link) {
+  const std::string where = std::string(collision ? "<collision>" : "<visual>") + " of link '" + link + "'";
+  if (!g) fail(source, line, where + " has no <geometry>");
+  const std::string bad = badPose(origin);
+  if (!bad.empty()) fail(source, line, where + " <origin>: " + bad);
   ShapeSpec s;
   s.origin = toPose(origin);
+  const std::string range = " (must be > 0 and <= " + num(kMaxShapeSize) + " m)";
   switch (g->type) {
     case urdf::Geometry::BOX: {
       const auto& b = static_cast<const urdf::Box&>(*g);
       s.type = ShapeType::Box;
       s.size = Eigen::Vector3d(b.dim.x, b.dim.y, b.dim.z);
-      if (!finite3(s.size) || (s.size.array() <= 0).any()) fail(source, where + ": box size must be positive");
+      if (!sizeOk(s.size.x()) || !sizeOk(s.size.y()) || !sizeOk(s.size.z()))
+        fail(source, line, where + ": <box size> " + vec(s.size) + range);
       break;
     }
     case urdf::Geometry::SPHERE: {
       const auto& sp = static_cast<const urdf::Sphere&>(*g);
       s.type = ShapeType::Sphere;
       s.radius = sp.radius;
-      if (!(s.radius > 0)) fail(source, where + ": sphere radius must be positive");
+      if (!sizeOk(s.radius)) fail(source, line, where + ": <sphere radius> " + num(s.radius) + range);
       break;
     }
     case urdf::Geometry::CYLINDER: {
@@ -95,19 +133,25 @@ ShapeSpec toShape(const urdf::GeometrySharedPtr& g, const urdf::Pose& origin, bo
       s.type = collision ? ShapeType::Capsule : ShapeType::Cylinder;
       s.radius = c.radius;
       s.length = c.length;
-      if (!(s.radius > 0) || !(s.length >= 0)) fail(source, where + ": cylinder radius/length invalid");
+      if (!sizeOk(s.radius)) fail(source, line, where + ": <cylinder radius> " + num(s.radius) + range);
+      if (!(s.length >= 0 && s.length <= kMaxShapeSize))
+        fail(source, line, where + ": <cylinder length> " + num(s.length) + " (must be >= 0 and <= " +
+                               num(kMaxShapeSize) + " m)");
       break;
     }
     case urdf::Geometry::MESH: {
-      if (collision) fail(source, where + ": mesh collision geometry is not supported (use box/sphere/cylinder)");
+      if (collision)
+        fail(source, line, where + ": mesh collision geometry is not supported (use box/sphere/cylinder)");
       const auto& m = static_cast<const urdf::Mesh&>(*g);
       s.type = ShapeType::Mesh;
       s.mesh = m.filename;
       s.size = Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z);
+      if (!s.size.allFinite() || (s.size.array().abs() > 1e3).any())
+        fail(source, line, where + ": <mesh scale> " + vec(s.size) + " must be finite and at most 1000");
       break;
     }
     default:
-      fail(source, where + ": unknown geometry type");
+      fail(source, line, where + ": unknown geometry type");
   }
   return s;
 }
@@ -125,14 +169,24 @@ double orderKey(const std::string& name) {
 }  // namespace
 
 NaoModel NaoModel::loadUrdf(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw ModelError(path + ":1: is a directory, not a URDF file");
   std::ifstream in(path);
-  if (!in) throw ModelError(path + ": cannot open URDF file");
+  if (!in) throw ModelError(path + ":1: cannot open URDF file");
+  // Refuse a huge file before reading it all.
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > UrdfLimits::kMaxBytes)
+    throw ModelError(path + ":1: URDF is " + std::to_string(size) + " bytes, more than the " +
+                     std::to_string(UrdfLimits::kMaxBytes >> 20) + " MB limit");
   std::stringstream ss;
   ss << in.rdbuf();
   return loadUrdfString(ss.str(), path);
 }
 
 NaoModel NaoModel::loadUrdfString(const std::string& xml, const std::string& source) {
+  // Size, depth and XML syntax first (cheap, and urdfdom's parser would
+  // overflow the stack on deep nesting); then lines for every message.
+  const UrdfLines lines(xml, source);
   urdf::ModelInterfaceSharedPtr urdf;
   CaptureHandler capture;
   {
@@ -142,15 +196,16 @@ NaoModel NaoModel::loadUrdfString(const std::string& xml, const std::string& sou
       urdf = urdf::parseURDF(xml);
     } catch (const std::exception& e) {
       console_bridge::restorePreviousOutputHandler();
-      fail(source, std::string("URDF parse failed: ") + e.what());
+      const std::string what = e.what();
+      fail(source, lines.lineMentioned(capture.text() + " " + what), "URDF parse failed: " + what);
     }
     console_bridge::restorePreviousOutputHandler();
   }
   if (!urdf) {
-    fail(source, "URDF parse failed" +
-                     (capture.text().empty() ? std::string() : ": " + capture.text()));
+    fail(source, lines.lineMentioned(capture.text()),
+         "URDF parse failed" + (capture.text().empty() ? std::string() : ": " + capture.text()));
   }
-  if (!urdf->getRoot()) fail(source, "URDF has no root link");
+  if (!urdf->getRoot()) fail(source, lines.robot(), "URDF has no root link");
 
   NaoModel model;
   std::map<std::string, int> link_index;
@@ -173,36 +228,64 @@ NaoModel NaoModel::loadUrdfString(const std::string& xml, const std::string& sou
     // Pushed in reverse so the smallest key is visited first.
     for (auto it = kids.rbegin(); it != kids.rend(); ++it) {
       urdf::LinkConstSharedPtr child = urdf->getLink((*it)->child_link_name);
-      if (!child) fail(source, "joint '" + (*it)->name + "' has unknown child link");
+      if (!child) fail(source, lines.joint((*it)->name), "joint '" + (*it)->name + "' has unknown child link");
       stack.push_back(child);
     }
   }
   if (link_order.size() != urdf->links_.size())
-    fail(source, "links not connected to the root link '" + urdf->getRoot()->name + "'");
+    fail(source, lines.robot(), "links not connected to the root link '" + urdf->getRoot()->name + "'");
 
   for (const auto& l : link_order) {
     LinkSpec spec;
     spec.name = l->name;
     const std::string where = "link '" + l->name + "'";
-    if (!l->inertial) fail(source, where + " has no <inertial> (mass and inertia are required)");
+    auto at = [&](const char* path) { return lines.linkChild(l->name, path); };
+    if (!l->inertial) fail(source, lines.link(l->name), where + " has no <inertial> (mass and inertia are required)");
+    if (!lines.linkHas(l->name, "inertial/mass"))
+      fail(source, at("inertial"), where + " has no <mass> in its <inertial>");
     spec.mass = l->inertial->mass;
-    if (!std::isfinite(spec.mass) || spec.mass <= 0)
-      fail(source, where + " has a non-positive or missing <mass> (" + std::to_string(spec.mass) + " kg)");
+    if (!std::isfinite(spec.mass) || spec.mass < kMinMass || spec.mass > kMaxMass)
+      fail(source, at("inertial/mass"), where + " <mass value> " + num(spec.mass) + " kg (must be in [" +
+                                            num(kMinMass) + ", " + num(kMaxMass) + "] kg)");
+    const std::string bad_origin = badPose(l->inertial->origin);
+    if (!bad_origin.empty()) fail(source, at("inertial/origin"), where + " <inertial><origin>: " + bad_origin);
     spec.inertial_origin = toPose(l->inertial->origin);
     const auto& in = *l->inertial;
+    if (!lines.linkHas(l->name, "inertial/inertia"))
+      fail(source, at("inertial"), where + " has no <inertia> in its <inertial>");
     spec.inertia << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
-    if (!spec.inertia.allFinite()) fail(source, where + " has a non-finite inertia");
+    if (!spec.inertia.allFinite()) fail(source, at("inertial/inertia"), where + " <inertia> has a value that is not finite");
+    if ((spec.inertia.array().abs() > kMaxInertia).any())
+      fail(source, at("inertial/inertia"), where + " <inertia> has a value beyond " + num(kMaxInertia) + " kg*m^2");
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(spec.inertia);
-    if (eig.eigenvalues().minCoeff() <= 0)
-      fail(source, where + " has an inertia tensor that is not positive definite");
-    for (const auto& c : l->collision_array)
-      if (c) spec.collisions.push_back(toShape(c->geometry, c->origin, true, source, l->name));
+    const Eigen::Vector3d ev = eig.eigenvalues();  // ascending
+    if (ev.minCoeff() < kMinInertia)
+      fail(source, at("inertial/inertia"), where + " <inertia> is not positive definite (principal moments " +
+                                               vec(ev) + " kg*m^2; each must be >= " + num(kMinInertia) + ")");
+    // A rigid body's principal moments obey the triangle inequality.
+    if (ev(0) + ev(1) < ev(2) * (1 - 1e-6))
+      fail(source, at("inertial/inertia"), where + " <inertia> is not a rigid body's (principal moments " +
+                                               vec(ev) + " kg*m^2 break I1 + I2 >= I3)");
+    // urdfdom drops a <collision> it cannot parse; count them ourselves.
+    size_t ci = 0;
+    for (const auto& c : l->collision_array) {
+      if (!c) continue;
+      spec.collisions.push_back(toShape(c->geometry, c->origin, true, source, lines.collision(l->name, ci), l->name));
+      ++ci;
+    }
+    if (spec.collisions.size() != lines.collisionCount(l->name))
+      fail(source, lines.collision(l->name, spec.collisions.size()),
+           where + ": a <collision> could not be read (bad or missing <geometry> or <origin>)");
     for (const auto& v : l->visual_array) {
       if (!v) continue;
-      ShapeSpec s = toShape(v->geometry, v->origin, false, source, l->name);
+      ShapeSpec s = toShape(v->geometry, v->origin, false, source, at("visual"), l->name);
       urdf::MaterialSharedPtr mat = v->material;
       if (!mat && !v->material_name.empty()) mat = urdf->getMaterial(v->material_name);
-      if (mat) s.rgba = Eigen::Vector4d(mat->color.r, mat->color.g, mat->color.b, mat->color.a);
+      if (mat) {
+        s.rgba = Eigen::Vector4d(mat->color.r, mat->color.g, mat->color.b, mat->color.a);
+        if (!s.rgba.allFinite()) s.rgba = Eigen::Vector4d(0.8, 0.8, 0.8, 1.0);
+        s.rgba = s.rgba.cwiseMax(0.0).cwiseMin(1.0);
+      }
       spec.visuals.push_back(s);
     }
     link_index[l->name] = static_cast<int>(model.links_.size());
@@ -212,35 +295,47 @@ NaoModel NaoModel::loadUrdfString(const std::string& xml, const std::string& sou
 
   for (const auto& j : joint_order) {
     const std::string where = "joint '" + j->name + "'";
+    auto at = [&](const char* path) { return lines.jointChild(j->name, path); };
     if (j->type != urdf::Joint::REVOLUTE) {
-      fail(source, where + " is not a hinge (type must be \"revolute\"; " +
+      fail(source, lines.joint(j->name), where + " is not a hinge (type must be \"revolute\"; " +
                        (j->type == urdf::Joint::CONTINUOUS ? "continuous joints have no limits)" : "got another type)"));
     }
-    if (!j->limits) fail(source, where + " has no <limit>");
+    if (!j->limits) fail(source, lines.joint(j->name), where + " has no <limit>");
     JointSpec spec;
     spec.name = j->name;
     spec.parent_link = link_index.at(j->parent_link_name);
     spec.child_link = link_index.at(j->child_link_name);
+    const std::string bad_origin = badPose(j->parent_to_joint_origin_transform);
+    if (!bad_origin.empty()) fail(source, at("origin"), where + " <origin>: " + bad_origin);
     spec.origin = toPose(j->parent_to_joint_origin_transform);
     spec.axis = Eigen::Vector3d(j->axis.x, j->axis.y, j->axis.z);
-    if (!finite3(spec.axis) || spec.axis.norm() < 1e-9) fail(source, where + " has a zero or invalid <axis>");
+    // Each component bounded before the norm, so the norm cannot overflow.
+    if (!spec.axis.allFinite() || (spec.axis.array().abs() > kMaxAxisComponent).any() || spec.axis.norm() < 1e-6)
+      fail(source, at("axis"), where + " <axis xyz> " + vec(spec.axis) +
+                                   " must be a non-zero finite direction (components within 1e6)");
     spec.axis.normalize();
     spec.lower = j->limits->lower;
     spec.upper = j->limits->upper;
     spec.max_velocity = j->limits->velocity;
     spec.max_effort = j->limits->effort;
+    const int limit_line = at("limit");
     if (!std::isfinite(spec.lower) || !std::isfinite(spec.upper) || spec.lower > spec.upper)
-      fail(source, where + ": <limit> lower (" + std::to_string(spec.lower) + ") > upper (" +
-                       std::to_string(spec.upper) + ") rad");
+      fail(source, limit_line, where + ": <limit> lower (" + num(spec.lower) + ") > upper (" + num(spec.upper) +
+                                   ") rad, or not finite");
     if (spec.lower < -M_PI || spec.upper > M_PI)
-      fail(source, where + ": <limit> must lie within [-pi, pi] rad");
-    if (!(spec.max_velocity > 0) || !std::isfinite(spec.max_velocity))
-      fail(source, where + ": <limit velocity> must be positive (rad/s)");
-    if (!(spec.max_effort > 0) || !std::isfinite(spec.max_effort))
-      fail(source, where + ": <limit effort> must be positive (N*m)");
+      fail(source, limit_line, where + ": <limit> must lie within [-pi, pi] rad");
+    if (!(spec.max_velocity > 0) || !(spec.max_velocity <= kMaxVelocity))
+      fail(source, limit_line, where + ": <limit velocity> " + num(spec.max_velocity) + " must be in (0, " +
+                                   num(kMaxVelocity) + "] rad/s");
+    if (!(spec.max_effort > 0) || !(spec.max_effort <= kMaxEffort))
+      fail(source, limit_line, where + ": <limit effort> " + num(spec.max_effort) + " must be in (0, " +
+                                   num(kMaxEffort) + "] N*m");
     if (j->mimic) {
       spec.mimic = j->mimic->joint_name;
       spec.mimic_multiplier = j->mimic->multiplier;
+      if (!std::isfinite(spec.mimic_multiplier) || std::fabs(spec.mimic_multiplier) > kMaxMimicMultiplier)
+        fail(source, at("mimic"), where + " <mimic multiplier> " + num(spec.mimic_multiplier) + " must be within +-" +
+                                      num(kMaxMimicMultiplier));
     }
     model.links_[spec.child_link].parent_joint = static_cast<int>(model.joints_.size());
     model.joints_.push_back(std::move(spec));
@@ -248,18 +343,29 @@ NaoModel NaoModel::loadUrdfString(const std::string& xml, const std::string& sou
 
   for (int i = 0; i < la::kNumJoints; ++i) {
     const int j = model.jointIndex(la::Joints::kNames[i]);
-    if (j < 0) fail(source, std::string("missing joint '") + la::Joints::kNames[i] + "' (a libagent joint)");
+    if (j < 0)
+      fail(source, lines.robot(), std::string("missing joint '") + la::Joints::kNames[i] + "' (a libagent joint)");
     if (model.joints_[j].mimic)
-      fail(source, std::string("joint '") + la::Joints::kNames[i] + "' is a libagent joint and cannot be a mimic");
+      fail(source, lines.jointChild(la::Joints::kNames[i], "mimic"),
+           std::string("joint '") + la::Joints::kNames[i] + "' is a libagent joint and cannot be a mimic");
     model.joints_[j].libagent_index = i;
     model.libagent_to_joint_[i] = j;
   }
+  // The NAO's two HipYawPitch joints share one motor: without the mimic the
+  // right hip would hang free and the robot falls over when it walks.
+  const int rhyp = model.jointIndex("RHipYawPitch");
+  if (rhyp < 0) fail(source, lines.robot(), "missing joint 'RHipYawPitch' (it mimics LHipYawPitch)");
+  if (!model.joints_[rhyp].mimic || *model.joints_[rhyp].mimic != "LHipYawPitch" ||
+      model.joints_[rhyp].mimic_multiplier != 1.0)
+    fail(source, lines.jointChild("RHipYawPitch", "mimic"),
+         "joint 'RHipYawPitch' needs <mimic joint=\"LHipYawPitch\" multiplier=\"1\"/> (the NAO drives both "
+         "HipYawPitch joints with one motor)");
   for (const auto& j : model.joints_) {
     if (!j.mimic) continue;
     const int target = model.jointIndex(*j.mimic);
-    if (target < 0) fail(source, "joint '" + j.name + "' mimics unknown joint '" + *j.mimic + "'");
+    if (target < 0) fail(source, lines.jointChild(j.name, "mimic"), "joint '" + j.name + "' mimics unknown joint '" + *j.mimic + "'");
     if (model.joints_[target].mimic)
-      fail(source, "joint '" + j.name + "' mimics '" + *j.mimic + "', which is itself a mimic");
+      fail(source, lines.jointChild(j.name, "mimic"), "joint '" + j.name + "' mimics '" + *j.mimic + "', which is itself a mimic");
   }
 
   return model;
@@ -283,9 +389,9 @@ double NaoModel::totalMass() const {
   return m;
 }
 
-std::vector<double> NaoModel::postureFromLibagent(const std::array<float, 25>& angles) const {
+std::vector<double> NaoModel::postureFromLibagent(const std::array<float, la::kNumJoints>& angles) const {
   std::vector<double> q(joints_.size(), 0.0);
-  for (int i = 0; i < 25; ++i)
+  for (int i = 0; i < la::kNumJoints; ++i)
     if (libagent_to_joint_[i] >= 0) q[libagent_to_joint_[i]] = angles[i];
   for (size_t j = 0; j < joints_.size(); ++j)
     if (joints_[j].mimic) {

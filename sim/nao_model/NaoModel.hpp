@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "agent/libagent/AgentShared.hpp"  // kNumJoints: the 25 libagent joints
+
 namespace simswift {
 
 // A rigid transform (URDF <origin xyz rpy>).
@@ -84,13 +86,13 @@ class NaoModel {
 
   // A posture in model joint order from 25 libagent-order angles (rad);
   // mimicking joints (RHipYawPitch) copy the joint they follow.
-  std::vector<double> postureFromLibagent(const std::array<float, 25>& angles) const;
+  std::vector<double> postureFromLibagent(const std::array<float, agent::libagent::kNumJoints>& angles) const;
 
  private:
   std::vector<LinkSpec> links_;
   std::vector<JointSpec> joints_;
   int root_ = -1;
-  std::array<int, 25> libagent_to_joint_{};
+  std::array<int, agent::libagent::kNumJoints> libagent_to_joint_{};
 };
 
 }  // namespace simswift

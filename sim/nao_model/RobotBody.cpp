@@ -81,7 +81,6 @@ RobotBody::RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSp
   // Hinges: body1 = child, body2 = parent, so a positive angle is the child
   // turning positively about the axis relative to its parent (NAO sign).
   joints_.resize(joints.size());
-  motors_.assign(joints.size(), nullptr);  // the hinge's own motor is used
   feedback_.resize(joints.size());
   for (size_t j = 0; j < joints.size(); ++j) {
     const JointSpec& spec = joints[j];

@@ -47,7 +47,8 @@ class RobotBody {
 
   // --- Commands (libagent order, 25 slots). Latched; the runner decides
   // when they take effect (one 10 ms cycle after they were written).
-  void setCommand(const std::array<float, 25>& angles, const std::array<float, 25>& stiffnesses);
+  void setCommand(const std::array<float, agent::libagent::kNumJoints>& angles,
+                  const std::array<float, agent::libagent::kNumJoints>& stiffnesses);
   // The same for a posture in model joint order (rad), every joint at `stiffness`.
   void holdPosture(const std::vector<double>& posture, float stiffness = 1.0f);
   const ServoCommandStats& commandStats() const { return servo_.stats(); }
@@ -83,7 +84,6 @@ class RobotBody {
   dWorldID world_;
   std::vector<dBodyID> bodies_;        // per link
   std::vector<dJointID> joints_;       // per joint (hinge)
-  std::vector<dJointID> motors_;       // per joint (angular motor or null)
   std::vector<dGeomID> geoms_;
   std::vector<std::unique_ptr<GeomTag>> tags_;
   ServoBank servo_;

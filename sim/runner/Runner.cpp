@@ -7,6 +7,7 @@
 
 #include "agent/libagent/SharedNames.hpp"
 #include "sim/vision/VisionOracle.hpp"
+#include "sim/runner/Tracer.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
 #include "sim/camera/FrameDumper.hpp"
 #include "sim/camera/Overview.hpp"
@@ -42,50 +43,33 @@ std::string hex64(uint64_t v) {
 constexpr float kBuiltinAnkleGyroGain = 0.05f;
 }  // namespace
 
-std::string RunStats::summary() const {
-  std::ostringstream s;
-  s << "sim " << fmt("%.2f", sim_s) << " s | wall " << fmt("%.2f", wall_s) << " s | "
-    << fmt("%.1f", real_time_factor) << "x real time | falls " << falls << " | blowups " << blowups;
-  if (nan_commands || clamped_angles || clamped_stiffness)
-    s << " | nan " << nan_commands << " clamped " << clamped_angles << "+" << clamped_stiffness;
-  if (skipped_cycles) s << " | skipped " << skipped_cycles;
-  s << " | hash " << hex64(hash);
-  return s.str();
-}
-
-std::string RunStats::robotLines() const {
-  std::ostringstream s;
-  for (const RobotEnd& r : robots)
-    s << "  t" << r.team << "p" << r.player << ": x " << fmt("%.3f", r.x) << " m  y " << fmt("%.3f", r.y)
-      << " m  theta " << fmt("%.3f", r.theta) << " rad  falls " << r.falls << (r.down ? "  down" : "  up") << "\n";
-  return s.str();
-}
-
 Runner::Runner(Scenario scenario) : scenario_(std::move(scenario)) {}
 
 Runner::~Runner() { shutdown(); }
 
-void Runner::setMotionGenerator(int robot, std::unique_ptr<ap::MotionGenerator> motion) {
-  if (started_) throw RunnerError("setMotionGenerator: the runner has already started");
+// Robot `robot`'s entry for an override given before start() (robots are
+// created in start(); overrides wait in scenario order until then).
+Runner::Robot& Runner::overrideSlot(int robot, const char* what) {
+  if (started_) throw RunnerError(std::string(what) + ": the runner has already started");
   if (robot < 0 || robot >= static_cast<int>(scenario_.robots.size()))
-    throw RunnerError("setMotionGenerator: no robot " + std::to_string(robot));
+    throw RunnerError(std::string(what) + ": no robot " + std::to_string(robot));
   if (robots_.empty()) {
-    // Robots are created in start(); keep overrides in scenario order until then.
     robots_.resize(scenario_.robots.size());
     for (auto& r : robots_) r = std::make_unique<Robot>();
   }
-  robots_[robot]->motion_override = std::move(motion);
+  return *robots_[robot];
+}
+
+void Runner::setMotionGenerator(int robot, std::unique_ptr<ap::MotionGenerator> motion) {
+  overrideSlot(robot, "setMotionGenerator").motion_override = std::move(motion);
 }
 
 void Runner::setPerceptionStep(int robot, std::unique_ptr<ap::PerceptionStep> perception) {
-  if (started_) throw RunnerError("setPerceptionStep: the runner has already started");
-  if (robot < 0 || robot >= static_cast<int>(scenario_.robots.size()))
-    throw RunnerError("setPerceptionStep: no robot " + std::to_string(robot));
-  if (robots_.empty()) {
-    robots_.resize(scenario_.robots.size());
-    for (auto& r : robots_) r = std::make_unique<Robot>();
-  }
-  robots_[robot]->perception_override = std::move(perception);
+  overrideSlot(robot, "setPerceptionStep").perception_override = std::move(perception);
+}
+
+void Runner::setStepHook(int robot, std::function<void(ap::ThreadId)> hook) {
+  overrideSlot(robot, "setStepHook").step_hook = std::move(hook);
 }
 
 bool Runner::camerasAvailable() {
@@ -172,6 +156,7 @@ void Runner::start() {
   started_ = true;
   model_ = std::make_shared<const NaoModel>(NaoModel::loadUrdf(scenario_.modelFile()));
   const FieldConfig field = FieldConfig::loadYaml(scenario_.fieldFile());
+  scenario_.checkAgainstField(field);
   WorldConfig wc;
   wc.substeps = scenario_.substeps;
   wc.solver = scenario_.solver == "quick" ? WorldConfig::Solver::Quick : WorldConfig::Solver::Exact;
@@ -243,6 +228,7 @@ void Runner::start() {
         pc.motion_generator = std::move(scripted);
       }
       pc.perception_step = std::move(r.perception_override);
+      pc.step_hook = std::move(r.step_hook);
       // The game state and team link reach the program's modules. A test's
       // PerceptionStep that talks to the extension objects itself (through
       // extensions(i)) keeps them to itself: two readers would split the inbox.
@@ -311,6 +297,12 @@ void Runner::waitForFirstAnswer(Robot& r) {
   }
 }
 
+// The watchdog ends a run only when it is on and no debugger is attached: a
+// thread stopped at a breakpoint keeps the run waiting (README "Debugging in
+// gdb"). Off (watchdog: off / --watchdog off), the runner waits in 1 s slices.
+double Runner::watchdogWait() const { return scenario_.watchdog_s > 0 ? scenario_.watchdog_s : 1.0; }
+bool Runner::watchdogArmed() const { return scenario_.watchdog_s > 0 && !tracerAttached(); }
+
 void Runner::watchdogFail(const Robot& r, const char* thread) const {
   std::ostringstream m;
   m << "robot " << r.tag << ": " << thread << " thread did not answer within " << scenario_.watchdog_s << " s (tick "
@@ -352,7 +344,7 @@ void Runner::tick() {
   // 1.
   for (size_t i = 0; i < robots_.size(); ++i) {
     Robot& r = *robots_[i];
-    std::array<float, 25> angles, stiff;
+    std::array<float, al::kNumJoints> angles, stiff;
     for (int j = 0; j < al::kNumJoints; ++j) {
       angles[j] = r.latched.joints.angles[j];
       stiff[j] = r.latched.joints.stiffnesses[j];
@@ -360,14 +352,12 @@ void Runner::tick() {
     world_->robot(static_cast<int>(i)).setCommand(angles, stiff);
     r.sensors->setSonarMode(r.latched.sonar);
   }
-  // Scenario pushes (actions: {t, push}) due by now: add to the torso's velocity.
+  // Scenario pushes (actions: {t, push}) due by now: impulses (N*s) through the World.
   for (size_t i = 0; i < robots_.size(); ++i) {
     Robot& r = *robots_[i];
     while (r.next_push < r.spec.pushes.size() && r.spec.pushes[r.next_push].t_s <= world_->time() + 1e-9) {
       const RobotSpec::Push& p = r.spec.pushes[r.next_push++];
-      dBodyID torso = world_->robot(static_cast<int>(i)).torsoBody();
-      const dReal* v = dBodyGetLinearVel(torso);
-      dBodySetLinearVel(torso, v[0] + p.vx, v[1] + p.vy, v[2]);
+      world_->applyImpulse(static_cast<int>(i), Eigen::Vector3d(p.jx, p.jy, 0.0));
     }
   }
   // 2.
@@ -401,8 +391,9 @@ void Runner::tick() {
     const bool external = r.spec.program == RobotSpec::Program::External;
     if (external && !r.attached) {
       waitForFirstAnswer(r);
-    } else if (r.host->sync() == SyncMode::LockStep && !r.host->waitAnswer(scenario_.watchdog_s)) {
-      watchdogFail(r, "motion");
+    } else if (r.host->sync() == SyncMode::LockStep) {
+      while (!r.host->waitAnswer(watchdogWait()))
+        if (watchdogArmed()) watchdogFail(r, "motion");
     }
     if (!r.attached) {
       r.attached = true;
@@ -414,15 +405,8 @@ void Runner::tick() {
 
   // Fall bookkeeping (torso frame origin height, m).
   for (size_t i = 0; i < robots_.size(); ++i) {
-    Robot& r = *robots_[i];
     const RobotBody& body = world_->robot(static_cast<int>(i));
-    const double z = body.linkPose(body.model().rootLink()).translation().z();
-    if (!r.fallen && z < kFallHeight) {
-      r.fallen = true;
-      ++r.falls;
-    } else if (r.fallen && z > kStandHeight) {
-      r.fallen = false;
-    }
+    robots_[i]->fall.update(body.linkPose(body.model().rootLink()).translation().z());
   }
 
   // 6. Integer arithmetic: frame k is due once t_us * 30 / 1e6 reaches k.
@@ -446,7 +430,9 @@ void Runner::tick() {
     }
     if (any)
       for (auto& r : robots_)
-        if (r->perception && !r->host->waitPerceptionDone(scenario_.watchdog_s)) watchdogFail(*r, "perception");
+        if (r->perception)
+          while (!r->host->waitPerceptionDone(watchdogWait()))
+            if (watchdogArmed()) watchdogFail(*r, "perception");
   }
   // 7.
   teamAndGame(t_us);
@@ -474,14 +460,14 @@ RunStats Runner::stats() const {
   s.real_time_factor = s.wall_s > 0 ? s.sim_s / s.wall_s : 0;
   s.blowups = blowups_;
   for (size_t i = 0; i < robots_.size(); ++i) {
-    s.falls += robots_[i]->falls;
+    s.falls += robots_[i]->fall.falls;
     if (world_ && static_cast<int>(i) < world_->numRobots() && i < scenario_.robots.size()) {
       const RobotBody& body = world_->robot(static_cast<int>(i));
       const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
       const Eigen::Vector3d fwd = torso.linear().col(0);  // torso x axis in the field frame
       s.robots.push_back({scenario_.robots[i].team, scenario_.robots[i].player, torso.translation().x(),
-                          torso.translation().y(), std::atan2(fwd.y(), fwd.x()), robots_[i]->falls,
-                          robots_[i]->fallen});
+                          torso.translation().y(), std::atan2(fwd.y(), fwd.x()), robots_[i]->fall.falls,
+                          robots_[i]->fall.fallen});
     }
     if (robots_[i]->host) s.skipped_cycles += robots_[i]->host->skippedCycles();
     if (world_ && static_cast<int>(i) < world_->numRobots()) {

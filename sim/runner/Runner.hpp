@@ -34,6 +34,8 @@
 #include "sim/game/GameController.hpp"
 #include "sim/game/Sideline.hpp"
 #include "sim/network/TeamNetwork.hpp"
+#include "sim/runner/FallDetector.hpp"
+#include "sim/runner/RunStats.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
@@ -64,34 +66,6 @@ struct RunOptions {
   bool progress = true;
 };
 
-struct RunStats {
-  double sim_s = 0;          // simulated seconds run
-  double wall_s = 0;         // wall-clock seconds (reporting only)
-  double real_time_factor = 0;
-  int64_t ticks = 0;
-  int falls = 0;             // torso height below kFallHeight, counted once until it stands again
-  int blowups = 0;           // world resets after a numerical blow-up
-  int64_t nan_commands = 0;  // summed over robots
-  int64_t clamped_angles = 0;
-  int64_t clamped_stiffness = 0;
-  int64_t skipped_cycles = 0;
-  uint64_t hash = 0;         // World::stateHash() at the end
-
-  // Where each robot ended (field frame: m, rad), in scenario order.
-  struct RobotEnd {
-    int team = 0, player = 0;
-    double x = 0, y = 0, theta = 0;  // torso position and heading
-    int falls = 0;
-    bool down = false;  // on the ground at the end (fallen and not yet back up)
-  };
-  std::vector<RobotEnd> robots;
-
-  std::string summary() const;       // the one-line summary
-  std::string robotLines() const;    // one line per robot: "  t0p1: x .. m  y .. m  theta .. rad  falls N  up|down"
-};
-
-constexpr double kFallHeight = 0.20;   // m: torso origin below this = fallen
-constexpr double kStandHeight = 0.25;  // m: back above this = up again (hysteresis)
 
 class Runner {
  public:
@@ -105,6 +79,9 @@ class Runner {
   void setMotionGenerator(int robot, std::unique_ptr<agent::program::MotionGenerator> motion);
   // Before start(): replace a builtin robot's Perception step.
   void setPerceptionStep(int robot, std::unique_ptr<agent::program::PerceptionStep> perception);
+  // Before start(): a hook each of a builtin robot's threads calls before
+  // every step (ProgramConfig::step_hook; tests jitter thread timing with it).
+  void setStepHook(int robot, std::function<void(agent::program::ThreadId)> hook);
 
   // Builds the world, hosts and programs.
   void start();
@@ -159,6 +136,7 @@ class Runner {
     std::unique_ptr<sensors::SensorSuite> sensors;
     std::unique_ptr<agent::program::MotionGenerator> motion_override;
     std::unique_ptr<agent::program::PerceptionStep> perception_override;
+    std::function<void(agent::program::ThreadId)> step_hook;
     // Camera images (set up by the host when rendering).
     agent::libagent::CameraImages* images = nullptr;
     std::unique_ptr<agent::program::RobotProgram> program;  // builtin only
@@ -166,15 +144,17 @@ class Runner {
     agent::libagent::ActuatorCommand latched;
     bool perception = false;
     bool attached = false;  // has answered its first tick
-    bool fallen = false;
-    int falls = 0;
+    FallDetector fall;  // torso-height fall bookkeeping (statistics only)
     size_t next_push = 0;  // next of spec.pushes to apply
     agent::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
   };
 
+  Robot& overrideSlot(int robot, const char* what);
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
   void waitForFirstAnswer(Robot& r);
   [[noreturn]] void watchdogFail(const Robot& r, const char* thread) const;
+  double watchdogWait() const;  // s per wait
+  bool watchdogArmed() const;   // on, and no debugger attached
 
   Scenario scenario_;
   std::shared_ptr<const NaoModel> model_;

@@ -1,15 +1,19 @@
 #include "sim/runner/Scenario.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "agent/motion/WalkConfig.hpp"
 #include "sim/world/YamlReader.hpp"
 
-#ifndef SIMSWIFT_SOURCE_DIR
-#define SIMSWIFT_SOURCE_DIR "."
+#ifndef SIMSWIFT_INSTALL_DATADIR
+#define SIMSWIFT_INSTALL_DATADIR "/usr/local/share/simswift"
 #endif
 
 namespace simswift::runner {
@@ -18,9 +22,49 @@ namespace al = agent::libagent;
 using agent::program::Posture;
 using agent::program::ScriptStep;
 
-std::string sourceDir() { return SIMSWIFT_SOURCE_DIR; }
+std::vector<std::string> dataDirs() {
+  std::vector<std::string> dirs;
+  if (const char* env = std::getenv("SIMSWIFT_DATA_DIR"); env && *env) dirs.push_back(env);
+  // Beside the executable: <prefix>/bin/simswift -> <prefix>/share/simswift
+  // (installed), build/simswift or build/tests/test_x -> build/share/simswift
+  // (the build tree's staged copy, see CMakeLists.txt).
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    dirs.push_back((exe.parent_path().parent_path() / "share" / "simswift").string());
+    dirs.push_back((exe.parent_path() / "share" / "simswift").string());
+  }
+  dirs.push_back(SIMSWIFT_INSTALL_DATADIR);
+  return dirs;
+}
+
+// Sane ranges for scenario values (SI units unless noted).
+namespace limits {
+constexpr double kMaxTime = 1e6;           // s: durations and event times (11.6 days)
+constexpr double kMinDuration = kTickSeconds;  // s: at least one tick
+constexpr double kMaxPosition = 50;        // m: before the field is known
+constexpr double kMaxHeading = 2 * M_PI;   // rad
+constexpr double kMaxWallClock = 3600;     // s: watchdog, attach timeout
+constexpr double kMaxSeed = 9007199254740992.0;  // 2^53: every whole number below is exact
+constexpr double kMaxJointAngle = 10;      // rad (the servos clamp to the joint's range)
+constexpr double kRobotRadius = 0.15;      // m: a NAO's footprint, centre to the arms' sides
+}  // namespace limits
 
 namespace {
+
+// The names a scenario may use, each list once (parsePosture and
+// parseActionType in agent/ map them to the robot code's enums).
+const std::vector<std::string> kPostureNames = {"stand", "crouch", "limp", "zero"};
+const std::vector<std::string> kActionNames = {"walk",       "stand", "kick",   "getup_front", "getup_back",
+                                               "dead",       "crouch", "limp",  "none"};
+struct ButtonName {
+  const char* name;
+  sensors::Button button;
+};
+const ButtonName kButtonNames[] = {{"chest", sensors::Button::Chest},
+                                   {"head_front", sensors::Button::HeadFront},
+                                   {"head_middle", sensors::Button::HeadMiddle},
+                                   {"head_rear", sensors::Button::HeadRear}};
 
 std::string resolve(const std::string& base, const std::string& p) {
   if (p.empty() || p[0] == '/' || base.empty()) return p;
@@ -29,7 +73,7 @@ std::string resolve(const std::string& base, const std::string& p) {
 
 ScriptStep readStep(const YamlReader& r) {
   ScriptStep s;
-  s.t_s = r.number("t", Range::nonNegative());
+  s.t_s = r.number("t", Range::closed(0, limits::kMaxTime));
   const bool has_joint = r.has("joint");
   const bool has_posture = r.has("posture");
   if (has_joint == has_posture) r.fail("a script step needs exactly one of 'joint' or 'posture'");
@@ -37,11 +81,11 @@ ScriptStep readStep(const YamlReader& r) {
     const std::string name = r.string("joint");
     s.joint = agent::program::jointIndex(name);
     if (s.joint < 0) r.fail("joint", "unknown joint '" + name + "' (use NAO names, e.g. HeadYaw)");
-    s.angle = static_cast<float>(r.number("angle"));
-    s.duration_s = r.number("duration", 0.0, Range::nonNegative());
+    s.angle = static_cast<float>(r.number("angle", Range::closed(-limits::kMaxJointAngle, limits::kMaxJointAngle)));
+    s.duration_s = r.number("duration", 0.0, Range::closed(0, limits::kMaxTime));
     if (r.has("stiffness")) s.stiffness = static_cast<float>(r.number("stiffness", Range::closed(-1, 1)));
   } else {
-    const std::string p = r.choice("posture", "stand", {"stand", "crouch", "limp", "zero"});
+    const std::string p = r.choice("posture", "stand", kPostureNames);
     s.posture = *agent::program::parsePosture(p);
   }
   r.finish();
@@ -50,14 +94,17 @@ ScriptStep readStep(const YamlReader& r) {
 
 // One entry of a robot's `actions:` list: a body action or a push.
 void readAction(const YamlReader& r, RobotSpec& rs) {
-  const double t = r.number("t", Range::nonNegative());
+  const double t = r.number("t", Range::closed(0, limits::kMaxTime));
   if (r.has("push")) {
     if (r.has("action")) r.fail("an actions entry holds either 'action' or 'push', not both");
     YamlReader p = r.map("push");
     RobotSpec::Push push;
     push.t_s = t;
-    push.vx = p.number("x", 0.0);
-    push.vy = p.number("y", 0.0);
+    const Range impulse = Range::closed(-World::kMaxPushImpulse, World::kMaxPushImpulse);  // N*s
+    push.jx = p.number("x", 0.0, impulse);
+    push.jy = p.number("y", 0.0, impulse);
+    if (std::hypot(push.jx, push.jy) > World::kMaxPushImpulse)
+      p.fail("x", "the push's impulse must be at most " + std::to_string(World::kMaxPushImpulse) + " N*s");
     p.finish();
     rs.pushes.push_back(push);
     r.finish();
@@ -65,21 +112,22 @@ void readAction(const YamlReader& r, RobotSpec& rs) {
   }
   agent::motion::ActionStep a;
   a.t = t;
-  const std::string name = r.choice("action", "stand",
-                                    {"walk", "stand", "kick", "getup_front", "getup_back", "dead", "crouch",
-                                     "limp", "none"});
+  const std::string name = r.choice("action", "stand", kActionNames);
   agent::motion::parseActionType(name, &a.body.type);
-  a.body.forward = static_cast<float>(r.number("forward", 0.0));
-  a.body.left = static_cast<float>(r.number("left", 0.0));
-  a.body.turn = static_cast<float>(r.number("turn", 0.0));
+  // The walk's own limits (WalkConfig, one home): faster requests are
+  // refused rather than clamped in silence.
+  const agent::motion::WalkConfig walk;
+  a.body.forward = static_cast<float>(r.number("forward", 0.0, Range::closed(-walk.max_forward, walk.max_forward)));
+  a.body.left = static_cast<float>(r.number("left", 0.0, Range::closed(-walk.max_left, walk.max_left)));
+  a.body.turn = static_cast<float>(r.number("turn", 0.0, Range::closed(-walk.max_turn, walk.max_turn)));
   a.body.kick_power = static_cast<float>(r.number("power", 1.0, Range::closed(0, 1)));
-  a.body.kick_direction = static_cast<float>(r.number("direction", 0.0));
+  a.body.kick_direction = static_cast<float>(r.number("direction", 0.0, Range::closed(-M_PI, M_PI)));
   a.body.foot = r.choice("foot", "right", {"left", "right"}) == "left" ? agent::blackboard::Foot::LEFT
                                                                       : agent::blackboard::Foot::RIGHT;
   if (r.has("head_yaw") || r.has("head_pitch")) {
     a.has_head = true;
-    a.head.yaw = static_cast<float>(r.number("head_yaw", 0.0));
-    a.head.pitch = static_cast<float>(r.number("head_pitch", 0.0));
+    a.head.yaw = static_cast<float>(r.number("head_yaw", 0.0, Range::closed(-M_PI, M_PI)));
+    a.head.pitch = static_cast<float>(r.number("head_pitch", 0.0, Range::closed(-M_PI, M_PI)));
   }
   r.finish();
   rs.actions.push_back(a);
@@ -88,13 +136,13 @@ void readAction(const YamlReader& r, RobotSpec& rs) {
 // One entry of a robot's `buttons:` list.
 RobotSpec::ButtonPress readButton(const YamlReader& r) {
   RobotSpec::ButtonPress b;
-  b.t_s = r.number("t", Range::nonNegative());
-  b.duration_s = r.number("duration", 0.1, Range::nonNegative());
-  const std::string name = r.choice("button", "chest", {"chest", "head_front", "head_middle", "head_rear"});
-  b.button = name == "chest"        ? sensors::Button::Chest
-             : name == "head_front" ? sensors::Button::HeadFront
-             : name == "head_middle" ? sensors::Button::HeadMiddle
-                                     : sensors::Button::HeadRear;
+  b.t_s = r.number("t", Range::closed(0, limits::kMaxTime));
+  b.duration_s = r.number("duration", 0.1, Range::closed(0, limits::kMaxTime));
+  std::vector<std::string> names;
+  for (const ButtonName& n : kButtonNames) names.push_back(n.name);
+  const std::string name = r.choice("button", "chest", names);
+  for (const ButtonName& n : kButtonNames)
+    if (name == n.name) b.button = n.button;
   r.finish();
   return b;
 }
@@ -174,12 +222,39 @@ bool RobotSpec::buttonHeld(sensors::Button b, double t_s) const {
   return false;
 }
 
-std::string Scenario::modelFile() const { return resolve(base_dir, model_path); }
-std::string Scenario::fieldFile() const { return resolve(base_dir, field_path); }
+// A relative path: the scenario's folder (or base_dir) first, then the data
+// folders; never the source tree this binary was built from.
+std::string Scenario::locate(const std::string& p, const std::string& key, int line) const {
+  if (p.empty() || p[0] == '/') return p;
+  std::vector<std::string> tried;
+  for (const std::string& dir : [&] {
+         std::vector<std::string> d{base_dir.empty() ? "." : base_dir};
+         for (const std::string& x : dataDirs()) d.push_back(x);
+         return d;
+       }()) {
+    const std::string c = resolve(dir, p);
+    std::error_code ec;
+    if (std::filesystem::exists(c, ec)) return c;
+    tried.push_back(c);
+  }
+  std::string list;
+  for (const auto& t : tried) list += (list.empty() ? "" : ", ") + t;
+  throw ConfigError(source + ":" + std::to_string(line) + ": " + key + ": '" + p + "' not found (tried " + list +
+                    "; set SIMSWIFT_DATA_DIR or give --" + key + ")");
+}
+
+std::string Scenario::modelFile() const { return locate(model_path, "model", model_line); }
+std::string Scenario::fieldFile() const { return locate(field_path, "field", field_line); }
 
 Scenario Scenario::loadFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ":1: is a directory, not a scenario file");
   std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot open scenario file");
+  if (!in) throw ConfigError(path + ":1: cannot open scenario file");
+  // yaml-cpp reads everything at once: refuse a huge file first.
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxConfigBytes)
+    throw ConfigError(path + ":1: " + std::to_string(size) + " bytes is more than a scenario can be (1 MB)");
   std::ostringstream text;
   text << in.rdbuf();
   return parse(text.str(), path);
@@ -190,13 +265,26 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
   YamlReader top(root, source_name);
   Scenario sc;
   sc.source = source_name;
-  sc.base_dir = top.string("base_dir", sourceDir());
+  // Relative paths resolve against the scenario file's folder first.
+  sc.base_dir = top.string("base_dir", std::filesystem::path(source_name).parent_path().string());
   sc.model_path = top.string("model", "models/nao_v5.urdf");
   sc.field_path = top.string("field", "fields/spl_2017.yaml");
-  sc.duration = top.number("duration", 10.0, Range::positive());
-  sc.seed = static_cast<uint64_t>(top.integer("seed", 1, Range::nonNegative()));
-  sc.watchdog_s = top.number("watchdog", 5.0, Range::positive());
-  sc.attach_timeout_s = top.number("attach_timeout", 30.0, Range::positive());
+  auto lineOf = [&](const char* key) { return root[key] ? root[key].Mark().line + 1 : 1; };
+  sc.model_line = lineOf("model");
+  sc.field_line = lineOf("field");
+  // At least one tick, at most limits::kMaxTime (a run that would go on
+  // for weeks is a typo).
+  sc.duration = top.number("duration", 10.0, Range::closed(limits::kMinDuration, limits::kMaxTime));
+  const double seed = top.number("seed", 1.0, Range::closed(0, limits::kMaxSeed));
+  if (seed != std::floor(seed)) top.fail("seed", "must be a whole number (got " + std::to_string(seed) + ")");
+  sc.seed = static_cast<uint64_t>(seed);
+  if (top.has("watchdog") && root["watchdog"].IsScalar() &&
+      (root["watchdog"].Scalar() == "off" || root["watchdog"].Scalar() == "false")) {
+    sc.watchdog_s = 0;  // off: a run that sits at a debugger breakpoint is not ended
+  } else {
+    sc.watchdog_s = top.number("watchdog", 5.0, Range::openClosed(0, limits::kMaxWallClock));
+  }
+  sc.attach_timeout_s = top.number("attach_timeout", 30.0, Range::openClosed(0, limits::kMaxWallClock));
 
   // noise: on/off, or a map of switches.
   if (top.has("noise")) {
@@ -253,7 +341,9 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
       sc.vision.enabled = top.boolean("vision");
   }
   if (auto b = top.optionalMap("ball")) {
-    sc.ball = std::make_pair(b->number("x"), b->number("y"));
+    const Range pos = Range::closed(-limits::kMaxPosition, limits::kMaxPosition);
+    sc.ball = std::make_pair(b->number("x", pos), b->number("y", pos));
+    sc.ball_line = b->node().Mark().line + 1;
     b->finish();
   }
 
@@ -262,6 +352,7 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
   int bare = 0;
   for (const YamlReader& r : top.list("robots")) {
     RobotSpec rs;
+    rs.line = r.node().Mark().line + 1;
     rs.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
     rs.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
     if (!numbers.insert(al::simulationNumber(rs.team, rs.player)).second)
@@ -289,10 +380,11 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     rs.bare_names = r.choice("names", "simulation", {"simulation", "bare"}) == "bare";
     if (rs.bare_names && ++bare > 1)
       r.fail("names", "only one robot can have the bare names (/libagent-memory)");
-    rs.x = r.number("x", 0.0);
-    rs.y = r.number("y", 0.0);
-    rs.theta = r.number("theta", 0.0);
-    rs.posture = *agent::program::parsePosture(r.choice("posture", "stand", {"stand", "crouch", "limp", "zero"}));
+    const Range pos = Range::closed(-limits::kMaxPosition, limits::kMaxPosition);
+    rs.x = r.number("x", 0.0, pos);
+    rs.y = r.number("y", 0.0, pos);
+    rs.theta = r.number("theta", 0.0, Range::closed(-limits::kMaxHeading, limits::kMaxHeading));
+    rs.posture = *agent::program::parsePosture(r.choice("posture", "stand", kPostureNames));
     rs.program = r.choice("program", "builtin", {"builtin", "external"}) == "external"
                      ? RobotSpec::Program::External
                      : RobotSpec::Program::Builtin;
@@ -318,8 +410,40 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
   if (overview_reader && sc.camera.overview.robot >= static_cast<int>(sc.robots.size()))
     overview_reader->fail("robot", "no robot " + std::to_string(sc.camera.overview.robot) + " (the scenario has " +
                                        std::to_string(sc.robots.size()) + ")");
+  // Robots on top of one another (the field is not needed for this).
+  for (size_t i = 0; i < sc.robots.size(); ++i)
+    for (size_t j = 0; j < i; ++j) {
+      const double d = std::hypot(sc.robots[i].x - sc.robots[j].x, sc.robots[i].y - sc.robots[j].y);
+      if (d < 2 * limits::kRobotRadius)
+        throw ConfigError(source_name + ":" + std::to_string(sc.robots[i].line) + ": robots[" + std::to_string(i) +
+                          "]: overlaps robots[" + std::to_string(j) + "] (centres " + std::to_string(d) +
+                          " m apart; at least " + std::to_string(2 * limits::kRobotRadius) + " m needed)");
+    }
   top.finish();
   return sc;
+}
+
+void Scenario::checkAgainstField(const FieldConfig& f) const {
+  auto fail = [&](int line, const std::string& what) {
+    throw ConfigError(source + ":" + std::to_string(line) + ": " + what + " (field " + f.source + ")");
+  };
+  const double r_post = f.goal.post_diameter / 2;
+  const double post_y = f.goal.inner_width / 2 + r_post;  // as FieldGeometry.cpp builds them
+  auto check = [&](int line, const std::string& what, double x, double y, double radius) {
+    const double hx = f.carpetLength() / 2 - radius, hy = f.carpetWidth() / 2 - radius;
+    if (std::fabs(x) > hx || std::fabs(y) > hy)
+      fail(line, what + " at (" + std::to_string(x) + ", " + std::to_string(y) + ") m is off the carpet (|x| <= " +
+                     std::to_string(hx) + ", |y| <= " + std::to_string(hy) + " m)");
+    for (double sx : {-1.0, 1.0})
+      for (double sy : {-1.0, 1.0}) {
+        const double d = std::hypot(x - sx * f.length / 2, y - sy * post_y);
+        if (d < radius + r_post)
+          fail(line, what + " at (" + std::to_string(x) + ", " + std::to_string(y) + ") m is inside a goal post");
+      }
+  };
+  for (size_t i = 0; i < robots.size(); ++i)
+    check(robots[i].line, "robots[" + std::to_string(i) + "]", robots[i].x, robots[i].y, limits::kRobotRadius);
+  if (ball) check(ball_line, "ball", ball->first, ball->second, f.ball.diameter / 2);
 }
 
 }  // namespace simswift::runner

@@ -1,14 +1,14 @@
 // A run's description, loaded from YAML (scenarios/*.yaml):
 //
-//   model: models/nao_v5.urdf      # optional; relative to the source tree
+//   model: models/nao_v5.urdf      # optional; relative to this file's folder, then the data folder
 //   field: fields/spl_2017.yaml    # optional
 //   duration: 10                   # s of simulated time
 //   seed: 1
 //   noise: on                      # or off, or a map of per-sensor switches:
 //                                  # {gyro, accel, angle, fsr, sonar, encoder: on/off}
-//   watchdog: 5                    # s of wall clock a robot thread may take
+//   watchdog: 5                    # s of wall clock a robot thread may take, or off
 //   attach_timeout: 30             # s of wall clock to wait for external robots
-//   base_dir: /path/to/simswift    # optional; where relative model/field paths resolve
+//   base_dir: /path/to/simswift    # optional; where relative model/field paths resolve first
 //   physics: {substeps: 2, solver: quick|exact, iterations: 20}  (defaults: WorldConfig)
 //   camera:                        # rendering is off unless asked (here or by CLI flags)
 //     enabled: on                  # render both NAO cameras of every robot at 30 Hz
@@ -27,7 +27,7 @@
 //        buttons: [{t: 3.0, button: chest, duration: 0.1}],
 //        actions: [{t: 1.0, action: walk, forward: 300, left: 0, turn: 0},  # mm/s, rad/s
 //                  {t: 6.0, action: kick, foot: right, power: 1, direction: 0},
-//                  {t: 9.0, push: {x: 3.0, y: 0.0}}]}   # m/s added to the torso (field axes)
+//                  {t: 9.0, push: {x: 3.0, y: 0.0}}]}   # impulse N*s at the torso (field axes)
 //      actions run the robot's Motion (agent/motion) from a timed list: walk, stand,
 //      kick, getup_front, getup_back, dead, crouch, limp, none.
 //   team_comms: {loss: 0.1, delay_ms: 100, budget: 0}   # see sim/network/TeamNetwork.hpp
@@ -67,6 +67,7 @@
 #include "sim/sensors/Buttons.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
+#include "sim/world/FieldConfig.hpp"
 #include "sim/world/World.hpp"
 
 namespace simswift {
@@ -78,6 +79,7 @@ namespace simswift::runner {
 enum class TeamColour : int { Blue = 0, Red = 1 };
 
 struct RobotSpec {
+  int line = 0;  // of the robot's entry in the scenario file (for errors)
   int team = 0;    // SPL team number
   int player = 1;
   TeamColour colour = TeamColour::Blue;  // side of the match
@@ -90,10 +92,12 @@ struct RobotSpec {
   //   actions: [{t: 1, action: walk, forward: 300, left: 0, turn: 0},
   //             {t: 6, action: kick, foot: right, power: 1, direction: 0},
   //             {t: 9, push: {x: 2.5, y: 0}}]
-  // forward/left mm/s, turn rad/s, direction rad; a push adds (x, y) m/s to
-  // the torso's velocity (field frame) at time t (simulator side).
+  // forward/left mm/s, turn rad/s, direction rad; a push is an impulse of
+  // (x, y) N*s (field frame) at the torso's centre of mass at time t
+  // (simulator side, World::applyImpulse): 1 N*s changes the 5.3 kg NAO's
+  // CoM velocity by 0.19 m/s; about 3.5 N*s topples a standing NAO.
   std::vector<agent::motion::ActionStep> actions;
-  struct Push { double t_s = 0, vx = 0, vy = 0; };
+  struct Push { double t_s = 0, jx = 0, jy = 0; };  // s, N*s, N*s
   std::vector<Push> pushes;
   // Touch sensors pressed by the scenario (any program), e.g.
   //   buttons: [{t: 2.0, button: chest, duration: 0.1}]
@@ -129,13 +133,14 @@ struct NoiseSwitches {
 
 struct Scenario {
   std::string source = "<defaults>";
-  std::string model_path;   // absolute or relative to base_dir
+  std::string model_path;   // absolute, or relative to base_dir, then to the data folders
   std::string field_path;
-  std::string base_dir;     // where relative paths resolve (the source tree)
+  int model_line = 1, field_line = 1;  // where they were given (for errors)
+  std::string base_dir;     // where relative paths resolve first (the scenario's folder)
   double duration = 10.0;   // s
   uint64_t seed = 1;
   NoiseSwitches noise;
-  double watchdog_s = 5.0;        // wall-clock s per robot thread answer
+  double watchdog_s = 5.0;        // wall-clock s per robot thread answer; 0 = off (watchdog: off)
   double attach_timeout_s = 30.0; // wall-clock s to wait for external robots
   // Physics defaults follow WorldConfig (QuickStep, 2 x 5 ms; World.cpp says why).
   int substeps = WorldConfig{}.substeps;
@@ -146,13 +151,21 @@ struct Scenario {
   // when the scenario's noise master switch is off (see Runner::start).
   vision::VisionConfig vision;
   std::optional<std::pair<double, double>> ball;  // m, field frame
+  int ball_line = 0;
   std::vector<RobotSpec> robots;
   network::TeamNetworkConfig team_comms;  // team_comms: (defaults: no loss, no delay, no budget)
   game::GameConfig game;                  // game: (default: PLAYING, no penalties)
 
-  // Absolute paths of the model and field files.
+  // Placement checked against the field (ConfigError "file:line: key: ..."):
+  // every robot and the ball on the carpet, not inside a goal post, robots
+  // not overlapping one another. Runner::start() calls it.
+  void checkAgainstField(const FieldConfig& field) const;
+
+  // The model and field files: a relative path is looked up in base_dir,
+  // then in dataDirs(). ConfigError (file:line) if none has it.
   std::string modelFile() const;
   std::string fieldFile() const;
+  std::string locate(const std::string& path, const std::string& key, int line) const;
 
   static Scenario loadFile(const std::string& path);
   static Scenario parse(const std::string& text, const std::string& source_name);
@@ -162,7 +175,9 @@ struct Scenario {
 // experiment files' script robots, sim/experiment).
 void readActions(const YamlReader& robot, RobotSpec& rs);
 
-// The source tree (compile definition), where default paths resolve.
-std::string sourceDir();
+// Where relative model/field paths resolve after the scenario's folder:
+// $SIMSWIFT_DATA_DIR, <exe>/../share/simswift, <exe>/share/simswift (the
+// build tree's staged copy), then the install prefix's share/simswift.
+std::vector<std::string> dataDirs();
 
 }  // namespace simswift::runner

@@ -71,13 +71,16 @@ FieldConfig parse(const YAML::Node& root, const std::string& source) {
   YamlReader r = top.map("field");
   top.finish();
 
-  f.length = r.number("length", f.length, Range::positive());
-  f.width = r.number("width", f.width, Range::positive());
-  f.border = r.number("border", f.border, Range::nonNegative());
-  f.line_width = r.number("line_width", f.line_width, Range::positive());
+  // Sane ranges (m, kg, SI): anything a real field could be, nothing that
+  // overflows ODE or makes the geometry meaningless.
+  f.length = r.number("length", f.length, Range::closed(1, 50));
+  f.width = r.number("width", f.width, Range::closed(1, 50));
+  if (f.width > f.length) r.fail("width", "must not exceed length (" + std::to_string(f.length) + " m)");
+  f.border = r.number("border", f.border, Range::closed(0, 10));
+  f.line_width = r.number("line_width", f.line_width, Range::openClosed(0, 0.5));
   f.setSplMarkings();  // defaults, scaled to the dimensions read so far
 
-  const Range pos = Range::positive();
+  const Range pos = Range::openClosed(0, 1);  // line widths, cross sizes (m)
   if (r.has("lines")) {
     f.lines.clear();
     for (const YamlReader& l : r.list("lines")) {
@@ -95,7 +98,8 @@ FieldConfig parse(const YAML::Node& root, const std::string& source) {
       c.string("name", "");
       auto ctr = c.numbers("centre", 2);
       checkOnCarpet(c, "centre", f, ctr[0], ctr[1]);
-      f.circles.push_back({ctr[0], ctr[1], c.number("radius", pos), c.number("width", f.line_width, pos)});
+      f.circles.push_back({ctr[0], ctr[1], c.number("radius", Range::openClosed(0, 25)),
+                           c.number("width", f.line_width, pos)});
       c.finish();
     }
   }
@@ -113,33 +117,45 @@ FieldConfig parse(const YAML::Node& root, const std::string& source) {
 
   if (auto g = r.optionalMap("goal")) {
     GoalConfig& o = f.goal;
-    o.post_diameter = g->number("post_diameter", o.post_diameter, pos);
-    o.post_height = g->number("post_height", o.post_height, pos);
-    o.inner_width = g->number("inner_width", o.inner_width, pos);
-    o.depth = g->number("depth", o.depth, pos);
-    o.net_height = g->number("net_height", o.net_height, pos);
-    o.net_stiffness = g->number("net_stiffness", o.net_stiffness, pos);
-    o.net_damping = g->number("net_damping", o.net_damping, Range::nonNegative());
+    o.post_diameter = g->number("post_diameter", o.post_diameter, Range::openClosed(0, 1));
+    o.post_height = g->number("post_height", o.post_height, Range::openClosed(0, 5));
+    o.inner_width = g->number("inner_width", o.inner_width, Range::openClosed(0, 20));
+    o.depth = g->number("depth", o.depth, Range::openClosed(0, 5));
+    o.net_height = g->number("net_height", o.net_height, Range::openClosed(0, 5));
+    o.net_stiffness = g->number("net_stiffness", o.net_stiffness, Range::openClosed(0, 1e6));
+    o.net_damping = g->number("net_damping", o.net_damping, Range::closed(0, 1e5));
+    // The goal as a whole (FieldGeometry.cpp): posts are capsules whose
+    // straight part is post_height - post_diameter, so the crossbar must
+    // stand above a whole post diameter; the net hangs inside the posts;
+    // the goal fits between the touch lines.
+    if (!(o.post_height > 2 * o.post_diameter))
+      g->fail("post_height", "must exceed twice post_diameter (" + std::to_string(o.post_diameter) +
+                                 " m): the posts are capsules (got " + std::to_string(o.post_height) + ")");
+    if (o.net_height > o.post_height)
+      g->fail("net_height", "must not exceed post_height (" + std::to_string(o.post_height) + " m)");
+    if (o.inner_width + 2 * o.post_diameter > f.width)
+      g->fail("inner_width", "the goal (inner_width + 2 post_diameter) is wider than the field (" +
+                                 std::to_string(f.width) + " m)");
     g->finish();
   }
   if (auto b = r.optionalMap("ball")) {
     BallConfig& o = f.ball;
-    o.diameter = b->number("diameter", o.diameter, pos);
-    o.mass = b->number("mass", o.mass, pos);
-    o.rolling_friction = b->number("rolling_friction", o.rolling_friction, Range::nonNegative());
+    o.diameter = b->number("diameter", o.diameter, Range::closed(0.01, 1));
+    o.mass = b->number("mass", o.mass, Range::closed(0.001, 10));
+    o.rolling_friction = b->number("rolling_friction", o.rolling_friction, Range::closed(0, 10));
     o.restitution = b->number("restitution", o.restitution, Range::closed(0, 1));
     o.ground_restitution =
         b->number("ground_restitution", o.ground_restitution, Range::closed(0, 1));
-    o.linear_damping = b->number("linear_damping", o.linear_damping, Range::nonNegative());
+    o.linear_damping = b->number("linear_damping", o.linear_damping, Range::closed(0, 100));
     b->finish();
   }
   if (auto s = r.optionalMap("surface")) {
     SurfaceConfig& o = f.surface;
-    o.friction = s->number("friction", o.friction, Range::nonNegative());
-    o.ball_friction = s->number("ball_friction", o.ball_friction, Range::nonNegative());
-    o.other_friction = s->number("other_friction", o.other_friction, Range::nonNegative());
+    o.friction = s->number("friction", o.friction, Range::closed(0, 10));
+    o.ball_friction = s->number("ball_friction", o.ball_friction, Range::closed(0, 10));
+    o.other_friction = s->number("other_friction", o.other_friction, Range::closed(0, 10));
     o.soft_erp = s->number("soft_erp", o.soft_erp, Range::closed(0, 1));
-    o.soft_cfm = s->number("soft_cfm", o.soft_cfm, Range::nonNegative());
+    o.soft_cfm = s->number("soft_cfm", o.soft_cfm, Range::closed(0, 1));
     s->finish();
   }
   r.finish();

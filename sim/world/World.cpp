@@ -34,8 +34,11 @@
 //     3. dWorldStep / dWorldQuickStep(dt)
 //     4. contact forces on robot links read back, scaled 1/substeps
 //     5. contact joints removed
-//   then: blow-up check per robot and for the ball (reset + WorldEvent),
-//   tick counter + 1.
+//     0. blow-up check per robot and for the ball (reset + WorldEvent)
+//        BEFORE the step: ODE aborts (dxNormalize3/4 assertions) rather
+//        than returning when it integrates an infinite rotation
+//     0'. (first substep only) pending pushes become forces on the torsos
+//   then: the blow-up check once more, tick counter + 1.
 #include <cmath>
 #include <mutex>
 
@@ -116,6 +119,7 @@ int World::addRobot(std::shared_ptr<const NaoModel> model, double x, double y, d
   impl_->robot_spaces.push_back(rs);
   impl_->models.push_back(model);
   impl_->placements.push_back({});
+  impl_->pending_impulse.push_back(Eigen::Vector3d::Zero());
   robots_.push_back(std::make_unique<RobotBody>(*model, index, world_, rs,
                                                 planarPose(x, y, theta, kPlacementZ), posture,
                                                 config_.servo));
@@ -123,8 +127,17 @@ int World::addRobot(std::shared_ptr<const NaoModel> model, double x, double y, d
   return index;
 }
 
+void World::checkPlacement(const char* what, double x, double y, double theta) const {
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(theta) || std::fabs(x) > config_.max_distance ||
+      std::fabs(y) > config_.max_distance || std::fabs(theta) > 100)
+    throw WorldError(std::string(what) + ": position (" + std::to_string(x) + ", " + std::to_string(y) +
+                     ") m, heading " + std::to_string(theta) + " rad is not finite or beyond " +
+                     std::to_string(config_.max_distance) + " m");
+}
+
 void World::placeRobot(int i, double x, double y, double theta,
                        const std::vector<double>& posture) {
+  checkPlacement("placeRobot", x, y, theta);
   RobotBody& rb = *robots_.at(i);
   rb.teleport(planarPose(x, y, theta, kPlacementZ));
   rb.setPosture(posture);
@@ -135,6 +148,7 @@ void World::placeRobot(int i, double x, double y, double theta,
 }
 
 void World::placeBall(double x, double y) {
+  checkPlacement("placeBall", x, y, 0);
   const double r = field_.ball.diameter / 2;
   impl_->ball_placed = Eigen::Vector3d(x, y, r);
   dBodySetPosition(impl_->ball, x, y, r);
@@ -145,6 +159,9 @@ void World::placeBall(double x, double y) {
 }
 
 void World::setBallVelocity(const Eigen::Vector3d& v) {
+  if (!v.allFinite() || v.norm() > config_.blowup_linear_speed)
+    throw WorldError("setBallVelocity: " + std::to_string(v.norm()) + " m/s is not finite or beyond " +
+                     std::to_string(config_.blowup_linear_speed) + " m/s");
   dBodySetLinearVel(impl_->ball, v.x(), v.y(), v.z());
 }
 
@@ -158,9 +175,19 @@ Eigen::Quaterniond World::ballOrientation() const {
   return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
 }
 
+dBodyID World::ballBody() const { return impl_->ball; }
+
 Eigen::Vector3d World::ballVelocity() const {
   const dReal* v = dBodyGetLinearVel(impl_->ball);
   return {v[0], v[1], v[2]};
+}
+
+void World::applyImpulse(int robot, const Eigen::Vector3d& impulse) {
+  if (robot < 0 || robot >= numRobots()) throw WorldError("applyImpulse: no robot " + std::to_string(robot));
+  if (!impulse.allFinite() || impulse.norm() > kMaxPushImpulse)
+    throw WorldError("applyImpulse: " + std::to_string(impulse.norm()) + " N*s is not finite or beyond " +
+                     std::to_string(kMaxPushImpulse) + " N*s");
+  impl_->pending_impulse[robot] += impulse;
 }
 
 void World::step() {
@@ -168,6 +195,18 @@ void World::step() {
   const double dt = kTickSeconds / n;
   contacts_.clear();
   for (int s = 0; s < n; ++s) {
+    // 0. Nothing absurd reaches the integrator.
+    checkBlowUps();
+    if (s == 0) {
+      // 0'. Pushes: F = J / dt over this substep gives exactly the impulse J.
+      for (int i = 0; i < numRobots(); ++i) {
+        Eigen::Vector3d& j = impl_->pending_impulse[i];
+        if (j.isZero()) continue;
+        const Eigen::Vector3d f = j / dt;
+        dBodyAddForce(robots_[i]->torsoBody(), f.x(), f.y(), f.z());
+        j.setZero();
+      }
+    }
     for (auto& r : robots_) r->applyServos(dt);
     impl_->collide(world_, space_, field_, config_, dt);
     // QuickStep shuffles its constraint rows with ODE's one process-wide
@@ -183,11 +222,18 @@ void World::step() {
     dJointGroupEmpty(impl_->contact_group);
   }
   ++tick_;
+  checkBlowUps();
+}
 
-  // Blow-ups: a robot or the ball with NaN/inf or absurd speed is put back
-  // where it was last placed; the run goes on and the event is reported.
+// Blow-ups: a robot or the ball with NaN/inf, absurd speed or far away is put
+// back where it was last placed; the run goes on and the event is reported.
+void World::checkBlowUps() {
+  auto far = [&](const Eigen::Vector3d& p) { return (p.array().abs() > config_.max_distance).any(); };
   for (int i = 0; i < numRobots(); ++i) {
-    if (!robots_[i]->blownUp(config_.blowup_linear_speed, config_.blowup_angular_speed)) continue;
+    const bool bad = robots_[i]->blownUp(config_.blowup_linear_speed, config_.blowup_angular_speed) ||
+                     far(Eigen::Vector3d(dBodyGetPosition(robots_[i]->torsoBody())));
+    if (!bad) continue;
+    impl_->pending_impulse[i].setZero();
     const Impl::Placement p = impl_->placements[i];
     placeRobot(i, p.x, p.y, p.theta, p.posture);
     events_.push_back({WorldEvent::Kind::BlowUp, tick_, i,
@@ -199,7 +245,7 @@ void World::step() {
   const bool ball_bad = !bp.allFinite() || !bv.allFinite() || !std::isfinite(bw[0]) ||
                         !std::isfinite(bw[1]) || !std::isfinite(bw[2]) ||
                         bv.norm() > config_.blowup_linear_speed ||
-                        Eigen::Vector3d(bw[0], bw[1], bw[2]).norm() > config_.blowup_angular_speed;
+                        Eigen::Vector3d(bw[0], bw[1], bw[2]).norm() > config_.blowup_angular_speed || far(bp);
   if (ball_bad) {
     placeBall(impl_->ball_placed.x(), impl_->ball_placed.y());
     events_.push_back({WorldEvent::Kind::BlowUp, tick_, -1,

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct WorldConfig {
   double gravity = 9.81;             // m/s^2
   double blowup_linear_speed = 50;   // m/s: beyond this a body has blown up
   double blowup_angular_speed = 200; // rad/s
+  // m: a body farther than this from the centre spot (or higher) has blown
+  // up; placements beyond it are refused.
+  double max_distance = 1000;
   ServoConfig servo;
 };
 
@@ -47,8 +51,14 @@ struct LinkContact {
   Eigen::Vector3d force;
 };
 
+// A value the World refuses (placement far outside the world, a NaN, an
+// absurd push): thrown before anything reaches ODE.
+struct WorldError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
 struct WorldEvent {
-  enum class Kind { BlowUp, Fall } kind;
+  enum class Kind { BlowUp } kind;
   int64_t tick;
   int robot;            // -1 for the ball
   std::string message;
@@ -70,15 +80,27 @@ class World {
   const RobotBody& robot(int i) const { return *robots_[i]; }
 
   // Teleports: velocities zeroed. A robot is re-seated on its feet.
+  // Positions must be finite and within config().max_distance (WorldError).
   void placeRobot(int i, double x, double y, double theta, const std::vector<double>& posture);
   void placeBall(double x, double y);
-  void setBallVelocity(const Eigen::Vector3d& v);  // m/s, world
+  void setBallVelocity(const Eigen::Vector3d& v);  // m/s, world; |v| <= blowup_linear_speed
+
+  // A push: an impulse of `impulse` N*s (world frame) at the torso's centre
+  // of mass, delivered as a constant force over the first substep of the
+  // next step(). The robot's momentum changes by exactly `impulse`: the
+  // whole robot's CoM velocity by impulse / total mass (5.3 kg NAO: 1 N*s
+  // gives 0.19 m/s), the torso more at first as the joints pass it on.
+  // |impulse| <= kMaxPushImpulse (WorldError otherwise).
+  static constexpr double kMaxPushImpulse = 50.0;  // N*s: ~9 m/s for a NAO
+  void applyImpulse(int robot, const Eigen::Vector3d& impulse);
   Eigen::Vector3d ballPosition() const;
   Eigen::Vector3d ballVelocity() const;
   // The ball body's orientation (world frame); drawn by the cameras.
   Eigen::Quaterniond ballOrientation() const;
 
-  // Advances one 10 ms tick. Detects blow-ups: the robot (or ball) is reset
+  // Advances one 10 ms tick. Detects blow-ups before every substep and after
+  // the last (NaN/inf, speed beyond the limits, farther than max_distance),
+  // before ODE can reach a state it aborts on: the robot (or ball) is reset
   // to where it was last placed and an event is recorded; the run goes on.
   void step();
   int64_t tick() const { return tick_; }
@@ -99,8 +121,11 @@ class World {
   const FieldConfig& field() const { return field_; }
   const WorldConfig& config() const { return config_; }
   dWorldID odeWorld() const { return world_; }
+  dBodyID ballBody() const;  // for tests that must reach past the API
 
  private:
+  void checkBlowUps();
+  void checkPlacement(const char* what, double x, double y, double theta) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
   FieldConfig field_;

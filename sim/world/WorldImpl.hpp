@@ -39,6 +39,8 @@ struct World::Impl {
   std::vector<dSpaceID> robot_spaces;
   std::vector<std::shared_ptr<const NaoModel>> models;
   std::vector<Placement> placements;
+  // Pushes waiting for the next step (N*s, world frame), per robot.
+  std::vector<Eigen::Vector3d> pending_impulse;
 
   // Contacts of the current substep.
   dJointGroupID contact_group = nullptr;

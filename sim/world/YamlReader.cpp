@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -44,6 +45,8 @@ std::string Range::describe() const {
 }
 
 YAML::Node YamlReader::parse(const std::string& text, const std::string& file) {
+  if (text.size() > kMaxConfigBytes)
+    throw ConfigError(file + ":1: " + std::to_string(text.size()) + " bytes is more than a configuration file can be (1 MB)");
   try {
     YAML::Node root = YAML::Load(text);
     return root;
@@ -55,8 +58,13 @@ YAML::Node YamlReader::parse(const std::string& text, const std::string& file) {
 }
 
 YAML::Node YamlReader::parseFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ":1: is a directory, not a file");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxConfigBytes)
+    throw ConfigError(path + ":1: " + std::to_string(size) + " bytes is more than a configuration file can be (1 MB)");
   std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot open file");
+  if (!in) throw ConfigError(path + ":1: cannot open file");
   std::ostringstream ss;
   ss << in.rdbuf();
   return parse(ss.str(), path);
@@ -72,14 +80,13 @@ std::string YamlReader::keyPath(const std::string& key) const {
 void YamlReader::fail(const std::string& key, const std::string& message) const {
   YAML::Node n = get(key);
   YAML::Mark m = (n.IsDefined() && !n.Mark().is_null()) ? n.Mark() : node_.Mark();
-  std::string where = file_;
-  if (!m.is_null()) where += ":" + std::to_string(m.line + 1);
+  // An empty document has no marks: its line is 1.
+  const std::string where = file_ + ":" + std::to_string(m.is_null() ? 1 : m.line + 1);
   throw ConfigError(where + ": " + keyPath(key) + ": " + message);
 }
 
 void YamlReader::fail(const std::string& message) const {
-  std::string where = file_;
-  if (!node_.Mark().is_null()) where += ":" + std::to_string(node_.Mark().line + 1);
+  const std::string where = file_ + ":" + std::to_string(node_.Mark().is_null() ? 1 : node_.Mark().line + 1);
   throw ConfigError(where + ": " + (path_.empty() ? std::string("<document>") : path_) + ": " +
                     message);
 }
@@ -244,9 +251,8 @@ void YamlReader::finish() const {
     if (std::find(known_.begin(), known_.end(), k) != known_.end()) continue;
     std::string expected;
     for (const auto& e : known_) expected += (expected.empty() ? "" : ", ") + e;
-    std::string where = file_;
     YAML::Mark m = it->first.Mark();
-    if (!m.is_null()) where += ":" + std::to_string(m.line + 1);
+    const std::string where = file_ + ":" + std::to_string(m.is_null() ? 1 : m.line + 1);
     throw ConfigError(where + ": unknown key '" + k + "' in " +
                       (path_.empty() ? std::string("<document>") : path_) +
                       "; expected one of " + (expected.empty() ? "(none)" : expected));

@@ -39,16 +39,21 @@ struct Range {
   static Range nonNegative() { return {0.0, std::nullopt, false, false}; } // >= 0
   static Range atLeast(double v) { return {v, std::nullopt, false, false}; }
   static Range closed(double a, double b) { return {a, b, false, false}; } // a <= x <= b
+  static Range openClosed(double a, double b) { return {a, b, true, false}; } // a < x <= b
 
   bool contains(double v) const;
   std::string describe() const;  // e.g. "must be > 0"
 };
 
+// Configuration files are small; anything bigger is refused before parsing.
+constexpr size_t kMaxConfigBytes = 1u << 20;
+
 class YamlReader {
  public:
   // Parses YAML text; a syntax error becomes a ConfigError with the line.
   static YAML::Node parse(const std::string& text, const std::string& file);
-  // Reads and parses a file; a missing file is a ConfigError.
+  // Reads and parses a file; a missing file, a directory or a file over
+  // kMaxConfigBytes is a ConfigError.
   static YAML::Node parseFile(const std::string& path);
 
   // `node` must be a map (checked lazily by the getters); `path` is the

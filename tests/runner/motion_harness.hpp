@@ -101,11 +101,11 @@ class MotionHarness {
 
   // Ticks for `seconds` of simulated time; returns false if the robot fell.
   bool run(double seconds) {
-    const int n = static_cast<int>(std::lround(seconds / 0.01));
+    const int n = static_cast<int>(std::lround(seconds / simswift::kTickSeconds));
     bool ok = true;
     for (int i = 0; i < n; ++i) {
       runner_.tick();
-      if (torsoHeight() < 0.2) ok = false;
+      if (torsoHeight() < simswift::runner::FallDetector::kFallHeight) ok = false;
     }
     return ok;
   }

@@ -31,7 +31,7 @@ TEST(MotionScenario, ParsesActionsAndPushes) {
   EXPECT_FLOAT_EQ(r.actions[1].body.kick_power, 0.5f);
   ASSERT_EQ(r.pushes.size(), 1u);
   EXPECT_DOUBLE_EQ(r.pushes[0].t_s, 3.0);
-  EXPECT_DOUBLE_EQ(r.pushes[0].vx, 1.5);
+  EXPECT_DOUBLE_EQ(r.pushes[0].jx, 1.5);
 }
 
 TEST(MotionScenario, BadActionNamesTheLineAndKey) {
@@ -54,7 +54,8 @@ TEST(MotionScenario, ActionsWalkTheRobotAndPushesKnockItOver) {
       "    actions:\n"
       "      - {t: 0.5, action: walk, forward: 250}\n"
       "      - {t: 4.0, action: stand}\n"
-      "      - {t: 6.0, push: {x: 3.5, y: 0}}\n",
+      // 3.7 N*s: the momentum of the 3.5 m/s once added to the 1.05 kg torso.
+      "      - {t: 6.0, push: {x: 3.7, y: 0}}\n",
       "walk.yaml");
   Runner runner(std::move(sc));
   runner.start();

@@ -155,7 +155,7 @@ TEST(RunnerCamera, ScenarioCameraKeys) {
       "  overview: {mode: robot, robot: 1, rate_hz: 5, width: 640, height: 360}\n"
       "robots:\n"
       "  - {team: 0, player: 1}\n"
-      "  - {team: 0, player: 2}\n",
+      "  - {team: 0, player: 2, x: 1}\n",
       "keys.yaml");
   EXPECT_TRUE(sc.camera.enabled);
   EXPECT_EQ(sc.camera.width, 1280);

@@ -416,9 +416,9 @@ TEST(LibagentClient, GameStateIsInTheNamedExtensionObject) {
 TEST(ScenarioTeams, SplTeamNumbersAndColours) {
   const Scenario s = Scenario::parse(
       "robots:\n"
-      "  - {team: 19, player: 1}\n"
-      "  - {team: 5, player: 1}\n"
-      "  - {team: 19, player: 2, names: bare}\n",
+      "  - {team: 19, player: 1, x: -1}\n"
+      "  - {team: 5, player: 1, x: 1}\n"
+      "  - {team: 19, player: 2, x: -2, names: bare}\n",
       "teams.yaml");
   EXPECT_EQ(s.robots[0].team, 19);
   EXPECT_EQ(s.robots[0].colour, TeamColour::Blue);  // first team number: blue
@@ -426,7 +426,7 @@ TEST(ScenarioTeams, SplTeamNumbersAndColours) {
   EXPECT_EQ(s.robots[2].colour, TeamColour::Blue);  // a team keeps its colour
   EXPECT_TRUE(s.robots[2].bare_names);
   const Scenario red_first = Scenario::parse(
-      "robots:\n  - {team: 19, player: 1, colour: red}\n  - {team: 5, player: 1}\n", "teams.yaml");
+      "robots:\n  - {team: 19, player: 1, x: -1, colour: red}\n  - {team: 5, player: 1, x: 1}\n", "teams.yaml");
   EXPECT_EQ(red_first.robots[1].colour, TeamColour::Blue);
 
   auto error = [](const std::string& text) {

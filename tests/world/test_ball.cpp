@@ -116,13 +116,16 @@ TEST(Ball, BallBlowUpIsResetAndReported) {
   w.placeBall(1.0, 1.0);
   w.step();
   EXPECT_TRUE(w.takeEvents().empty());
-  w.setBallVelocity({1e6, 0, 0});
+  EXPECT_THROW(w.setBallVelocity({1e6, 0, 0}), WorldError);  // refused through the API
+  dBodySetLinearVel(w.ballBody(), 1e6, 0, 0);                 // so written past it
   w.step();
   auto ev = w.takeEvents();
   ASSERT_EQ(ev.size(), 1u);
   EXPECT_EQ(ev[0].kind, WorldEvent::Kind::BlowUp);
   EXPECT_EQ(ev[0].robot, -1);
   EXPECT_NE(ev[0].message.find("ball"), std::string::npos);
-  EXPECT_NEAR(w.ballPosition().x(), 1.0, 1e-9);
-  EXPECT_LT(w.ballVelocity().norm(), 1e-9);
+  // Reset before the tick's first substep, then at rest for one tick: only
+  // the contact layer's settling (mm/s) remains.
+  EXPECT_NEAR(w.ballPosition().x(), 1.0, 1e-6);
+  EXPECT_LT(w.ballVelocity().norm(), 1e-3);
 }

@@ -82,7 +82,7 @@ TEST(FieldConfig, MissingRequiredFieldIsAnError) {
 
 TEST(FieldConfig, BadValueNamesKeyLineAndValue) {
   std::string msg = errorOf("field:\n  ball:\n    diameter: 0.1\n    mass: -1\n");
-  EXPECT_NE(msg.find("test.yaml:4: field.ball.mass: must be > 0 (got -1)"), std::string::npos)
+  EXPECT_NE(msg.find("test.yaml:4: field.ball.mass: must be in [0.001, 10] (got -1)"), std::string::npos)
       << msg;
 }
 

@@ -1,0 +1,179 @@
+// The URDF loader refuses absurd or nonsensical input with "file:line: what",
+// before anything reaches ODE. Each case here is an input that crashed the
+// simulator (ODE assertion, stack overflow) or was accepted silently before
+// issue 14; the line asserted is the line of the offending element.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/UrdfLines.hpp"
+
+using simswift::ModelError;
+using simswift::NaoModel;
+
+namespace {
+
+const std::string kUrdfPath = std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf";
+
+std::string readUrdf() {
+  std::ifstream in(kUrdfPath);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+int lineAt(const std::string& text, size_t pos) {
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+}
+
+std::string errorOf(const std::string& xml) {
+  try {
+    NaoModel::loadUrdfString(xml, "bad.urdf");
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Replaces the first `from` after the start of <tag name="name"> with `to`;
+// returns the line of the replacement.
+int replaceIn(std::string& xml, const std::string& tag, const std::string& name, const std::string& from,
+              const std::string& to) {
+  const size_t b = xml.find("<" + tag + " name=\"" + name + "\"");
+  EXPECT_NE(b, std::string::npos);
+  const size_t p = xml.find(from, b);
+  EXPECT_NE(p, std::string::npos) << from;
+  xml.replace(p, from.size(), to);
+  return lineAt(xml, p);
+}
+
+void expectError(const std::string& xml, int line, const std::string& words) {
+  const std::string err = errorOf(xml);
+  EXPECT_EQ(err.rfind("bad.urdf:" + std::to_string(line) + ": ", 0), 0u) << err;
+  EXPECT_NE(err.find(words), std::string::npos) << err;
+}
+
+}  // namespace
+
+TEST(UrdfHardening, OverflowingAxisIsRefused) {
+  // Crashed ODE (dxNormalize3): the axis's length overflows to inf.
+  std::string xml = readUrdf();
+  const int line = replaceIn(xml, "joint", "LKneePitch", "<axis xyz=\"0 1 0\"/>", "<axis xyz=\"0 0 2e154\"/>");
+  expectError(xml, line, "joint 'LKneePitch' <axis xyz>");
+}
+
+TEST(UrdfHardening, HugeInertialOriginAndInertiaAreRefused) {
+  // Both crashed ODE (dxNormalize4) once stepped.
+  std::string xml = readUrdf();
+  int line = replaceIn(xml, "link", "LTibia", "<origin xyz=\"", "<origin xyz=\"1e305 ");
+  // "1e305 <old x>" is three numbers plus one: urdfdom refuses it or we do.
+  EXPECT_EQ(errorOf(xml).rfind("bad.urdf:", 0), 0u) << errorOf(xml);
+  xml = readUrdf();
+  const size_t b = xml.find("<link name=\"LTibia\"");
+  const size_t o = xml.find("<origin xyz=\"", b);
+  xml.replace(o, xml.find("\"", o + 13) - o + 1, "<origin xyz=\"1e305 0 0\"");
+  line = lineAt(xml, o);
+  expectError(xml, line, "<inertial><origin>: xyz");
+
+  xml = readUrdf();
+  const size_t i = xml.find("ixx=\"", xml.find("<link name=\"LTibia\""));
+  xml.replace(i, xml.find("\"", i + 5) - i + 1, "ixx=\"1e100\"");
+  expectError(xml, lineAt(xml, i), "<inertia> has a value beyond");
+}
+
+TEST(UrdfHardening, AbsurdMassesAreRefused) {
+  for (const char* m : {"1e-300", "1e300", "nan", "-1"}) {
+    std::string xml = readUrdf();
+    const size_t b = xml.find("<link name=\"Head\"");
+    const size_t p = xml.find("<mass value=\"", b);
+    xml.replace(p, xml.find("/>", p) + 2 - p, std::string("<mass value=\"") + m + "\"/>");
+    const std::string err = errorOf(xml);
+    EXPECT_EQ(err.rfind("bad.urdf:" + std::to_string(lineAt(xml, p)) + ": ", 0), 0u) << m << ": " << err;
+    EXPECT_NE(err.find("Head"), std::string::npos) << err;
+  }
+}
+
+TEST(UrdfHardening, MissingInertiaAndNanOriginSayWhatIsWrong) {
+  std::string xml = readUrdf();
+  const size_t b = xml.find("<link name=\"Head\"");
+  const size_t p = xml.find("<inertia ", b);
+  const int line = lineAt(xml, xml.find("<inertial>", b));
+  xml.erase(p, xml.find("/>", p) + 2 - p);
+  expectError(xml, line, "has no <inertia>");
+
+  xml = readUrdf();
+  const size_t o = xml.find("<origin xyz=\"", b);
+  xml.replace(o, xml.find("\"", o + 13) - o + 1, "<origin xyz=\"nan 0 0\"");
+  const std::string err = errorOf(xml);
+  EXPECT_EQ(err.rfind("bad.urdf:" + std::to_string(lineAt(xml, o)) + ": ", 0), 0u) << err;
+  EXPECT_EQ(err.find("mass"), std::string::npos) << "a NaN origin is not a mass problem: " << err;
+}
+
+TEST(UrdfHardening, RHipYawPitchMustMimicLHipYawPitch) {
+  std::string xml = readUrdf();
+  const size_t m = xml.find("<mimic joint=\"LHipYawPitch\"");
+  ASSERT_NE(m, std::string::npos);
+  const int joint_line = lineAt(xml, xml.find("<joint name=\"RHipYawPitch\""));
+  xml.erase(m, xml.find("/>", m) + 2 - m);
+  expectError(xml, joint_line, "RHipYawPitch");
+  EXPECT_NE(errorOf(xml).find("mimic"), std::string::npos);
+}
+
+TEST(UrdfHardening, UnreadableCollisionGeometryIsRefused) {
+  for (const char* size : {"nan 0.1 0.1", "inf 0.1 0.1", "0.1 0.1", "1e300 1 1"}) {
+    std::string xml = readUrdf();
+    const size_t b = xml.find("<link name=\"LTibia\"");
+    const size_t c = xml.find("<collision>", b);
+    const size_t g = xml.find("<geometry>", c);
+    xml.replace(g, xml.find("</geometry>", g) + 11 - g,
+                std::string("<geometry><box size=\"") + size + "\"/></geometry>");
+    const std::string err = errorOf(xml);
+    // The <box> line (numbers that do not parse) or its <collision>'s (a bad size).
+    EXPECT_TRUE(err.rfind("bad.urdf:" + std::to_string(lineAt(xml, c)) + ": ", 0) == 0 ||
+                err.rfind("bad.urdf:" + std::to_string(lineAt(xml, g)) + ": ", 0) == 0)
+        << size << ": " << err;
+    EXPECT_NE(err.find("LTibia"), std::string::npos) << err;
+  }
+  std::string xml = readUrdf();
+  const size_t c = xml.find("<collision>", xml.find("<link name=\"LTibia\""));
+  const size_t o = xml.find("<origin xyz=\"", c);
+  xml.replace(o, xml.find("\"", o + 13) - o + 1, "<origin xyz=\"inf 0 0\"");
+  EXPECT_EQ(errorOf(xml).rfind("bad.urdf:" + std::to_string(lineAt(xml, o)) + ": link 'LTibia'", 0), 0u)
+      << errorOf(xml);
+}
+
+TEST(UrdfHardening, DeepNestingAndHugeFilesAreRefusedBeforeParsing) {
+  // 100,000 levels overflowed the XML parser's stack after 10 s.
+  std::string deep = "<robot name=\"x\">\n";
+  for (int i = 0; i < 100000; ++i) deep += "<a>";
+  deep += "\n</robot>";
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string err = errorOf(deep);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(err.rfind("bad.urdf:2: ", 0), 0u) << err;
+  EXPECT_NE(err.find("nested"), std::string::npos) << err;
+  EXPECT_LT(s, 1.0) << "refused before parsing";
+
+  std::string big = readUrdf();
+  big.insert(big.find("<robot"), std::string(simswift::UrdfLimits::kMaxBytes, ' '));
+  EXPECT_NE(errorOf(big).find("MB limit"), std::string::npos) << errorOf(big).substr(0, 200);
+}
+
+TEST(UrdfHardening, DirectoryIsNotAUrdf) {
+  try {
+    NaoModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models");
+    FAIL() << "a directory loaded";
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("models:1: is a directory"), std::string::npos) << e.what();
+  }
+}
+
+TEST(UrdfHardening, ParseErrorsCarryALine) {
+  std::string xml = readUrdf();
+  const int line = replaceIn(xml, "joint", "LKneePitch", "effort=\"", "effort=\"abc");
+  expectError(xml, line, "<limit effort=\"abc");
+}

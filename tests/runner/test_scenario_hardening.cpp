@@ -1,0 +1,105 @@
+// Scenario files: nonsense refused before the first tick, with file, line
+// and key (issue 14's list: overlapping robots, off-carpet or in-post
+// placement, absurd theta, walk speeds, durations and seeds, directories).
+#include <gtest/gtest.h>
+
+#include "sim/runner/Scenario.hpp"
+
+using simswift::ConfigError;
+using simswift::FieldConfig;
+using simswift::runner::Scenario;
+
+namespace {
+
+const char* kOneRobot = "robots:\n  - {team: 0, player: 1, x: -1, y: 0}\n";
+
+std::string errorOf(const std::string& yaml) {
+  try {
+    const Scenario sc = Scenario::parse(yaml, "s.yaml");
+    sc.checkAgainstField(FieldConfig::spl2017());
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expectRefused(const std::string& yaml, const std::string& prefix) {
+  const std::string err = errorOf(yaml);
+  EXPECT_EQ(err.rfind(prefix, 0), 0u) << yaml << "\n -> " << err;
+}
+
+}  // namespace
+
+TEST(ScenarioHardening, OverlappingRobotsAreRefused) {
+  expectRefused("robots:\n  - {team: 0, player: 1, x: 1, y: 1}\n  - {team: 1, player: 1, x: 1, y: 1}\n",
+                "s.yaml:3: robots[1]: overlaps robots[0]");
+  expectRefused("robots:\n  - {team: 0, player: 1, x: 1, y: 1}\n  - {team: 1, player: 1, x: 1.2, y: 1}\n",
+                "s.yaml:3: robots[1]: overlaps robots[0]");
+  EXPECT_EQ(errorOf("robots:\n  - {team: 0, player: 1, x: 1, y: 1}\n  - {team: 1, player: 1, x: 1.4, y: 1}\n"), "");
+}
+
+TEST(ScenarioHardening, OffCarpetAndInsidePostAreRefused) {
+  expectRefused("robots:\n  - {team: 0, player: 1, x: 5.3, y: 0}\n", "s.yaml:2: robots[0] at (5.3");
+  expectRefused("robots:\n  - {team: 0, player: 1, x: 49, y: 0}\n", "s.yaml:2: robots[0]");
+  expectRefused("robots:\n  - {team: 0, player: 1, x: 4.5, y: -0.8}\n", "s.yaml:2: robots[0]");
+  EXPECT_NE(errorOf("robots:\n  - {team: 0, player: 1, x: 4.5, y: -0.8}\n").find("goal post"), std::string::npos);
+  expectRefused(std::string("ball: {x: -4.5, y: 0.8}\n") + kOneRobot, "s.yaml:1: ball");
+  expectRefused(std::string("ball: {x: 0, y: 3.8}\n") + kOneRobot, "s.yaml:1: ball");
+  expectRefused("robots:\n  - {team: 0, player: 1, x: 1e308, y: 0}\n", "s.yaml:2: robots[0].x:");
+}
+
+TEST(ScenarioHardening, ThetaSpeedsAndPushesInRange) {
+  expectRefused("robots:\n  - {team: 0, player: 1, theta: 1e30}\n", "s.yaml:2: robots[0].theta:");
+  expectRefused("robots:\n  - team: 0\n    player: 1\n    actions:\n      - {t: 1, action: walk, forward: 1e9}\n",
+                "s.yaml:5: robots[0].actions[0].forward:");
+  expectRefused("robots:\n  - team: 0\n    player: 1\n    actions:\n      - {t: 1, action: walk, turn: 5}\n",
+                "s.yaml:5: robots[0].actions[0].turn:");
+  expectRefused("robots:\n  - team: 0\n    player: 1\n    actions:\n      - {t: 1, push: {x: 1e150}}\n",
+                "s.yaml:5: robots[0].actions[0].push.x:");
+}
+
+TEST(ScenarioHardening, DurationsMustRunAtLeastOneTickAndEnd) {
+  for (const char* d : {"0.001", ".inf", "9e16", "1e12", "0", "-1", ".nan"})
+    expectRefused(std::string("duration: ") + d + "\n" + kOneRobot, "s.yaml:1: duration:");
+  EXPECT_EQ(errorOf(std::string("duration: 0.01\n") + kOneRobot), "");
+}
+
+TEST(ScenarioHardening, SeedsMustBeWholeNumbersInRange) {
+  for (const char* s : {"1.5", "1e30", "18446744073709551616", "-1", "x"})
+    expectRefused(std::string("seed: ") + s + "\n" + kOneRobot, "s.yaml:1: seed:");
+  const Scenario sc = Scenario::parse(std::string("seed: 9007199254740992\n") + kOneRobot, "s.yaml");
+  EXPECT_EQ(sc.seed, 9007199254740992ull);
+}
+
+TEST(ScenarioHardening, DirectoryIsNotAScenario) {
+  try {
+    Scenario::loadFile(SIMSWIFT_SOURCE_DIR "/scenarios");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("scenarios:1: is a directory"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ScenarioHardening, WatchdogOff) {
+  EXPECT_EQ(Scenario::parse(std::string("watchdog: off\n") + kOneRobot, "s.yaml").watchdog_s, 0.0);
+  expectRefused(std::string("watchdog: 0\n") + kOneRobot, "s.yaml:1: watchdog:");
+}
+
+TEST(ScenarioHardening, RelativePathsResolveAgainstTheScenarioFolderThenTheDataFolder) {
+  // The shipped scenario names no model: the data folder (build tree's
+  // staged copy here) provides it, not the source tree.
+  const Scenario sc = Scenario::loadFile(SIMSWIFT_SOURCE_DIR "/scenarios/stand_one.yaml");
+  EXPECT_EQ(sc.modelFile().find(SIMSWIFT_SOURCE_DIR "/models"), std::string::npos) << sc.modelFile();
+  EXPECT_NE(sc.modelFile().find("share/simswift/models/nao_v5.urdf"), std::string::npos) << sc.modelFile();
+  // A model beside the scenario wins.
+  const Scenario here = Scenario::parse(std::string("model: stand_one.yaml\n") + kOneRobot,
+                                        SIMSWIFT_SOURCE_DIR "/scenarios/x.yaml");
+  EXPECT_EQ(here.modelFile(), SIMSWIFT_SOURCE_DIR "/scenarios/stand_one.yaml");
+  const Scenario missing = Scenario::parse(std::string("\nmodel: nope.urdf\n") + kOneRobot, "/tmp/x.yaml");
+  try {
+    missing.modelFile();
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("/tmp/x.yaml:2: model: 'nope.urdf' not found", 0), 0u) << e.what();
+  }
+}
