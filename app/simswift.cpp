@@ -4,6 +4,7 @@
 //   simswift run SCENARIO.yaml [--realtime] [--duration S] [--seed N]
 //                [--no-noise] [--watchdog S] [--print-hash-every N]
 //                [--dump-frames DIR [--every N]] [--overview DIR] [--resolution WxH]
+//                [--findball-view DIR [--findball-view-rate HZ]]
 //
 // Exit codes: 0 success, 1 run failure (watchdog, physics, I/O), 2 bad
 // command line or scenario.
@@ -41,7 +42,10 @@ const char* kUsage =
     "                         DIR/t<team>p<player>_<top|bottom>_<frame>.png\n"
     "  --every N              with --dump-frames: keep every N-th camera frame (default 1)\n"
     "  --overview DIR         whole-field overview PNGs in DIR (+ DIR/overview.mp4 with ffmpeg)\n"
-    "  --resolution WxH       robot camera resolution: 640x480 (default) or 1280x960\n";
+    "  --resolution WxH       robot camera resolution: 640x480 (default) or 1280x960\n"
+    "  --findball-view DIR    FindBall view PNGs of every behaving robot in DIR/<robot>/\n"
+    "                         (+ DIR/<robot>.mp4 with ffmpeg)\n"
+    "  --findball-view-rate HZ  frames per simulated second (default 2)\n";
 
 [[noreturn]] void usageError(const std::string& msg) {
   std::fprintf(stderr, "simswift: %s\n\n%s", msg.c_str(), kUsage);
@@ -80,6 +84,8 @@ int main(int argc, char** argv) {
   bool no_noise = false;
   std::optional<std::string> dump_dir, overview_dir, resolution;
   std::optional<int> every;
+  std::optional<std::string> findball_dir;
+  std::optional<double> findball_rate;
   auto stringArg = [&](int& i, const char* name) {
     if (i + 1 >= argc) usageError(std::string(name) + " needs a value");
     return std::string(argv[++i]);
@@ -97,6 +103,11 @@ int main(int argc, char** argv) {
     else if (a == "--quiet") opt.progress = false;
     else if (a == "--dump-frames") dump_dir = stringArg(i, "--dump-frames");
     else if (a == "--overview") overview_dir = stringArg(i, "--overview");
+    else if (a == "--findball-view") findball_dir = stringArg(i, "--findball-view");
+    else if (a == "--findball-view-rate") {
+      findball_rate = numberArg(i, argc, argv, "--findball-view-rate", 1e-3);
+      if (*findball_rate > 100) usageError("--findball-view-rate: at most 100 frames per simulated second");
+    }
     else if (a == "--every") {
       const double n = numberArg(i, argc, argv, "--every", 1);
       if (n != static_cast<int>(n)) usageError("--every: must be a whole number of frames");
@@ -115,6 +126,7 @@ int main(int argc, char** argv) {
   }
   if (path.empty()) usageError("missing SCENARIO.yaml");
   if (every && !dump_dir) usageError("--every needs --dump-frames DIR");
+  if (findball_rate && !findball_dir) usageError("--findball-view-rate needs --findball-view DIR");
   if ((dump_dir || overview_dir) && !Runner::camerasAvailable())
     usageError(std::string(dump_dir ? "--dump-frames" : "--overview") +
                ": this simswift was built without cameras (configure with -DSIMSWIFT_CAMERAS=ON and "
@@ -147,6 +159,12 @@ int main(int argc, char** argv) {
 
   try {
     Runner runner(sc);
+    if (findball_dir) {
+      sim::views::FindBallRecorderConfig fc;
+      fc.dir = *findball_dir;
+      if (findball_rate) fc.rate_hz = *findball_rate;
+      runner.setFindBallView(fc);
+    }
     try {
       const RunStats stats = runner.run(opt);
       std::printf("%s\n%s", stats.summary().c_str(), stats.robotLines().c_str());

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/runner/BehaviourYaml.hpp"
 #include "sim/world/YamlReader.hpp"
 
 #ifndef SIMSWIFT_SOURCE_DIR
@@ -304,6 +305,16 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
       for (const YamlReader& a : r.list("actions")) readAction(a, rs);
       std::stable_sort(rs.pushes.begin(), rs.pushes.end(),
                        [](const RobotSpec::Push& a, const RobotSpec::Push& b) { return a.t_s < b.t_s; });
+    }
+    if (r.has("behaviour")) {
+      if (rs.program == RobotSpec::Program::External)
+        r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin");
+      rs.behaviour = readBehaviour(r);
+      if (rs.behaviour && !rs.actions.empty())
+        r.fail("actions", std::string("a robot with behaviour ") + agent::behaviour::behaviourKindName(rs.behaviour->kind) +
+                              " takes no body actions (pushes only); use behaviour: script");
+      if (rs.behaviour && !rs.script.empty())
+        r.fail("script", "a robot with a behaviour takes no joint script");
     }
     r.finish();
     sc.robots.push_back(std::move(rs));
