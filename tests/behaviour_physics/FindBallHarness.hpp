@@ -32,7 +32,7 @@ inline const std::vector<std::pair<double, double>>& table52() {
 }
 
 // A scenario: `robots` of table 5.1 running `behaviour`, the ball at
-// position `ball` (1-based; 0 = no ball), noise on.
+// position `ball` (1-based; 0 = out of sight, 30 m away), noise on.
 inline std::string scenario(int robots, const std::string& behaviour, int ball, uint64_t seed, double duration,
                             const std::string& extra = "") {
   char buf[256];
@@ -41,6 +41,8 @@ inline std::string scenario(int robots, const std::string& behaviour, int ball, 
     std::snprintf(buf, sizeof buf, "ball: {x: %.3f, y: %.3f}\n", table52()[ball - 1].first / 1000,
                   table52()[ball - 1].second / 1000);
     s += buf;
+  } else {
+    s += "ball: {x: 30.0, y: 30.0}\n";  // m: far beyond any camera (the world always has a ball)
   }
   s += "robots:\n";
   for (int i = 0; i < robots; ++i) {
