@@ -98,3 +98,11 @@ TEST(BehaviourScenario, ModuleOrderAndPayloadBetweenTeammates) {
   }
   EXPECT_EQ(r.program(0)->board().team.read().malformed, 0);
 }
+
+TEST(BehaviourScenario, ShippedFindBallScenariosLoad) {
+  for (const char* f : {"findball_three_2017.yaml", "findball_three_2016.yaml", "findball_search_long.yaml"}) {
+    const Scenario s = Scenario::loadFile(std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/" + f);
+    ASSERT_GE(s.robots.size(), 3u) << f;
+    for (const auto& r : s.robots) EXPECT_TRUE(r.behaviour) << f;
+  }
+}
