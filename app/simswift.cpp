@@ -1,6 +1,8 @@
 // simswift: runs a scenario headless, as fast as it can (or paced with
 // --realtime), and prints a one-line summary.
 //
+//   simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]
+//   simswift experiment merge DIR... --out DIR      (sim/experiment/Command.cpp)
 //   simswift run SCENARIO.yaml [--realtime] [--duration S] [--seed N]
 //                [--no-noise] [--watchdog S] [--print-hash-every N]
 //                [--dump-frames DIR [--every N]] [--overview DIR] [--resolution WxH]
@@ -16,12 +18,15 @@
 
 #include <unistd.h>
 
+#include "sim/experiment/Command.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace {
 
 const char* kUsage =
     "usage: simswift run SCENARIO.yaml [options]\n"
+    "       simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]   (see experiment --help)\n"
+    "       simswift experiment merge DIR... --out DIR\n"
     "       simswift --version | --help\n"
     "\n"
     "Runs a scenario in lock-step with its robot programs and prints\n"
@@ -30,7 +35,9 @@ const char* kUsage =
     "  tTpP: x X m  y Y m  theta A rad  falls N  up|down\n"
     "\n"
     "options:\n"
-    "  --realtime             pace the run with the wall clock (default: as fast as possible)\n"
+    "  --realtime             pace the run with the wall clock (default: as fast as possible);\n"
+    "                         external robot programs run free: not waited for, skipped\n"
+    "                         cycles counted, 50 in a row sit the robot down\n"
     "  --duration S           simulated seconds (overrides the scenario)\n"
     "  --seed N               noise seed (overrides the scenario)\n"
     "  --no-noise             exact sensors\n"
@@ -75,6 +82,7 @@ int main(int argc, char** argv) {
     std::printf("simswift 0.1\n");
     return 0;
   }
+  if (cmd == "experiment") return simswift::experiment::experimentMain(argc - 1, argv + 1);
   if (cmd != "run") usageError("unknown command '" + cmd + "'");
 
   std::string path;

@@ -23,7 +23,7 @@ namespace {
 
 const char* kUsage =
     "usage: simswift-agent --team T --player P [options]\n"
-    "  --team T             SPL team number (0..99); with --player P the robot's\n"
+    "  --team T             SPL team number (0..255); with --player P the robot's\n"
     "                       objects are /libagent-memory<N>, N = T x 11 + P\n"
     "  --bare               use the robot build's bare names (/libagent-memory)\n"
     "  --posture NAME       stand (default), crouch, limp or zero\n"

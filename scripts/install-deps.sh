@@ -4,7 +4,8 @@ set -euo pipefail
 pkgs=(build-essential cmake pkg-config git
       libode-dev libeigen3-dev liburdfdom-dev libyaml-cpp-dev
       libassimp-dev libosmesa6-dev libpng-dev libcairo2-dev
-      libgtest-dev libbenchmark-dev ffmpeg)
+      libgtest-dev libbenchmark-dev ffmpeg
+      gnuplot-nox parallel)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -2,6 +2,7 @@
 //
 // On a NAO, Perception blocks on the camera driver until a frame arrives
 // (30 Hz). In simswift the simulator plays the driver: it fills a CameraBlock
+// (part of the extension object beside the libagent block, SimExtension.hpp)
 // at 30 Hz of simulated time, posts `frame_ready`, and waits on
 // `perception_done` (with a watchdog) before stepping on.
 //
@@ -95,9 +96,9 @@ struct CameraBlock {
   sem_t frame_ready;               // posted by the simulator at 30 Hz
   sem_t perception_done;           // posted by Perception when it has finished
   std::atomic<int32_t> shutdown;   // set when the run ends
-  // 1 if a Perception thread waits on frame_ready. Set before
-  // LockStep::attached; the simulator posts frames (and waits for
-  // perception_done) only to robots that have one.
+  // 1 if a Perception thread waits on frame_ready. Set (by announce())
+  // before the program answers its first tick; the simulator posts frames
+  // (and waits for perception_done) only to robots that have one.
   std::atomic<int32_t> consumer;
 };
 

@@ -23,10 +23,10 @@ constexpr const char* kSemaphoreName = "/libagent-semaphore";
 constexpr const char* kExtensionName = "/libagent-simswift";
 constexpr const char* kImagesName = "/libagent-simswift-images";
 
-// SPL team numbers (the GameController's list) and players (SPL 2017: five
-// per team). N = team * 11 + player is unique for players below 11.
+// SPL team numbers (the GameController's, one byte) and players (SPL 2017:
+// five per team). N = team * 11 + player is unique for players below 11.
 constexpr int kMinTeamNumber = 0;
-constexpr int kMaxTeamNumber = 99;
+constexpr int kMaxTeamNumber = 255;
 constexpr int kMinPlayer = 1;
 constexpr int kMaxPlayer = 5;
 constexpr int kNameTeamFactor = 11;

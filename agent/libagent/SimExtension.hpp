@@ -10,8 +10,9 @@
 // that knows simswift (agent/'s AgentConnection) also posts `answered` after
 // publishing, only to wake the simulator sooner; it reads the simulated time
 // of its sensor slot here, announces itself (client_pid, camera consumer),
-// takes camera frames and sees `shutdown`. It watches `simulator_pid` to
-// notice a simulator that died without saying so.
+// takes camera frames, reads the game state, exchanges team packets and sees
+// `shutdown`. It watches `simulator_pid` to notice a simulator that died
+// without saying so.
 #pragma once
 
 #include <semaphore.h>
@@ -21,11 +22,13 @@
 
 #include "agent/libagent/AgentShared.hpp"
 #include "agent/libagent/CameraShared.hpp"
+#include "agent/libagent/GameState.hpp"
+#include "agent/libagent/TeamLink.hpp"
 
 namespace agent::libagent {
 
 constexpr uint32_t kExtensionMagic = 0x53575845;  // "SWXE"
-constexpr uint32_t kExtensionVersion = 2;
+constexpr uint32_t kExtensionVersion = 3;
 
 // Out-of-range actuators_latest: "no command since the last one consumed".
 // A libagent Effector then picks actuators_read's slot (its slot loop stops
@@ -55,6 +58,10 @@ struct SimExtension {
   std::atomic<int32_t> client_pid;
   sem_t answered;     // wake-up hint, posted after actuators_latest is set
   CameraBlock camera; // 30 Hz frame handshake (CameraShared.hpp)
+  // Written by the simulator only between ticks, while no robot thread runs
+  // (Runner::tick() step 7).
+  GameStateBlock game;  // the GameController's state as this robot sees it
+  TeamLink team;        // team packets: outbox (robot code) and inbox (network)
 };
 
 // True if process `pid` runs and (when `start` != 0) started at `start`.

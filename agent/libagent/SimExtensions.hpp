@@ -1,30 +1,15 @@
-// The simulator's per-robot extension objects, beside the libagent block:
-// the game state (GameState.hpp) and the team link (TeamLink.hpp). One block
-// per robot. Builtin robot programs share the runner's process and get a
-// pointer (Runner::extensions(i)); a program in another process would map
-// extensionsName(team, player) (not created yet: see README).
+// The game state (GameState.hpp) and the team link (TeamLink.hpp) of a
+// robot live in its extension object beside the libagent block
+// (SimExtension.hpp: /libagent-simswift<N>), so builtin programs (a pointer,
+// Runner::extensions(i)) and programs in another process (the named object)
+// find them in the same place. This name is kept for the code that reads
+// `ext->game` and `ext->team`.
 #pragma once
 
-#include <string>
-
-#include "agent/libagent/GameState.hpp"
-#include "agent/libagent/SharedNames.hpp"
-#include "agent/libagent/TeamLink.hpp"
+#include "agent/libagent/SimExtension.hpp"
 
 namespace agent::libagent {
 
-constexpr uint32_t kSimExtensionsMagic = 0x53575845;  // "SWXE"
-constexpr const char* kSimExtensionsName = "/simswift-extensions";
-
-struct SimExtensions {
-  uint32_t magic = kSimExtensionsMagic;
-  GameStateBlock game{};
-  TeamLink team;
-};
-
-// Suffixed like the libagent block (SharedNames.hpp: N = team x 11 + player).
-inline std::string extensionsName(int team, int player) {
-  return std::string(kSimExtensionsName) + std::to_string(simulationNumber(team, player));
-}
+using SimExtensions = SimExtension;
 
 }  // namespace agent::libagent

@@ -6,7 +6,7 @@
 // simulator; inbox: the simulator -> robot code), so indices are atomics and
 // no lock is needed. Determinism does not rest on the atomics but on when the
 // simulator touches the rings: only at the end of a tick, after every robot
-// thread has answered (motion_done / perception_done) and before the next tick
+// thread has answered (its joint command / perception_done) and before the next tick
 // is posted (Runner::tick() step 7), so the robot code always sees the same
 // packets at the same simulated time. On a real robot a UDP socket replaces
 // this object (see agent/comms/TeamTransport.hpp).

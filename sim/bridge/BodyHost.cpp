@@ -133,12 +133,20 @@ void BodyHost::takeOwnership(int fd) {
 
 void BodyHost::setUpNamed() {
   int fd = -1;
-  void* p = openSized(names_.extension, sizeof(SimExtension), &fd);
-  ext_ = static_cast<SimExtension*>(p);
-  if (flock(fd, LOCK_EX) != 0) {
-    const std::string e = sysError("flock " + names_.extension);
+  for (;;) {
+    void* p = openSized(names_.extension, sizeof(SimExtension), &fd);
+    ext_ = static_cast<SimExtension*>(p);
+    if (flock(fd, LOCK_EX) != 0) {
+      const std::string e = sysError("flock " + names_.extension);
+      close(fd);
+      munmap(p, sizeof(SimExtension));
+      throw BridgeError(e);
+    }
+    // Removed as stale by another run while we waited for the lock: again.
+    struct stat st {};
+    if (fstat(fd, &st) == 0 && st.st_nlink > 0) break;
     close(fd);
-    throw BridgeError(e);
+    munmap(p, sizeof(SimExtension));
   }
   takeOwnership(fd);  // throws (leaving everything as it was) if a live simulator owns the robot
   cleanup::registerShm(names_.extension);
@@ -192,6 +200,7 @@ void BodyHost::initialise(const al::JointValues& initial) {
   sem_init(&x.camera.frame_ready, 1, 0);
   sem_init(&x.camera.perception_done, 1, 0);
   x.camera.magic = al::kExtensionMagic;
+  new (&x.team) al::TeamLink();  // empty rings, magic set
   x.version = al::kExtensionVersion;
   if (images_) images_->magic = al::kCameraImagesMagic;
   // The magic goes last: a program that sees it sees an initialised robot.

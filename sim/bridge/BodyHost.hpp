@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "agent/libagent/AgentConnection.hpp"
 #include "agent/libagent/AgentShared.hpp"
@@ -166,5 +167,17 @@ void unregister(const std::string& name);
 // a robot thread hangs and cannot be joined).
 void removeAll();
 }  // namespace cleanup
+
+}  // namespace simswift::bridge
+
+namespace simswift::bridge {
+
+// Unlinks the named objects (extension, block, semaphore, images) of every
+// simulated robot in /dev/shm whose owning simulator is gone (killed
+// without cleaning up), except robots whose memory name is in `keep` (this
+// run takes those over, adopting what a waiting program opened). Returns
+// the memory names removed. Objects without a simswift extension (a robot
+// program waiting for its simulator) are left alone.
+std::vector<std::string> removeStaleObjects(const std::vector<std::string>& keep);
 
 }  // namespace simswift::bridge

@@ -201,6 +201,13 @@ void Runner::start() {
     robots_.resize(scenario_.robots.size());
     for (auto& r : robots_) r = std::make_unique<Robot>();
   }
+  // Objects a killed run left for robots not in this run; this run's own
+  // robots take theirs over (a waiting program may hold them open).
+  std::vector<std::string> ours;
+  for (const RobotSpec& spec : scenario_.robots)
+    if (spec.program == RobotSpec::Program::External)
+      ours.push_back(spec.bare_names ? al::bareNames().memory : al::simulationNames(spec.team, spec.player).memory);
+  if (!ours.empty()) bridge::removeStaleObjects(ours);
   for (size_t i = 0; i < scenario_.robots.size(); ++i) {
     Robot& r = *robots_[i];
     r.spec = scenario_.robots[i];
@@ -219,7 +226,7 @@ void Runner::start() {
     r.images = r.host->images();
     if (external && free_running_) r.host->setSync(SyncMode::FreeRunning);
     r.latched.joints = initial;
-    r.ext = std::make_unique<al::SimExtensions>();  // before the program starts
+    r.ext = r.host->extension();  // game state + team link, beside the block
     if (!external) {
       // The robot program: the standard modules (agent/program/ModuleOrder).
       // Scenario actions become its behaviour (the Motion module walks);
@@ -266,9 +273,10 @@ void Runner::start() {
   network_ = std::make_unique<network::TeamNetwork>(scenario_.team_comms, scenario_.seed);
   std::vector<game::GameController::RobotId> ids;
   links_.clear();
+  // The game and the network know the two teams by side (GameController
+  // team index: blue 0, red 1); the game-state block carries each side's
+  // SPL team number, as the GameController's packet does.
   for (auto& r : robots_) {
-    // Network and GameController work by side (colour index 0/1); the block
-    // carries each side's SPL team number, as the GameController's packet does.
     const int side = static_cast<int>(r->spec.colour);
     network_->addEndpoint(side, r->spec.player);
     ids.push_back({side, r->spec.player, r->spec.team});
@@ -299,30 +307,24 @@ void Runner::setFreeRunning(bool on) {
       r->host->setSync(on ? SyncMode::FreeRunning : SyncMode::LockStep);
 }
 
-// A robot's first answer: its program may start before or after the
-// simulator, so this waits up to attach_timeout (wall clock: only how long
-// to wait for another process, never simulation).
+// An external robot's first answer: its program may start before or after
+// the simulator, so this waits up to attach_timeout (wall clock: only how
+// long to wait for another process, never simulation).
 void Runner::waitForFirstAnswer(Robot& r) {
-  const bool external = r.spec.program == RobotSpec::Program::External;
-  if (!r.host->waitAnswer(external ? 0.5 : scenario_.attach_timeout_s)) {
-    if (external)
-      std::fprintf(stderr,
-                   "waiting for robot %s on %s: start its robot program, e.g. `simswift-agent --team %d --player "
-                   "%d%s`\n",
-                   r.tag.c_str(), r.host->memoryName().c_str(), r.spec.team, r.spec.player,
-                   r.spec.bare_names ? " --bare" : "");
+  if (!r.host->waitAnswer(0.5)) {
+    std::fprintf(stderr,
+                 "waiting for robot %s on %s: start its libagent robot program (or `simswift-agent --team %d "
+                 "--player %d%s`)\n",
+                 r.tag.c_str(), r.host->memoryName().c_str(), r.spec.team, r.spec.player,
+                 r.spec.bare_names ? " --bare" : "");
     if (!r.host->waitAnswer(scenario_.attach_timeout_s)) {
       std::ostringstream m;
       m << "robot " << r.tag << ": no robot program answered on " << r.host->memoryName() << " within "
-        << scenario_.attach_timeout_s << " s";
-      if (external)
-        m << " (program: external: start one, e.g. simswift-agent --team " << r.spec.team << " --player "
-          << r.spec.player << ")";
+        << scenario_.attach_timeout_s << " s (program: external: start one, e.g. simswift-agent --team "
+        << r.spec.team << " --player " << r.spec.player << ")";
       throw RunnerError(m.str());
     }
   }
-  r.attached = true;
-  r.perception = r.host->hasPerception();
 }
 
 void Runner::watchdogFail(const Robot& r, const char* thread) const {
@@ -415,9 +417,16 @@ void Runner::tick() {
   // 4.
   for (auto& rp : robots_) {
     Robot& r = *rp;
-    if (!r.attached) waitForFirstAnswer(r);
-    else if (r.host->sync() == SyncMode::LockStep && !r.host->waitAnswer(scenario_.watchdog_s))
+    const bool external = r.spec.program == RobotSpec::Program::External;
+    if (external && !r.attached) {
+      waitForFirstAnswer(r);
+    } else if (r.host->sync() == SyncMode::LockStep && !r.host->waitAnswer(scenario_.watchdog_s)) {
       watchdogFail(r, "motion");
+    }
+    if (!r.attached) {
+      r.attached = true;
+      r.perception = r.host->hasPerception();
+    }
   }
   // 5.
   for (auto& r : robots_) r->latched = r->host->readActuators();
@@ -485,7 +494,7 @@ void Runner::teamAndGame(int64_t t_us) {
   for (const game::GameEvent& e : game_->update(t_us)) {
     Robot& r = *robots_[e.robot];
     if (e.kind == game::GameEvent::Kind::Penalised) {
-      placer_->penalise(*world_, e.robot, r.spec.team);
+      placer_->penalise(*world_, e.robot, static_cast<int>(r.spec.colour));
     } else {
       placer_->unpenalise(*world_, e.robot, scenario_.game.on_unpenalise == game::GameConfig::Return::Previous);
     }
@@ -523,6 +532,13 @@ RunStats Runner::stats() const {
   return s;
 }
 
+void Runner::placeRobot(int i, double x, double y, double theta) {
+  if (!started_) start();
+  if (i < 0 || i >= numRobots()) throw RunnerError("placeRobot: no robot " + std::to_string(i));
+  world_->placeRobot(i, x, y, theta, modelPosture(ap::postureAngles(ap::Posture::Stand)));
+  robots_[i]->sensors->reset(*world_);
+}
+
 RunStats Runner::run(const RunOptions& opt) {
   if (opt.realtime) setFreeRunning(true);
   start();
@@ -533,6 +549,9 @@ RunStats Runner::run(const RunOptions& opt) {
   while (world_->tick() < total) {
     tick();
     const int64_t t = world_->tick();
+    // The first tick may have waited for external programs to start: the
+    // wall clock (pacing, real-time factor) counts from its end.
+    if (t == 1) wall_start_ = Clock::now() - std::chrono::milliseconds(10);
     if (opt.print_hash_every > 0 && t % opt.print_hash_every == 0)
       std::printf("tick %lld hash %s\n", static_cast<long long>(t), hex64(world_->stateHash()).c_str());
     if (progress_every && t % progress_every == 0 && t < total) {

@@ -129,6 +129,9 @@ class Runner {
   // Blackboard between ticks (tests, benchmarks).
   agent::program::RobotProgram* program(int i) const { return robots_[i]->program.get(); }
   RunStats stats() const;  // so far
+  // Teleports robot i, standing, to (x, y) m facing theta rad (field frame)
+  // and restarts its sensors from rest (the experiment's sideline rule).
+  void placeRobot(int i, double x, double y, double theta);
 
   // Cameras (scenario camera:, --dump-frames, --overview). Rendering needs a
   // build with SIMSWIFT_HAVE_CAMERAS; start() throws RunnerError otherwise.
@@ -142,7 +145,7 @@ class Runner {
   // objects beside its libagent block: the game state and the team link
   // (see agent/libagent/SimExtensions.hpp). The runner touches them only in
   // tick step 7, while no robot thread runs.
-  agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext.get(); }
+  agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext; }
   const network::TeamNetwork& teamNetwork() const { return *network_; }
   const game::GameController& gameController() const { return *game_; }
   // FindBall view frames (`--findball-view DIR`): every robot whose behaviour
@@ -173,7 +176,7 @@ class Runner {
     bool fallen = false;
     int falls = 0;
     size_t next_push = 0;  // next of spec.pushes to apply
-    std::unique_ptr<agent::libagent::SimExtensions> ext;  // game state + team link
+    agent::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
   };
 
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;

@@ -163,6 +163,12 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
 
 }  // namespace
 
+void readActions(const YamlReader& robot, RobotSpec& rs) {
+  for (const YamlReader& a : robot.list("actions")) readAction(a, rs);
+  std::stable_sort(rs.pushes.begin(), rs.pushes.end(),
+                   [](const RobotSpec::Push& a, const RobotSpec::Push& b) { return a.t_s < b.t_s; });
+}
+
 bool RobotSpec::buttonHeld(sensors::Button b, double t_s) const {
   for (const ButtonPress& p : buttons)
     if (p.button == b && t_s >= p.t_s - 1e-9 && t_s < p.t_s + p.duration_s - 1e-9) return true;
@@ -302,9 +308,7 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
       if (rs.program == RobotSpec::Program::External)
         r.fail("actions", "an external robot runs its own program; actions need program: builtin");
       if (!rs.script.empty()) r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
-      for (const YamlReader& a : r.list("actions")) readAction(a, rs);
-      std::stable_sort(rs.pushes.begin(), rs.pushes.end(),
-                       [](const RobotSpec::Push& a, const RobotSpec::Push& b) { return a.t_s < b.t_s; });
+      readActions(r, rs);
     }
     if (r.has("behaviour")) {
       if (rs.program == RobotSpec::Program::External)

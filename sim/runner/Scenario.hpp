@@ -47,15 +47,17 @@
 //     penalties: [{t: 10, robot: 0, penalty: request_for_pickup, duration: 30}]  # robot: scenario index;
 //                                  # duration s (< 0: until {penalty: none}); penalised robots wait on the sideline
 //
-// `team` is the SPL team number (0..99, as in the GameController). A match
+// `team` is the SPL team number (0..255, as in the GameController). A match
 // has at most two teams, told apart by colour: a robot's `colour` (blue or
 // red) defaults to blue for the first team number in the file and red for
 // the second; all robots of a team share one colour, the two teams differ.
+// The game (GameController, sideline, team network) knows the teams by
+// side: blue is team index 0 (own goal at -x), red index 1.
 // `names: bare` gives one robot the robot build's /libagent-memory and
 // /libagent-semaphore.
 //
 // Unknown keys and bad values throw ConfigError naming file, line and key:
-//   scenario.yaml:7: robots[1].team: must be 0..99 (got 300)
+//   scenario.yaml:7: robots[1].team: must be in [0, 255] (got 300)
 #pragma once
 
 #include <cstdint>
@@ -73,6 +75,10 @@
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/World.hpp"
+
+namespace simswift {
+class YamlReader;
+}
 
 namespace simswift::runner {
 
@@ -161,6 +167,10 @@ struct Scenario {
   static Scenario loadFile(const std::string& path);
   static Scenario parse(const std::string& text, const std::string& source_name);
 };
+
+// A robot entry's `actions:` list into rs.actions and rs.pushes (also the
+// experiment files' script robots, sim/experiment).
+void readActions(const YamlReader& robot, RobotSpec& rs);
 
 // The source tree (compile definition), where default paths resolve.
 std::string sourceDir();

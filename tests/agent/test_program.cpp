@@ -122,14 +122,16 @@ TEST(RobotProgram, RunsMotionAndPerceptionInLockStep) {
 
     const int slot = al::loadIndex(block->actuators_latest);
     EXPECT_EQ(block->joints[slot].angles[J::LKneePitch], ap::postureAngles(ap::Posture::Crouch)[J::LKneePitch]);
-    EXPECT_EQ(program.motionTicks(), 5);
-    EXPECT_EQ(program.perceptionFrames(), 1);
 
     ext->shutdown = 1;
     ext->camera.shutdown = 1;
     sem_post(&tick);
     sem_post(&ext->camera.frame_ready);
-  }  // joins
+    program.join();
+    // Counted after each answer: read once the threads have ended.
+    EXPECT_EQ(program.motionTicks(), 5);
+    EXPECT_EQ(program.perceptionFrames(), 1);
+  }
   sem_destroy(&tick);
   sem_destroy(&ext->answered);
   sem_destroy(&ext->camera.frame_ready);

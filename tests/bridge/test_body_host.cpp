@@ -11,8 +11,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
+#include <vector>
 
 #include "agent/libagent/AgentConnection.hpp"
 #include "agent/libagent/TripleBuffer.hpp"
@@ -253,7 +255,7 @@ TEST(BodyHost, AdoptsObjectsAProgramCreatedFirst) {
 }
 
 TEST(BodyHost, RejectsRobotsOutsideTheTeamsAndPlayers) {
-  EXPECT_THROW(BodyHost(100, 1, BodyHost::Mode::InProcess), BridgeError);
+  EXPECT_THROW(BodyHost(256, 1, BodyHost::Mode::InProcess), BridgeError);
   EXPECT_THROW(BodyHost(-1, 1, BodyHost::Mode::InProcess), BridgeError);
   EXPECT_THROW(BodyHost(19, 0, BodyHost::Mode::InProcess), BridgeError);
   EXPECT_THROW(BodyHost(19, 6, BodyHost::Mode::InProcess), BridgeError);
@@ -306,7 +308,8 @@ TEST(BodyHost, AfterSigkillTheProgramStopsAndTheNextRunTakesOver) {
     EXPECT_LT(waited, 2.0);
     EXPECT_FALSE(conn.simulatorAlive());
   }
-  ASSERT_TRUE(exists(shmFile(n.extension))) << "SIGKILL cleans nothing";
+  // SIGKILL cleans nothing (unless another test's run, in parallel, has
+  // already swept the stale objects: the next host works either way).
   {
     BodyHost next(93, 3, BodyHost::Mode::Named);  // stale objects: taken over, no error
     EXPECT_EQ(next.extension()->simulator_pid.load(), getpid());
@@ -314,4 +317,47 @@ TEST(BodyHost, AfterSigkillTheProgramStopsAndTheNextRunTakesOver) {
     EXPECT_TRUE(conn.simulatorAlive());
   }
   EXPECT_FALSE(exists(shmFile(n.extension)));
+}
+
+namespace {
+// A named extension object owned by `pid`, plus a block object, as a
+// simulator leaves them.
+void fakeRobot(const al::RobotNames& n, int pid) {
+  for (const std::string& name : {n.extension, n.memory}) {
+    const int fd = shm_open(name.c_str(), O_CREAT | O_RDWR, 0600);
+    ASSERT_GE(fd, 0);
+    ASSERT_EQ(ftruncate(fd, name == n.extension ? sizeof(al::SimExtension) : sizeof(al::AgentData)), 0);
+    if (name == n.extension) {
+      void* p = mmap(nullptr, sizeof(al::SimExtension), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+      auto* x = static_cast<al::SimExtension*>(p);
+      x->simulator_pid = pid;
+      x->magic = al::kExtensionMagic;
+      munmap(p, sizeof(al::SimExtension));
+    }
+    close(fd);
+  }
+}
+}  // namespace
+
+// A run removes what a killed simulator left for other robots, and leaves
+// live simulators' robots and the ones it takes over itself alone.
+TEST(BodyHost, StaleObjectsOfKilledRunsAreRemoved) {
+  const pid_t dead = fork();
+  if (dead == 0) _exit(0);
+  waitpid(dead, nullptr, 0);
+  const al::RobotNames stale = al::simulationNames(95, 1), kept = al::simulationNames(95, 2),
+                       live = al::simulationNames(95, 3);
+  fakeRobot(stale, dead);
+  fakeRobot(kept, dead);
+  fakeRobot(live, getpid());
+  const std::vector<std::string> removed = simswift::bridge::removeStaleObjects({kept.memory});
+  EXPECT_NE(std::find(removed.begin(), removed.end(), stale.memory), removed.end());
+  EXPECT_FALSE(exists(shmFile(stale.memory)));
+  EXPECT_FALSE(exists(shmFile(stale.extension)));
+  EXPECT_TRUE(exists(shmFile(kept.extension)));
+  EXPECT_TRUE(exists(shmFile(live.extension)));
+  for (const al::RobotNames* n : {&kept, &live}) {
+    shm_unlink(n->extension.c_str());
+    shm_unlink(n->memory.c_str());
+  }
 }

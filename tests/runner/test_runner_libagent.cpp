@@ -6,6 +6,7 @@
 // a program outlives a SIGKILLed simulator by < 2 s; SPL team numbers.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <semaphore.h>
 #include <signal.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
@@ -160,7 +161,9 @@ TEST(LibagentClient, LockStepMoveSameHashStartedBeforeOrAfterAndInProcess) {
   RunStats before;
   double head_before = 0, knee_before = 0;
   {
-    ASSERT_FALSE(existsInShm(names.memory)) << "left over from another run";
+    // Leftovers of an interrupted earlier run would make "before" untestable.
+    for (const std::string& n : {names.memory, names.extension, names.images}) shm_unlink(n.c_str());
+    sem_unlink(names.semaphore.c_str());
     const pid_t client = spawn(clientArgs(team, player, ticks));
     const auto t0 = Clock::now();
     while (!existsInShm(names.memory) && Clock::now() - t0 < std::chrono::seconds(10))
@@ -301,6 +304,26 @@ TEST(LibagentClient, FreeRunningClientThatSleepsIsSatDownAndSkipsAreCounted) {
   EXPECT_GT(knee_max, knee_start + 0.3);
 }
 
+// The program stops answering (here: it exits after 100 ticks): the watchdog
+// names the robot instead of hanging.
+TEST(LibagentClient, WatchdogNamesASilentExternalRobot) {
+  const int team = 96, player = 1;
+  Scenario s = robotScenario(3.0, team, player, "external");
+  s.watchdog_s = 1.0;
+  Runner r(s);
+  r.start();
+  const pid_t client = spawn(clientArgs(team, player, 100, {"--hold"}));
+  std::string message;
+  try {
+    r.run(quiet());
+  } catch (const simswift::runner::WatchdogError& e) {
+    message = e.what();
+  }
+  EXPECT_EQ(waitExit(client, 10), 0);
+  EXPECT_NE(message.find("robot t96p1: motion thread did not answer within 1 s (tick 101"), std::string::npos)
+      << message;
+}
+
 // simswift killed with SIGKILL: the attached simswift-agent notices within
 // 2 s and exits with a message; the next run for the robot starts cleanly
 // on the stale objects.
@@ -347,9 +370,9 @@ TEST(SimswiftAgent, OutlivesAKilledSimulatorByLessThanTwoSecondsAndTheNextRunSta
   EXPECT_EQ(status, 1);
   EXPECT_LT(took, 2.0);
   EXPECT_NE(agent_text.find("simulator is gone"), std::string::npos) << agent_text;
-  EXPECT_TRUE(existsInShm(names.memory)) << "SIGKILL leaves the objects behind";
 
-  // The next run: takes the stale objects over and runs with a new program.
+  // The next run: takes the stale objects over (SIGKILL cleaned nothing;
+  // unless a run in parallel swept them already) and runs with a new program.
   {
     Runner r(robotScenario(0.5, team, player, "external"));
     r.start();
@@ -367,6 +390,27 @@ TEST(SimswiftAgent, OutlivesAKilledSimulatorByLessThanTwoSecondsAndTheNextRunSta
   }
   EXPECT_FALSE(existsInShm(names.memory));
   for (const std::string& f : {yaml, sim_err, agent_err}) std::remove(f.c_str());
+}
+
+// The game state and the team link an external program reads are in the
+// robot's named extension object, the same memory the runner fills.
+TEST(LibagentClient, GameStateIsInTheNamedExtensionObject) {
+  const int team = 96, player = 2;
+  const al::RobotNames names = al::simulationNames(team, player);
+  Runner r(robotScenario(1.0, team, player, "external"));
+  r.start();  // fills the game state for t = 0
+  const int fd = shm_open(names.extension.c_str(), O_RDONLY, 0);
+  ASSERT_GE(fd, 0);
+  void* p = mmap(nullptr, sizeof(al::SimExtension), PROT_READ, MAP_SHARED, fd, 0);
+  close(fd);
+  ASSERT_NE(p, MAP_FAILED);
+  const auto* x = static_cast<const al::SimExtension*>(p);
+  EXPECT_EQ(x->magic, al::kExtensionMagic);
+  EXPECT_GE(x->game.updates, 1u);
+  EXPECT_EQ(x->game.updates, r.extensions(0)->game.updates);
+  EXPECT_EQ(x->game.teams[0].team_number, 96);  // the blue side's SPL number
+  EXPECT_EQ(x->team.magic, al::kTeamLinkMagic);
+  munmap(p, sizeof(al::SimExtension));
 }
 
 TEST(ScenarioTeams, SplTeamNumbersAndColours) {

@@ -1,0 +1,71 @@
+// Running an experiment's trials as a batch: worker processes, shards,
+// resume, merge and the assembled results folder.
+//
+// Results folder (one per run):
+//   experiment.yaml        the experiment file's text (a rerun must match it)
+//   trials/trial_NNNNNN.csv          one results row, written last (temp + rename):
+//   trials/trial_NNNNNN.tracks.csv   its presence means the trial is done
+//   trials/trial_NNNNNN.timing.csv   wall clock (never part of the results)
+//   trials/trial_NNNNNN.log          the trial's messages, kept only if it failed
+//   results.csv, tracks.csv, report.md, figures/   once every trial is done
+//   timing.csv, timing.md                          wall clock: real-time factors
+//
+// Each trial runs in its own forked process (ODE's global random generator
+// rules out two worlds stepping in one process), at most `jobs` at a time.
+// Everything but timing.* is a pure function of the experiment file, so
+// reruns, --jobs, shards + merge and interrupted-then-resumed runs give
+// byte-identical results.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/TrialHooks.hpp"
+
+namespace simswift::experiment {
+
+struct BatchOptions {
+  std::string out_dir;       // results folder (created)
+  int jobs = 0;              // worker processes; 0 = the number of cores
+  int shard = 1, shards = 1; // run trials with index % shards == shard - 1
+  enum class Progress { Auto, Bar, Lines, None } progress = Progress::Auto;  // Auto: bar on a terminal
+};
+
+struct BatchOutcome {
+  int trials = 0;        // in this shard
+  int already = 0;       // done before this run (resume)
+  int ran = 0;           // finished by this run
+  int failed = 0;        // trials whose process failed (logs kept)
+  bool interrupted = false;
+  bool assembled = false;  // every trial of the experiment present: results written
+  std::string message;     // what to tell the user at the end
+};
+
+struct BatchError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Throws ConfigError (behaviours) or BatchError (folder of another experiment, I/O).
+BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchOptions& opt);
+
+// Joins shard folders (same experiment file) into `out`; assembles if every
+// trial is present. Throws BatchError.
+BatchOutcome mergeRuns(const std::vector<std::string>& dirs, const std::string& out);
+
+// Writes results.csv, tracks.csv, timing.*, report.md and figures/ from
+// dir/trials. Throws BatchError if a trial is missing.
+void assemble(const Experiment& e, const std::string& dir, std::string* notes);
+
+// Runs one trial in this process and writes its files into dir/trials
+// (the worker's job; also used by tests).
+void runAndWriteTrial(const Experiment& e, const TrialHooks& hooks, int trial, const std::string& dir);
+
+// `simswift experiment FILE --trial I`: runs trial I in this process (to
+// debug or repeat one trial), writes its files into out_dir/trials and
+// returns its results row.
+std::string runSingleTrial(const Experiment& e, const TrialHooks& hooks, int trial, const std::string& out_dir);
+
+std::string trialFile(const std::string& dir, int trial, const std::string& suffix);  // dir/trials/trial_NNNNNN<suffix>
+
+}  // namespace simswift::experiment

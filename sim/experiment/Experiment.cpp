@@ -1,0 +1,283 @@
+#include "sim/experiment/Experiment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "agent/libagent/SharedNames.hpp"
+#include "sim/vision/VisionConfig.hpp"
+#include "sim/world/YamlReader.hpp"
+
+namespace simswift::experiment {
+
+namespace al = agent::libagent;
+
+namespace {
+
+// Two robots' start positions closer than this (m, torso to torso) stand on
+// each other: a NAO's footprint is about 0.2 x 0.3 m.
+constexpr double kMinRobotSeparation = 0.30;
+
+std::string where(const YamlReader& r, const std::string& key) {
+  YAML::Node n = r.node()[key];
+  YAML::Mark m = (n.IsDefined() && !n.Mark().is_null()) ? n.Mark() : r.node().Mark();
+  std::string w = r.file();
+  if (!m.is_null()) w += ":" + std::to_string(m.line + 1);
+  return w + ": " + r.keyPath(key);
+}
+
+// An opaque map as one line of YAML (deterministic: yaml-cpp keeps the order).
+std::string flow(const YAML::Node& n) {
+  YAML::Emitter e;
+  e << YAML::Flow << n;
+  return e.c_str();
+}
+
+uint64_t splitmix64(uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+Behaviour parseBehaviour(const std::string& s) {
+  if (s == "findball2016") return Behaviour::FindBall2016;
+  if (s == "findball2017") return Behaviour::FindBall2017;
+  if (s == "striker") return Behaviour::Striker;
+  return Behaviour::Script;
+}
+
+const std::vector<std::string> kBehaviours = {"findball2016", "findball2017", "striker", "script"};
+
+}  // namespace
+
+const char* behaviourName(Behaviour b) {
+  switch (b) {
+    case Behaviour::FindBall2016: return "findball2016";
+    case Behaviour::FindBall2017: return "findball2017";
+    case Behaviour::Striker: return "striker";
+    case Behaviour::Script: return "script";
+  }
+  return "?";
+}
+
+int Experiment::maxRobots() const {
+  size_t n = 0;
+  for (const Setup& s : setups) n = std::max(n, s.robots.size());
+  return static_cast<int>(n);
+}
+
+Experiment Experiment::loadFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path + ": cannot open experiment file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse(text.str(), path);
+}
+
+Experiment Experiment::parse(const std::string& text, const std::string& source_name) {
+  const YAML::Node root = YamlReader::parse(text, source_name);
+  if (!root.IsMap()) throw ConfigError(source_name + ":1: an experiment file is a map (name:, seed:, balls:, ...)");
+  YamlReader top(root, source_name);
+  Experiment e;
+  e.source = source_name;
+  e.text = text;
+  e.name = top.string("name");
+  if (e.name.empty() || e.name.find_first_of("/\\ \t") != std::string::npos)
+    top.fail("name", "must be a non-empty word without spaces or slashes (it names the results folder)");
+  e.base.source = source_name;
+  e.base.base_dir = top.string("base_dir", runner::sourceDir());
+  e.base.model_path = top.string("model", "models/nao_v5.urdf");
+  e.base.field_path = top.string("field", "fields/spl_2017.yaml");
+  e.base.noise.on = top.boolean("noise", true);
+  try {
+    e.field = FieldConfig::loadYaml(e.base.fieldFile());
+  } catch (const ConfigError& err) {
+    top.fail("field", std::string("cannot load the field: ") + err.what());
+  }
+  e.seed = static_cast<uint64_t>(top.integer("seed", Range::nonNegative()));
+  e.time_limit = top.number("time_limit", Range::positive());
+  if (e.time_limit > 3600) top.fail("time_limit", "must be <= 3600 s (got " + std::to_string(e.time_limit) + ")");
+  e.trials_per_position = top.integer("trials_per_position", Range::closed(1, 10000));
+
+  const double ball_radius = e.field.ball.diameter / 2;
+  if (auto f = top.optionalMap("found")) {
+    e.found.distance = f->number("distance", e.found.distance, Range::positive());
+    if (e.found.distance < ball_radius)
+      f->fail("distance", "must be >= the ball radius " + std::to_string(ball_radius) + " m (got " +
+                              std::to_string(e.found.distance) + ")");
+    e.found.sees = f->boolean("sees", true);
+    f->finish();
+  }
+  if (auto f = top.optionalMap("fallen")) {
+    e.fallen.sideline_after = f->number("sideline_after", e.fallen.sideline_after, Range::positive());
+    f->finish();
+  }
+  if (auto t = top.optionalMap("tracks")) {
+    e.track_every = t->number("every", e.track_every, Range::closed(0.01, 60));
+    t->finish();
+  }
+  if (top.has("vision")) {
+    // The scenario's vision: block, read (and checked) by the vision
+    // oracle's own reader; every trial's scenario gets it.
+    if (!root["vision"].IsMap()) top.fail("vision", "must be a map (the scenario's vision: block)");
+    e.vision_yaml = flow(root["vision"]);
+    e.base.vision = vision::readVisionConfig(top.map("vision"), e.base.vision);
+  }
+
+  // Everything must lie on the carpet (m, field frame).
+  const double half_l = e.field.carpetLength() / 2, half_w = e.field.carpetWidth() / 2;
+  auto onCarpet = [&](const YamlReader& r, double x, double y, double margin, const std::string& what) {
+    if (std::abs(x) > half_l - margin || std::abs(y) > half_w - margin) {
+      std::ostringstream m;
+      m << what << " (" << x << ", " << y << ") m is off the carpet (|x| <= " << half_l - margin
+        << ", |y| <= " << half_w - margin << " m)";
+      r.fail(std::abs(x) > half_l - margin ? "x" : "y", m.str());
+    }
+  };
+
+  std::set<int> numbers;
+  for (const YamlReader& b : top.list("balls")) {
+    BallPosition p;
+    p.number = b.integer("position", Range::closed(1, 1000));
+    if (!numbers.insert(p.number).second) b.fail("position", "ball position " + std::to_string(p.number) + " appears twice");
+    p.x = b.number("x");
+    p.y = b.number("y");
+    p.note = b.string("note", "");
+    onCarpet(b, p.x, p.y, ball_radius, "the ball");
+    b.finish();
+    e.balls.push_back(p);
+  }
+  if (e.balls.empty()) top.fail("balls", "an experiment needs at least one ball position");
+
+  std::set<std::string> setup_names;
+  for (const YamlReader& s : top.list("setups")) {
+    Setup setup;
+    setup.name = s.string("name");
+    if (setup.name.empty() || setup.name.find_first_of(",\"\n/ ") != std::string::npos)
+      s.fail("name", "must be a non-empty word without spaces, commas, quotes or slashes");
+    if (!setup_names.insert(setup.name).second) s.fail("name", "setup '" + setup.name + "' appears twice");
+    setup.thesis_table = s.choice("thesis_table", "", {"", "5.3", "5.4", "5.5", "5.6", "5.7", "5.8"});
+    const bool has_default = s.has("behaviour");
+    const std::string def_behaviour = has_default ? s.choice("behaviour", "script", kBehaviours) : "";
+    const std::string def_where = has_default ? where(s, "behaviour") : "";
+    std::string def_config;
+    if (s.has("config")) {
+      if (!s.node()["config"].IsMap()) s.fail("config", "must be a map of behaviour overrides");
+      def_config = flow(s.node()["config"]);
+    }
+    std::set<std::pair<int, int>> players;
+    for (const YamlReader& r : s.list("robots")) {
+      ExperimentRobot rob;
+      {
+        const YAML::Mark m = r.node().Mark();
+        rob.where = r.file() + (m.is_null() ? "" : ":" + std::to_string(m.line + 1)) + ": " + r.path();
+      }
+      rob.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
+      rob.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
+      if (!players.insert({rob.team, rob.player}).second)
+        r.fail("player", "team " + std::to_string(rob.team) + " player " + std::to_string(rob.player) +
+                             " appears twice in setup '" + setup.name + "'");
+      rob.x = r.number("x");
+      rob.y = r.number("y");
+      rob.theta = r.number("theta", Range::closed(-2 * M_PI, 2 * M_PI));
+      onCarpet(r, rob.x, rob.y, 0.15, "the robot");
+      if (r.has("behaviour")) {
+        rob.behaviour = parseBehaviour(r.choice("behaviour", "script", kBehaviours));
+        rob.behaviour_where = where(r, "behaviour");
+      } else if (has_default) {
+        rob.behaviour = parseBehaviour(def_behaviour);
+        rob.behaviour_where = def_where;
+      } else {
+        r.fail("behaviour", "missing: give the robot (or its setup) a behaviour: findball2016, findball2017, "
+                            "striker or script");
+      }
+      rob.config_yaml = def_config;
+      if (r.has("config")) {
+        if (!r.node()["config"].IsMap()) r.fail("config", "must be a map of behaviour overrides");
+        // The robot's overrides replace the setup's key by key.
+        YAML::Node merged = def_config.empty() ? YAML::Node(YAML::NodeType::Map) : YAML::Load(def_config);
+        for (const auto& kv : r.node()["config"]) merged[kv.first.Scalar()] = kv.second;
+        rob.config_yaml = flow(merged);
+      }
+      if (rob.behaviour == Behaviour::Script) {
+        if (!r.has("actions")) r.fail("actions", "missing: a script robot needs an actions: list (as in a scenario)");
+        runner::readActions(r, rob.script);
+      } else if (r.has("actions")) {
+        r.fail("actions", "only a script robot takes actions (this one is " +
+                              std::string(behaviourName(rob.behaviour)) + ")");
+      }
+      r.finish();
+      // Robots standing on each other.
+      for (const ExperimentRobot& o : setup.robots)
+        if (std::hypot(o.x - rob.x, o.y - rob.y) < kMinRobotSeparation) {
+          std::ostringstream m;
+          m << "stands on player " << o.player << " (" << std::hypot(o.x - rob.x, o.y - rob.y)
+            << " m apart; robots need >= " << kMinRobotSeparation << " m)";
+          r.fail("x", m.str());
+        }
+      setup.robots.push_back(std::move(rob));
+    }
+    if (setup.robots.empty()) s.fail("robots", "a setup needs at least one robot");
+    // A ball inside a robot's start footprint would be pushed away at once.
+    for (const ExperimentRobot& rob : setup.robots)
+      for (const BallPosition& b : e.balls)
+        if (std::hypot(b.x - rob.x, b.y - rob.y) < kMinRobotSeparation / 2 + ball_radius)
+          s.fail("robots", "player " + std::to_string(rob.player) + " starts on ball position " +
+                               std::to_string(b.number));
+    std::set<int> teams;
+    for (const ExperimentRobot& rob : setup.robots) teams.insert(rob.team);
+    if (teams.size() > 2) s.fail("robots", "a setup is one match: at most two team numbers");
+    s.finish();
+    e.setups.push_back(std::move(setup));
+  }
+  if (e.setups.empty()) top.fail("setups", "an experiment needs at least one setup");
+  top.finish();
+  if (e.numTrials() > 1000000) top.fail("trials_per_position", "more than 10^6 trials");
+  return e;
+}
+
+TrialSpec trialSpec(const Experiment& e, int index) {
+  TrialSpec t;
+  t.index = index;
+  const int per_setup = static_cast<int>(e.balls.size()) * e.trials_per_position;
+  t.setup = index / per_setup;
+  t.ball = (index % per_setup) / e.trials_per_position;
+  t.repeat = index % e.trials_per_position;
+  // Stateless: a pure function of (experiment seed, trial index).
+  t.seed = splitmix64(splitmix64(e.seed) ^ static_cast<uint64_t>(index)) % 2147483647ull;
+  return t;
+}
+
+runner::TeamColour teamColour(const Setup& s, int spl_team) {
+  return s.robots.empty() || s.robots.front().team == spl_team ? runner::TeamColour::Blue : runner::TeamColour::Red;
+}
+
+runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t) {
+  runner::Scenario sc = e.base;
+  sc.source = e.source + " (trial " + std::to_string(t.index) + ")";
+  sc.seed = t.seed;
+  sc.duration = e.time_limit;
+  const BallPosition& b = e.balls[t.ball];
+  sc.ball = std::make_pair(b.x, b.y);
+  const Setup& s = e.setups[t.setup];
+  for (const ExperimentRobot& r : s.robots) {
+    runner::RobotSpec rs;
+    if (r.behaviour == Behaviour::Script) rs = r.script;
+    rs.team = r.team;
+    rs.colour = teamColour(s, r.team);
+    rs.player = r.player;
+    rs.x = r.x;
+    rs.y = r.y;
+    rs.theta = r.theta;
+    rs.posture = agent::program::Posture::Stand;
+    rs.program = runner::RobotSpec::Program::Builtin;
+    sc.robots.push_back(std::move(rs));
+  }
+  return sc;
+}
+
+}  // namespace simswift::experiment

@@ -1,0 +1,128 @@
+// A find-ball experiment (thesis §3.2.6 findballexp and §5.1), loaded from
+// YAML and validated in full before any trial runs:
+//
+//   name: thesis_findball          # names the results folder and the report
+//   field: fields/spl_2017.yaml    # optional (as in a scenario)
+//   model: models/nao_v5.urdf      # optional
+//   seed: 2017                     # trial seeds derive from (seed, trial index)
+//   time_limit: 180                # s of simulated time per trial (> 0)
+//   trials_per_position: 10
+//   found: {distance: 0.300, sees: true}   # m (inclusive, >= ball radius); sees: the
+//                                  # ball must also be in a camera's view
+//   fallen: {sideline_after: 30}   # s down (not got up) before the robot is moved
+//                                  # to the sideline, as the thesis did
+//   tracks: {every: 0.5}           # s between robot track samples
+//   noise: on                      # sensor noise (the scenario's noise: switch)
+//   vision: {ball: {max_distance_mm: 2500}}   # detector model and noise: the
+//                                  # scenario's vision: block (sim/vision/VisionConfig.hpp),
+//                                  # read by its reader, given to every trial
+//   balls:                         # table 5.2 (m, field frame)
+//     - {position: 1, x: 2.25, y: 0.0, note: Right middle}
+//   setups:                        # each runs every ball position x trials_per_position
+//     - name: "2016"
+//       thesis_table: "5.3"        # optional: the thesis table it repeats (report columns)
+//       behaviour: findball2016    # default for the robots below
+//       config: {...}              # default behaviour overrides (opaque)
+//       robots:                    # table 5.1: SPL team and player numbers, start poses
+//         - {team: 19, player: 2, x: -3.25, y: 3.0, theta: -1.5708}
+//         - {team: 19, player: 3, x: -2.0, y: -3.0, theta: 1.5708, behaviour: script,
+//            actions: [{t: 0.5, action: walk, forward: 250}]}   # script: the scenario's actions
+//
+// Trials are numbered setup-major: trial = (setup * positions + position) *
+// trials_per_position + repeat. Every error is a ConfigError naming file,
+// line and field.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sim/runner/Scenario.hpp"
+#include "sim/world/ConfigError.hpp"
+#include "sim/world/FieldConfig.hpp"
+
+namespace simswift::experiment {
+
+// Behaviours an experiment may name (issue 12's scenario `behaviour:`).
+// Whether this build can run one is the BehaviourFactory's call (TrialHooks).
+enum class Behaviour { FindBall2016, FindBall2017, Striker, Script };
+const char* behaviourName(Behaviour b);
+
+struct BallPosition {
+  int number = 1;          // the thesis's position number (table 5.2)
+  double x = 0, y = 0;     // m, field frame
+  std::string note;
+};
+
+struct ExperimentRobot {
+  int team = 0;            // SPL team number (GameController, 0..99), e.g. 19
+  int player = 2;          // 1..5
+  double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
+  Behaviour behaviour = Behaviour::Script;
+  std::string config_yaml;  // behaviour overrides, opaque (YAML flow text; "" = none)
+  runner::RobotSpec script;  // behaviour script: its actions (the scenario's actions: list)
+  std::string where;         // "file:line: setups[0].robots[1]" for later errors
+  std::string behaviour_where;  // same, of the behaviour key
+};
+
+struct Setup {
+  std::string name;
+  std::string thesis_table;  // "5.3".."5.8" or ""
+  std::vector<ExperimentRobot> robots;
+};
+
+struct FoundSpec {
+  double distance = 0.300;  // m, robot (torso, on the ground) to ball centre, inclusive
+  bool sees = true;         // and the ball is in a camera's field of view
+};
+
+struct FallenSpec {
+  double sideline_after = 30.0;  // s continuously down before the move
+};
+
+struct Experiment {
+  std::string source;        // file name, for messages
+  std::string text;          // the file's text (copied into the results folder)
+  std::string name;
+  runner::Scenario base;     // model, field, base_dir, noise: the trial scenarios' common part
+  FieldConfig field;
+  uint64_t seed = 1;
+  double time_limit = 180;   // s
+  int trials_per_position = 1;
+  FoundSpec found;
+  FallenSpec fallen;
+  double track_every = 0.5;  // s
+  std::string vision_yaml;   // the vision: block as written (YAML flow text; "" = none);
+                             // parsed into base.vision
+  std::vector<BallPosition> balls;
+  std::vector<Setup> setups;
+
+  int numTrials() const {
+    return static_cast<int>(setups.size() * balls.size()) * trials_per_position;
+  }
+  int maxRobots() const;
+
+  static Experiment loadFile(const std::string& path);
+  static Experiment parse(const std::string& text, const std::string& source_name);
+};
+
+// Which setup, ball position and repeat a trial index is, and its seed.
+struct TrialSpec {
+  int index = 0;
+  int setup = 0;       // index into Experiment::setups
+  int ball = 0;        // index into Experiment::balls
+  int repeat = 0;      // 0..trials_per_position-1
+  uint64_t seed = 0;   // < 2^31, so `simswift run --seed` can repeat it
+};
+TrialSpec trialSpec(const Experiment& e, int index);
+
+// The scenario of one trial without behaviours: robots standing at their
+// start poses, ball placed, seed set, duration = time limit. The
+// BehaviourFactory then fills in each robot's behaviour.
+runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t);
+
+// The side of the match a setup's team plays on: the first team number in
+// the setup blue, a second one red (the scenario's own default).
+runner::TeamColour teamColour(const Setup& s, int spl_team);
+
+}  // namespace simswift::experiment

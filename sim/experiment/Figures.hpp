@@ -1,0 +1,31 @@
+// The experiment's figures:
+//  - routes_<setup>.png: where each robot walked over all trials, as a heat
+//    map over the field in the robot's own colour (the thesis's figures 5.2
+//    and 5.3), with the start poses and the ball positions. Drawn with Cairo.
+//  - findtime_<setup>.png: find-time box plots per ball position, drawn by
+//    gnuplot (pngcairo) from a data file and script left beside the PNG.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/Trial.hpp"
+
+namespace simswift::experiment {
+
+struct RouteSamples {
+  std::string player;                           // "t19p2", in setup order
+  std::vector<std::pair<double, double>> xy;    // m, field frame
+};
+
+// Throws std::runtime_error if the PNG cannot be written.
+void drawRoutes(const Experiment& e, int setup, const std::vector<RouteSamples>& robots, const std::string& png);
+
+// Writes DIR/findtime_<setup>.dat and .gp and runs gnuplot on them. Returns
+// false with *message if gnuplot is missing or fails (the run goes on).
+bool plotFindTimes(const Experiment& e, int setup, const std::vector<TrialResult>& results, const std::string& dir,
+                   std::string* message);
+
+}  // namespace simswift::experiment

@@ -1,0 +1,46 @@
+// The experiment's Markdown report, laid out like the thesis's tables
+// 5.3-5.8 (one per setup) and comparisons 5.9-5.12 (ours beside the
+// thesis's, from ThesisTables).
+//
+// Per position, as the thesis computes them: Tests; Found; Not Found; Total
+// Seconds = sum of the find times; Avg. Seconds = Total / Found (0 when none
+// found); Std. Dev. = population standard deviation of the find times (0
+// for fewer than two; the thesis prints 0.00 for a single find). Summary
+// rows: "Total" rows sum the counts; "Average" rows are the plain mean of
+// each column over the position rows (so the thesis's 75.00 in table 5.3
+// is the mean of five position averages, not a mean over finds).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/Trial.hpp"
+
+namespace simswift::experiment {
+
+struct PositionStats {
+  int position = 0;
+  int tests = 0, found = 0, not_found = 0;
+  double total_s = 0, avg_s = 0, sd_s = 0;
+};
+PositionStats positionStats(int position, int tests, const std::vector<double>& found_times);
+
+struct SummaryRow {
+  double tests = 0, found = 0, not_found = 0, total_s = 0, avg_s = 0, sd_s = 0;
+};
+SummaryRow sumRows(const std::vector<PositionStats>& rows);
+SummaryRow meanRows(const std::vector<PositionStats>& rows);
+
+// Setup `setup`'s rows in the experiment's ball order.
+std::vector<PositionStats> setupTable(const Experiment& e, const std::vector<TrialResult>& results, int setup);
+
+// Groups of consecutive positions (in ball order) for the summary rows:
+// chunks of five (the thesis's 1-5 and 6-10); one chunk gives "Total" /
+// "Average" rows (tables 5.5-5.8), several give "Sub-" rows and a "Grand" one.
+std::vector<std::pair<int, int>> summaryGroups(int rows);  // [first, last) row indices
+
+// The whole report. `results` sorted by trial, one per trial.
+std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& results);
+
+}  // namespace simswift::experiment

@@ -1,0 +1,227 @@
+#include "sim/experiment/Trial.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "agent/libagent/SharedNames.hpp"
+
+namespace simswift::experiment {
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+namespace {
+
+std::string tag(int team, int player) { return "t" + std::to_string(team) + "p" + std::to_string(player); }
+
+// Torso pose (field frame): x, y m, heading rad.
+struct Pose2 {
+  double x, y, theta, z;
+};
+Pose2 torsoPose(const World& w, int i) {
+  const RobotBody& body = w.robot(i);
+  const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
+  const Eigen::Vector3d fwd = torso.linear().col(0);
+  return {torso.translation().x(), torso.translation().y(), std::atan2(fwd.y(), fwd.x()), torso.translation().z()};
+}
+
+// Where a robot down too long goes: its nearest touch line at its x (kept
+// inside the field), facing the field; stepped toward the centre line while
+// another robot stands within 0.4 m.
+void sidelineSpot(const Experiment& e, const World& w, int i, double* x, double* y, double* theta) {
+  const Pose2 p = torsoPose(w, i);
+  const double half_l = e.field.length / 2 - 0.3;
+  const double side = p.y >= 0 ? 1.0 : -1.0;
+  *y = side * e.field.width / 2;
+  *theta = -side * M_PI / 2;
+  *x = std::max(-half_l, std::min(half_l, p.x));
+  const double step = *x > 0 ? -0.4 : 0.4;
+  for (int tries = 0; tries < 40; ++tries) {
+    bool clear = true;
+    for (int j = 0; j < w.numRobots(); ++j) {
+      if (j == i) continue;
+      const Pose2 o = torsoPose(w, j);
+      if (std::hypot(o.x - *x, o.y - *y) < 0.4) clear = false;
+    }
+    if (clear) return;
+    *x += step;
+  }
+}
+
+std::vector<std::string> splitCsv(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : line) {
+    if (c == ',') {
+      out.push_back(cur);
+      cur.clear();
+    } else if (c != '\n' && c != '\r') {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+}  // namespace
+
+TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
+  using Clock = std::chrono::steady_clock;
+  const auto wall0 = Clock::now();  // timing only
+  const TrialSpec t = trialSpec(e, index);
+  const Setup& setup = e.setups[t.setup];
+  runner::Scenario sc = trialScenario(e, t);
+  hooks.behaviours->configure(e, t, sc);
+
+  TrialResult res;
+  res.trial = index;
+  res.setup = setup.name;
+  res.position = e.balls[t.ball].number;
+  res.repeat = t.repeat;
+  res.seed = t.seed;
+  const int n = static_cast<int>(setup.robots.size());
+  res.robots.resize(n);
+  for (int i = 0; i < n; ++i) {
+    res.robots[i].team = setup.robots[i].team;
+    res.robots[i].player = setup.robots[i].player;
+  }
+
+  runner::Runner run(sc);
+  hooks.behaviours->attach(e, t, run);
+  run.start();
+  hooks.behaviours->startPlay(e, t, run);
+  World& w = run.world();
+
+  const int64_t limit = std::llround(e.time_limit / kTickSeconds);
+  const int64_t track_every = std::max<int64_t>(1, std::llround(e.track_every / kTickSeconds));
+  const int64_t sideline_ticks = std::max<int64_t>(1, std::llround(e.fallen.sideline_after / kTickSeconds));
+  std::vector<int64_t> down_since(n, -1);
+  std::vector<Pose2> last(n);
+  auto sample = [&](int i, bool count) {
+    const Pose2 p = torsoPose(w, i);
+    if (count) res.robots[i].distance_m += std::hypot(p.x - last[i].x, p.y - last[i].y);
+    last[i] = p;
+    res.tracks.push_back({i, w.time(), p.x, p.y, p.theta});
+  };
+  for (int i = 0; i < n; ++i) sample(i, false);
+
+  while (run.ticks() < limit) {
+    run.tick();  // 1.
+    const int64_t tick = run.ticks();
+    for (int i = 0; i < n; ++i) {  // 2.
+      const double z = torsoPose(w, i).z;
+      if (down_since[i] < 0 && z < runner::kFallHeight) {
+        down_since[i] = tick;
+      } else if (down_since[i] >= 0 && z > runner::kStandHeight) {
+        down_since[i] = -1;
+      } else if (down_since[i] >= 0 && tick - down_since[i] >= sideline_ticks) {
+        double x, y, theta;
+        sidelineSpot(e, w, i, &x, &y, &theta);
+        sample(i, true);  // the walk up to the move counts, the move does not
+        run.placeRobot(i, x, y, theta);
+        last[i] = torsoPose(w, i);
+        ++res.robots[i].sideline_moves;
+        down_since[i] = -1;
+      }
+    }
+    const int finder = hooks.found->finder(e, run);  // 4. (3. below, so the last leg is sampled)
+    if (tick % track_every == 0 || finder >= 0 || tick == limit)
+      for (int i = 0; i < n; ++i) sample(i, true);  // 3.
+    if (finder >= 0) {
+      res.found = true;
+      res.seconds = w.time();
+      res.finder = tag(setup.robots[finder].team, setup.robots[finder].player);
+      break;
+    }
+  }
+  const runner::RunStats stats = run.stats();
+  run.shutdown();
+  res.resets = stats.blowups;
+  for (int i = 0; i < n && i < static_cast<int>(stats.robots.size()); ++i) res.robots[i].falls = stats.robots[i].falls;
+  res.sim_s = stats.sim_s;
+  res.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
+  return res;
+}
+
+std::string csvHeader(int robots) {
+  std::string h = "trial,setup,position,repeat,seed,found,seconds,finder,resets";
+  for (int k = 1; k <= robots; ++k) {
+    const std::string r = "robot" + std::to_string(k) + "_";
+    h += "," + r + "player," + r + "distance_m," + r + "falls," + r + "sideline_moves";
+  }
+  return h + "\n";
+}
+
+std::string csvRow(const TrialResult& r, int robots) {
+  std::ostringstream s;
+  s << r.trial << ',' << r.setup << ',' << r.position << ',' << r.repeat << ',' << r.seed << ','
+    << (r.found ? 1 : 0) << ',' << (r.found ? fixed(r.seconds, 2) : "") << ',' << r.finder << ',' << r.resets;
+  for (int k = 0; k < robots; ++k) {
+    if (k < static_cast<int>(r.robots.size())) {
+      const RobotOutcome& o = r.robots[k];
+      s << ',' << tag(o.team, o.player) << ',' << fixed(o.distance_m, 3) << ',' << o.falls << ','
+        << o.sideline_moves;
+    } else {
+      s << ",,,,";
+    }
+  }
+  s << '\n';
+  return s.str();
+}
+
+TrialResult parseCsvRow(const std::string& line) {
+  const std::vector<std::string> f = splitCsv(line);
+  if (f.size() < 9 || (f.size() - 9) % 4 != 0)
+    throw std::runtime_error("bad results row (" + std::to_string(f.size()) + " fields): " + line);
+  TrialResult r;
+  try {
+    r.trial = std::stoi(f[0]);
+    r.setup = f[1];
+    r.position = std::stoi(f[2]);
+    r.repeat = std::stoi(f[3]);
+    r.seed = std::stoull(f[4]);
+    r.found = f[5] == "1";
+    r.seconds = r.found ? std::stod(f[6]) : 0;
+    r.finder = f[7];
+    r.resets = std::stoi(f[8]);
+    for (size_t k = 9; k + 3 < f.size(); k += 4) {
+      if (f[k].empty()) continue;
+      RobotOutcome o;
+      if (std::sscanf(f[k].c_str(), "t%dp%d", &o.team, &o.player) != 2) throw std::runtime_error("player " + f[k]);
+      o.distance_m = std::stod(f[k + 1]);
+      o.falls = std::stoi(f[k + 2]);
+      o.sideline_moves = std::stoi(f[k + 3]);
+      r.robots.push_back(o);
+    }
+  } catch (const std::exception& ex) {
+    throw std::runtime_error(std::string("bad results row: ") + ex.what() + ": " + line);
+  }
+  return r;
+}
+
+std::string tracksHeader() { return "trial,setup,player,t,x,y,theta\n"; }
+
+std::string tracksRows(const TrialResult& r, const Experiment& e) {
+  std::ostringstream s;
+  for (const TrackSample& p : r.tracks) {
+    const RobotOutcome& o = r.robots[p.robot];
+    s << r.trial << ',' << r.setup << ',' << tag(o.team, o.player) << ',' << fixed(p.t, 2) << ',' << fixed(p.x, 3)
+      << ',' << fixed(p.y, 3) << ',' << fixed(p.theta, 3) << '\n';
+  }
+  return s.str();
+}
+
+std::string timingHeader() { return "trial,sim_s,wall_s,real_time_factor\n"; }
+
+std::string timingRow(const TrialResult& r) {
+  return std::to_string(r.trial) + "," + fixed(r.sim_s, 2) + "," + fixed(r.wall_s, 3) + "," +
+         fixed(r.realTimeFactor(), 2) + "\n";
+}
+
+}  // namespace simswift::experiment

@@ -1,0 +1,74 @@
+// One find-ball trial: a pure function of (experiment, trial index).
+//
+// runTrial builds the trial's scenario (robots at their start poses, the
+// ball at its position, the trial's seed), lets the BehaviourFactory set
+// behaviours up, and ticks the Runner until the FoundRule names a finder or
+// the time limit passes. Each tick, in this order:
+//   1. Runner::tick() (robots, physics, sensors);
+//   2. the fallen-robot rule: a robot down (torso below kFallHeight, until
+//      above kStandHeight) for `fallen.sideline_after` s is moved to its
+//      nearest touch line, standing, facing the field;
+//   3. track sample every `tracks.every` s (walked distance is summed over
+//      these samples, which also averages out the walk's sway);
+//   4. the found rule.
+//
+// Results are written as one CSV row (deterministic) plus a track file and
+// a timing line (wall clock: never part of the results).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/TrialHooks.hpp"
+
+namespace simswift::experiment {
+
+struct RobotOutcome {
+  int team = 0, player = 0;   // SPL numbers
+  double distance_m = 0;      // walked (track samples, teleports excluded)
+  int falls = 0;              // Runner's fall count
+  int sideline_moves = 0;
+};
+
+struct TrackSample {
+  int robot = 0;              // index in the setup
+  double t = 0;               // s
+  double x = 0, y = 0, theta = 0;  // m, m, rad; field frame, torso
+};
+
+struct TrialResult {
+  int trial = 0;
+  std::string setup;
+  int position = 0;           // ball position number (table 5.2)
+  int repeat = 0;
+  uint64_t seed = 0;
+  bool found = false;
+  double seconds = 0;         // find time (s) if found
+  std::string finder;         // "t19p3" if found
+  int resets = 0;             // world resets after a numerical blow-up
+  std::vector<RobotOutcome> robots;
+  std::vector<TrackSample> tracks;
+  // Timing (wall clock), reporting only.
+  double sim_s = 0, wall_s = 0;
+  double realTimeFactor() const { return wall_s > 0 ? sim_s / wall_s : 0; }
+};
+
+TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks);
+
+// results.csv: header for up to `robots` robots, one row per trial.
+std::string csvHeader(int robots);
+std::string csvRow(const TrialResult& r, int robots);  // with '\n'
+// Parses a csvRow back (tracks and timing stay empty). Throws std::runtime_error.
+TrialResult parseCsvRow(const std::string& line);
+// tracks.csv
+std::string tracksHeader();
+std::string tracksRows(const TrialResult& r, const Experiment& e);
+// timing.csv (wall clock)
+std::string timingHeader();
+std::string timingRow(const TrialResult& r);
+
+std::string fixed(double v, int decimals);  // "%.*f", locale-free
+
+}  // namespace simswift::experiment

@@ -1,0 +1,287 @@
+// Batch runs of a tiny script-robot experiment (4-6 trials of 7 s): results
+// are a pure function of the file -- across reruns, --jobs, shards + merge
+// and a kill -9 followed by a resume -- and the report's numbers follow
+// from results.csv. Also the found rule and the fallen-robot rule.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "sim/experiment/Batch.hpp"
+#include "sim/experiment/Trial.hpp"
+#include "tests/experiment/ExperimentTestUtil.hpp"
+
+using namespace simswift;
+using namespace simswift::experiment;
+using exptest::readAll;
+
+namespace {
+
+BatchOutcome runInto(const Experiment& e, const std::string& dir, int jobs, int shard = 1, int shards = 1) {
+  BatchOptions o;
+  o.out_dir = dir;
+  o.jobs = jobs;
+  o.shard = shard;
+  o.shards = shards;
+  o.progress = BatchOptions::Progress::None;
+  return runBatch(e, defaultHooks(), o);
+}
+
+void expectSameResults(const std::string& a, const std::string& b) {
+  for (const char* f : {"results.csv", "tracks.csv", "report.md", "figures/routes_walker.png",
+                        "figures/findtime_walker.dat"}) {
+    const std::string x = readAll(a + "/" + f), y = readAll(b + "/" + f);
+    EXPECT_FALSE(x.empty()) << a << "/" << f;
+    EXPECT_TRUE(x == y) << f << " differs between " << a << " and " << b;
+  }
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, sep)) out.push_back(cur);
+  if (!s.empty() && s.back() == sep) out.push_back("");
+  return out;
+}
+
+std::string trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(' '), b = s.find_last_not_of(' ');
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+}  // namespace
+
+TEST(Batch, RerunsAndJobCountsGiveIdenticalResults) {
+  const Experiment e = Experiment::parse(exptest::tinyExperiment(2), "tiny.yaml");
+  const std::string a = exptest::freshDir("a"), b = exptest::freshDir("b"), c = exptest::freshDir("c");
+  const BatchOutcome oa = runInto(e, a, 1);
+  EXPECT_TRUE(oa.assembled) << oa.message;
+  EXPECT_EQ(oa.ran, 4);
+  EXPECT_TRUE(runInto(e, b, 2).assembled);
+  EXPECT_TRUE(runInto(e, c, 2).assembled);
+  expectSameResults(a, b);
+  expectSameResults(b, c);
+  // A second run in a finished folder runs nothing and changes nothing.
+  const std::string before = readAll(a + "/results.csv");
+  const BatchOutcome again = runInto(e, a, 2);
+  EXPECT_EQ(again.already, 4);
+  EXPECT_EQ(again.ran, 0);
+  EXPECT_EQ(readAll(a + "/results.csv"), before);
+
+  // What the trials did: position 1 lies 1.2 m ahead of the walker (found
+  // once the torso is within 0.3 m: ~0.9 m at ~0.2 m/s, so 3-7 s); position
+  // 2 lies 1.5 m to its left and is never found.
+  const std::vector<std::string> lines = split(readAll(a + "/results.csv"), '\n');
+  ASSERT_GE(lines.size(), 5u);
+  for (int i = 1; i <= 4; ++i) {
+    const TrialResult r = parseCsvRow(lines[i]);
+    if (r.position == 1) {
+      EXPECT_TRUE(r.found) << lines[i];
+      EXPECT_GT(r.seconds, 3.0);
+      EXPECT_LT(r.seconds, 7.0);
+      EXPECT_EQ(r.finder, "t19p2");
+      EXPECT_NEAR(r.robots[0].distance_m, 0.9, 0.25) << lines[i];
+    } else {
+      EXPECT_FALSE(r.found) << lines[i];
+    }
+    EXPECT_EQ(r.robots[0].falls, 0);
+  }
+  // One trial in this process (--trial) gives the worker's row.
+  EXPECT_EQ(runSingleTrial(e, defaultHooks(), 2, exptest::freshDir("single")), readAll(trialFile(a, 2, ".csv")));
+  // Noise on, different seeds: the two position-1 trials differ a little.
+  EXPECT_NE(parseCsvRow(lines[1]).seed, parseCsvRow(lines[2]).seed);
+}
+
+TEST(Batch, TwoShardsMergedEqualOneRun) {
+  const Experiment e = Experiment::parse(exptest::tinyExperiment(2), "tiny.yaml");
+  const std::string one = exptest::freshDir("one"), s1 = exptest::freshDir("s1"), s2 = exptest::freshDir("s2"),
+                    merged = exptest::freshDir("merged");
+  ASSERT_TRUE(runInto(e, one, 2).assembled);
+  const BatchOutcome o1 = runInto(e, s1, 1, 1, 2);
+  EXPECT_EQ(o1.trials, 2);
+  EXPECT_FALSE(o1.assembled);  // half the trials
+  runInto(e, s2, 1, 2, 2);
+  EXPECT_FALSE(exptest::fileExists(s1 + "/results.csv"));
+  const BatchOutcome part = mergeRuns({s1}, merged);
+  EXPECT_FALSE(part.assembled);  // one shard is not enough
+  const BatchOutcome m = mergeRuns({s1, s2}, merged);
+  EXPECT_TRUE(m.assembled) << m.message;
+  expectSameResults(one, merged);
+  // Shards of another experiment are refused.
+  const Experiment other = Experiment::parse(exptest::tinyExperiment(1), "tiny.yaml");
+  const std::string o = exptest::freshDir("other");
+  runInto(other, o, 1, 1, 2);
+  EXPECT_THROW(mergeRuns({s1, o}, exptest::freshDir("bad")), BatchError);
+  // So is reusing a folder for another experiment.
+  EXPECT_THROW(runInto(other, s1, 1), BatchError);
+}
+
+// kill -9 of the whole run (parent and worker) after the first trial: the
+// rerun keeps the finished trials and ends byte-identical to a clean run.
+TEST(Batch, KillMinus9ThenResumeEqualsUninterruptedRun) {
+  const std::string dir = exptest::freshDir("kill"), clean = exptest::freshDir("clean");
+  const std::string file = dir + "/tiny.yaml";
+  exptest::writeAll(file, exptest::tinyExperiment(3));  // 6 trials
+  const std::string out = dir + "/out";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    setpgid(0, 0);  // its own group, so the worker can be killed with it
+    const std::string bin = exptest::simswiftBinary();
+    freopen("/dev/null", "w", stderr);
+    execl(bin.c_str(), bin.c_str(), "experiment", file.c_str(), "--out", out.c_str(), "--jobs", "1", "--progress",
+          "lines", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!exptest::fileExists(trialFile(out, 0, ".csv")) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(-pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(exptest::fileExists(trialFile(out, 0, ".csv"))) << "no trial finished within 120 s";
+  ASSERT_FALSE(exptest::fileExists(out + "/results.csv")) << "the run ended before the kill: test proves nothing";
+  EXPECT_FALSE(exptest::fileExists(trialFile(out, 5, ".csv")));
+
+  const std::string resume = exptest::simswiftBinary() + " experiment '" + file + "' --out '" + out +
+                             "' --jobs 2 --progress lines 2> '" + dir + "/resume.txt'";
+  const int rc = std::system(resume.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 0) << readAll(dir + "/resume.txt");
+  EXPECT_NE(readAll(dir + "/resume.txt").find("already done, resuming"), std::string::npos) << readAll(dir + "/resume.txt");
+  EXPECT_NE(readAll(dir + "/resume.txt").find("x real time"), std::string::npos);  // per-trial RTF
+
+  const Experiment e = Experiment::loadFile(file);
+  ASSERT_TRUE(runInto(e, clean, 2).assembled);
+  expectSameResults(clean, out);
+}
+
+// report.md's table rows recomputed here from results.csv: tests, found,
+// not found, total, average (Total / Found), population SD; and the Average
+// row as the mean of the position rows.
+TEST(Batch, ReportNumbersFollowFromTheCsv) {
+  const Experiment e = Experiment::parse(exptest::tinyExperiment(3), "tiny.yaml");
+  const std::string dir = exptest::freshDir("report");
+  ASSERT_TRUE(runInto(e, dir, 2).assembled);
+  std::map<int, std::vector<double>> times;
+  std::map<int, int> tests;
+  const std::vector<std::string> lines = split(readAll(dir + "/results.csv"), '\n');
+  ASSERT_EQ(split(lines[0], ',')[5], "found");
+  ASSERT_EQ(split(lines[0], ',')[6], "seconds");
+  for (size_t i = 1; i < lines.size(); ++i) {
+    if (lines[i].empty()) continue;
+    const std::vector<std::string> f = split(lines[i], ',');
+    const int pos = std::stoi(f[2]);
+    ++tests[pos];
+    if (f[5] == "1") times[pos].push_back(std::stod(f[6]));
+  }
+  ASSERT_EQ(tests.size(), 2u);
+  std::map<std::string, std::vector<std::string>> rows;  // first cell -> cells
+  for (const std::string& l : split(readAll(dir + "/report.md"), '\n')) {
+    if (l.rfind("| ", 0) != 0) continue;
+    std::vector<std::string> cells = split(l, '|');
+    std::vector<std::string> clean;
+    for (size_t k = 1; k + 1 < cells.size(); ++k) clean.push_back(trim(cells[k]));
+    if (!clean.empty() && !rows.count(clean[0])) rows[clean[0]] = clean;
+  }
+  double sum_total = 0, sum_avg = 0, sum_sd = 0;
+  for (const auto& [pos, n] : tests) {
+    const std::vector<double>& t = times[pos];
+    double total = 0;
+    for (double x : t) total += x;
+    const double avg = t.empty() ? 0 : total / t.size();
+    double ss = 0;
+    for (double x : t) ss += (x - avg) * (x - avg);
+    const double sd = t.size() >= 2 ? std::sqrt(ss / t.size()) : 0;
+    sum_total += total;
+    sum_avg += avg;
+    sum_sd += sd;
+    ASSERT_TRUE(rows.count(std::to_string(pos))) << "no row for position " << pos;
+    const std::vector<std::string>& r = rows[std::to_string(pos)];
+    ASSERT_EQ(r.size(), 7u);
+    EXPECT_EQ(std::stoi(r[1]), n);
+    EXPECT_EQ(std::stoi(r[2]), static_cast<int>(t.size()));
+    EXPECT_EQ(std::stoi(r[3]), n - static_cast<int>(t.size()));
+    EXPECT_NEAR(std::stod(r[4]), total, 0.006);
+    EXPECT_NEAR(std::stod(r[5]), avg, 0.006);
+    EXPECT_NEAR(std::stod(r[6]), sd, 0.006);
+  }
+  EXPECT_GT(times[1].size(), 0u);  // the test needs finds to mean anything
+  const std::vector<std::string>& avg = rows["Average:"];
+  ASSERT_EQ(avg.size(), 7u);
+  EXPECT_NEAR(std::stod(avg[4]), sum_total / 2, 0.006);
+  EXPECT_NEAR(std::stod(avg[5]), sum_avg / 2, 0.006);
+  EXPECT_NEAR(std::stod(avg[6]), sum_sd / 2, 0.006);
+  const std::vector<std::string>& tot = rows["Total:"];
+  EXPECT_EQ(std::stoi(tot[1]), 6);
+  EXPECT_EQ(std::stoi(tot[2]), static_cast<int>(times[1].size() + times[2].size()));
+}
+
+// The found rule needs the ball in a camera's view: 0.25 m behind a standing
+// robot it is near enough but unseen; with `sees: false` it is found at once.
+// 0.28 m ahead it is in the bottom camera's view (39.7 deg down + 23.8 deg
+// half FOV = 63.5 deg below the horizon; the ball centre is ~61 deg down,
+// seen from ~0.41 m above and ~0.23 m behind it); at 0.25 m it is not.
+TEST(Batch, FoundRuleNeedsTheBallInView) {
+  auto file = [](double ball_x, bool sees) {
+    std::ostringstream s;
+    s << "name: view\nseed: 3\ntime_limit: 1.0\ntrials_per_position: 1\n"
+      << "found: {distance: 0.3, sees: " << (sees ? "true" : "false") << "}\n"
+      << "balls: [{position: 1, x: " << ball_x << ", y: 0.0}]\n"
+      << "setups:\n  - name: s\n    robots:\n"
+      << "      - {team: 19, player: 2, x: 0.0, y: 0.0, theta: 0.0, behaviour: script,"
+      << " actions: [{t: 0, action: stand}]}\n";
+    return Experiment::parse(s.str(), "view.yaml");
+  };
+  const TrialResult behind = runTrial(file(-0.25, true), 0, defaultHooks());
+  EXPECT_FALSE(behind.found);
+  const TrialResult blind = runTrial(file(-0.25, false), 0, defaultHooks());
+  EXPECT_TRUE(blind.found);
+  EXPECT_NEAR(blind.seconds, 0.01, 1e-9);  // the first tick
+  const TrialResult ahead = runTrial(file(0.28, true), 0, defaultHooks());
+  EXPECT_TRUE(ahead.found);
+  EXPECT_LT(ahead.seconds, 0.05);
+}
+
+// A robot pushed over that does not get up is moved to its nearest touch
+// line after `fallen.sideline_after` s, standing.
+TEST(Batch, FallenRobotMovedToTheSideline) {
+  const std::string text =
+      "name: fall\nseed: 5\ntime_limit: 4.0\ntrials_per_position: 1\nfallen: {sideline_after: 1.5}\n"
+      "tracks: {every: 0.1}\n"
+      "balls: [{position: 1, x: 3.0, y: -2.0}]\n"
+      "setups:\n  - name: s\n    robots:\n"
+      "      - {team: 19, player: 2, x: 0.0, y: 1.0, theta: 0.0, behaviour: script,\n"
+      "         actions: [{t: 0, action: stand}, {t: 0.5, push: {x: 3.0, y: 0.0}}]}\n";
+  const Experiment e = Experiment::parse(text, "fall.yaml");
+  const TrialResult r = runTrial(e, 0, defaultHooks());
+  EXPECT_FALSE(r.found);
+  ASSERT_EQ(r.robots.size(), 1u);
+  EXPECT_GE(r.robots[0].falls, 1);
+  EXPECT_EQ(r.robots[0].sideline_moves, 1);
+  // The sample taken at the move: on the top touch line (it started at
+  // y = +1), standing (torso above kStandHeight is not in the track, but its
+  // heading is), facing the field. What the script robot does afterwards
+  // (it has no get-up) is its own business.
+  bool moved = false;
+  for (const TrackSample& p : r.tracks)
+    if (std::abs(p.y - 3.0) < 0.02 && std::abs(p.theta + M_PI / 2) < 0.05) {
+      moved = true;
+      EXPECT_GE(p.t, 0.5 + 1.5);  // pushed at 0.5 s, then 1.5 s down at least
+      break;
+    }
+  EXPECT_TRUE(moved);
+  // The move itself is not walking: a push and a fall cover well under 1.5 m.
+  EXPECT_LT(r.robots[0].distance_m, 1.5);
+}

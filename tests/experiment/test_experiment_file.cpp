@@ -1,0 +1,260 @@
+// Experiment files: the shipped ones load; every kind of bad file is refused
+// with an error naming file, line and field, before any trial runs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <sys/wait.h>
+
+#include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/ThesisTables.hpp"
+#include "sim/experiment/TrialHooks.hpp"
+#include "tests/experiment/ExperimentTestUtil.hpp"
+
+using namespace simswift;
+using namespace simswift::experiment;
+
+namespace {
+
+// Line numbers matter: the tests below name them.
+const std::string kGood =
+    "name: t\n"                                        // 1
+    "seed: 1\n"                                        // 2
+    "time_limit: 10\n"                                 // 3
+    "trials_per_position: 1\n"                         // 4
+    "found: {distance: 0.3}\n"                         // 5
+    "balls:\n"                                         // 6
+    "  - {position: 1, x: 1.0, y: 0.0}\n"              // 7
+    "setups:\n"                                        // 8
+    "  - name: a\n"                                    // 9
+    "    behaviour: script\n"                          // 10
+    "    robots:\n"                                    // 11
+    "      - {team: 19, player: 2, x: -1.0, y: 0.0, theta: 0.0, actions: [{t: 0, action: stand}]}\n"  // 12
+    "      - {team: 19, player: 3, x: -1.0, y: 1.0, theta: 0.0, actions: [{t: 0, action: stand}]}\n";  // 13
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const size_t k = s.find(from);
+  EXPECT_NE(k, std::string::npos) << from;
+  if (k != std::string::npos) s.replace(k, from.size(), to);
+  return s;
+}
+
+// The ConfigError's message for `text`, or "" if it loads.
+std::string errorOf(const std::string& text) {
+  try {
+    Experiment::parse(text, "bad.yaml");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expectError(const std::string& text, const std::string& where, const std::string& what) {
+  const std::string msg = errorOf(text);
+  EXPECT_NE(msg.find(where), std::string::npos) << "message: " << msg << "\nexpected: " << where;
+  EXPECT_NE(msg.find(what), std::string::npos) << "message: " << msg << "\nexpected: " << what;
+}
+
+}  // namespace
+
+TEST(ExperimentFile, GoodFileLoads) {
+  const Experiment e = Experiment::parse(kGood, "good.yaml");
+  EXPECT_EQ(e.name, "t");
+  EXPECT_EQ(e.numTrials(), 1);
+  ASSERT_EQ(e.setups.size(), 1u);
+  ASSERT_EQ(e.setups[0].robots.size(), 2u);
+  EXPECT_EQ(e.setups[0].robots[1].player, 3);
+  EXPECT_EQ(e.setups[0].robots[0].script.actions.size(), 1u);
+  EXPECT_DOUBLE_EQ(e.found.distance, 0.3);
+  EXPECT_TRUE(e.found.sees);
+  EXPECT_NO_THROW(checkBehaviours(e, defaultHooks()));
+}
+
+TEST(ExperimentFile, UnknownKey) {
+  expectError(replaced(kGood, "seed: 1\n", "seed: 1\nspeed: 3\n"), "bad.yaml:3:", "unknown key 'speed'");
+  expectError(replaced(kGood, "found: {distance: 0.3}", "found: {distance: 0.3, seen: true}"), "bad.yaml:5:",
+              "unknown key 'seen' in found");
+}
+
+TEST(ExperimentFile, BallOffTheCarpet) {
+  // Carpet 10.4 x 7.4 m: |x| <= 5.2 - ball radius.
+  expectError(replaced(kGood, "{position: 1, x: 1.0", "{position: 1, x: 5.19"), "bad.yaml:7: balls[0].x",
+              "off the carpet");
+}
+
+TEST(ExperimentFile, RobotOffTheCarpet) {
+  expectError(replaced(kGood, "player: 2, x: -1.0, y: 0.0", "player: 2, x: -1.0, y: -3.9"),
+              "bad.yaml:12: setups[0].robots[0].y", "off the carpet");
+}
+
+TEST(ExperimentFile, RobotsOnTopOfEachOther) {
+  expectError(replaced(kGood, "player: 3, x: -1.0, y: 1.0", "player: 3, x: -1.0, y: 0.2"),
+              "bad.yaml:13: setups[0].robots[1].x", "stands on player 2");
+}
+
+TEST(ExperimentFile, MissingFields) {
+  expectError(replaced(kGood, "time_limit: 10\n", ""), "bad.yaml", "time_limit: missing required key");
+  expectError(replaced(kGood, "player: 3, x: -1.0, y: 1.0, theta: 0.0", "player: 3, x: -1.0, y: 1.0"),
+              "bad.yaml:13: setups[0].robots[1].theta", "missing required key");
+  expectError(replaced(kGood, "    behaviour: script\n", ""), "bad.yaml:11: setups[0].robots[0].behaviour",
+              "missing");  // line 11: the line above went
+}
+
+TEST(ExperimentFile, ZeroTimeLimit) {
+  expectError(replaced(kGood, "time_limit: 10", "time_limit: 0"), "bad.yaml:3: time_limit", "must be > 0");
+}
+
+TEST(ExperimentFile, FoundDistanceBelowBallRadius) {
+  expectError(replaced(kGood, "distance: 0.3", "distance: 0.04"), "bad.yaml:5: found.distance",
+              "must be >= the ball radius 0.05");
+}
+
+TEST(ExperimentFile, DuplicatePlayers) {
+  expectError(replaced(kGood, "player: 3", "player: 2"), "bad.yaml:13: setups[0].robots[1].player",
+              "team 19 player 2 appears twice");
+}
+
+TEST(ExperimentFile, UnknownBehaviourAndUnbuiltBehaviour) {
+  expectError(replaced(kGood, "behaviour: script", "behaviour: findball2018"), "bad.yaml:10: setups[0].behaviour",
+              "expected one of");
+  // A known behaviour this build cannot run yet is refused by the hooks.
+  const std::string text =
+      "name: t\nseed: 1\ntime_limit: 10\ntrials_per_position: 1\nballs:\n  - {position: 1, x: 1.0, y: 0.0}\n"
+      "setups:\n  - name: a\n    config: {grid: 3}\n    behaviour: findball2017\n    robots:\n"
+      "      - {team: 19, player: 2, x: -1.0, y: 0.0, theta: 0.0, config: {speed: 0.2}}\n";
+  const Experiment e = Experiment::parse(text, "bad.yaml");
+  // Overrides pass through opaque, the robot's on top of the setup's.
+  EXPECT_EQ(e.setups[0].robots[0].config_yaml, "{grid: 3, speed: 0.2}");
+  try {
+    checkBehaviours(e, defaultHooks());
+    ADD_FAILURE() << "findball2017 accepted";
+  } catch (const ConfigError& err) {
+    EXPECT_NE(std::string(err.what()).find("bad.yaml:10: setups[0].behaviour: findball2017: not built yet in this "
+                                           "simswift"),
+              std::string::npos)
+        << err.what();
+  }
+}
+
+TEST(ExperimentFile, ActionsOnlyForScriptRobots) {
+  expectError(replaced(kGood, "    behaviour: script\n", "    behaviour: striker\n"), "bad.yaml:12: setups[0].robots[0].actions",
+              "only a script robot takes actions");
+}
+
+// The command line refuses a bad file with exit code 2 and runs nothing.
+TEST(ExperimentFile, CommandExitsWithTwoBeforeAnyTrial) {
+  const std::string dir = exptest::freshDir("cli");
+  exptest::writeAll(dir + "/bad.yaml", replaced(kGood, "time_limit: 10", "time_limit: 0"));
+  const std::string cmd = exptest::simswiftBinary() + " experiment '" + dir + "/bad.yaml' --out '" + dir +
+                          "/out' > '" + dir + "/stderr.txt' 2>&1";
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_NE(exptest::readAll(dir + "/stderr.txt").find("bad.yaml:3: time_limit: must be > 0"), std::string::npos)
+      << exptest::readAll(dir + "/stderr.txt");
+  EXPECT_FALSE(exptest::fileExists(dir + "/out"));
+}
+
+// The shipped thesis experiments load (their behaviours are refused until
+// issue 12 lands); the script one passes --check.
+TEST(ExperimentFile, ShippedExperiments) {
+  const std::string src = SIMSWIFT_SOURCE_DIR;
+  const Experiment full = Experiment::loadFile(src + "/scenarios/thesis_findball.yaml");
+  EXPECT_EQ(full.numTrials(), 200);  // 2 components x 10 positions x 10
+  ASSERT_EQ(full.balls.size(), 10u);
+  // Table 5.2 position 4 and table 5.1 robot 3 (mm in the thesis, m here).
+  EXPECT_DOUBLE_EQ(full.balls[3].x, 4.5);
+  EXPECT_DOUBLE_EQ(full.balls[3].y, 3.0);
+  EXPECT_DOUBLE_EQ(full.time_limit, 180);
+  EXPECT_DOUBLE_EQ(full.found.distance, 0.3);
+  ASSERT_EQ(full.setups.size(), 2u);
+  ASSERT_EQ(full.setups[0].robots.size(), 3u);
+  EXPECT_EQ(full.setups[0].robots[1].player, 3);
+  EXPECT_DOUBLE_EQ(full.setups[0].robots[1].x, -2.0);
+  EXPECT_DOUBLE_EQ(full.setups[0].robots[1].y, -3.0);
+  EXPECT_EQ(full.setups[0].thesis_table, "5.3");
+  EXPECT_EQ(full.setups[1].thesis_table, "5.4");
+
+  // Every ball and start point is the thesis's (tables 5.2 and 5.1).
+  for (const BallPosition& b : full.balls) {
+    const ThesisPoint& p = thesisBallPositions().at(b.number - 1);
+    EXPECT_EQ(p.number, b.number);
+    EXPECT_NEAR(b.x * 1000, p.x_mm, 1e-9) << "position " << b.number;
+    EXPECT_NEAR(b.y * 1000, p.y_mm, 1e-9) << "position " << b.number;
+  }
+  for (const auto& s : full.setups)
+    for (const ExperimentRobot& r : s.robots) {
+      const ThesisPoint& p = thesisStartPoints().at(r.player - 2);
+      EXPECT_NEAR(r.x * 1000, p.x_mm, 1e-9) << "player " << r.player;
+      EXPECT_NEAR(r.y * 1000, p.y_mm, 1e-9) << "player " << r.player;
+    }
+
+  const Experiment real = Experiment::loadFile(src + "/scenarios/thesis_findball_real.yaml");
+  for (const BallPosition& b : real.balls) {
+    EXPECT_NEAR(b.x * 1000, thesisBallPositions().at(b.number - 1).x_mm, 1e-9);
+    EXPECT_NEAR(b.y * 1000, thesisBallPositions().at(b.number - 1).y_mm, 1e-9);
+  }
+  // One robot: the top left corner, table 5.1's robot 2 (§5.1).
+  EXPECT_EQ(real.setups[0].robots[0].player, 2);
+  EXPECT_DOUBLE_EQ(real.setups[0].robots[0].x, -3.25);
+  EXPECT_EQ(real.numTrials(), 100);  // (1 and 3 robots) x 2 components x 5 positions x 5
+  ASSERT_EQ(real.setups.size(), 4u);
+  EXPECT_EQ(real.setups[0].robots.size(), 1u);
+  EXPECT_EQ(real.setups[2].robots.size(), 3u);
+  EXPECT_THROW(checkBehaviours(real, defaultHooks()), ConfigError);
+
+  const Experiment script = Experiment::loadFile(src + "/scenarios/findball_script.yaml");
+  EXPECT_NO_THROW(checkBehaviours(script, defaultHooks()));
+}
+
+// The vision: block is the scenario's (read by sim/vision's reader): checked
+// at load time, given to every trial's scenario.
+TEST(ExperimentFile, VisionBlock) {
+  const std::string with = replaced(kGood, "found: {distance: 0.3}\n",
+                                    "found: {distance: 0.3}\nvision: {ball: {max_distance_mm: 1500}}\n");
+  const Experiment e = Experiment::parse(with, "v.yaml");
+  EXPECT_DOUBLE_EQ(trialScenario(e, trialSpec(e, 0)).vision[vision::Feature::Ball].max_distance_mm, 1500);
+  expectError(replaced(with, "max_distance_mm: 1500", "max_distance: 1.5"), "bad.yaml:6:", "unknown key 'max_distance'");
+}
+
+// SPL team numbers go to the scenario as they are; the first team in a
+// setup plays blue, a second red; a third team is refused.
+TEST(ExperimentFile, TeamsAndColours) {
+  const std::string two = replaced(kGood, "{team: 19, player: 3", "{team: 7, player: 3");
+  const Experiment e = Experiment::parse(two, "two.yaml");
+  const runner::Scenario sc = trialScenario(e, trialSpec(e, 0));
+  ASSERT_EQ(sc.robots.size(), 2u);
+  EXPECT_EQ(sc.robots[0].team, 19);
+  EXPECT_EQ(sc.robots[1].team, 7);
+  EXPECT_EQ(sc.robots[0].colour, runner::TeamColour::Blue);
+  EXPECT_EQ(sc.robots[1].colour, runner::TeamColour::Red);
+  const std::string three = replaced(two, "actions: [{t: 0, action: stand}]}\n      - {team: 7",
+                                     "actions: [{t: 0, action: stand}]}\n      - {team: 8, player: 4, x: 1.0, "
+                                     "y: 2.0, theta: 0, actions: [{t: 0, action: stand}]}\n      - {team: 7");
+  expectError(three, "bad.yaml:12: setups[0].robots", "at most two team numbers");
+  expectError(replaced(kGood, "team: 19, player: 2", "team: 100, player: 2"), "bad.yaml:12: setups[0].robots[0].team",
+              "must be in [0, 99]");
+}
+
+// Trial numbering and seeds: a pure function of (seed, index), distinct.
+TEST(ExperimentFile, TrialSpecs) {
+  const Experiment e = Experiment::parse(exptest::tinyExperiment(3), "tiny.yaml");
+  ASSERT_EQ(e.numTrials(), 6);
+  const TrialSpec t4 = trialSpec(e, 4);
+  EXPECT_EQ(t4.setup, 0);
+  EXPECT_EQ(t4.ball, 1);
+  EXPECT_EQ(t4.repeat, 1);
+  EXPECT_EQ(trialSpec(e, 4).seed, t4.seed);
+  for (int i = 0; i < 6; ++i)
+    for (int j = i + 1; j < 6; ++j) EXPECT_NE(trialSpec(e, i).seed, trialSpec(e, j).seed);
+  EXPECT_LT(t4.seed, 2147483648ull);
+  const runner::Scenario sc = trialScenario(e, t4);
+  ASSERT_TRUE(sc.ball.has_value());
+  EXPECT_DOUBLE_EQ(sc.ball->second, 1.5);
+  EXPECT_EQ(sc.seed, t4.seed);
+  EXPECT_DOUBLE_EQ(sc.duration, e.time_limit);
+  ASSERT_EQ(sc.robots.size(), 1u);
+  EXPECT_EQ(sc.robots[0].player, 2);
+  EXPECT_EQ(sc.robots[0].actions.size(), 1u);
+}
