@@ -23,15 +23,21 @@ struct RRPoint {
 enum class FeatureKind : int32_t { GoalPost = 0, PenaltyCross, CentreCircle, Corner, LinePoint, NUM_KINDS };
 const char* featureName(FeatureKind k);
 
+// Corner shape when the detector tells it (L, T, X), else Unknown.
+enum class CornerShape : int32_t { Unknown = 0, L = 1, T = 2, X = 3 };
+
 struct FieldFeature {
   FeatureKind kind = FeatureKind::LinePoint;
   RRPoint where;
   int32_t camera = 0;  // 0 top, 1 bottom
+  CornerShape shape = CornerShape::Unknown;  // corners only
 };
 
 struct SeenRobot {
   RRPoint where;
-  int32_t team = -1;  // team number seen, -1 unknown
+  int32_t team = -1;    // SPL team number seen, -1 unknown
+  int32_t colour = -1;  // jersey: 0 blue, 1 red, -1 unknown
+  bool fallen = false;  // lying on the ground
 };
 
 constexpr int kMaxFeatures = 48;

@@ -6,6 +6,7 @@
 namespace agent::localisation {
 
 using blackboard::FeatureKind;
+using blackboard::CornerShape;
 
 std::vector<Landmark> FieldModel::landmarks() const {
   const double hx = halfLength(), hy = halfWidth();

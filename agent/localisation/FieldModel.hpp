@@ -21,12 +21,12 @@ struct LineSegment {
   Vec2 a, b;  // mm
 };
 
-enum class CornerShape { L, T, X };
+using blackboard::CornerShape;
 
 struct Landmark {
   blackboard::FeatureKind kind;
   Vec2 at;  // mm, field frame
-  CornerShape shape = CornerShape::L;  // corners only
+  CornerShape shape = CornerShape::Unknown;  // corners: L, T or X
 };
 
 struct FieldModel {

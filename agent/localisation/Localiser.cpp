@@ -22,7 +22,10 @@ double wrapAngle(double a) {
 
 Localiser::Localiser(const LocaliserConfig& cfg, const FieldModel& field)
     : cfg_(cfg), field_(field), landmarks_(field.landmarks()), lines_(field.lines()), rng_(cfg.seed) {
-  for (const Landmark& l : landmarks_) by_kind_[static_cast<int>(l.kind)].push_back(l.at);
+  for (const Landmark& l : landmarks_) {
+    by_kind_[static_cast<int>(l.kind)].push_back(l.at);
+    if (l.kind == FeatureKind::Corner) corners_by_shape_[static_cast<int>(l.shape)].push_back(l.at);
+  }
   if (cfg_.particles < 10) cfg_.particles = 10;
   reset(InitialPose::OwnHalf);
 }
@@ -79,7 +82,8 @@ void Localiser::collect(const blackboard::VisionMeasurements& vision) {
     const blackboard::FieldFeature& f = vision.features[i];
     const double d = std::hypot(f.where.x, f.where.y);
     if (!(d > 1.0) || d > 7000.0) continue;  // behind the feet or beyond any useful range
-    Obs o{f.kind, f.where.x, f.where.y, d, std::atan2(f.where.y, f.where.x)};
+    Obs o{f.kind, f.where.x, f.where.y, d, std::atan2(f.where.y, f.where.x),
+          f.kind == FeatureKind::Corner ? f.shape : blackboard::CornerShape::Unknown};
     (f.kind == FeatureKind::LinePoint ? lines : obs_).push_back(o);
   }
   // Line points from one frame are strongly correlated: use a few, spread out.
@@ -104,7 +108,7 @@ double Localiser::likelihood(const Particle& p) const {
       const double inv_sd2 = 1.0 / sq(cfg_.distance_floor + cfg_.distance_fraction * o.d);
       const double inv_sb2 = 1.0 / sq(o.d * cfg_.bearing_sigma);
       double best = 1e300;
-      for (const Vec2& lm : by_kind_[static_cast<int>(o.kind)]) {
+      for (const Vec2& lm : candidatesFor(o)) {
         const double dx = lm.x - p.x, dy = lm.y - p.y;
         const double ex = c * dx + s * dy - o.x, ey = -s * dx + c * dy - o.y;
         const double along = ex * ux + ey * uy, across = ey * ux - ex * uy;
@@ -115,6 +119,12 @@ double Localiser::likelihood(const Particle& p) const {
     l *= cfg_.outlier + (1.0 - cfg_.outlier) * fit;
   }
   return l;
+}
+
+const std::vector<Vec2>& Localiser::candidatesFor(const Obs& o) const {
+  if (o.kind == FeatureKind::Corner && o.shape != blackboard::CornerShape::Unknown)
+    return corners_by_shape_[static_cast<int>(o.shape)];
+  return by_kind_[static_cast<int>(o.kind)];
 }
 
 double Localiser::frameLikelihood(const Particle& pose, const blackboard::VisionMeasurements& vision) const {
@@ -177,9 +187,9 @@ void Localiser::candidates(std::vector<Particle>& out) const {
       if (dz < cfg_.min_pair_distance) continue;
       const double tol = 100.0 + cfg_.distance_fraction * std::max(a.d, b.d);
       for (const Landmark& la : landmarks_) {
-        if (la.kind != a.kind) continue;
+        if (!matches(a, la)) continue;
         for (const Landmark& lb : landmarks_) {
-          if (lb.kind != b.kind || (&la == &lb)) continue;
+          if (!matches(b, lb) || (&la == &lb)) continue;
           if (std::fabs(std::hypot(lb.at.x - la.at.x, lb.at.y - la.at.y) - dz) > tol) continue;
           const double theta = std::atan2(lb.at.y - la.at.y, lb.at.x - la.at.x) - std::atan2(b.y - a.y, b.x - a.x);
           const double c = std::cos(theta), s = std::sin(theta);
@@ -194,7 +204,7 @@ void Localiser::candidates(std::vector<Particle>& out) const {
   if (points.size() < 2) {
     for (const Obs* o : points)
       for (const Landmark& lm : landmarks_) {
-        if (lm.kind != o->kind) continue;
+        if (!matches(*o, lm)) continue;
         for (int k = 0; k < cfg_.heading_samples; ++k) {
           const double theta = 2 * kPi * k / cfg_.heading_samples;
           const double c = std::cos(theta), s = std::sin(theta);

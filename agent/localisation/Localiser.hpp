@@ -112,7 +112,13 @@ class Localiser {
   struct Obs {
     blackboard::FeatureKind kind;
     double x, y, d, b;  // mm robot-relative, distance, bearing
+    blackboard::CornerShape shape;  // corners: L / T / X when the detector told
   };
+  // Landmarks an observation may be: same kind, and same corner shape when known.
+  const std::vector<Vec2>& candidatesFor(const Obs& o) const;
+  bool matches(const Obs& o, const Landmark& l) const {
+    return l.kind == o.kind && (o.shape == blackboard::CornerShape::Unknown || l.shape == o.shape);
+  }
   void collect(const blackboard::VisionMeasurements& vision);
   double likelihood(const Particle& p) const;
   void predict(double forward, double left, double turn);
@@ -126,6 +132,7 @@ class Localiser {
   std::vector<Landmark> landmarks_;
   std::vector<LineSegment> lines_;
   std::vector<Vec2> by_kind_[static_cast<int>(blackboard::FeatureKind::NUM_KINDS)];  // landmark positions
+  std::vector<Vec2> corners_by_shape_[4];  // indexed by CornerShape
   Random rng_;
   std::vector<Particle> particles_;
   // Cost of a pose under the current belief's modes (smaller = more

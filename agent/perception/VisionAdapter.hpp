@@ -8,6 +8,8 @@
 // (distance / heading from x, y or the reverse), drops what cannot be used
 // (non-finite, beyond max_distance) and nothing is reported while the robot
 // is falling, lying or getting up (the camera then sees sky and carpet).
+// A seen piece of field line (two ends) becomes line points along it, one
+// every line_point_spacing mm; corners keep their L / T / X shape.
 // Units: mm, rad.
 #pragma once
 
@@ -17,6 +19,7 @@ namespace agent::perception {
 
 struct VisionAdapterConfig {
   double max_distance = 9000.0;  // mm: farther detections are dropped
+  double line_point_spacing = 400.0;  // mm between the points a seen line piece becomes
 };
 
 // `fallen`: Motion's posture says falling, lying or getting up.

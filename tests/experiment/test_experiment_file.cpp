@@ -233,8 +233,8 @@ TEST(ExperimentFile, TeamsAndColours) {
                                      "actions: [{t: 0, action: stand}]}\n      - {team: 8, player: 4, x: 1.0, "
                                      "y: 2.0, theta: 0, actions: [{t: 0, action: stand}]}\n      - {team: 7");
   expectError(three, "bad.yaml:12: setups[0].robots", "at most two team numbers");
-  expectError(replaced(kGood, "team: 19, player: 2", "team: 100, player: 2"), "bad.yaml:12: setups[0].robots[0].team",
-              "must be in [0, 99]");
+  expectError(replaced(kGood, "team: 19, player: 2", "team: 300, player: 2"), "bad.yaml:12: setups[0].robots[0].team",
+              "must be in [0, 255]");
 }
 
 // Trial numbering and seeds: a pure function of (seed, index), distinct.

@@ -20,9 +20,9 @@ TEST(RunnerPerception, EveryRobotGetsThirtyFramesASecondWithoutImages) {
                            "p.yaml"));
   r.start();
   while (r.ticks() < 200) r.tick();
-  // Frames at floor(t * 30) = 0..59 over 2 s of 10 ms ticks.
+  // Frames where floor(t * 30) advances: 0..60 over ticks 0.01 .. 2.00 s.
   for (int i = 0; i < 2; ++i) {
-    EXPECT_EQ(r.program(i)->perceptionFrames(), 60) << i;
+    EXPECT_EQ(r.program(i)->perceptionFrames(), 61) << i;
     EXPECT_EQ(r.images(i), nullptr);
   }
 }

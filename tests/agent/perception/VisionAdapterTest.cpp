@@ -67,3 +67,24 @@ TEST(VisionAdapter, NothingWhileFallenOrBeyondRange) {
   EXPECT_FALSE(v.ball_seen);
   EXPECT_EQ(v.num_features, 0);
 }
+
+TEST(VisionAdapter, LinePiecesBecomePointsAndCornersKeepTheirShape) {
+  bb::FrameInfo f;
+  al::Observation line = obs(al::ObservationType::FieldLine, 1000, -600);
+  line.x2 = 1000;
+  line.y2 = 600;  // a 1.2 m piece across the view
+  f.observations[f.num_observations++] = line;
+  al::Observation corner = obs(al::ObservationType::LineCorner, 2000, 0);
+  corner.corner = al::CornerKind::T;
+  f.observations[f.num_observations++] = corner;
+  const bb::VisionMeasurements v = agent::perception::adaptVision(f, false);
+  // 1200 mm, points at most 400 mm apart: 4 points, ends included, then the corner.
+  ASSERT_EQ(v.num_features, 5);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(v.features[i].kind, bb::FeatureKind::LinePoint);
+    EXPECT_NEAR(v.features[i].where.x, 1000, 1e-3);
+    EXPECT_NEAR(v.features[i].where.y, -600 + 400 * i, 1e-3);
+  }
+  EXPECT_EQ(v.features[4].kind, bb::FeatureKind::Corner);
+  EXPECT_EQ(v.features[4].shape, bb::CornerShape::T);
+}
