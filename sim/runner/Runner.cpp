@@ -262,7 +262,7 @@ void Runner::start() {
       // The game state and team link reach the program's modules. A test's
       // PerceptionStep that talks to the extension objects itself (through
       // extensions(i)) keeps them to itself: two readers would split the inbox.
-      if (!pc.perception_step) pc.extensions = r.ext.get();
+      if (!pc.perception_step) pc.extensions = r.ext;
       al::AgentConnection conn = r.host->connect();
       conn.setImages(r.images);
       r.program = std::make_unique<ap::RobotProgram>(std::move(conn), std::move(pc));
