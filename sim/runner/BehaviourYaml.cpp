@@ -145,4 +145,17 @@ std::optional<ab::BehaviourConfig> readBehaviour(const YamlReader& robot) {
   return c;
 }
 
+std::optional<ab::BehaviourConfig> behaviourFromText(const std::string& kind, const std::string& overrides,
+                                                     const std::string& source) {
+  YAML::Node b = overrides.empty() ? YAML::Node(YAML::NodeType::Map) : YamlReader::parse(overrides, source);
+  if (!b.IsMap()) YamlReader(b, source).fail("behaviour overrides must be a map");
+  b["kind"] = kind;
+  YAML::Node robot(YAML::NodeType::Map);
+  robot["behaviour"] = b;
+  const YamlReader r(robot, source);
+  auto c = readBehaviour(r);
+  r.finish();
+  return c;
+}
+
 }  // namespace simswift::runner

@@ -24,4 +24,11 @@ namespace simswift::runner {
 // for `script`.
 std::optional<agent::behaviour::BehaviourConfig> readBehaviour(const YamlReader& robot);
 
+// The same from a kind name and the overrides as YAML flow text (e.g.
+// "{strategy: {distributed: off}}"; "" = none), for callers holding them
+// apart (the experiment's robots). Errors name `source`. Empty for script.
+std::optional<agent::behaviour::BehaviourConfig> behaviourFromText(const std::string& kind,
+                                                                   const std::string& overrides,
+                                                                   const std::string& source);
+
 }  // namespace simswift::runner

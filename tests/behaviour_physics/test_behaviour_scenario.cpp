@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "FindBallHarness.hpp"
+#include "sim/runner/BehaviourYaml.hpp"
 
 using simswift::ConfigError;
 using simswift::runner::Runner;
@@ -104,5 +105,21 @@ TEST(BehaviourScenario, ShippedFindBallScenariosLoad) {
     const Scenario s = Scenario::loadFile(std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/" + f);
     ASSERT_GE(s.robots.size(), 3u) << f;
     for (const auto& r : s.robots) EXPECT_TRUE(r.behaviour) << f;
+  }
+}
+
+TEST(BehaviourScenario, FromKindAndOverrideText) {
+  const auto c = simswift::runner::behaviourFromText("findball2016", "{search: {spin_at_point: off}}", "exp.yaml");
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->kind, ab::BehaviourKind::FINDBALL_2016);
+  EXPECT_FALSE(c->search.spin_at_point);
+  EXPECT_EQ(simswift::runner::behaviourFromText("findball2017", "", "exp.yaml")->kind, ab::BehaviourKind::FINDBALL_2017);
+  EXPECT_FALSE(simswift::runner::behaviourFromText("script", "", "exp.yaml"));
+  try {
+    simswift::runner::behaviourFromText("striker", "{skills: {bogus: 1}}", "exp.yaml");
+    ADD_FAILURE() << "unknown key accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("bogus"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("exp.yaml"), std::string::npos) << e.what();
   }
 }
