@@ -18,6 +18,7 @@
 
 #include <unistd.h>
 
+#include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Command.hpp"
 #include "sim/runner/Runner.hpp"
 
@@ -82,7 +83,8 @@ int main(int argc, char** argv) {
     std::printf("simswift 0.1\n");
     return 0;
   }
-  if (cmd == "experiment") return simswift::experiment::experimentMain(argc - 1, argv + 1);
+  if (cmd == "experiment")  // the behaviours of agent/behaviour (issue 12) in the trials
+    return simswift::experiment::experimentMain(argc - 1, argv + 1, simswift::experiment::behaviourHooks());
   if (cmd != "run") usageError("unknown command '" + cmd + "'");
 
   std::string path;
