@@ -7,6 +7,7 @@
 //                [--no-noise] [--watchdog S|off] [--print-hash-every N]
 //                [--model URDF] [--field YAML]
 //                [--dump-frames DIR [--every N]] [--overview DIR] [--resolution WxH]
+//                [--findball-view DIR [--findball-view-rate HZ]]
 //
 // Exit codes: 0 success, 1 run failure (watchdog, I/O), 2 bad command line
 // or bad input file (scenario, model, field: the message names file and line).
@@ -20,6 +21,7 @@
 
 #include <unistd.h>
 
+#include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Command.hpp"
 #include "sim/runner/Runner.hpp"
 
@@ -54,7 +56,10 @@ const char* kUsage =
     "                         DIR/t<team>p<player>_<top|bottom>_<frame>.png\n"
     "  --every N              with --dump-frames: keep every N-th camera frame (default 1)\n"
     "  --overview DIR         whole-field overview PNGs in DIR (+ DIR/overview.mp4 with ffmpeg)\n"
-    "  --resolution WxH       robot camera resolution: 640x480 (default) or 1280x960\n";
+    "  --resolution WxH       robot camera resolution: 640x480 (default) or 1280x960\n"
+    "  --findball-view DIR    FindBall view PNGs of every behaving robot in DIR/<robot>/\n"
+    "                         (+ DIR/<robot>.mp4 with ffmpeg)\n"
+    "  --findball-view-rate HZ  frames per simulated second (default 2)\n";
 
 [[noreturn]] void usageError(const std::string& msg) {
   std::fprintf(stderr, "simswift: %s\n\n%s", msg.c_str(), kUsage);
@@ -97,7 +102,8 @@ int main(int argc, char** argv) {
     std::printf("simswift 0.1\n");
     return 0;
   }
-  if (cmd == "experiment") return simswift::experiment::experimentMain(argc - 1, argv + 1);
+  if (cmd == "experiment")  // the behaviours of agent/behaviour (issue 12) in the trials
+    return simswift::experiment::experimentMain(argc - 1, argv + 1, simswift::experiment::behaviourHooks());
   if (cmd != "run") usageError("unknown command '" + cmd + "'");
 
   std::string path;
@@ -107,6 +113,8 @@ int main(int argc, char** argv) {
   bool no_noise = false;
   std::optional<std::string> dump_dir, overview_dir, resolution, model, field;
   std::optional<int> every;
+  std::optional<std::string> findball_dir;
+  std::optional<double> findball_rate;
   auto stringArg = [&](int& i, const char* name) {
     if (i + 1 >= argc) usageError(std::string(name) + " needs a value");
     return std::string(argv[++i]);
@@ -132,6 +140,10 @@ int main(int argc, char** argv) {
     else if (a == "--quiet") opt.progress = false;
     else if (a == "--dump-frames") dump_dir = stringArg(i, "--dump-frames");
     else if (a == "--overview") overview_dir = stringArg(i, "--overview");
+    else if (a == "--findball-view") findball_dir = stringArg(i, "--findball-view");
+    else if (a == "--findball-view-rate") {
+      findball_rate = numberArg(i, argc, argv, "--findball-view-rate", 1e-3, 100);  // frames per simulated s
+    }
     else if (a == "--every") {
       const double n = numberArg(i, argc, argv, "--every", 1, 1e6);
       if (n != static_cast<int>(n)) usageError("--every: must be a whole number of frames");
@@ -150,6 +162,7 @@ int main(int argc, char** argv) {
   }
   if (path.empty()) usageError("missing SCENARIO.yaml");
   if (every && !dump_dir) usageError("--every needs --dump-frames DIR");
+  if (findball_rate && !findball_dir) usageError("--findball-view-rate needs --findball-view DIR");
   if ((dump_dir || overview_dir) && !Runner::camerasAvailable())
     usageError(std::string(dump_dir ? "--dump-frames" : "--overview") +
                ": this simswift was built without cameras (configure with -DSIMSWIFT_CAMERAS=ON and "
@@ -186,6 +199,12 @@ int main(int argc, char** argv) {
 
   try {
     Runner runner(sc);
+    if (findball_dir) {
+      sim::views::FindBallRecorderConfig fc;
+      fc.dir = *findball_dir;
+      if (findball_rate) fc.rate_hz = *findball_rate;
+      runner.setFindBallView(fc);
+    }
     try {
       const RunStats stats = runner.run(opt);
       std::printf("%s\n%s", stats.summary().c_str(), stats.robotLines().c_str());

@@ -21,6 +21,7 @@
 //   team            (Team)             team receive
 //   game            (GameState)        game state reader
 //   motion_request  (BehaviourRequest) behaviour (or a scenario's action script)
+//   findball        (FindBall)         behaviour (agent/behaviour/BehaviourModule)
 //   motion          (Motion)           motion
 //   actuators       (Actuators)        motion (the effector sends them)
 //
@@ -33,6 +34,7 @@
 #include <mutex>
 
 #include "agent/blackboard/Ball.hpp"
+#include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/blackboard/FrameInfo.hpp"
 #include "agent/blackboard/GameInfo.hpp"
 #include "agent/blackboard/Localisation.hpp"
@@ -159,6 +161,7 @@ struct Blackboard {
   Section<TeamInfo> team;                    // team receive -> ball, behaviour
   Section<GameInfo> game;                    // game state -> localisation, behaviour
   Section<MotionRequest> motion_request;     // Behaviour -> Motion
+  Section<FindBallInfo> findball;            // Behaviour -> team send, views
   Section<MotionState> motion;               // Motion -> all
   Section<ActuatorRequest> actuators;        // Motion -> effector
 };

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 namespace agent::blackboard {
 
@@ -17,6 +18,7 @@ struct TeammateReport {
   double ball_x = 0, ball_y = 0;   // mm, field: their ball
   double ball_vx = 0, ball_vy = 0; // mm/s
   double ball_age = 1e9;           // s since they saw the ball when sent
+  std::vector<uint8_t> data;       // the packet's free data area (the behaviour decodes it)
 };
 
 struct TeamInfo {

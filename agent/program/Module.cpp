@@ -18,6 +18,7 @@ const char* sectionName(SectionId s) {
     case SectionId::BehaviourRequest: return "behaviour request";
     case SectionId::Motion: return "motion";
     case SectionId::Actuators: return "actuators";
+    case SectionId::FindBall: return "findball";
     default: return "?";
   }
 }

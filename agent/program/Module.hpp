@@ -32,6 +32,7 @@ enum class SectionId : int {
   BehaviourRequest,
   Motion,
   Actuators,
+  FindBall,
   NUM_SECTIONS
 };
 const char* sectionName(SectionId s);

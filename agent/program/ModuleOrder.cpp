@@ -22,11 +22,14 @@ void buildSchedule(ProgramConfig& cfg, blackboard::Blackboard& board, EffectorMo
   s.add(T::Perception, std::make_unique<localisation::LocalisationModule>(lc));
   s.add(T::Perception, std::make_unique<perception::BallTrackerModule>(cfg.ball));
   s.add(T::Perception, std::make_unique<TeamReceiveModule>(cfg.team, cfg.player, link));
-  if (cfg.behaviour)
+  bool findball = false;  // the behaviour publishes findball: team send carries its payload
+  if (cfg.behaviour) {
+    for (SectionId w : cfg.behaviour->writes()) findball = findball || w == SectionId::FindBall;
     s.add(T::Perception, std::move(cfg.behaviour));
-  else if (!cfg.actions.empty())
+  } else if (!cfg.actions.empty()) {
     s.add(T::Perception, std::make_unique<motion::ScriptedBehaviour>(std::move(cfg.actions)));
-  s.add(T::Perception, std::make_unique<TeamSendModule>(cfg.team, cfg.player, link));
+  }
+  s.add(T::Perception, std::make_unique<TeamSendModule>(cfg.team, cfg.player, link, findball));
 
   // Motion.
   s.add(T::Motion, std::make_unique<TouchModule>());

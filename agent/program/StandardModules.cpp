@@ -98,6 +98,7 @@ void TeamReceiveModule::run(blackboard::Blackboard& board) {
       r.ball_vx = c * m.ball_vel_x - s * m.ball_vel_y;
       r.ball_vy = s * m.ball_vel_x + c * m.ball_vel_y;
       r.ball_age = m.ball_age < 0 ? 1e9 : m.ball_age;
+      r.data = m.data;
     }
     info_.received = receiver_.stats().received;
     info_.malformed = receiver_.stats().malformed;
@@ -123,6 +124,14 @@ void TeamSendModule::run(blackboard::Blackboard& board) {
     m.ball_vel_y = static_cast<float>(ball.rr_vy);
   }
   m.position_confidence = static_cast<int8_t>(std::lround(100 * std::clamp(loc.confidence, 0.0, 1.0)));
+  if (with_findball_) {  // the behaviour's search state in the free data area
+    const blackboard::FindBallInfo fb = board.findball.read();
+    if (fb.payload.size() <= comms::kSplDataSize) m.data = fb.payload;
+    if (fb.has_point) {
+      m.walking_to_x = static_cast<float>(fb.point_x);
+      m.walking_to_y = static_cast<float>(fb.point_y);
+    }
+  }
   sender_.maybeSend(*transport_, board.frame.read().sim_time_us, m);
 }
 

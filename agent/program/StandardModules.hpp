@@ -141,15 +141,19 @@ class TeamReceiveModule : public Module {
   blackboard::TeamInfo info_;
 };
 
-// localisation + ball + motion (fallen) -> teammates: our SPL standard
-// message at 5 Hz (TeamSender) through the transport.
+// localisation + ball + motion (fallen) [+ findball] -> teammates: our SPL
+// standard message at 5 Hz (TeamSender) through the transport. With a
+// behaviour that publishes findball, its SearchPayload bytes go into the
+// message's free data area and its search point into walkingTo.
 class TeamSendModule : public Module {
  public:
-  TeamSendModule(int team, int player, std::shared_ptr<comms::TeamTransport> transport)
-      : sender_(team, player), transport_(std::move(transport)), player_(player) {}
+  TeamSendModule(int team, int player, std::shared_ptr<comms::TeamTransport> transport, bool with_findball = false)
+      : sender_(team, player), transport_(std::move(transport)), player_(player), with_findball_(with_findball) {}
   const char* name() const override { return "team send"; }
   std::vector<SectionId> reads() const override {
-    return {SectionId::Frame, SectionId::Localisation, SectionId::Ball, SectionId::Motion};
+    std::vector<SectionId> r{SectionId::Frame, SectionId::Localisation, SectionId::Ball, SectionId::Motion};
+    if (with_findball_) r.push_back(SectionId::FindBall);
+    return r;
   }
   std::vector<SectionId> writes() const override { return {}; }
   void run(blackboard::Blackboard& board) override;
@@ -159,6 +163,7 @@ class TeamSendModule : public Module {
   comms::TeamSender sender_;
   std::shared_ptr<comms::TeamTransport> transport_;
   int player_;
+  bool with_findball_;
 };
 
 }  // namespace agent::program

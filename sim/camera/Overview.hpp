@@ -19,6 +19,7 @@
 #include "sim/camera/CameraModel.hpp"
 #include "sim/camera/Renderer.hpp"
 #include "sim/camera/Scene.hpp"
+#include "sim/video/VideoWriter.hpp"
 
 namespace simswift {
 class World;
@@ -28,19 +29,9 @@ namespace simswift::camera {
 
 class RobotCameras;
 
-struct VideoResult {
-  bool ok = false;          // an MP4 was written
-  std::string output;       // its path (if ok)
-  std::string codec;        // libx264 or mpeg4
-  std::string message;      // one line for the user
-};
-
-class VideoWriter {
- public:
-  static bool ffmpegOnPath();
-  // pattern: printf-style PNG path (e.g. dir/overview_%06d.png) numbered from 0.
-  static VideoResult assemble(const std::string& pattern, double fps, const std::string& mp4);
-};
+// The video writer lives in sim/video (one home; the FindBall view uses it too).
+using video::VideoResult;
+using video::VideoWriter;
 
 struct OverviewConfig {
   enum class Mode { Fixed, FollowRobot, FollowBall };

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <thread>
 
+#include "agent/behaviour/BehaviourModule.hpp"
 #include "agent/libagent/SharedNames.hpp"
 #include "sim/vision/VisionOracle.hpp"
 #include "sim/runner/Tracer.hpp"
@@ -25,6 +26,7 @@ namespace simswift::runner {
 
 namespace al = agent::libagent;
 namespace ap = agent::program;
+namespace ab = agent::behaviour;
 using agent::libagent::SyncMode;
 using Clock = std::chrono::steady_clock;
 
@@ -219,7 +221,21 @@ void Runner::start() {
       pc.player = r.spec.player;
       pc.seed = scenario_.seed * 1000003ULL + static_cast<uint64_t>(i);
       pc.motion_generator = std::move(r.motion_override);
-      if (!pc.motion_generator && (!r.spec.actions.empty() || !r.spec.pushes.empty())) {
+      if (!pc.motion_generator && r.spec.behaviour) {
+        // The behaviour (agent/behaviour) plans with the walk's top speeds
+        // (calibrated so the achieved speeds match them) and starts from the
+        // scenario's pose as a known start, as a team placing its robots on a
+        // test field configures it.
+        ab::BehaviourModuleConfig bc;
+        bc.behaviour = *r.spec.behaviour;
+        bc.team = r.spec.team;
+        bc.player = r.spec.player;
+        bc.walk.max_forward = pc.motion.walk.max_forward;
+        bc.walk.max_left = pc.motion.walk.max_left;
+        bc.walk.max_turn = pc.motion.walk.max_turn;
+        pc.behaviour = std::make_unique<ab::BehaviourModule>(bc);
+        pc.localisation.known_start = agent::blackboard::FieldPose{r.spec.x * 1000.0, r.spec.y * 1000.0, r.spec.theta};
+      } else if (!pc.motion_generator && (!r.spec.actions.empty() || !r.spec.pushes.empty())) {
         pc.actions = r.spec.actions;
         if (pc.actions.empty()) pc.actions.push_back({});  // pushes only: a NONE step keeps the script's STAND
       } else if (!pc.motion_generator) {
@@ -336,6 +352,9 @@ void Runner::watchdogFail(const Robot& r, const char* thread) const {
 //     (all answered in 4 and 6; none is posted before step 3 of the next
 //     tick), so the robot code sees the same packets and states at the same
 //     simulated time whatever the thread timing.
+//  8. FindBall view frames, if asked (--findball-view): each robot's findball
+//     section is read while no robot thread runs (drawing only: no effect
+//     on the simulation).
 // Threads may run in any order inside 3-4 and 6: the runner reads nothing
 // until they have all answered, so the result does not depend on timing.
 void Runner::tick() {
@@ -436,6 +455,24 @@ void Runner::tick() {
   }
   // 7.
   teamAndGame(t_us);
+  // 8.
+  if (findball_view_config_) captureFindBallView(t_us);
+}
+
+void Runner::captureFindBallView(int64_t t_us) {
+  if (!findball_view_) {
+    std::vector<std::string> tags;
+    std::vector<int> players;
+    for (auto& r : robots_) {
+      tags.push_back(r->tag);
+      players.push_back(r->spec.player);
+    }
+    findball_view_ = std::make_unique<sim::views::FindBallRecorder>(*findball_view_config_, tags, players);
+  }
+  std::vector<agent::blackboard::FindBallInfo> infos(robots_.size());
+  for (size_t i = 0; i < robots_.size(); ++i)
+    if (robots_[i]->program) infos[i] = robots_[i]->program->board().findball.read();
+  findball_view_->maybeCapture(t_us, infos);
 }
 
 void Runner::teamAndGame(int64_t t_us) {
@@ -516,6 +553,7 @@ RunStats Runner::run(const RunOptions& opt) {
   const RunStats s = stats();
   shutdown();
   if (!finishOverview().empty()) std::fprintf(stderr, "%s\n", overview_message_.c_str());
+  if (findball_view_) std::fprintf(stderr, "%s\n", findball_view_->finish().c_str());
   if (framesDumped() > 0)
     std::fprintf(stderr, "camera frames: %lld PNGs in %s\n", static_cast<long long>(framesDumped()),
                  scenario_.camera.dump_dir.c_str());

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -38,6 +39,7 @@
 #include "sim/runner/RunStats.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/sensors/SensorSuite.hpp"
+#include "sim/views/FindBallRecorder.hpp"
 #include "sim/world/World.hpp"
 
 namespace simswift::camera {
@@ -123,6 +125,11 @@ class Runner {
   agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext; }
   const network::TeamNetwork& teamNetwork() const { return *network_; }
   const game::GameController& gameController() const { return *game_; }
+  // FindBall view frames (`--findball-view DIR`): every robot whose behaviour
+  // publishes findball gets a PNG per 1/rate_hz s of simulated time, drawn
+  // from its Blackboard between ticks; run() assembles the videos.
+  void setFindBallView(const sim::views::FindBallRecorderConfig& c) { findball_view_config_ = c; }
+  int64_t findBallViewFrames() const { return findball_view_ ? findball_view_->frames() : 0; }
   // After run(): the overview video line (empty if no overview).
   const std::string& overviewMessage() const { return overview_message_; }
   // Ends the overview (assembles the video) and returns its message; run() calls it.
@@ -178,6 +185,9 @@ class Runner {
   std::unique_ptr<game::PenaltyPlacer> placer_;
   std::vector<agent::libagent::TeamLink*> links_;  // by robot index, for the network
   void teamAndGame(int64_t t_us);  // tick step 7
+  std::optional<sim::views::FindBallRecorderConfig> findball_view_config_;
+  std::unique_ptr<sim::views::FindBallRecorder> findball_view_;
+  void captureFindBallView(int64_t t_us);  // tick step 8
   std::chrono::steady_clock::time_point wall_start_;
 };
 

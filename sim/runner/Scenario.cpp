@@ -10,6 +10,7 @@
 
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/motion/WalkConfig.hpp"
+#include "sim/runner/BehaviourYaml.hpp"
 #include "sim/world/YamlReader.hpp"
 
 #ifndef SIMSWIFT_INSTALL_DATADIR
@@ -400,6 +401,16 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
         r.fail("actions", "an external robot runs its own program; actions need program: builtin");
       if (!rs.script.empty()) r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
       readActions(r, rs);
+    }
+    if (r.has("behaviour")) {
+      if (rs.program == RobotSpec::Program::External)
+        r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin");
+      rs.behaviour = readBehaviour(r);
+      if (rs.behaviour && !rs.actions.empty())
+        r.fail("actions", std::string("a robot with behaviour ") + agent::behaviour::behaviourKindName(rs.behaviour->kind) +
+                              " takes no body actions (pushes only); use behaviour: script");
+      if (rs.behaviour && !rs.script.empty())
+        r.fail("script", "a robot with a behaviour takes no joint script");
     }
     r.finish();
     sc.robots.push_back(std::move(rs));

@@ -30,6 +30,12 @@
 //                  {t: 9.0, push: {x: 3.0, y: 0.0}}]}   # impulse N*s at the torso (field axes)
 //      actions run the robot's Motion (agent/motion) from a timed list: walk, stand,
 //      kick, getup_front, getup_back, dead, crouch, limp, none.
+//      behaviour: findball2017 | findball2016 | striker | script (default), or a map
+//        {kind: findball2017, strategy: {distributed: off}, ...} overriding
+//        agent/behaviour/BehaviourConfig.hpp's fields (sim/runner/BehaviourYaml.hpp).
+//        script runs the actions list; the others run agent/behaviour, the
+//        localisation starting at the scenario's pose (a known start, as on a
+//        test field where the team places its robots).
 //   team_comms: {loss: 0.1, delay_ms: 100, budget: 0}   # see sim/network/TeamNetwork.hpp
 //      loss 0..1 per packet and teammate, delay ms, budget packets per team per game (0 = none)
 //   game:                          # the GameController (sim/game); absent = PLAYING throughout
@@ -59,6 +65,7 @@
 #include <string>
 #include <vector>
 
+#include "agent/behaviour/BehaviourConfig.hpp"
 #include "agent/motion/ActionScript.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/Postures.hpp"
@@ -97,6 +104,9 @@ struct RobotSpec {
   // (simulator side, World::applyImpulse): 1 N*s changes the 5.3 kg NAO's
   // CoM velocity by 0.19 m/s; about 3.5 N*s topples a standing NAO.
   std::vector<agent::motion::ActionStep> actions;
+  // behaviour: the robot code's behaviour (agent/behaviour); empty = script
+  // (the actions above).
+  std::optional<agent::behaviour::BehaviourConfig> behaviour;
   struct Push { double t_s = 0, jx = 0, jy = 0; };  // s, N*s, N*s
   std::vector<Push> pushes;
   // Touch sensors pressed by the scenario (any program), e.g.

@@ -1,0 +1,117 @@
+#include "agent/behaviour/BehaviourModule.hpp"
+
+#include <cmath>
+#include <cstring>
+
+#include "agent/perception/PerceptionModules.hpp"
+
+namespace agent::behaviour {
+
+BehaviourInputs inputsFrom(const blackboard::Blackboard& board, const BehaviourModuleConfig& c) {
+  BehaviourInputs in;
+  const blackboard::FrameInfo frame = board.frame.read();
+  const blackboard::LocalisationEstimate loc = board.localisation.read();
+  const blackboard::BallEstimate ball = board.ball.read();
+  const blackboard::GameInfo game = board.game.read();
+  const blackboard::MotionState motion = board.motion.read();
+  in.time = frame.time;
+  in.player = c.player;
+  in.walk = c.walk;
+
+  in.self.pose = {loc.pose.x, loc.pose.y, loc.pose.theta};
+  in.self.confidence = loc.confidence;
+  in.self.flipped = loc.jumped;
+  in.self.fallen = perception::postureIsDown(motion.posture);
+
+  // The tracker's own estimate (when it has no track, x/y hold the team ball).
+  in.ball.ever_seen = ball.valid;
+  in.ball.seen_now = ball.seen_this_frame;
+  in.ball.time_since_seen = ball.time_since_seen;
+  if (ball.valid) {
+    in.ball.relative = {ball.rr_x, ball.rr_y};
+    in.ball.field = {ball.x, ball.y};
+  }
+  in.team_ball.valid = ball.team_valid;
+  in.team_ball.time_since_seen = ball.team_age;
+  in.team_ball.field = {ball.team_x, ball.team_y};
+
+  // No game controller (a test field): playing throughout.
+  in.game.state = game.known ? static_cast<GameState>(static_cast<int>(game.state)) : GameState::PLAYING;
+  in.game.penalised = game.known && game.penalised;
+
+  const blackboard::TeamInfo team = board.team.read();
+  for (int p = 1; p <= blackboard::kMaxTeammates; ++p) {
+    const blackboard::TeammateReport& r = team.mates[p];
+    if (!r.valid || p == c.player) continue;
+    Teammate t;
+    t.player = p;
+    t.pose = {r.x, r.y, r.theta};
+    t.fallen = r.fallen;
+    t.sees_ball = r.ball_age <= c.behaviour.skills.team_ball_max_age;
+    t.time_since_heard = std::max(0.0, frame.time - r.received);
+    if (!r.data.empty()) t.search = SearchPayload::fromBytes(r.data);
+    in.teammates.push_back(std::move(t));
+  }
+  return in;
+}
+
+void BehaviourModule::run(blackboard::Blackboard& board) {
+  const BehaviourInputs in = inputsFrom(board, c_);
+  BehaviourOutput out = behaviour_.tick(in);
+  board.motion_request.write(out.request);
+
+  blackboard::FindBallInfo fb;
+  fb.active = true;
+  fb.kind = static_cast<int32_t>(c_.behaviour.kind);
+  fb.time = in.time;
+  std::strncpy(fb.activity, out.activity ? out.activity : "", sizeof fb.activity - 1);
+  if (const FindBallResult* r = behaviour_.findBall()) {
+    fb.columns = r->distribution.columns();
+    fb.rows = r->distribution.rows();
+    fb.team = r->distribution.probabilities();
+    fb.local = r->local.probabilities();
+    // A reset (penalty, flip) makes the local distribution uniform again.
+    bool uniform = true;
+    for (double p : fb.local) uniform = uniform && std::fabs(p - 1.0 / fb.local.size()) < 1e-9;
+    if (uniform && !was_uniform_) ++resets_;
+    was_uniform_ = uniform;
+  } else {  // 2016: no distribution (the view draws it uniform)
+    const PositionalDistribution u = PositionalDistribution::fromConfig(c_.behaviour.grid, c_.behaviour.field);
+    fb.columns = u.columns();
+    fb.rows = u.rows();
+    fb.team = fb.local = u.probabilities();
+  }
+  fb.resets = resets_;
+  fb.segment = behaviour_.searchSegment();
+  const bool searching = out.activity && (std::strcmp(out.activity, "findball2017") == 0 ||
+                                          std::strcmp(out.activity, "findball2016") == 0);
+  if (searching) {
+    const Point2 p = behaviour_.searchPoint();
+    fb.has_point = std::isfinite(p.x) && std::isfinite(p.y);
+    fb.point_x = p.x;
+    fb.point_y = p.y;
+  } else {
+    fb.segment = -1;
+  }
+  fb.pose_x = in.self.pose.x;
+  fb.pose_y = in.self.pose.y;
+  fb.pose_theta = in.self.pose.theta;
+  for (const Teammate& t : in.teammates) {
+    blackboard::FindBallTeammate m;
+    m.player = t.player;
+    m.x = t.pose.x;
+    m.y = t.pose.y;
+    m.theta = t.pose.theta;
+    if (t.search && t.search->segment >= 0) {
+      m.has_target = true;
+      m.segment = t.search->segment;
+      m.target_x = t.search->point.x;
+      m.target_y = t.search->point.y;
+    }
+    fb.teammates.push_back(m);
+  }
+  if (out.payload) fb.payload = out.payload->toBytes();
+  board.findball.write(fb);
+}
+
+}  // namespace agent::behaviour

@@ -1,0 +1,53 @@
+// The behaviour as a Perception module (last but one in the Perception
+// thread's order: ... ball tracker -> team receive -> behaviour -> team send).
+//
+// Each camera frame it fills BehaviourInputs from the Blackboard (inputsFrom,
+// below), runs the Behaviour (agent/behaviour/Behaviour.hpp: 2016 FindBall,
+// the 2017 ball searching component, or the striker) and writes
+//   motion_request: body and head command (Motion reads it each 10 ms tick);
+//   findball:       distributions, choice, teammates' targets and this robot's
+//                   SearchPayload bytes (team send puts them into the SPL
+//                   message's free data area; the FindBall view draws the rest).
+// Units: mm, rad, s; field frame.
+#pragma once
+
+#include "agent/behaviour/Behaviour.hpp"
+#include "agent/behaviour/BehaviourInputs.hpp"
+#include "agent/program/Module.hpp"
+
+namespace agent::behaviour {
+
+struct BehaviourModuleConfig {
+  BehaviourConfig behaviour;
+  WalkLimits walk;  // the walk's achieved top speeds (its calibrated maxima, agent/motion/WalkConfig.hpp)
+  int team = 0, player = 2;
+};
+
+// The Blackboard's view of the world as behaviour inputs. Teammates come
+// from team receive's reports (those heard within `teammate_timeout` s are
+// kept with their age; this robot excluded), their free data decoded as a
+// SearchPayload (malformed: no search data). Exposed for tests.
+BehaviourInputs inputsFrom(const blackboard::Blackboard& board, const BehaviourModuleConfig& c);
+
+class BehaviourModule : public program::Module {
+ public:
+  explicit BehaviourModule(const BehaviourModuleConfig& c) : c_(c), behaviour_(c.behaviour) {}
+  const char* name() const override { return "behaviour"; }
+  std::vector<program::SectionId> reads() const override {
+    using S = program::SectionId;
+    return {S::Frame, S::Localisation, S::Ball, S::Team, S::GameState, S::Motion};
+  }
+  std::vector<program::SectionId> writes() const override {
+    return {program::SectionId::BehaviourRequest, program::SectionId::FindBall};
+  }
+  void run(blackboard::Blackboard& board) override;
+  const Behaviour& behaviour() const { return behaviour_; }
+
+ private:
+  BehaviourModuleConfig c_;
+  Behaviour behaviour_;
+  bool was_uniform_ = true;
+  int64_t resets_ = 0;
+};
+
+}  // namespace agent::behaviour

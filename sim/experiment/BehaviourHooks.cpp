@@ -1,0 +1,27 @@
+#include "sim/experiment/BehaviourHooks.hpp"
+
+#include "sim/runner/BehaviourYaml.hpp"
+
+namespace simswift::experiment {
+
+void RobotBehaviours::check(const Experiment&, const ExperimentRobot& r) const {
+  if (r.behaviour == Behaviour::Script) return;
+  runner::behaviourFromText(behaviourName(r.behaviour), r.config_yaml, r.behaviour_where);
+}
+
+void RobotBehaviours::configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const {
+  const Setup& s = e.setups[t.setup];
+  for (size_t i = 0; i < s.robots.size() && i < sc.robots.size(); ++i) {
+    const ExperimentRobot& r = s.robots[i];
+    if (r.behaviour == Behaviour::Script) continue;  // its actions are already set
+    sc.robots[i].behaviour = runner::behaviourFromText(behaviourName(r.behaviour), r.config_yaml, r.behaviour_where);
+  }
+}
+
+TrialHooks behaviourHooks() {
+  TrialHooks h = defaultHooks();
+  h.behaviours = std::make_shared<RobotBehaviours>();
+  return h;
+}
+
+}  // namespace simswift::experiment
