@@ -12,6 +12,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sim/nao_model/Motors.hpp"
+
 namespace simswift {
 
 namespace {
@@ -35,8 +37,17 @@ Eigen::Vector3d vec(const dReal* v) { return Eigen::Vector3d(v[0], v[1], v[2]); 
 
 std::vector<ServoBank::Limits> servoLimits(const NaoModel& model) {
   std::vector<ServoBank::Limits> out;
-  for (const auto& j : model.joints())
-    out.push_back({j.lower, j.upper, j.max_velocity, j.max_effort});
+  for (const auto& j : model.joints()) {
+    ServoBank::Limits l{j.lower, j.upper, j.max_velocity, j.max_effort};
+    // Speed and stall torque come from the URDF (which agrees with the motor
+    // table, tests/nao_model); the electrical side from the motor table.
+    if (const auto m = naoJointMotor(j.name)) {
+      l.reduction = m->reduction;
+      l.torque_constant = m->motor.torqueConstant();
+      l.resistance = m->motor.resistance();
+    }
+    out.push_back(l);
+  }
   return out;
 }
 
@@ -218,10 +229,27 @@ void RobotBody::setCommand(const std::array<float, 25>& angles,
 
 void RobotBody::applyServos(double dt) {
   for (size_t j = 0; j < joints_.size(); ++j) {
-    const ServoBank::Drive d = servo_.drive(static_cast<int>(j), jointAngle(static_cast<int>(j)), dt);
+    const int k = static_cast<int>(j);
+    // Current and heat from the torque the joint delivered last substep.
+    servo_.heat(k, jointTorque(k), dt);
+    const ServoBank::Drive d = servo_.drive(k, jointAngle(k), dt);
     dJointSetHingeParam(joints_[j], dParamVel, d.velocity);
     dJointSetHingeParam(joints_[j], dParamFMax, d.max_torque);
+    // ODE's motor row with CFM c satisfies w = velocity - c * torque: the
+    // DC motor's torque-speed line, solved implicitly (Servo.hpp).
+    dJointSetHingeParam(joints_[j], dParamCFM, d.compliance);
   }
+}
+
+double RobotBody::anchorSeparation() const {
+  double worst = 0;
+  for (dJointID h : joints_) {
+    dVector3 a1, a2;
+    dJointGetHingeAnchor(h, a1);   // as attached to the child
+    dJointGetHingeAnchor2(h, a2);  // as attached to the parent
+    worst = std::max(worst, (vec(a1) - vec(a2)).norm());
+  }
+  return worst;
 }
 
 double RobotBody::jointAngle(int joint) const { return dJointGetHingeAngle(joints_[joint]); }

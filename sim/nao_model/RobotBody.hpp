@@ -59,6 +59,12 @@ class RobotBody {
   double jointAngle(int joint) const;     // rad, model joint index
   double jointVelocity(int joint) const;  // rad/s
   double jointTorque(int joint) const;    // N*m last applied by the servo
+  double jointCurrent(int joint) const { return servo_.current(joint); }          // A, motor
+  double jointTemperature(int joint) const { return servo_.temperature(joint); }  // deg C
+  const ServoBank& servos() const { return servo_; }
+  // Largest distance (m) between a hinge's anchor as seen from its child and
+  // from its parent: how far the joint constraints give under load.
+  double anchorSeparation() const;
   dBodyID body(int link) const { return bodies_[link]; }
   dBodyID torsoBody() const { return bodies_[model_->rootLink()]; }
   Eigen::Isometry3d linkPose(int link) const;            // link frame in world
