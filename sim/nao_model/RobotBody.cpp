@@ -134,6 +134,10 @@ RobotBody::RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSp
       tag->kind = GeomTag::RobotLink;
       tag->robot = robot_index;
       tag->link = static_cast<int32_t>(l);
+      const int pj = links[l].parent_joint;
+      const std::string& pjn = pj >= 0 ? joints[pj].name : std::string();
+      tag->sole = s.type == ShapeType::Box && pjn.size() >= 9 &&
+                  pjn.compare(pjn.size() - 9, 9, "AnkleRoll") == 0;
       dGeomSetData(g, tag.get());
       tags_.push_back(std::move(tag));
       geoms_.push_back(g);

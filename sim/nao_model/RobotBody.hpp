@@ -24,6 +24,10 @@ struct GeomTag {
   enum Kind : int32_t { Ground, FieldObject, Net, Ball, RobotLink } kind = Ground;
   int32_t robot = -1;  // robot index for RobotLink
   int32_t link = -1;   // link index in the NaoModel for RobotLink
+  // A foot's sole box (the box collision shape of the link below an
+  // AnkleRoll joint): the world gives its ground contact as a patch of points
+  // over the whole sole instead of the box's corners (Contacts.cpp).
+  bool sole = false;
 };
 
 class RobotBody {

@@ -66,6 +66,10 @@ Eigen::Isometry3d planarPose(double x, double y, double theta, double z) {
 World::World(const FieldConfig& field, const WorldConfig& config)
     : impl_(std::make_unique<Impl>()), field_(field), config_(config) {
   if (config_.substeps < 1) throw ConfigError("world: substeps must be >= 1");
+  if (config_.sole_nx < 1 || config_.sole_ny < 1 || config_.sole_nx * config_.sole_ny > 64)
+    throw ConfigError("world: sole_nx x sole_ny must be 1..64 points");
+  if (!(config_.sole_stiffness > 0) || !(config_.sole_damping >= 0))
+    throw ConfigError("world: sole_stiffness must be > 0 and sole_damping >= 0");
   initOdeOnce();
   world_ = dWorldCreate();
   dWorldSetGravity(world_, 0, 0, -config_.gravity);
