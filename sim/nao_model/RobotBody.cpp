@@ -93,6 +93,7 @@ RobotBody::RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSp
   // turning positively about the axis relative to its parent (NAO sign).
   joints_.resize(joints.size());
   motors_.assign(joints.size(), nullptr);  // the hinge's own motor is used
+  motor_cap_.assign(joints.size(), 0.0);
   feedback_.resize(joints.size());
   for (size_t j = 0; j < joints.size(); ++j) {
     const JointSpec& spec = joints[j];
@@ -234,9 +235,12 @@ void RobotBody::setCommand(const std::array<float, 25>& angles,
 void RobotBody::applyServos(double dt) {
   for (size_t j = 0; j < joints_.size(); ++j) {
     const int k = static_cast<int>(j);
-    // Current and heat from the torque the joint delivered last substep.
-    servo_.heat(k, jointTorque(k), dt);
+    // Current and heat from the torque the motor delivered last substep: the
+    // hinge's torque, less what the joint stop took beyond the motor's cap.
+    const double cap = motor_cap_[j];
+    servo_.heat(k, std::clamp(jointTorque(k), -cap, cap), dt);
     const ServoBank::Drive d = servo_.drive(k, jointAngle(k), dt);
+    motor_cap_[j] = d.max_torque;
     dJointSetHingeParam(joints_[j], dParamVel, d.velocity);
     dJointSetHingeParam(joints_[j], dParamFMax, d.max_torque);
     // ODE's motor row with CFM c satisfies w = velocity - c * torque: the

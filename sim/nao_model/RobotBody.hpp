@@ -101,6 +101,7 @@ class RobotBody {
   // origin at its CoM, so link frame = body frame shifted by -com.
   std::vector<Eigen::Vector3d> com_;
   std::vector<dJointFeedback> feedback_;  // per joint, filled by ODE each step
+  std::vector<double> motor_cap_;         // per joint, the motor's torque cap last substep (N*m)
   // Link frames in the world for torso pose `torso` and joint angles (rad).
   std::vector<Eigen::Isometry3d> forwardKinematics(const Eigen::Isometry3d& torso,
                                                    const std::vector<double>& angles) const;

@@ -82,7 +82,7 @@ ServoBank::Drive ServoBank::drive(int joint, double angle, double dt) const {
   // torque at any speed. Joint side, after gear losses (efficiency).
   const double stall = lim.max_effort * cfg_.gear_efficiency * cfg_.torque_scale;
   const double max_torque = std::min(1.0, s) * thermalLimit(joint) * stall;
-  return {v, max_torque, lim.max_velocity / stall};
+  return {v, max_torque, cfg_.torque_speed_line ? lim.max_velocity / stall : 0.0};
 }
 
 void ServoBank::heat(int joint, double torque, double dt) {

@@ -102,6 +102,7 @@ TEST(Servo, FollowCopiesLeader) {
 TEST(Servo, TorqueSpeedLineAndCurrentLimit) {
   ServoConfig cfg;
   cfg.gear_efficiency = 0.8;
+  cfg.torque_speed_line = true;
   ServoBank s({{-2.0, 2.0, 4.0, 10.0}}, cfg);  // no-load 4 rad/s, stall 10 N*m
   s.setTarget(0, 1.0, 1.0);
   const auto d = s.drive(0, 0.0, 0.005);
@@ -145,7 +146,9 @@ TEST(Servo, CurrentHeatsAndHotMotorsAreDerated) {
 // line meets the load: speed = no-load x (1 - load / (efficiency x stall)).
 TEST(Servo, JointUnderKnownLoadSlowsAlongTheTorqueSpeedLine) {
   const simswift::JointMotor knee = *simswift::naoJointMotor("LKneePitch");
-  ServoConfig cfg;  // the default gear efficiency
+  ServoConfig cfg;
+  cfg.torque_speed_line = true;
+  cfg.gear_efficiency = 0.8;
   const double stall = cfg.gear_efficiency * knee.stallTorque();  // N*m at the joint
   for (double fraction : {0.0, 0.25, 0.5, 0.75}) {
     dInitODE2(0);
