@@ -84,9 +84,9 @@ struct KickConfig {
   double shift = 70.0;         // mm the hips move sideways over the support foot (tuned in simswift)
   double height = 215.0;       // mm hip height while kicking
   double lift = 45.0;          // mm kicking foot lift
-  double wind_back = 55.0;     // mm behind the hip at full power
-  double reach = 110.0;        // mm ahead of the hip at the strike
-  double strike_time_fast = 0.07;  // s at power 1
+  double wind_back = 75.0;     // mm behind the hip at full power (issue 10: 55 mm fell short on the NAO motors)
+  double reach = 120.0;        // mm ahead of the hip at the strike
+  double strike_time_fast = 0.065;  // s at power 1 (kick settings tuned on seeds 900-939)
   double strike_time_slow = 0.25;  // s at power 0
   double max_side = 40.0;      // mm the strike may be aimed sideways
   double stiffness = 1.0;

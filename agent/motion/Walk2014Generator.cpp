@@ -174,6 +174,11 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
     case State::Walking: {
       t_ += dt;
       const double frac = std::min(1.0, t_ / period_);
+      // Horizontal motion (both feet, and the turn) completes by
+      // horizontal_fraction of the period; the rest of the step only lowers
+      // the swing foot, so when it lands early the feet do not slide
+      // against each other while the weight transfers.
+      const double hfrac = std::min(1.0, frac / cfg_.horizontal_fraction);
       const double gain_f = tableGain(cfg_.forward_gains, step_speed_.forward / cfg_.max_forward);
       const double gain_l = tableGain(cfg_.left_gains, step_speed_.left / cfg_.max_left);
       const double F = gain_f * step_speed_.forward * period_;
@@ -186,7 +191,7 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       // trailing step closes them, and the body turns D on each.
       const bool lead_turn = (D > 0 && swing_left_) || (D < 0 && !swing_left_);
       const double th_target = lead_turn ? std::fabs(D) : 0.0;
-      const double ps = parabolicStep(frac);
+      const double ps = parabolicStep(hfrac);
 
       // Support foot (x, y, yaw) before this tick, for odometry.
       const double sx0 = swing_left_ ? xr_ : xl_, sy0 = swing_left_ ? yr_ : yl_;
@@ -194,13 +199,13 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       if (swing_left_) {
         xl_ = xl0_ + (F / 2 - xl0_) * ps;
         yl_ = yl0_ + (y_swing - yl0_) * ps;
-        xr_ = xr0_ + (-F / 2 - xr0_) * frac;
-        yr_ = yr0_ + (y_support - yr0_) * frac;
+        xr_ = xr0_ + (-F / 2 - xr0_) * hfrac;
+        yr_ = yr0_ + (y_support - yr0_) * hfrac;
       } else {
         xr_ = xr0_ + (F / 2 - xr0_) * ps;
         yr_ = yr0_ + (y_swing - yr0_) * ps;
-        xl_ = xl0_ + (-F / 2 - xl0_) * frac;
-        yl_ = yl0_ + (y_support - yl0_) * frac;
+        xl_ = xl0_ + (-F / 2 - xl0_) * hfrac;
+        yl_ = yl0_ + (y_support - yl0_) * hfrac;
       }
       th_ = th0_ + (th_target - th0_) * ps;
       const double sx1 = swing_left_ ? xr_ : xl_, sy1 = swing_left_ ? yr_ : yl_;

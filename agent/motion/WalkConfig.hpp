@@ -47,7 +47,14 @@ struct WalkConfig {
   double sway = 0.0;
 
   // --- Support-foot switching from the FSRs' lateral centre of pressure
-  double switch_min_fraction = 0.75;  // of the period before a CoP sign change counts
+  double switch_min_fraction = 0.75;
+  // Fraction of the step period in which the feet finish their horizontal
+  // motion (step length, sideways step, turn); the remainder only lowers
+  // the swing foot. Walk2014 moves the support foot until the very end, so
+  // a swing foot that lands early (the FSR switch fires at ~0.94 T) slides
+  // against the support foot during weight transfer and the step comes up
+  // short; 1.0 restores Walk2014's profile.
+  double horizontal_fraction = 0.9;  // of the period before a CoP sign change counts
   double switch_forced_periods = 3.0; // switch regardless after this many periods
   // kg on both feet together to trust the FSRs (2 N); below it (robot
   // lifted) switch on time (1 period)
@@ -67,22 +74,23 @@ struct WalkConfig {
   // side): toed-in feet otherwise touch (the sole gap is only 11 mm).
   double turn_width = 0.0;  // 0: turning only toes out (lead/trail), no collision
 
-  // --- Calibration (measured in simswift, see tests/runner/motion_*):
-  // step geometry gains, so that the achieved speed matches the command
-  // despite foot slip, and odometry scales from the executed foot motion to
-  // the body motion it really produces.
-  // Slip is not proportional to speed (slow steps lose relatively more), so
-  // the forward and sideways gains are a table over the commanded fraction of
-  // max_forward / max_left: at 25, 50, 75 and 100 %, linear in between, the
-  // 25 % value below. bench_motion prints achieved / commanded per entry.
-  std::array<double, 4> forward_gains{1.73, 1.48, 1.36, 1.27};  // measured (bench_motion); 1.0 achieved ~72 %
-  std::array<double, 4> left_gains{1.53, 1.57, 1.54, 1.33};     // measured; 1.0 achieved ~75 %
+  // --- Calibration: what a team measures on its own robot (step length
+  // achieved / commanded, per axis). No simulator compensation here: with
+  // the body model of issue 10 the walk reaches its command uncalibrated, so
+  // every entry is 1.0 (bench_motion prints achieved / commanded). A team
+  // would set one factor per axis from its robot's measurements; keep any
+  // such factor within 10 % of 1 (beyond that the walk itself is wrong).
+  // The forward and sideways tables are over the commanded fraction of
+  // max_forward / max_left: at 25, 50, 75 and 100 %, linear in between.
+  std::array<double, 4> forward_gains{1.0, 1.0, 1.0, 1.0};
+  std::array<double, 4> left_gains{1.0, 1.0, 1.0, 1.0};
   double turn_gain = 1.0;
-  // Odometry is the commanded (pre-gain) step scaled by these: the gains make
-  // the body move as commanded, and the scales take up what is left.
-  double odometry_forward_scale = 1.04;  // achieved / commanded step, measured
-  double odometry_left_scale = 1.04;
-  double odometry_turn_scale = 0.6;      // achieved / foot turn (no gain table)
+  // Odometry is the commanded (pre-gain) step times these. The foot
+  // geometry says 1: the body moves opposite to its support foot, and a
+  // support foot yawing by d turns the body by d (about whatever point).
+  double odometry_forward_scale = 1.0;
+  double odometry_left_scale = 1.0;
+  double odometry_turn_scale = 1.0;
 
   // --- Heading hold: the yaw rate measured by GyroscopeZ over each step is
   // compared with the step's turn; a fraction of the error is added to the

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sim/nao_model/Motors.hpp"
+
 namespace simswift {
 
 namespace {
@@ -35,8 +37,17 @@ Eigen::Vector3d vec(const dReal* v) { return Eigen::Vector3d(v[0], v[1], v[2]); 
 
 std::vector<ServoBank::Limits> servoLimits(const NaoModel& model) {
   std::vector<ServoBank::Limits> out;
-  for (const auto& j : model.joints())
-    out.push_back({j.lower, j.upper, j.max_velocity, j.max_effort});
+  for (const auto& j : model.joints()) {
+    ServoBank::Limits l{j.lower, j.upper, j.max_velocity, j.max_effort};
+    // Speed and stall torque come from the URDF (which agrees with the motor
+    // table, tests/nao_model); the electrical side from the motor table.
+    if (const auto m = naoJointMotor(j.name)) {
+      l.reduction = m->reduction;
+      l.torque_constant = m->motor.torqueConstant();
+      l.resistance = m->motor.resistance();
+    }
+    out.push_back(l);
+  }
   return out;
 }
 
@@ -81,6 +92,7 @@ RobotBody::RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSp
   // Hinges: body1 = child, body2 = parent, so a positive angle is the child
   // turning positively about the axis relative to its parent (NAO sign).
   joints_.resize(joints.size());
+  motor_cap_.assign(joints.size(), 0.0);
   feedback_.resize(joints.size());
   for (size_t j = 0; j < joints.size(); ++j) {
     const JointSpec& spec = joints[j];
@@ -122,6 +134,10 @@ RobotBody::RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSp
       tag->kind = GeomTag::RobotLink;
       tag->robot = robot_index;
       tag->link = static_cast<int32_t>(l);
+      const int pj = links[l].parent_joint;
+      const std::string& pjn = pj >= 0 ? joints[pj].name : std::string();
+      tag->sole = s.type == ShapeType::Box && pjn.size() >= 9 &&
+                  pjn.compare(pjn.size() - 9, 9, "AnkleRoll") == 0;
       dGeomSetData(g, tag.get());
       tags_.push_back(std::move(tag));
       geoms_.push_back(g);
@@ -217,10 +233,30 @@ void RobotBody::setCommand(const std::array<float, 25>& angles,
 
 void RobotBody::applyServos(double dt) {
   for (size_t j = 0; j < joints_.size(); ++j) {
-    const ServoBank::Drive d = servo_.drive(static_cast<int>(j), jointAngle(static_cast<int>(j)), dt);
+    const int k = static_cast<int>(j);
+    // Current and heat from the torque the motor delivered last substep: the
+    // hinge's torque, less what the joint stop took beyond the motor's cap.
+    const double cap = motor_cap_[j];
+    servo_.heat(k, std::clamp(jointTorque(k), -cap, cap), dt);
+    const ServoBank::Drive d = servo_.drive(k, jointAngle(k), dt);
+    motor_cap_[j] = d.max_torque;
     dJointSetHingeParam(joints_[j], dParamVel, d.velocity);
     dJointSetHingeParam(joints_[j], dParamFMax, d.max_torque);
+    // ODE's motor row with CFM c satisfies w = velocity - c * torque: the
+    // DC motor's torque-speed line, solved implicitly (Servo.hpp).
+    dJointSetHingeParam(joints_[j], dParamCFM, d.compliance);
   }
+}
+
+double RobotBody::anchorSeparation() const {
+  double worst = 0;
+  for (dJointID h : joints_) {
+    dVector3 a1, a2;
+    dJointGetHingeAnchor(h, a1);   // as attached to the child
+    dJointGetHingeAnchor2(h, a2);  // as attached to the parent
+    worst = std::max(worst, (vec(a1) - vec(a2)).norm());
+  }
+  return worst;
 }
 
 double RobotBody::jointAngle(int joint) const { return dJointGetHingeAngle(joints_[joint]); }

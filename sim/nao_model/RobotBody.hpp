@@ -24,6 +24,10 @@ struct GeomTag {
   enum Kind : int32_t { Ground, FieldObject, Net, Ball, RobotLink } kind = Ground;
   int32_t robot = -1;  // robot index for RobotLink
   int32_t link = -1;   // link index in the NaoModel for RobotLink
+  // A foot's sole box (the box collision shape of the link below an
+  // AnkleRoll joint): the world gives its ground contact as a patch of points
+  // over the whole sole instead of the box's corners (Contacts.cpp).
+  bool sole = false;
 };
 
 class RobotBody {
@@ -60,6 +64,12 @@ class RobotBody {
   double jointAngle(int joint) const;     // rad, model joint index
   double jointVelocity(int joint) const;  // rad/s
   double jointTorque(int joint) const;    // N*m last applied by the servo
+  double jointCurrent(int joint) const { return servo_.current(joint); }          // A, motor
+  double jointTemperature(int joint) const { return servo_.temperature(joint); }  // deg C
+  const ServoBank& servos() const { return servo_; }
+  // Largest distance (m) between a hinge's anchor as seen from its child and
+  // from its parent: how far the joint constraints give under load.
+  double anchorSeparation() const;
   dBodyID body(int link) const { return bodies_[link]; }
   dBodyID torsoBody() const { return bodies_[model_->rootLink()]; }
   Eigen::Isometry3d linkPose(int link) const;            // link frame in world
@@ -91,6 +101,7 @@ class RobotBody {
   // origin at its CoM, so link frame = body frame shifted by -com.
   std::vector<Eigen::Vector3d> com_;
   std::vector<dJointFeedback> feedback_;  // per joint, filled by ODE each step
+  std::vector<double> motor_cap_;         // per joint, the motor's torque cap last substep (N*m)
   // Link frames in the world for torso pose `torso` and joint angles (rad).
   std::vector<Eigen::Isometry3d> forwardKinematics(const Eigen::Isometry3d& torso,
                                                    const std::vector<double>& angles) const;

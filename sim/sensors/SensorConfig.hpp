@@ -36,16 +36,6 @@ struct SensorConfig {
   // rotary encoders on the joint axis, 4096 counts per turn.
   double encoder_step = 2.0 * M_PI / 4096.0;  // rad per count; <= 0 = no quantisation
 
-  // ---- Joint temperature: first-order rise toward ambient + gain * |torque|.
-  double ambient_temperature = 27.0;     // deg C
-  double temperature_per_torque = 8.0;   // deg C of steady-state rise per N*m held
-  double temperature_time_constant = 600.0;  // s (motors warm over minutes)
-
-  // ---- Joint current: |torque| / torque constant (motor constant x gear
-  // ratio x efficiency, lumped at the joint) plus the board's idle draw.
-  double torque_per_amp = 2.0;    // N*m per A at the joint
-  double idle_current = 0.01;     // A per joint
-
   // ---- FSR
   double fsr_max = 25.0;          // N, each sensor saturates here
   double fsr_unloaded = 0.5;      // N: below this total a foot's CoP reads 0
@@ -87,10 +77,6 @@ struct SensorConfig {
     nonneg("sonar.sigma", sonar.sigma);
     nonneg("encoder.sigma", encoder.sigma);
     if (!std::isfinite(encoder_step)) fail("encoder_step", "must be finite");
-    nonneg("temperature_per_torque", temperature_per_torque);
-    positive("temperature_time_constant", temperature_time_constant);
-    positive("torque_per_amp", torque_per_amp);
-    nonneg("idle_current", idle_current);
     positive("fsr_max", fsr_max);
     nonneg("fsr_unloaded", fsr_unloaded);
     nonneg("bumper_min_force", bumper_min_force);

@@ -83,7 +83,6 @@ SensorSuite::SensorSuite(const World& world, int robot, const SensorConfig& conf
     const int j = model.jointForLibagent(i);
     is_hand_[i] = j >= 0 && endsWith(model.joints()[j].name, "Hand");
   }
-  temperature_.fill(config_.ambient_temperature);
   reading_.sonar.fill(la::kSonarNoEcho);
   reset(world);
 }
@@ -117,7 +116,7 @@ void SensorSuite::update(const World& world) {
   s[S::US] = sonar_mode_;
 }
 
-void SensorSuite::updateJoints(const World& world, double dt) {
+void SensorSuite::updateJoints(const World& world, double /*dt*/) {
   const RobotBody& body = world.robot(robot_);
   const NaoModel& model = body.model();
   for (int i = 0; i < la::kNumJoints; ++i) {
@@ -128,10 +127,9 @@ void SensorSuite::updateJoints(const World& world, double dt) {
         encoder_noise_.perturb(body.jointAngle(j), config_.encoder.sigma, config_.encoder.bias, config_.noise),
         config_.encoder_step);
     reading_.joint_angles[i] = static_cast<float>(encoderValue(measured, is_hand_[i], spec.lower, spec.upper));
-    const double torque = body.jointTorque(j);
-    temperature_[i] = temperatureStep(temperature_[i], std::abs(torque), dt, config_);
-    reading_.joint_temperatures[i] = static_cast<float>(temperature_[i]);
-    reading_.joint_currents[i] = static_cast<float>(jointCurrent(torque, config_));
+    // The motor model's own figures (Servo.hpp): A and deg C.
+    reading_.joint_temperatures[i] = static_cast<float>(body.jointTemperature(j));
+    reading_.joint_currents[i] = static_cast<float>(body.jointCurrent(j));
   }
 }
 

@@ -89,7 +89,6 @@ class SensorSuite {
   std::array<FsrLayout, 2> fsr_layout_;
   std::array<double, 2> true_foot_force_{{0, 0}};
   std::array<bool, la::kNumJoints> is_hand_{};
-  std::array<double, la::kNumJoints> temperature_{};
   std::array<SonarBeam, 2> sonar_beam_;
   std::array<bool, 4> buttons_{};
   float sonar_mode_ = 0;

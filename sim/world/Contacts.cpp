@@ -19,6 +19,7 @@ namespace simswift {
 namespace {
 
 constexpr int kMaxContactsPerPair = 8;
+constexpr int kMaxSolePoints = 64;  // sole grid points (WorldConfig::sole_nx x sole_ny)
 constexpr double kBounceVelocity = 0.05;  // m/s: slower impacts do not bounce
 
 const GeomTag kUntagged{GeomTag::Ground, -1, -1};
@@ -28,10 +29,62 @@ const GeomTag& tagOf(dGeomID g) {
   return d ? *static_cast<const GeomTag*>(d) : kUntagged;
 }
 
-void nearCallback(void* data, dGeomID o1, dGeomID o2) {
-  auto* out = static_cast<std::vector<ContactCandidate>*>(data);
+struct CollideData {
+  std::vector<ContactCandidate>* out;
+  const WorldConfig* cfg;
+};
+
+// A sole box on the ground plane z = 0: one contact per grid point of the
+// box's bottom face that is below the plane (depth = how far below). The
+// box's own collider returns at most its 4 corners, so a sole tilted by a
+// fraction of a degree stands on an edge; the grid spreads the load over
+// the whole sole (the FSRs read it) and, with the springs' give, keeps the
+// stance foot flat.
+int soleContacts(dGeomID sole, dGeomID plane, const WorldConfig& cfg, dContactGeom* out, int max) {
+  dVector3 half;
+  dGeomBoxGetLengths(sole, half);
+  for (double& h : half) h *= 0.5;
+  const dReal* p = dGeomGetPosition(sole);
+  const dReal* r = dGeomGetRotation(sole);  // 3x4 row-major
+  // Which face is the bottom: the box axis most nearly vertical.
+  int up = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::fabs(r[8 + k]) > std::fabs(r[8 + up])) up = k;
+  const double sign = r[8 + up] > 0 ? -1.0 : 1.0;  // toward the ground
+  const int a = (up + 1) % 3, b = (up + 2) % 3;
+  int n = 0;
+  for (int i = 0; i < cfg.sole_nx; ++i) {
+    for (int j = 0; j < cfg.sole_ny; ++j) {
+      if (n >= max) return n;
+      double local[3];
+      local[up] = sign * half[up];
+      local[a] = half[a] * (cfg.sole_nx > 1 ? -1.0 + 2.0 * i / (cfg.sole_nx - 1) : 0.0);
+      local[b] = half[b] * (cfg.sole_ny > 1 ? -1.0 + 2.0 * j / (cfg.sole_ny - 1) : 0.0);
+      double w[3];
+      for (int k = 0; k < 3; ++k) w[k] = p[k] + r[4 * k] * local[0] + r[4 * k + 1] * local[1] + r[4 * k + 2] * local[2];
+      if (w[2] >= 0) continue;
+      dContactGeom& c = out[n++];
+      c.pos[0] = w[0];
+      c.pos[1] = w[1];
+      c.pos[2] = w[2];
+      c.pos[3] = 0;
+      c.normal[0] = c.normal[1] = 0;
+      c.normal[2] = 1;  // moving the sole (g1) up separates
+      c.normal[3] = 0;
+      c.depth = -w[2];
+      c.g1 = sole;
+      c.g2 = plane;
+      c.side1 = c.side2 = -1;
+    }
+  }
+  return n;
+}
+
+void nearCallback(void* raw, dGeomID o1, dGeomID o2) {
+  auto* data = static_cast<CollideData*>(raw);
+  auto* out = data->out;
   if (dGeomIsSpace(o1) || dGeomIsSpace(o2)) {
-    dSpaceCollide2(o1, o2, data, &nearCallback);
+    dSpaceCollide2(o1, o2, raw, &nearCallback);
     return;
   }
   dBodyID b1 = dGeomGetBody(o1), b2 = dGeomGetBody(o2);
@@ -40,6 +93,16 @@ void nearCallback(void* data, dGeomID o1, dGeomID o2) {
   const GeomTag& t2 = tagOf(o2);
   if (t1.kind == GeomTag::RobotLink && t2.kind == GeomTag::RobotLink && t1.robot == t2.robot) {
     return;  // own links (cannot happen with one space per robot; kept as a guard)
+  }
+  // Sole on the carpet: the contact patch (the ground is the plane z = 0).
+  const bool sole_ground = (t1.sole && t2.kind == GeomTag::Ground && dGeomGetClass(o2) == dPlaneClass) ||
+                           (t2.sole && t1.kind == GeomTag::Ground && dGeomGetClass(o1) == dPlaneClass);
+  if (sole_ground && dGeomGetClass(t1.sole ? o1 : o2) == dBoxClass) {
+    dContactGeom cg[kMaxSolePoints];
+    const int n = t1.sole ? soleContacts(o1, o2, *data->cfg, cg, kMaxSolePoints)
+                          : soleContacts(o2, o1, *data->cfg, cg, kMaxSolePoints);
+    for (int i = 0; i < n; ++i) out->push_back(t1.sole ? ContactCandidate{cg[i], t1, t2} : ContactCandidate{cg[i], t2, t1});
+    return;
   }
   dContactGeom cg[kMaxContactsPerPair];
   int n = dCollide(o1, o2, kMaxContactsPerPair, cg, sizeof(dContactGeom));
@@ -65,7 +128,7 @@ void springSurface(dSurfaceParameters& s, double k, double c, double dt) {
 }
 
 dSurfaceParameters surfaceFor(const GeomTag& a, const GeomTag& b, const FieldConfig& field,
-                              double dt) {
+                              const WorldConfig& cfg, double dt) {
   const SurfaceConfig& sc = field.surface;
   const BallConfig& ball = field.ball;
   dSurfaceParameters s{};
@@ -108,6 +171,11 @@ dSurfaceParameters surfaceFor(const GeomTag& a, const GeomTag& b, const FieldCon
   }
   const bool ground = a.kind == GeomTag::Ground || b.kind == GeomTag::Ground;
   if (ground) s.mu = sc.friction;  // feet (or any link) on the carpet
+  if (ground && (a.sole || b.sole)) {
+    // One point of the sole grid: its share of the sole's spring and damper.
+    const double n = static_cast<double>(std::max(1, cfg.sole_nx * cfg.sole_ny));
+    springSurface(s, cfg.sole_stiffness / n, cfg.sole_damping / n, dt);
+  }
   return s;
 }
 
@@ -116,7 +184,8 @@ dSurfaceParameters surfaceFor(const GeomTag& a, const GeomTag& b, const FieldCon
 void World::Impl::collide(dWorldID world, dSpaceID space, const FieldConfig& field,
                           const WorldConfig& cfg, double dt) {
   candidates.clear();
-  dSpaceCollide(space, &candidates, &nearCallback);
+  CollideData data{&candidates, &cfg};
+  dSpaceCollide(space, &data, &nearCallback);
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const ContactCandidate& x, const ContactCandidate& y) { return sortKey(x) < sortKey(y); });
 
@@ -132,7 +201,7 @@ void World::Impl::collide(dWorldID world, dSpaceID space, const FieldConfig& fie
   for (const ContactCandidate& c : candidates) {
     dContact contact{};
     contact.geom = c.geom;
-    contact.surface = surfaceFor(c.a, c.b, field, dt);
+    contact.surface = surfaceFor(c.a, c.b, field, cfg, dt);
     dBodyID b1 = dGeomGetBody(c.geom.g1), b2 = dGeomGetBody(c.geom.g2);
     GeomTag first = c.a, second = c.b;
     if (!b1) {
@@ -161,7 +230,6 @@ void World::Impl::collide(dWorldID world, dSpaceID space, const FieldConfig& fie
       }
     }
   }
-  (void)cfg;
 }
 
 void World::Impl::gatherContacts(double scale, std::vector<LinkContact>& out) const {

@@ -26,7 +26,7 @@ struct WorldConfig {
   Solver solver = Solver::Quick;     // see World.cpp for why (measured)
   int substeps = 2;                  // physics steps per 10 ms tick
   int quick_iterations = 20;
-  double erp = 0.2;
+  double erp = 0.8;
   double cfm = 1e-5;
   double gravity = 9.81;             // m/s^2
   double blowup_linear_speed = 50;   // m/s: beyond this a body has blown up
@@ -34,6 +34,12 @@ struct WorldConfig {
   // m: a body farther than this from the centre spot (or higher) has blown
   // up; placements beyond it are refused.
   double max_distance = 1000;
+  // The sole on the carpet (Contacts.cpp): a grid of sole_nx x sole_ny
+  // points over the sole box's bottom face (corners included), each a
+  // damped spring; together the sole's vertical stiffness and damping.
+  int sole_nx = 4, sole_ny = 3;
+  double sole_stiffness = 2.0e5;     // N/m, whole sole: 52 N (the NAO) sinks 0.26 mm
+  double sole_damping = 2.0e3;       // N*s/m, whole sole: about critical for 5.3 kg
   ServoConfig servo;
 };
 

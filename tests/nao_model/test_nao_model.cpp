@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "agent/libagent/AgentShared.hpp"
+#include "sim/nao_model/Motors.hpp"
 #include "sim/nao_model/NaoModel.hpp"
 
 using simswift::ModelError;
@@ -200,4 +201,24 @@ TEST(NaoModel, PoseIsometry) {
   p.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
   const Eigen::Vector3d q = p.isometry() * Eigen::Vector3d(1, 0, 0);
   EXPECT_NEAR((q - Eigen::Vector3d(1, 3, 3)).norm(), 0, 1e-12);
+}
+
+// The URDF's speed and effort limits are the motor table's joint-side
+// no-load speed and stall torque (sim/nao_model/Motors.hpp, facts.md 1).
+TEST(NaoModel, UrdfLimitsAgreeWithTheMotorTable) {
+  const simswift::NaoModel m = simswift::NaoModel::loadUrdf(kUrdfPath);
+  int with_motor = 0;
+  for (const auto& j : m.joints()) {
+    const auto motor = simswift::naoJointMotor(j.name);
+    if (!motor) continue;
+    ++with_motor;
+    EXPECT_NEAR(j.max_velocity, motor->noLoadSpeed(), 0.01 * j.max_velocity) << j.name;
+    EXPECT_NEAR(j.max_effort, motor->stallTorque(), 0.03 * j.max_effort) << j.name;
+  }
+  EXPECT_EQ(with_motor, 22);  // all but the wrists and hands
+  // Electrical figures from the 12 V winding: RE-Max 24 about 14.3 mN*m/A, 2.9 ohm.
+  const auto knee = simswift::naoJointMotor("LKneePitch");
+  ASSERT_TRUE(knee);
+  EXPECT_NEAR(knee->motor.torqueConstant(), 0.0143, 0.0002);
+  EXPECT_NEAR(knee->motor.resistance(), 2.88, 0.03);
 }

@@ -214,8 +214,12 @@ TEST(RobotBody, StepTargetRespectsMaxSpeedAndSettles) {
   for (int k = 0; k < 3; ++k) {
     const auto& spec = model().joints()[joint(cases[k].name)];
     SCOPED_TRACE(cases[k].name);
-    EXPECT_LE(max_speed[k], spec.max_velocity * 1.02);  // rad/s, +2 %
-    EXPECT_GT(max_speed[k], spec.max_velocity * 0.9);   // and it did go at full speed
+    // The no-load speed is the motor's ceiling: the arm joints move together
+    // and carry their links' weight, so a substep may be pushed a little past
+    // it (the motor then brakes) or stay well below it (torque-speed line).
+    EXPECT_LE(max_speed[k], spec.max_velocity * 1.1);  // rad/s
+    // HeadYaw turns about the vertical, unloaded: close to no-load speed.
+    EXPECT_GT(max_speed[k], spec.max_velocity * (k == 0 ? 0.9 : 0.7));
     EXPECT_NEAR(r.jointAngle(joint(cases[k].name)), cases[k].target, 1 * kDeg);
     std::cout << "  " << cases[k].name << ": peak " << max_speed[k] << " rad/s (max "
               << spec.max_velocity << "), final error "
@@ -237,7 +241,9 @@ TEST(RobotBody, StopsAtLimitWhenCommandedPast) {
   }
   EXPECT_EQ(r.commandStats().clamped_angles, 1);
   EXPECT_LT(highest, upper + 1 * kDeg);
-  EXPECT_NEAR(r.jointAngle(joint("HeadYaw")), upper, 1 * kDeg);
+  // Settles at the stop within 2 deg (the motor board's position loop is
+  // proportional only: torque = kp * error * stall / no-load speed).
+  EXPECT_NEAR(r.jointAngle(joint("HeadYaw")), upper, 2 * kDeg);
 }
 
 TEST(RobotBody, HingeStopHoldsALimpJointAgainstTorque) {
@@ -314,5 +320,13 @@ TEST(RobotBody, JointTorqueBalancesGravity) {
   }
   EXPECT_GT(moment, 0.3);  // the arm's weight is well forward of the shoulder
   EXPECT_NEAR(r.jointTorque(sp), -moment, 0.05 * moment);
-  EXPECT_NEAR(r.jointAngle(sp), 0.0, 1 * kDeg);
+  // The position loop is proportional (Servo.hpp): holding torque tau needs
+  // an error of tau * compliance / kp, i.e. the arm sags that much.
+  const auto& servo = r.servos();
+  const double compliance = servo.config().torque_speed_line
+                                ? servo.limits(sp).max_velocity /
+                                      (servo.config().gear_efficiency * servo.limits(sp).max_effort)
+                                : 0.0;  // the hard velocity motor: no sag
+  const double sag = moment * compliance / servo.config().kp;  // rad, downward = +pitch
+  EXPECT_NEAR(r.jointAngle(sp), sag, 0.2 * sag + 1 * kDeg);
 }

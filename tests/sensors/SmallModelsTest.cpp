@@ -1,4 +1,4 @@
-// Joint temperature/current, hand mapping, bumpers, battery, config checks.
+// Hand mapping, bumpers, battery, config checks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,25 +9,6 @@
 #include "sim/sensors/SensorConfig.hpp"
 
 using namespace simswift::sensors;
-
-TEST(JointModels, TemperatureRisesSlowlyTowardTheLoadedSteadyState) {
-  SensorConfig c;
-  double t = c.ambient_temperature;
-  t = temperatureStep(t, 2.0, 0.01, c);
-  EXPECT_GT(t, c.ambient_temperature);
-  EXPECT_LT(t - c.ambient_temperature, 0.01);  // invisible per tick
-  for (int i = 0; i < 360000; ++i) t = temperatureStep(t, 2.0, 0.01, c);  // one hour
-  EXPECT_NEAR(t, c.ambient_temperature + 2.0 * c.temperature_per_torque, 0.1);
-  // Unloaded, it cools back.
-  for (int i = 0; i < 360000; ++i) t = temperatureStep(t, 0.0, 0.01, c);
-  EXPECT_NEAR(t, c.ambient_temperature, 0.1);
-}
-
-TEST(JointModels, CurrentFromTorque) {
-  SensorConfig c;
-  EXPECT_DOUBLE_EQ(jointCurrent(0, c), c.idle_current);
-  EXPECT_DOUBLE_EQ(jointCurrent(-3.0, c), c.idle_current + 3.0 / c.torque_per_amp);
-}
 
 TEST(JointModels, HandReadsFractionOpen) {
   EXPECT_DOUBLE_EQ(encoderValue(0.5, true, 0.0, 1.0), 0.5);
