@@ -117,7 +117,9 @@ struct MotionRequest {
 
 // ---------------------------------------------------------------- outputs
 
-enum class Posture : int32_t {
+// What the body is doing, as Motion sees it. (Not a joint pose: those are
+// agent::program::Posture, the stand / crouch / limp poses a program holds.)
+enum class BodyState : int32_t {
   STANDING = 0,
   WALKING,
   KICKING,
@@ -128,12 +130,12 @@ enum class Posture : int32_t {
   FALLEN_SIDEWAYS,
   LIMP,             // DEAD / LIMP / CROUCH on request
 };
-const char* postureName(Posture p);
+const char* bodyStateName(BodyState p);
 
 // Written by Motion, read by everyone.
 struct MotionState {
   Odometry odometry;
-  Posture posture = Posture::STANDING;
+  BodyState posture = BodyState::STANDING;
   Foot support_foot = Foot::LEFT;
   ActionType active = ActionType::NONE;  // the generator currently running
   bool walk_stepping = false;            // the walk is taking steps
@@ -181,17 +183,17 @@ inline const char* actionName(ActionType t) {
   }
 }
 
-inline const char* postureName(Posture p) {
+inline const char* bodyStateName(BodyState p) {
   switch (p) {
-    case Posture::STANDING: return "STANDING";
-    case Posture::WALKING: return "WALKING";
-    case Posture::KICKING: return "KICKING";
-    case Posture::GETTING_UP: return "GETTING_UP";
-    case Posture::FALLING: return "FALLING";
-    case Posture::FALLEN_FORWARD: return "FALLEN_FORWARD";
-    case Posture::FALLEN_BACKWARD: return "FALLEN_BACKWARD";
-    case Posture::FALLEN_SIDEWAYS: return "FALLEN_SIDEWAYS";
-    case Posture::LIMP: return "LIMP";
+    case BodyState::STANDING: return "STANDING";
+    case BodyState::WALKING: return "WALKING";
+    case BodyState::KICKING: return "KICKING";
+    case BodyState::GETTING_UP: return "GETTING_UP";
+    case BodyState::FALLING: return "FALLING";
+    case BodyState::FALLEN_FORWARD: return "FALLEN_FORWARD";
+    case BodyState::FALLEN_BACKWARD: return "FALLEN_BACKWARD";
+    case BodyState::FALLEN_SIDEWAYS: return "FALLEN_SIDEWAYS";
+    case BodyState::LIMP: return "LIMP";
   }
   return "?";
 }

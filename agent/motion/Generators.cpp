@@ -63,7 +63,7 @@ JointArray walkStandAngles(const WalkConfig& cfg) {
   Walk2014Generator walk(cfg);
   libagent::SensorValues s{};
   libagent::JointValues out{};
-  walk.tick(s, 0.01, out);
+  walk.tick(s, kMotionTick, out);
   JointArray a{};
   for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = out.angles[i];
   a[J::HeadYaw] = a[J::HeadPitch] = 0;

@@ -15,7 +15,7 @@ using JointLimit = nao::JointLimit;
 using nao::jointLimits;  // indexed by libagent::Joints::JointCode
 
 // The Motion thread's tick (s): commands move at most max_velocity * tick.
-constexpr double kMotionTick = 0.010;
+constexpr double kMotionTick = nao::kMotionTickSeconds;  // s
 
 // Clips commanded angles to the joint limits and to the per-tick speed
 // limit, relative to the previous clipped command. The first call (or after

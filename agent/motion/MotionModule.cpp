@@ -8,7 +8,7 @@ namespace agent::motion {
 namespace J = libagent::Joints;
 namespace S = libagent::Sensors;
 using blackboard::ActionType;
-using blackboard::Posture;
+using blackboard::BodyState;
 
 MotionModule::MotionModule(blackboard::Blackboard& board, const MotionConfig& cfg)
     : board_(board), cfg_(cfg), walk_(cfg.walk), kick_(cfg.walk, cfg.kick) {
@@ -99,22 +99,22 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
         walk_.tick(sensors, dt, out);
         stepping = walk_.stepping();
         support_ = walk_.leftIsSwing() ? blackboard::Foot::RIGHT : blackboard::Foot::LEFT;
-        posture_ = stepping || walk_.state() != Walk2014Generator::State::Standing ? Posture::WALKING
-                                                                                     : Posture::STANDING;
+        posture_ = stepping || walk_.state() != Walk2014Generator::State::Standing ? BodyState::WALKING
+                                                                                     : BodyState::STANDING;
       } else if (mode_ == Mode::Kick) {
         kick_.tick(sensors, dt, out);
         support_ = kick_.foot() == blackboard::Foot::RIGHT ? blackboard::Foot::LEFT : blackboard::Foot::RIGHT;
-        posture_ = Posture::KICKING;
+        posture_ = BodyState::KICKING;
       } else if (mode_ == Mode::Crouch) {
         keyframes_.tick(dt, out);
-        posture_ = Posture::LIMP;
+        posture_ = BodyState::LIMP;
       }
       break;
     }
     case Mode::Kick:
       kick_.tick(sensors, dt, out);
       support_ = kick_.foot() == blackboard::Foot::RIGHT ? blackboard::Foot::LEFT : blackboard::Foot::RIGHT;
-      posture_ = Posture::KICKING;
+      posture_ = BodyState::KICKING;
       if (kick_.done()) {
         walk_.reset();
         mode_ = Mode::Walk;
@@ -122,13 +122,13 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
       break;
     case Mode::Crouch:
       keyframes_.tick(dt, out);
-      posture_ = Posture::LIMP;
+      posture_ = BodyState::LIMP;
       if (want != ActionType::CROUCH && want != ActionType::LIMP) startTransitionToStand(out);
       if (want == ActionType::LIMP) mode_ = Mode::Limp;
       break;
     case Mode::Transition:
       keyframes_.tick(dt, out);
-      posture_ = Posture::STANDING;
+      posture_ = BodyState::STANDING;
       if (keyframes_.done()) {
         walk_.reset();
         mode_ = Mode::Walk;
@@ -136,12 +136,12 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
       break;
     case Mode::Limp:
       limpJoints(sensors, cfg_.limp_stiffness, out);
-      posture_ = Posture::LIMP;
+      posture_ = BodyState::LIMP;
       if (want != ActionType::LIMP) startTransitionToStand(out);
       break;
     case Mode::Dead:
       limpJoints(sensors, -1.0f, out);
-      posture_ = Posture::LIMP;
+      posture_ = BodyState::LIMP;
       if (want != ActionType::DEAD) {
         if (tilt > cfg_.fall_angle) {
           mode_ = Mode::Falling;
@@ -154,7 +154,7 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
     case Mode::Falling:
       // The safe fall: let go so no motor fights the impact.
       limpJoints(sensors, cfg_.falling_stiffness, out);
-      posture_ = Posture::FALLING;
+      posture_ = BodyState::FALLING;
       still_time_ = rate < cfg_.settle_rate ? still_time_ + dt : 0.0;
       if (still_time_ >= cfg_.settle_time) {
         if (tilt > cfg_.fallen_angle) {
@@ -169,7 +169,7 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
     case Mode::Fallen: {
       limpJoints(sensors, cfg_.falling_stiffness, out);
       const bool sideways = std::fabs(ax) > std::fabs(ay);
-      posture_ = sideways ? Posture::FALLEN_SIDEWAYS : ay > 0 ? Posture::FALLEN_FORWARD : Posture::FALLEN_BACKWARD;
+      posture_ = sideways ? BodyState::FALLEN_SIDEWAYS : ay > 0 ? BodyState::FALLEN_FORWARD : BodyState::FALLEN_BACKWARD;
       const bool asked = want == ActionType::GETUP_FRONT || want == ActionType::GETUP_BACK;
       if (want != ActionType::LIMP && (asked || cfg_.auto_getup) && getups_since_up_ < cfg_.max_getup_attempts) {
         // Face down (pitched forward, AngleY > 0) gets up from the front. An
@@ -196,7 +196,7 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
       out.angles[J::HeadYaw] = 0;
       out.angles[J::HeadPitch] = 0;
       out.stiffnesses[J::HeadYaw] = out.stiffnesses[J::HeadPitch] = 0.8f;
-      posture_ = Posture::GETTING_UP;
+      posture_ = BodyState::GETTING_UP;
       // Rising from the crouch and tipping over: abort into the safe limp fall
       // now rather than finishing the stand; the fall handling retries.
       if (!keyframes_.done() && keyframes_.frame() + cfg_.getup_rise_frames >= keyframes_.frameCount() &&
@@ -208,7 +208,7 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
           getups_since_up_ = 0;
           walk_.reset();
           mode_ = Mode::Walk;
-          posture_ = Posture::STANDING;
+          posture_ = BodyState::STANDING;
         } else {
           mode_ = Mode::Falling;  // it did not work: fall safely and retry
           still_time_ = 0;

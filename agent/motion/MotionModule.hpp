@@ -68,7 +68,7 @@ class MotionModule : public agent::program::MotionGenerator {
   Mode mode_ = Mode::Walk;
   blackboard::BodyCommand body_;      // last non-NONE body command
   blackboard::Odometry odometry_;
-  blackboard::Posture posture_ = blackboard::Posture::STANDING;
+  blackboard::BodyState posture_ = blackboard::BodyState::STANDING;
   blackboard::Foot support_ = blackboard::Foot::LEFT;
   libagent::JointValues last_cmd_{};
   bool have_last_ = false;

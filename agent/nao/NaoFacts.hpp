@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "agent/libagent/AgentShared.hpp"
 
@@ -48,7 +49,15 @@ constexpr const CameraMount& cameraMount(Camera c) { return c == Camera::Top ? k
 // Both cameras: the same lens.
 constexpr double kCameraHorizontalFov = 60.9 * kDeg;  // rad
 constexpr double kCameraVerticalFov = 47.6 * kDeg;    // rad
-constexpr double kCameraRateHz = 30.0;                // frames per second (Perception's rate)
+constexpr int kCameraFramesPerSecond = 30;            // both cameras; Perception's rate
+constexpr double kCameraRateHz = kCameraFramesPerSecond;  // Hz
+
+// ---------------------------------------------------------------- timing
+// The DCM's cycle: sensors in, joint commands out, and the Motion thread's
+// tick (facts.md section 2). The one home of the 10 ms tick for robot code
+// and simulator alike.
+constexpr int64_t kMotionTickUs = 10000;                        // us (100 Hz)
+constexpr double kMotionTickSeconds = kMotionTickUs * 1e-6;     // s
 
 // ---------------------------------------------------------------- FSRs
 // Order as in libagent: FrontLeft, FrontRight, RearLeft, RearRight.

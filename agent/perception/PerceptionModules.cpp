@@ -4,11 +4,11 @@
 
 namespace agent::perception {
 
-using blackboard::Posture;
+using blackboard::BodyState;
 
-bool postureIsDown(Posture p) {
-  return p == Posture::FALLING || p == Posture::FALLEN_FORWARD || p == Posture::FALLEN_BACKWARD ||
-         p == Posture::FALLEN_SIDEWAYS || p == Posture::GETTING_UP;
+bool postureIsDown(BodyState p) {
+  return p == BodyState::FALLING || p == BodyState::FALLEN_FORWARD || p == BodyState::FALLEN_BACKWARD ||
+         p == BodyState::FALLEN_SIDEWAYS || p == BodyState::GETTING_UP;
 }
 
 void odometryStep(const blackboard::Odometry& from, const blackboard::Odometry& to, double* forward, double* left,

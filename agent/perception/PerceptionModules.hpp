@@ -8,7 +8,7 @@
 namespace agent::perception {
 
 // Motion's posture says the robot is falling, lying or getting up.
-bool postureIsDown(blackboard::Posture p);
+bool postureIsDown(blackboard::BodyState p);
 
 // frame + motion (posture) -> vision.
 class VisionAdapterModule : public program::Module {

@@ -6,35 +6,34 @@
 
 namespace simswift::runner {
 
-namespace {
-std::string fmt(const char* f, double v) {
+std::string formatNumber(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
-std::string hex64(uint64_t v) {
+
+std::string hashHex(uint64_t hash) {
   char buf[24];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash));
   return buf;
 }
-}  // namespace
 
 std::string RunStats::summary() const {
   std::ostringstream s;
-  s << "sim " << fmt("%.2f", sim_s) << " s | wall " << fmt("%.2f", wall_s) << " s | "
-    << fmt("%.1f", real_time_factor) << "x real time | falls " << falls << " | blowups " << blowups;
+  s << "sim " << formatNumber("%.2f", sim_s) << " s | wall " << formatNumber("%.2f", wall_s) << " s | "
+    << formatNumber("%.1f", real_time_factor) << "x real time | falls " << falls << " | blowups " << blowups;
   if (nan_commands || clamped_angles || clamped_stiffness)
     s << " | nan " << nan_commands << " clamped " << clamped_angles << "+" << clamped_stiffness;
   if (skipped_cycles) s << " | skipped " << skipped_cycles;
-  s << " | hash " << hex64(hash);
+  s << " | hash " << hashHex(hash);
   return s.str();
 }
 
 std::string RunStats::robotLines() const {
   std::ostringstream s;
   for (const RobotEnd& r : robots)
-    s << "  t" << r.team << "p" << r.player << ": x " << fmt("%.3f", r.x) << " m  y " << fmt("%.3f", r.y)
-      << " m  theta " << fmt("%.3f", r.theta) << " rad  falls " << r.falls << (r.down ? "  down" : "  up") << "\n";
+    s << "  t" << r.team << "p" << r.player << ": x " << formatNumber("%.3f", r.x) << " m  y " << formatNumber("%.3f", r.y)
+      << " m  theta " << formatNumber("%.3f", r.theta) << " rad  falls " << r.falls << (r.down ? "  down" : "  up") << "\n";
   return s.str();
 }
 

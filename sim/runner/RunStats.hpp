@@ -35,4 +35,9 @@ struct RunStats {
 };
 
 
+// The run's number formats, shared by the summary and the runner's messages:
+// printf-style `f` applied to v, and a state hash as 16 hex digits.
+std::string formatNumber(const char* f, double v);
+std::string hashHex(uint64_t hash);
+
 }  // namespace simswift::runner

@@ -31,16 +31,6 @@ using agent::libagent::SyncMode;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-std::string hex64(uint64_t v) {
-  char buf[24];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
 // Ankle damping gain (s) of the builtin standing program; see ScriptedMotion.
 constexpr float kBuiltinAnkleGyroGain = 0.05f;
 }  // namespace
@@ -322,7 +312,7 @@ bool Runner::watchdogArmed() const { return scenario_.watchdog_s > 0 && !tracerA
 void Runner::watchdogFail(const Robot& r, const char* thread) const {
   std::ostringstream m;
   m << "robot " << r.tag << ": " << thread << " thread did not answer within " << scenario_.watchdog_s << " s (tick "
-    << world_->tick() << ", sim " << fmt("%.2f", world_->time()) << " s)";
+    << world_->tick() << ", sim " << formatNumber("%.2f", world_->time()) << " s)";
   if (r.program && !r.program->error().empty()) m << ": " << r.program->error();
   throw WatchdogError(m.str());
 }
@@ -392,7 +382,7 @@ void Runner::tick() {
     }
   }
   const int64_t tick = world_->tick();
-  const int64_t t_us = tick * 10000;  // exact: 10 ms per tick
+  const int64_t t_us = tick * agent::nao::kMotionTickUs;  // exact integer time
   // 3.
   for (auto& rp : robots_) {
     Robot& r = *rp;
@@ -429,7 +419,7 @@ void Runner::tick() {
   }
 
   // 6. Integer arithmetic: frame k is due once t_us * 30 / 1e6 reaches k.
-  const int64_t frame = t_us * 30 / 1000000;
+  const int64_t frame = t_us * agent::nao::kCameraFramesPerSecond / 1000000;
   if (frame > last_frame_) {
     last_frame_ = frame;
     al::CameraFrame f{};
@@ -539,7 +529,7 @@ RunStats Runner::run(const RunOptions& opt) {
     // wall clock (pacing, real-time factor) counts from its end.
     if (t == 1) wall_start_ = Clock::now() - std::chrono::milliseconds(10);
     if (opt.print_hash_every > 0 && t % opt.print_hash_every == 0)
-      std::printf("tick %lld hash %s\n", static_cast<long long>(t), hex64(world_->stateHash()).c_str());
+      std::printf("tick %lld hash %s\n", static_cast<long long>(t), hashHex(world_->stateHash()).c_str());
     if (progress_every && t % progress_every == 0 && t < total) {
       const RunStats s = stats();
       std::fprintf(stderr, "  sim %.1f / %.1f s | wall %.1f s | %.1fx real time\n", s.sim_s, scenario_.duration,

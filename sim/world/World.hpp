@@ -13,13 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "agent/nao/NaoFacts.hpp"
 #include "sim/nao_model/NaoModel.hpp"
 #include "sim/nao_model/RobotBody.hpp"
 #include "sim/world/FieldConfig.hpp"
 
 namespace simswift {
 
-constexpr double kTickSeconds = 0.010;  // the NAO's DCM / Motion cycle
+constexpr double kTickSeconds = agent::nao::kMotionTickSeconds;  // s: the NAO's DCM / Motion cycle
 
 struct WorldConfig {
   enum class Solver { Exact, Quick };

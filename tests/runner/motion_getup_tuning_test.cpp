@@ -125,7 +125,7 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
       if (window_h.size() == 50) best_h = std::max(best_h, *std::min_element(window_h.begin(), window_h.end()));
     }
     if (one && h.motion().getupAttempts() >= 1 && h.motion().mode() != agent::motion::MotionModule::Mode::Getup &&
-        !(fell && st.posture == agent::blackboard::Posture::STANDING))
+        !(fell && st.posture == agent::blackboard::BodyState::STANDING))
       break;
     if (!quiet && i % 10 == 0)
     {
@@ -137,7 +137,7 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
                   q[J::LElbowRoll], c[J::LElbowRoll], q[J::LHipYawPitch], c[J::LHipYawPitch], q[J::LHipPitch],
                   c[J::LHipPitch], q[J::LKneePitch], c[J::LKneePitch], q[J::LAnklePitch], c[J::LAnklePitch]);
     }
-    if (fell && st.posture == agent::blackboard::Posture::STANDING && h.torsoHeight() > 0.25) {
+    if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > 0.25) {
       up_at = i * 0.01;
       break;
     }

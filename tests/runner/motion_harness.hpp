@@ -15,8 +15,8 @@
 namespace motion_test {
 
 // Down or on the way up: the postures a pushed-over robot passes through.
-inline bool downOrGettingUp(agent::blackboard::Posture p) {
-  using P = agent::blackboard::Posture;
+inline bool downOrGettingUp(agent::blackboard::BodyState p) {
+  using P = agent::blackboard::BodyState;
   return p == P::FALLEN_FORWARD || p == P::FALLEN_BACKWARD || p == P::FALLEN_SIDEWAYS || p == P::GETTING_UP;
 }
 

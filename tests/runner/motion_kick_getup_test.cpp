@@ -84,7 +84,7 @@ void getupTrials(bool forwards) {
       const float* sv = h.checked().last_sensed.sensors;
       const bool upright = std::fabs(sv[agent::libagent::Sensors::InertialSensor_AngleX]) < 0.3f &&
                            std::fabs(sv[agent::libagent::Sensors::InertialSensor_AngleY]) < 0.3f;
-      if (fell && st.posture == agent::blackboard::Posture::STANDING && h.torsoHeight() > 0.25 && upright) {
+      if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > 0.25 && upright) {
         up_again = true;
         up_at = (i + 1) * 0.01;
       }
@@ -124,13 +124,13 @@ TEST(MotionPhysics, PushedOverIsDetectedAndFallsLimp) {
     for (int i = 0; i < 300; ++i) {
       h.run(0.01);
       const auto st = h.state();
-      if (st.posture == agent::blackboard::Posture::FALLING) {
+      if (st.posture == agent::blackboard::BodyState::FALLING) {
         limp_while_falling = true;
         for (int j = 0; j < agent::libagent::kNumJoints; ++j)
           if (h.checked().last_command.stiffnesses[j] > 0.0f) limp_while_falling = false;
       }
-      if (st.posture == (forwards ? agent::blackboard::Posture::FALLEN_FORWARD
-                                  : agent::blackboard::Posture::FALLEN_BACKWARD))
+      if (st.posture == (forwards ? agent::blackboard::BodyState::FALLEN_FORWARD
+                                  : agent::blackboard::BodyState::FALLEN_BACKWARD))
         lying_reported = true;
     }
     EXPECT_TRUE(limp_while_falling) << (forwards ? "forward" : "backward");

@@ -162,7 +162,7 @@ TEST(MotionModule, WalksPublishesOdometryAndStaysWithinLimits) {
     }
   }
   const bb::MotionState st = board.motion.read();
-  EXPECT_EQ(st.posture, bb::Posture::WALKING);
+  EXPECT_EQ(st.posture, bb::BodyState::WALKING);
   EXPECT_TRUE(st.walk_stepping);
   EXPECT_GT(st.odometry.forward, 500);  // mm over ~4.5 s of stepping
   EXPECT_NEAR(st.odometry.x, st.odometry.forward, 1e-6);
@@ -183,7 +183,7 @@ TEST(MotionModule, FallGoesLimpThenGetsUpFromTheRightSide) {
   s.sensors[S::InertialSensor_GyrY] = 3.0f;
   motion.tickSeconds(s, 0.5, cmd);
   EXPECT_EQ(motion.mode(), MotionModule::Mode::Falling);
-  EXPECT_EQ(board.motion.read().posture, bb::Posture::FALLING);
+  EXPECT_EQ(board.motion.read().posture, bb::BodyState::FALLING);
   for (int i = 0; i < agent::libagent::kNumJoints; ++i) EXPECT_LE(cmd.stiffnesses[i], 0.0f);
   // Lying face down and still: the front get-up starts.
   s.sensors[S::InertialSensor_AngleY] = 1.5f;
@@ -197,7 +197,7 @@ TEST(MotionModule, FallGoesLimpThenGetsUpFromTheRightSide) {
   for (int i = 0; i < 800 && motion.mode() == MotionModule::Mode::Getup; ++i, t += 0.01)
     motion.tickSeconds(s, t, cmd);
   EXPECT_EQ(motion.mode(), MotionModule::Mode::Walk);
-  EXPECT_EQ(board.motion.read().posture, bb::Posture::STANDING);
+  EXPECT_EQ(board.motion.read().posture, bb::BodyState::STANDING);
   EXPECT_EQ(motion.getupAttempts(), 1);
 }
 
