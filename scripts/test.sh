@@ -36,6 +36,7 @@ san_cmake=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "
            -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF)
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 
 cmake -S . -B build-asan -DSIMSWIFT_SANITIZE=address,undefined "${san_cmake[@]}" >/dev/null

@@ -555,10 +555,11 @@ void Runner::shutdown() {
   stopped_ = true;
   for (auto& r : robots_)
     if (r && r->host) r->host->shutdown();
+  // The programs stay (threads joined) until the Runner goes: their
+  // Blackboards and steps can still be read after run(). A program is
+  // destroyed before its host (Robot's member order).
   for (auto& r : robots_)
     if (r && r->program) r->program->join();
-  for (auto& r : robots_)
-    if (r) r->program.reset();
 }
 
 }  // namespace simswift::runner

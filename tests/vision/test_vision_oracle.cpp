@@ -487,16 +487,22 @@ TEST_F(OneRobot, NothingSeenWhileLying) {
 }
 
 // The runner fills every robot's frame: a Perception thread sees the ball.
-struct BallProbe : agent::program::PerceptionStep {
+// The counts outlive the probe: Runner::run() ends the robot programs, and
+// with them their Perception steps.
+struct ProbeCounts {
   std::atomic<int> frames{0}, with_ball{0}, bad{0};
+};
+struct BallProbe : agent::program::PerceptionStep {
+  explicit BallProbe(std::shared_ptr<ProbeCounts> c) : counts(std::move(c)) {}
+  std::shared_ptr<ProbeCounts> counts;
   void step(const al::CameraFrame& f) override {
     ++frames_;
-    ++frames;
-    if (f.num_observations < 0 || f.num_observations > al::kMaxObservations) ++bad;
+    ++counts->frames;
+    if (f.num_observations < 0 || f.num_observations > al::kMaxObservations) ++counts->bad;
     for (int i = 0; i < f.num_observations; ++i)
       if (f.observations[i].type == al::ObservationType::Ball && std::abs(f.observations[i].x - 800) < 100 &&
           std::abs(f.observations[i].y - 200) < 100) {  // ball 0.8 m ahead, 0.2 m left of the feet
-        ++with_ball;
+        ++counts->with_ball;
         break;
       }
   }
@@ -509,9 +515,8 @@ TEST(VisionRunner, PerceptionThreadReceivesObservations) {
       "robots:\n  - {team: 0, player: 1, x: -1.0, y: 0.0}\n  - {team: 1, player: 2, x: 1.5, y: 1.0, theta: 3.14}\n",
       "vision_runner.yaml");
   runner::Runner r(sc);
-  auto probe = std::make_unique<BallProbe>();
-  BallProbe* p = probe.get();
-  r.setPerceptionStep(0, std::move(probe));
+  auto p = std::make_shared<ProbeCounts>();
+  r.setPerceptionStep(0, std::make_unique<BallProbe>(p));
   runner::RunOptions opt;
   opt.progress = false;
   r.run(opt);
@@ -525,12 +530,14 @@ TEST(VisionRunner, PerceptionThreadReceivesObservations) {
 
 namespace {
 
-// Every observation a Perception thread received, in order.
+// Every observation a Perception thread received, in order (kept in a
+// shared vector: the recorder itself ends with the robot program).
 struct Recorder : agent::program::PerceptionStep {
-  std::vector<al::Observation> seen;
+  explicit Recorder(std::shared_ptr<std::vector<al::Observation>> s) : seen(std::move(s)) {}
+  std::shared_ptr<std::vector<al::Observation>> seen;
   void step(const al::CameraFrame& f) override {
     ++frames_;
-    seen.insert(seen.end(), f.observations, f.observations + f.num_observations);
+    seen->insert(seen->end(), f.observations, f.observations + f.num_observations);
   }
 };
 
@@ -546,13 +553,12 @@ RunRecord runRecorded(uint64_t seed, bool vision_on) {
           "robots:\n  - {team: 0, player: 1, x: -1.0, y: 0.0}\n  - {team: 1, player: 2, x: 1.0, y: 0.5, theta: 3.14}\n",
       "vision_det.yaml");
   runner::Runner r(sc);
-  auto rec = std::make_unique<Recorder>();
-  Recorder* p = rec.get();
-  r.setPerceptionStep(0, std::move(rec));
+  auto seen = std::make_shared<std::vector<al::Observation>>();
+  r.setPerceptionStep(0, std::make_unique<Recorder>(seen));
   runner::RunOptions opt;
   opt.progress = false;
   const runner::RunStats s = r.run(opt);
-  return {p->seen, s.hash};
+  return {*seen, s.hash};
 }
 
 TEST(VisionRunner, SameSeedSameObservationsAndTheOracleLeavesTheStateHashAlone) {
