@@ -29,6 +29,11 @@ std::vector<Landmark> FieldModel::landmarks() const {
     l.push_back({FeatureKind::Corner, {0, s * centre_circle_radius}, CornerShape::X});
   }
   l.push_back({FeatureKind::CentreCircle, {0, 0}});
+  // The centre mark is the same painted cross as the penalty marks, so a
+  // cross detector reports it as one: without it here, a robot seeing only
+  // the centre mark had no landmark to match it to but the penalty marks
+  // 3.2 m away, and re-localisation put it there.
+  l.push_back({FeatureKind::PenaltyCross, {0, 0}});
   return l;
 }
 

@@ -40,8 +40,9 @@ struct FieldModel {
   // The SPL 2017 field.
   static FieldModel spl2017() { return FieldModel{}; }
 
-  // Point landmarks (goal posts, penalty crosses, centre circle centre, line
-  // corners L/T/X) and the straight lines, derived from the dimensions.
+  // Point landmarks (goal posts, crosses -- the penalty marks and the centre
+  // mark --, centre circle centre, line corners L/T/X) and the straight
+  // lines, derived from the dimensions.
   std::vector<Landmark> landmarks() const;
   std::vector<LineSegment> lines() const;
   double halfLength() const { return length / 2; }

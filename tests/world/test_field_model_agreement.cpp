@@ -28,7 +28,8 @@ TEST(FieldModelAgreement, RobotCodeFieldMatchesTheSimulatedField) {
   EXPECT_EQ(lines.size(), f.lines.size());
   ASSERT_EQ(f.circles.size(), 1u);
   EXPECT_NEAR(m.centre_circle_radius, f.circles[0].radius * 1000, 1e-6);
-  // Penalty crosses (not the centre mark) and goal posts.
+  // Crosses (the penalty marks and the centre mark: one cross detector sees
+  // all three) and goal posts.
   int crosses = 0, posts = 0;
   for (const al::Landmark& l : m.landmarks()) {
     if (l.kind == bb::FeatureKind::PenaltyCross) {
@@ -44,6 +45,7 @@ TEST(FieldModelAgreement, RobotCodeFieldMatchesTheSimulatedField) {
       EXPECT_NEAR(std::fabs(l.at.y), (f.goal.inner_width + f.goal.post_diameter) * 500, 1e-6);
     }
   }
-  EXPECT_EQ(crosses, 2);
+  EXPECT_EQ(crosses, 3);
+  EXPECT_EQ(f.crosses.size(), 3u);
   EXPECT_EQ(posts, 4);
 }
