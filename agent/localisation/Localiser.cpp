@@ -243,7 +243,7 @@ void Localiser::inject(int count) {
     if (distinct) picks.push_back(&c);
   }
   // Replace the worst particles by the picks (round robin, jittered). Weights
-  // stay unnormalised: prior 1/N times the frame's likelihood, as for the rest.
+  // stay unnormalised: prior inject_prior / N times the frame's likelihood.
   std::vector<size_t> order(particles_.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
@@ -254,7 +254,7 @@ void Localiser::inject(int count) {
     p.x = c.x + rng_.gaussian(40);
     p.y = c.y + rng_.gaussian(40);
     p.theta = wrapAngle(c.theta + rng_.gaussian(0.03));
-    p.w = likelihood(p) / particles_.size();
+    p.w = cfg_.inject_prior * likelihood(p) / particles_.size();
   }
   ++injections_;
 }

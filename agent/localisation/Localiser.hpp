@@ -59,6 +59,11 @@ struct LocaliserConfig {
   double inject_fraction = 0.25;     // of the particles replaced per frame at most
   int max_candidates = 800;          // poses evaluated per injection
   int inject_modes = 12;             // distinct poses injected at once
+  // Prior weight of an injected particle relative to one carried forward (a
+  // kidnap is rare): a pose that explains one frame -- a false detection,
+  // or one feature alone -- cannot take the belief over in that frame; it
+  // must keep fitting better than the belief for a few frames.
+  double inject_prior = 0.05;
   // Probing: even when the belief fits, every probe_interval s a few
   // particles (probe_fraction) go to the poses the frame implies, so an alias
   // that fitted one frame as well as the truth cannot hold the belief for long.
