@@ -2,7 +2,8 @@
 // to a simulated robot's named shared memory (a robot with `program:
 // external` in a running simswift scenario) by libagent's simulation names
 // (/libagent-memory<N>, N = team x 11 + player) or the bare ones, and holds
-// a pose or moves one joint.
+// a pose or moves one joint. Its Perception thread reads the game state and
+// exchanges team packets through the simulator's extension object.
 //
 //   simswift-agent --team T --player P [--bare] [--posture stand|crouch|limp|zero]
 //                  [--move JOINT ANGLE [--at S]] [--print] [--attach-timeout S]
@@ -29,7 +30,8 @@ const char* kUsage =
     "  --posture NAME       stand (default), crouch, limp or zero\n"
     "  --move JOINT ANGLE   move one joint (NAO name, e.g. HeadYaw) to ANGLE rad\n"
     "  --at S               ... at simulated time S s (default 0)\n"
-    "  --print              print the sensors every 100 ticks (1 s)\n"
+    "  --print              print the sensors, game state and team packet counts\n"
+    "                       every 100 ticks (1 s)\n"
     "  --attach-timeout S   keep trying to attach for S wall-clock seconds (default 10)\n";
 
 [[noreturn]] void usageError(const std::string& msg) {
@@ -113,11 +115,24 @@ int main(int argc, char** argv) {
       al::AgentConnection conn =
           al::AgentConnection::attach(bare ? al::bareNames() : al::simulationNames(team, player));
       std::fprintf(stderr, "simswift-agent: attached to %s\n", conn.name().c_str());
-      ap::RobotProgram program(std::move(conn), team, player,
-                               std::make_unique<ap::ScriptedMotion>(posture, script));
+      // The game state and the team link come through the extension object
+      // beside the block (filled by the simulator as for builtin robots).
+      ap::ProgramConfig pc;
+      pc.team = team;
+      pc.player = player;
+      pc.motion_generator = std::make_unique<ap::ScriptedMotion>(posture, script);
+      pc.extensions = conn.extension();
+      ap::RobotProgram program(std::move(conn), std::move(pc));
       if (print)
-        program.setAfterTick([](const al::SensorValues& s, int64_t t_us) {
-          if (t_us % 1000000 == 0) printSensors(s, t_us);
+        program.setAfterTick([&program](const al::SensorValues& s, int64_t t_us) {
+          if (t_us % 1000000 != 0) return;
+          printSensors(s, t_us);
+          const agent::blackboard::GameInfo g = program.board().game.read();
+          const agent::blackboard::TeamInfo tm = program.board().team.read();
+          std::printf("  game: known %d state %s penalised %d | team: sent %lld received %lld\n", g.known ? 1 : 0,
+                      agent::blackboard::gameStateName(g.state), g.penalised ? 1 : 0,
+                      static_cast<long long>(tm.sent), static_cast<long long>(tm.received));
+          std::fflush(stdout);
         });
       program.start();
       program.join();

@@ -392,6 +392,48 @@ TEST(SimswiftAgent, OutlivesAKilledSimulatorByLessThanTwoSecondsAndTheNextRunSta
   for (const std::string& f : {yaml, sim_err, agent_err}) std::remove(f.c_str());
 }
 
+// A robot program in another process (simswift-agent) gets the game state
+// and a team link as a builtin one does: penalised at 1 s, it reads the
+// penalty by 2 s; it and its builtin teammate hear each other's 5 Hz packets.
+TEST(SimswiftAgent, ExternalProgramReadsTheGameStateAndTalksToItsTeammate) {
+  const int team = 97;  // players 1 (external) and 2 (builtin): used by no other test
+  Runner r(Scenario::parse("duration: 3\nseed: 5\nattach_timeout: 20\nwatchdog: 10\n"
+                           "game: {penalties: [{t: 1, robot: 0, penalty: player_pushing, duration: 20}]}\n"
+                           "robots:\n  - {team: 97, player: 1, x: -1.0, program: external}\n"
+                           "  - {team: 97, player: 2, x: -2.0, y: 1.0}\n",
+                           "external_team.yaml"));
+  r.start();
+  const std::string out = tmpPath("agent-game.txt");
+  const pid_t agent = spawn({kBin + "/simswift-agent", "--team", std::to_string(team), "--player", "1", "--print",
+                             "--attach-timeout", "20"},
+                            out);
+  try {
+    r.run(quiet());
+  } catch (...) {
+    kill(agent, SIGKILL);
+    waitpid(agent, nullptr, 0);
+    throw;
+  }
+  ASSERT_EQ(waitExit(agent, 10), 0);
+  const std::string text = slurp(out);
+  std::remove(out.c_str());
+  // Printed at 1 s, 2 s and 3 s of simulated time.
+  EXPECT_NE(text.find("game: known 1 state PLAYING penalised 0"), std::string::npos) << text;
+  const size_t at2 = text.find("t 2.00 s");
+  ASSERT_NE(at2, std::string::npos) << text;
+  const size_t g2 = text.find("game: ", at2);
+  ASSERT_NE(g2, std::string::npos) << text;
+  const std::string line = text.substr(g2, text.find('\n', g2) - g2);
+  EXPECT_NE(line.find("penalised 1"), std::string::npos) << line;
+  long long sent = -1, received = -1;
+  ASSERT_EQ(std::sscanf(line.substr(line.find("team:")).c_str(), "team: sent %lld received %lld", &sent, &received), 2)
+      << line;
+  EXPECT_GE(received, 5);  // the builtin teammate's packets (5 Hz for 2 s)
+  const agent::blackboard::TeamInfo mate = r.program(1)->board().team.read();
+  EXPECT_TRUE(mate.mates[1].valid) << "the builtin teammate heard nothing from the external player";
+  EXPECT_GE(mate.received, 10);  // the external player's, 5 Hz for 3 s
+}
+
 // The game state and the team link an external program reads are in the
 // robot's named extension object, the same memory the runner fills.
 TEST(LibagentClient, GameStateIsInTheNamedExtensionObject) {
