@@ -4,7 +4,7 @@
 #   build/       Release, the whole suite (incl. the loader mutation fuzzer)
 #   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer: the suite
 #                minus the heavy physics statistics (ASAN_EXCLUDE below)
-#   build-tsan/  ThreadSanitizer: the robot program (agent) and runner tests,
+#   build-tsan/  ThreadSanitizer: the robot program (agent), bridge and runner tests,
 #                same exclusions (the runner/robot hand-overs are ordered by
 #                atomics TSan sees, README "Tests, sanitizers and fuzzing")
 # Any sanitizer report fails the test that produced it. Timings go to stderr.
@@ -47,9 +47,9 @@ stamp "ASan+UBSan build"
 stamp "ASan+UBSan suite"
 
 # ThreadSanitizer: the code with threads (robot program, runner, bridge),
-# through the agent and runner tests; no suppressions.
+# through the agent, bridge and runner tests; no suppressions.
 cmake -S . -B build-tsan -DSIMSWIFT_SANITIZE=thread "${san_cmake[@]}" >/dev/null
-cmake --build build-tsan -j"$jobs" --target test_agent test_runner simswift-agent
+cmake --build build-tsan -j"$jobs" --target test_agent test_runner test_bridge simswift-agent
 stamp "TSan build"
-(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 -L 'agent|runner' -E "$heavy")
+(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 -L 'agent|runner|bridge' -E "$heavy")
 stamp "TSan suite"
