@@ -4,9 +4,9 @@
 #   build/       Release, the whole suite (incl. the loader mutation fuzzer)
 #   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer: the suite
 #                minus the heavy physics statistics (ASAN_EXCLUDE below)
-#   (ThreadSanitizer is not run in CI yet: its first run reports races on
-#   every lock-step hand-over, see README "Tests, sanitizers and fuzzing";
-#   SIMSWIFT_TSAN=1 runs it by hand.)
+#   build-tsan/  ThreadSanitizer: the robot program (agent), bridge and runner tests,
+#                same exclusions (the runner/robot hand-overs are ordered by
+#                atomics TSan sees, README "Tests, sanitizers and fuzzing")
 # Any sanitizer report fails the test that produced it. Timings go to stderr.
 #   SIMSWIFT_SKIP_SANITIZERS=1 bash scripts/test.sh   # Release suite only
 set -euo pipefail
@@ -46,9 +46,10 @@ stamp "ASan+UBSan build"
 (cd build-asan && ctest --output-on-failure -j"$jobs" --timeout 900 -E "$heavy")
 stamp "ASan+UBSan suite"
 
-[ "${SIMSWIFT_TSAN:-0}" = 1 ] || exit 0
+# ThreadSanitizer: the code with threads (robot program, runner, bridge),
+# through the agent, bridge and runner tests; no suppressions.
 cmake -S . -B build-tsan -DSIMSWIFT_SANITIZE=thread "${san_cmake[@]}" >/dev/null
-cmake --build build-tsan -j"$jobs" --target test_agent test_runner simswift-agent
+cmake --build build-tsan -j"$jobs" --target test_agent test_runner test_bridge simswift-agent
 stamp "TSan build"
-(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 -L 'agent|runner' -E "$heavy")
+(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 -L 'agent|runner|bridge' -E "$heavy")
 stamp "TSan suite"

@@ -110,7 +110,7 @@ AgentConnection AgentConnection::attach(const RobotNames& names) {
 AgentConnection::AgentConnection(AgentConnection&& o) noexcept
     : block_(o.block_), tick_(o.tick_), ext_(o.ext_), images_(o.images_), last_slot_(o.last_slot_),
       named_(o.named_), names_(std::move(o.names_)), block_map_(o.block_map_), ext_map_(o.ext_map_),
-      images_map_(o.images_map_), sim_pid_(o.sim_pid_), sim_start_(o.sim_start_) {
+      images_map_(o.images_map_), sim_pid_(o.sim_pid_), sim_start_(o.sim_start_), frame_taken_(o.frame_taken_) {
   o.block_ = nullptr;
   o.tick_ = nullptr;
   o.ext_ = nullptr;
@@ -214,9 +214,17 @@ void AgentConnection::writeActuators(const JointValues& joints, const LedCommand
 bool AgentConnection::waitFrame() {
   if (ext_->camera.shutdown.load()) return false;
   if (!waitOn(&ext_->camera.frame_ready, "frame_ready")) return false;
+  // Acquire: pairs with the simulator's release before its post, so the
+  // frame (and everything the simulator wrote before it) is visible.
+  frame_taken_ = ext_->camera.frames_posted.load(std::memory_order_acquire);
   return ext_->camera.shutdown.load() == 0;
 }
 
-void AgentConnection::perceptionDone() { sem_post(&ext_->camera.perception_done); }
+void AgentConnection::perceptionDone() {
+  // Release: everything this frame's Perception wrote (team outbox, ...)
+  // is visible to the simulator once it loads the number.
+  ext_->camera.frames_done.store(frame_taken_, std::memory_order_release);
+  sem_post(&ext_->camera.perception_done);
+}
 
 }  // namespace agent::libagent

@@ -10,6 +10,12 @@
 // announce(), the camera frame handshake, shutdown, and a wake-up post after
 // each command. Attached by name it notices a simulator that died (its pid
 // in the extension) within a second and ends instead of waiting forever.
+//
+// Every hand-over is ordered by an atomic, not by the semaphore alone: the
+// sensor and actuator indices (loadIndex/storeIndex) for the tick, the
+// camera's sequence numbers (CameraShared.hpp) for frames. Semaphores do
+// order memory on a real machine, but ThreadSanitizer (GCC 12) has no
+// sem_clockwait interceptor and would see no edge through the named waits.
 #pragma once
 
 #include <semaphore.h>
@@ -73,7 +79,8 @@ class AgentConnection {
                       SonarMode sonar = 0, bool stiffen = false, const std::string& say = {});
   void setStanding(bool standing) { block_->standing = standing; }
 
-  // Perception side. waitFrame() returns false when the run is over.
+  // Perception side. waitFrame() returns false when the run is over;
+  // perceptionDone() answers the frame it took (camera.frames_done).
   bool hasCamera() const { return ext_ != nullptr; }
   bool waitFrame();
   const CameraFrame& frame() const { return ext_->camera.frame; }
@@ -115,6 +122,7 @@ class AgentConnection {
   void* images_map_ = nullptr;
   int sim_pid_ = 0;
   uint64_t sim_start_ = 0;
+  int64_t frame_taken_ = 0;  // camera.frames_posted seen by the last waitFrame()
 };
 
 }  // namespace agent::libagent

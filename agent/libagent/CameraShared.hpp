@@ -4,7 +4,8 @@
 // (30 Hz). In simswift the simulator plays the driver: it fills a CameraBlock
 // (part of the extension object beside the libagent block, SimExtension.hpp)
 // at 30 Hz of simulated time, posts `frame_ready`, and waits on
-// `perception_done` (with a watchdog) before stepping on.
+// `perception_done` (with a watchdog) before stepping on; each hand-over
+// also carries a sequence number (frames_posted / frames_done).
 //
 // A frame carries the vision oracle's observations (what a detector would
 // report: robot-relative, mm / rad) and, when rendering is on, the images.
@@ -95,6 +96,16 @@ struct CameraBlock {
   CameraFrame frame;               // written before frame_ready is posted
   sem_t frame_ready;               // posted by the simulator at 30 Hz
   sem_t perception_done;           // posted by Perception when it has finished
+  // Hand-over sequence numbers, one per semaphore: the number of frames
+  // posted (1, 2, ...), stored (release) by the simulator before it posts
+  // frame_ready, and the number Perception has finished, stored (release)
+  // before it posts perception_done; each side loads the other's (acquire)
+  // after its wait. The semaphore says "wake up", the counter says which
+  // frame was handed over: a stray post is not taken for an answer, and the
+  // ordering rests on atomics ThreadSanitizer sees (its runtime has no
+  // sem_clockwait interceptor, so it sees no edge through that wait).
+  std::atomic<int64_t> frames_posted;
+  std::atomic<int64_t> frames_done;
   std::atomic<int32_t> shutdown;   // set when the run ends
   // 1 if a Perception thread waits on frame_ready. Set (by announce())
   // before the program answers its first tick; the simulator posts frames

@@ -28,7 +28,7 @@
 namespace agent::libagent {
 
 constexpr uint32_t kExtensionMagic = 0x53575845;  // "SWXE"
-constexpr uint32_t kExtensionVersion = 3;
+constexpr uint32_t kExtensionVersion = 4;  // 4: camera hand-over sequence numbers
 
 // Out-of-range actuators_latest: "no command since the last one consumed".
 // A libagent Effector then picks actuators_read's slot (its slot loop stops

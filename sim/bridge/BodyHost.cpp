@@ -40,8 +40,8 @@ bool before(const timespec& a, const timespec& b) {
   return a.tv_sec < b.tv_sec || (a.tv_sec == b.tv_sec && a.tv_nsec < b.tv_nsec);
 }
 
-bool waitWithTimeout(sem_t* s, double timeout_s) {
-  const timespec deadline = monotonicIn(timeout_s);
+// Waits on `s` until the absolute CLOCK_MONOTONIC `deadline`; false on timeout.
+bool waitUntil(sem_t* s, const timespec& deadline) {
   for (;;) {
     if (sem_clockwait(s, CLOCK_MONOTONIC, &deadline) == 0) return true;
     if (errno == ETIMEDOUT) return false;
@@ -336,10 +336,23 @@ ActuatorCommand BodyHost::readActuators() {
 
 void BodyHost::publishFrame(const al::CameraFrame& frame) {
   ext_->camera.frame = frame;
+  // Release, then post: Perception loads the number (acquire) after its wait.
+  ext_->camera.frames_posted.store(++frames_posted_, std::memory_order_release);
   sem_post(&ext_->camera.frame_ready);
 }
 
-bool BodyHost::waitPerceptionDone(double timeout_s) { return waitWithTimeout(&ext_->camera.perception_done, timeout_s); }
+bool BodyHost::waitPerceptionDone(double timeout_s) {
+  const timespec deadline = monotonicIn(timeout_s);
+  // The answer is Perception's frames_done reaching the last frame posted
+  // (acquire: pairs with its release before the post); the semaphore only
+  // wakes us. A post with an older number (one left behind by an answer
+  // whose post came after a timed-out wait) is skipped.
+  const auto done = [&] { return ext_->camera.frames_done.load(std::memory_order_acquire) == frames_posted_; };
+  for (;;) {
+    if (!waitUntil(&ext_->camera.perception_done, deadline)) return done();
+    if (done()) return true;
+  }
+}
 
 void BodyHost::shutdown() {
   ext_->shutdown.store(1);

@@ -9,6 +9,11 @@
 // semaphore -- only if its value is <= 0, otherwise the program did not take
 // the last tick and the cycle counts as skipped.
 //
+// Every hand-over is ordered by an atomic the other side loads after its
+// wait (the sensor/actuator indices; the camera's frames_posted/frames_done):
+// ThreadSanitizer then sees it (it has no sem_clockwait interceptor), and a
+// stray semaphore post is never taken for an answer.
+//
 // Lock-step (default): after consuming a command readActuators() parks
 // actuators_latest on kActuatorsParked; waitAnswer() returns once a valid
 // index reappears, i.e. once the program's Motion wrote a slot and set
@@ -154,6 +159,7 @@ class BodyHost {
   int64_t skipped_total_ = 0;
   int64_t contact_lost_events_ = 0;
   int64_t commands_read_ = 0;
+  int64_t frames_posted_ = 0;  // camera frames published (camera.frames_posted)
   bool contact_lost_ = false;
 };
 

@@ -95,6 +95,33 @@ TEST(BodyHost, WaitAnswerTimesOut) {
 // which, with actuators_latest parked, stops on the read slot: the index
 // then comes back with the value it had before parking. The answer must
 // still be seen, every tick, by a program that posts nothing.
+// The camera hand-over is answered by Perception's sequence number, not by
+// the semaphore alone: a stray perception_done post does not count, the
+// program's perceptionDone() for the frame it took does.
+TEST(BodyHost, PerceptionDoneCountsOnlyTheAnswerToTheFramePosted) {
+  BodyHost host(19, 4, BodyHost::Mode::InProcess);
+  al::AgentConnection conn = host.connect();
+  al::CameraFrame f{};
+  f.frame_index = 7;
+  host.publishFrame(f);
+  sem_post(&host.camera()->perception_done);  // stray: no sequence number
+  EXPECT_FALSE(host.waitPerceptionDone(0.05));
+
+  ASSERT_TRUE(conn.waitFrame());
+  EXPECT_EQ(conn.frame().frame_index, 7);
+  conn.perceptionDone();
+  EXPECT_TRUE(host.waitPerceptionDone(1.0));
+  EXPECT_EQ(host.camera()->frames_done.load(), 1);
+
+  // The next frame needs its own answer.
+  host.publishFrame(f);
+  EXPECT_FALSE(host.waitPerceptionDone(0.05));
+  ASSERT_TRUE(conn.waitFrame());
+  conn.perceptionDone();
+  EXPECT_TRUE(host.waitPerceptionDone(1.0));
+  EXPECT_EQ(host.camera()->frames_done.load(), 2);
+}
+
 TEST(BodyHost, LockStepSeesAnswersFromTheEffectorSlotLoopQuirk) {
   BodyHost host(19, 4, BodyHost::Mode::InProcess);
   al::AgentData& b = *host.block();
