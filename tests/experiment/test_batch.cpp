@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "sim/experiment/Batch.hpp"
+#include "sim/experiment/Report.hpp"
 #include "sim/experiment/Trial.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
 
@@ -36,10 +37,18 @@ BatchOutcome runInto(const Experiment& e, const std::string& dir, int jobs, int 
   return runBatch(e, defaultHooks(), o);
 }
 
+// Everything but the wall clock (timing.*, report.md's last section) is
+// byte-identical.
 void expectSameResults(const std::string& a, const std::string& b) {
   for (const char* f : {"results.csv", "tracks.csv", "report.md", "figures/routes_walker.png",
                         "figures/findtime_walker.dat"}) {
-    const std::string x = readAll(a + "/" + f), y = readAll(b + "/" + f);
+    std::string x = readAll(a + "/" + f), y = readAll(b + "/" + f);
+    if (std::string(f) == "report.md") {
+      EXPECT_NE(x.find(kWallClockHeading), std::string::npos) << a << "/report.md has no wall-clock section";
+      x = deterministicPart(x);
+      y = deterministicPart(y);
+      EXPECT_EQ(x.find(kWallClockHeading), std::string::npos);
+    }
     EXPECT_FALSE(x.empty()) << a << "/" << f;
     EXPECT_TRUE(x == y) << f << " differs between " << a << " and " << b;
   }
@@ -67,6 +76,24 @@ TEST(Batch, RerunsAndJobCountsGiveIdenticalResults) {
   const BatchOutcome oa = runInto(e, a, 1);
   EXPECT_TRUE(oa.assembled) << oa.message;
   EXPECT_EQ(oa.ran, 4);
+  // The report's wall-clock part: each setup's real-time factors (per core)
+  // and the run's wall time.
+  {
+    const std::string rep = readAll(a + "/report.md");
+    const std::string wall = rep.substr(rep.find(kWallClockHeading));
+    std::vector<std::string> cells;
+    for (const std::string& l : split(wall, '\n'))
+      if (l.rfind("| `walker` |", 0) == 0) cells = split(l, '|');
+    ASSERT_EQ(cells.size(), 9u) << wall;  // 7 cells between 8 bars
+    EXPECT_EQ(std::stoi(cells[2]), 4);    // trials
+    // Simulated s: 1 s penalised + 7 s (not found) or + 3..7 s (found).
+    EXPECT_GE(std::stod(cells[3]), 4 * (1.0 + 3.0));
+    EXPECT_LE(std::stod(cells[3]), 4 * (1.0 + 7.0) + 0.1);
+    EXPECT_GT(std::stod(cells[6]), 0.0);                    // median real-time factor
+    EXPECT_LE(std::stod(cells[5]), std::stod(cells[6]));
+    EXPECT_LE(std::stod(cells[6]), std::stod(cells[7]));
+    EXPECT_NE(wall.find("ran 4 trial(s) with 1 worker process(es)"), std::string::npos) << wall;
+  }
   EXPECT_TRUE(runInto(e, b, 2).assembled);
   EXPECT_TRUE(runInto(e, c, 2).assembled);
   expectSameResults(a, b);
