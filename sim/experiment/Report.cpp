@@ -333,7 +333,8 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
       s << "## Beside the thesis (tables 5.9-5.12)\n\n"
         << "Thesis columns are the thesis's own figures (sim = its rcssserver3d simulation, real = NAO V5s); "
            "ours are this run's setups that name the table in `thesis_table:`. Found counts are shown as "
-           "found/tests.\n\n";
+           "found/tests. Each column's Total/Average row is over its own positions (the thesis's: all of its "
+           "table); the per-component table above compares the positions both have.\n\n";
       header = true;
       // Positions are compared by number: say so where ours lie elsewhere.
       std::string moved;

@@ -224,6 +224,26 @@ TEST(ExperimentFile, ShippedExperiments) {
 
   const Experiment script = Experiment::loadFile(src + "/scenarios/findball_script.yaml");
   EXPECT_NO_THROW(checkBehaviours(script, defaultHooks()));
+
+  // The default (scripts/build-and-run.sh): a slice of the simulated
+  // comparison, thesis positions and start points, both components.
+  const Experiment quick = Experiment::loadFile(src + "/scenarios/findball_quick.yaml");
+  EXPECT_EQ(quick.numTrials(), 30);
+  ASSERT_EQ(quick.setups.size(), 2u);
+  EXPECT_EQ(quick.setups[0].thesis_table, "5.3");
+  EXPECT_EQ(quick.setups[1].thesis_table, "5.4");
+  EXPECT_EQ(quick.setups[0].robots[0].behaviour, Behaviour::FindBall2016);
+  EXPECT_EQ(quick.setups[1].robots[0].behaviour, Behaviour::FindBall2017);
+  EXPECT_DOUBLE_EQ(quick.time_limit, full.time_limit);
+  EXPECT_DOUBLE_EQ(quick.found.distance, full.found.distance);
+  for (const BallPosition& b : quick.balls) {
+    EXPECT_NEAR(b.x * 1000, thesisBallPositions().at(b.number - 1).x_mm, 1e-9) << "position " << b.number;
+    EXPECT_NEAR(b.y * 1000, thesisBallPositions().at(b.number - 1).y_mm, 1e-9) << "position " << b.number;
+  }
+  for (size_t k = 0; k < quick.setups[0].robots.size(); ++k) {
+    EXPECT_DOUBLE_EQ(quick.setups[0].robots[k].x, full.setups[0].robots[k].x);
+    EXPECT_DOUBLE_EQ(quick.setups[0].robots[k].y, full.setups[0].robots[k].y);
+  }
 }
 
 // The vision: block is the scenario's (read by sim/vision's reader): checked
