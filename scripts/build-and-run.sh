@@ -1,9 +1,20 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds in Release and runs a scenario
-# (default: one robot standing for 10 s of simulated time).
+# Installs what is missing, builds in Release and runs the default job: the
+# small find-ball experiment scenarios/findball_quick.yaml (3 robots, 2016 vs
+# 2017 ball search, 30 trials; a few minutes on 2 cores), then says where its
+# report is. Other jobs:
+#   bash scripts/build-and-run.sh scenarios/thesis_findball.yaml      # an experiment file (has setups:)
+#   bash scripts/build-and-run.sh scenarios/walk_one.yaml --realtime  # a scenario: simswift run
+#   bash scripts/build-and-run.sh experiment FILE.yaml --jobs 2       # any simswift command line
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target simswift
-./build/simswift run "${1:-scenarios/stand_one.yaml}" "${@:2}"
+if [ $# -eq 0 ]; then
+  set -- experiment scenarios/findball_quick.yaml
+elif [ -f "$1" ]; then
+  # A file: an experiment (it has a top-level setups: list) or a scenario.
+  if grep -q '^setups:' "$1"; then set -- experiment "$@"; else set -- run "$@"; fi
+fi
+exec ./build/simswift "$@"

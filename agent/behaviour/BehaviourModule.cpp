@@ -96,22 +96,24 @@ void BehaviourModule::run(blackboard::Blackboard& board) {
   fb.pose_x = in.self.pose.x;
   fb.pose_y = in.self.pose.y;
   fb.pose_theta = in.self.pose.theta;
-  for (const Teammate& t : in.teammates) {
-    blackboard::FindBallTeammate m;
-    m.player = t.player;
-    m.x = t.pose.x;
-    m.y = t.pose.y;
-    m.theta = t.pose.theta;
-    if (t.search && t.search->segment >= 0) {
-      m.has_target = true;
-      m.segment = t.search->segment;
-      m.target_x = t.search->point.x;
-      m.target_y = t.search->point.y;
-    }
-    fb.teammates.push_back(m);
-  }
+  for (const Teammate& t : in.teammates) fb.teammates.push_back(findBallTeammate(t));
   if (out.payload) fb.payload = out.payload->toBytes();
   board.findball.write(fb);
+}
+
+blackboard::FindBallTeammate findBallTeammate(const Teammate& t) {
+  blackboard::FindBallTeammate m;
+  m.player = t.player;
+  m.x = t.pose.x;
+  m.y = t.pose.y;
+  m.theta = t.pose.theta;
+  if (t.search && t.search->segment >= 0) {
+    m.has_target = true;
+    m.segment = t.search->segment;
+    m.target_x = t.search->point.x;
+    m.target_y = t.search->point.y;
+  }
+  return m;
 }
 
 }  // namespace agent::behaviour

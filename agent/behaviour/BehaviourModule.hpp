@@ -12,6 +12,7 @@
 #pragma once
 
 #include "agent/behaviour/Behaviour.hpp"
+#include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/behaviour/BehaviourInputs.hpp"
 #include "agent/program/Module.hpp"
 
@@ -28,6 +29,9 @@ struct BehaviourModuleConfig {
 // kept with their age; this robot excluded), their free data decoded as a
 // SearchPayload (malformed: no search data). Exposed for tests.
 BehaviourInputs inputsFrom(const blackboard::Blackboard& board, const BehaviourModuleConfig& c);
+// A teammate as the Blackboard's findball section records it (the one
+// conversion: the module writes it, the FindBall view draws from it).
+blackboard::FindBallTeammate findBallTeammate(const Teammate& t);
 
 class BehaviourModule : public program::Module {
  public:

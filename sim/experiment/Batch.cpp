@@ -129,8 +129,8 @@ struct Progress {
     ++ran;
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     const double eta = elapsed / ran * (total - done);
-    char what[160];
-    std::snprintf(what, sizeof what, "trial %d (%s, pos %d, #%d): %s | %.1fx real time", r.trial, r.setup.c_str(),
+    char what[200];
+    std::snprintf(what, sizeof what, "trial %d (%s, pos %d, #%d): %s | %.1fx real time per core", r.trial, r.setup.c_str(),
                   r.position, r.repeat + 1,
                   r.found ? ("found in " + fixed(r.seconds, 2) + " s by " + r.finder).c_str() : "not found",
                   r.realTimeFactor());
@@ -229,6 +229,9 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
 
   std::fflush(stdout);
   std::fflush(stderr);
+  RunWall wall;
+  wall.jobs = jobs;
+  const Clock::time_point wall0 = Clock::now();
   std::map<pid_t, int> running;
   size_t next = 0;
   while ((next < todo.size() && !g_stop) || !running.empty()) {
@@ -286,6 +289,9 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
       std::sscanf(readFile(trialFile(opt.out_dir, t, ".timing.csv")).c_str(), "%*d,%lf,%lf", &r.sim_s, &r.wall_s);
       pr.trial(e, r, jobs);
       ++out.ran;
+      ++wall.ran;
+      wall.trial_sim_s += r.sim_s;
+      wall.trial_wall_s += r.wall_s;
     } else if (g_stop) {
       unlink(trialFile(opt.out_dir, t, ".log").c_str());  // interrupted, not failed
     } else {
@@ -297,6 +303,7 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
     }
   }
   pr.end();
+  wall.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
   sigaction(SIGINT, &old_int, nullptr);
   sigaction(SIGTERM, &old_term, nullptr);
   out.interrupted = g_stop != 0;
@@ -313,9 +320,16 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
     for (int t = 0; t < e.numTrials() && all; ++t) all = trialDone(opt.out_dir, t);
     if (all) {
       std::string notes;
-      assemble(e, opt.out_dir, &notes);
+      // A rerun in a finished folder changes nothing (the report keeps the
+      // wall clock of the run that finished it).
+      if (wall.ran > 0 || !exists(opt.out_dir + "/report.md")) assemble(e, opt.out_dir, &notes, &wall);
       out.assembled = true;
-      m << notes << "results in " << opt.out_dir << ": results.csv, tracks.csv, report.md, figures/, timing.md";
+      m << notes;
+      if (wall.ran > 0)
+        m << "ran " << wall.ran << " trial(s) with " << jobs << " worker(s) in " << fmtDuration(wall.wall_s)
+          << " of wall time (" << fixed(wall.wall_s > 0 ? wall.trial_sim_s / wall.wall_s : 0, 1)
+          << " simulated s per wall s)\n";
+      m << "report: " << opt.out_dir << "/report.md (also results.csv, tracks.csv, figures/, timing.md)";
     } else {
       m << "shard " << opt.shard << "/" << opt.shards << ": " << done << " trials in " << opt.out_dir
         << "; join the shards with `simswift experiment merge DIR... --out DIR`";
@@ -368,7 +382,7 @@ BatchOutcome mergeRuns(const std::vector<std::string>& dirs, const std::string& 
   return o;
 }
 
-void assemble(const Experiment& e, const std::string& dir, std::string* notes) {
+void assemble(const Experiment& e, const std::string& dir, std::string* notes, const RunWall* run) {
   const int robots = e.maxRobots();
   std::vector<TrialResult> results;
   std::string csv = csvHeader(robots), tracks = tracksHeader(), timing = timingHeader();
@@ -394,7 +408,7 @@ void assemble(const Experiment& e, const std::string& dir, std::string* notes) {
   writeAtomic(dir + "/results.csv", csv);
   writeAtomic(dir + "/tracks.csv", tracks);
   writeAtomic(dir + "/timing.csv", timing);
-  writeAtomic(dir + "/report.md", reportMarkdown(e, results));
+  writeAtomic(dir + "/report.md", reportMarkdown(e, results) + "\n" + wallClockSection(e, results, run));
 
   // timing.md: real-time factor per trial (simulated s / wall s, per core).
   {
@@ -409,7 +423,11 @@ void assemble(const Experiment& e, const std::string& dir, std::string* notes) {
     std::sort(rtf.begin(), rtf.end());
     s << "# Wall clock of `" << e.name << "`\n\n"
       << "Real-time factor = simulated s / wall s of one trial in one worker process (per core). "
-      << "These figures depend on the machine and its load; nothing else in the folder does.\n\n";
+      << "These figures depend on the machine and its load; nothing else in the folder does (but report.md's "
+      << "last section, which summarises them).\n\n";
+    if (run && run->ran > 0)
+      s << "The run that completed this folder: " << run->ran << " trial(s), " << run->jobs << " worker process(es), "
+        << fixed(run->wall_s, 1) << " s of wall time.\n\n";
     if (!rtf.empty())
       s << "Trials " << results.size() << "; simulated " << fixed(sim, 1) << " s in " << fixed(wall, 1)
         << " s of worker time; real-time factor min " << fixed(rtf.front(), 2) << ", median "

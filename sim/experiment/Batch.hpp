@@ -8,19 +8,21 @@
 //   trials/trial_NNNNNN.timing.csv   wall clock (never part of the results)
 //   trials/trial_NNNNNN.log          the trial's messages, kept only if it failed
 //   results.csv, tracks.csv, report.md, figures/   once every trial is done
-//   timing.csv, timing.md                          wall clock: real-time factors
+//   timing.csv, timing.md                          wall clock: real-time factors (also
+//                                                  report.md's last section)
 //
 // Each trial runs in its own forked process (ODE's global random generator
 // rules out two worlds stepping in one process), at most `jobs` at a time.
-// Everything but timing.* is a pure function of the experiment file, so
-// reruns, --jobs, shards + merge and interrupted-then-resumed runs give
-// byte-identical results.
+// Everything but timing.* and report.md's wall-clock section is a pure
+// function of the experiment file, so reruns, --jobs, shards + merge and
+// interrupted-then-resumed runs give byte-identical results.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/Report.hpp"
 #include "sim/experiment/TrialHooks.hpp"
 
 namespace simswift::experiment {
@@ -54,8 +56,9 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
 BatchOutcome mergeRuns(const std::vector<std::string>& dirs, const std::string& out);
 
 // Writes results.csv, tracks.csv, timing.*, report.md and figures/ from
-// dir/trials. Throws BatchError if a trial is missing.
-void assemble(const Experiment& e, const std::string& dir, std::string* notes);
+// dir/trials; `run` (may be null): the wall clock of the run that completed
+// the folder, for the report's timing part. Throws BatchError if a trial is missing.
+void assemble(const Experiment& e, const std::string& dir, std::string* notes, const RunWall* run = nullptr);
 
 // Runs one trial in this process and writes its files into dir/trials
 // (the worker's job; also used by tests).

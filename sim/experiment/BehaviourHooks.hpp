@@ -2,8 +2,9 @@
 // findball2017 and striker become the trial scenario's robot `behaviour:`
 // (sim/runner/BehaviourYaml: the robot's config overrides parsed there, so
 // a bad override is refused before any trial, naming the behaviour's file
-// and line). Script robots keep their actions. The robots start playing at
-// their placed poses (no penalised start yet: see the report of issue 12i).
+// and line). Script robots keep their actions. The trial's start (penalised
+// at the start poses, then PLAYING) is runTrial's, the same for every
+// behaviour.
 #pragma once
 
 #include "sim/experiment/TrialHooks.hpp"

@@ -105,6 +105,10 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
   if (e.time_limit > 3600) top.fail("time_limit", "must be <= 3600 s (got " + std::to_string(e.time_limit) + ")");
   e.trials_per_position = top.integer("trials_per_position", Range::closed(1, 10000));
 
+  if (auto st = top.optionalMap("start")) {
+    e.start.penalised = st->number("penalised", e.start.penalised, Range::closed(0.05, 60));
+    st->finish();
+  }
   const double ball_radius = e.field.ball.diameter / 2;
   if (auto f = top.optionalMap("found")) {
     e.found.distance = f->number("distance", e.found.distance, Range::positive());
@@ -128,6 +132,12 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
     if (!root["vision"].IsMap()) top.fail("vision", "must be a map (the scenario's vision: block)");
     e.vision_yaml = flow(root["vision"]);
     e.base.vision = vision::readVisionConfig(top.map("vision"), e.base.vision);
+  }
+  if (e.found.sees && (!e.base.vision.enabled || !e.base.vision[vision::Feature::Ball].enabled)) {
+    const std::string why = "the found rule needs the robots' ball detections, but the vision: block turns them "
+                            "off (use found: {sees: false}, or enable vision and its ball detector)";
+    if (top.has("found") && root["found"]["sees"].IsDefined()) top.map("found").fail("sees", why);
+    top.fail("vision", why);
   }
 
   // Everything must lie on the carpet (m, field frame).
@@ -262,7 +272,7 @@ runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t) {
   runner::Scenario sc = e.base;
   sc.source = e.source + " (trial " + std::to_string(t.index) + ")";
   sc.seed = t.seed;
-  sc.duration = e.time_limit;
+  sc.duration = static_cast<double>(playTick(e)) * kTickSeconds + e.time_limit;
   const BallPosition& b = e.balls[t.ball];
   sc.ball = std::make_pair(b.x, b.y);
   const Setup& s = e.setups[t.setup];
@@ -279,7 +289,23 @@ runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t) {
     rs.program = runner::RobotSpec::Program::Builtin;
     sc.robots.push_back(std::move(rs));
   }
+  // findballexp's start (thesis §3.2.6, §5.1): every robot penalised at its
+  // start pose (Runner::start() applies the t = 0 penalties; the trial puts
+  // the robots back on their poses before the first tick, and they stay
+  // there when unpenalised), then PLAYING and unpenalised together.
+  using game::GameConfig;
+  GameConfig& g = sc.game;
+  g = GameConfig{};
+  g.initial_state = agent::libagent::GameStateValue::Initial;
+  g.on_unpenalise = GameConfig::Return::Sideline;  // stays where it stands
+  const double play_s = static_cast<double>(playTick(e)) * kTickSeconds;
+  g.timeline.push_back({play_s, agent::libagent::GameStateValue::Playing});
+  const int n = static_cast<int>(s.robots.size());
+  for (int i = 0; i < n; ++i) g.penalties.push_back({0.0, i, agent::libagent::Penalty::Manual, -1.0});
+  for (int i = 0; i < n; ++i) g.penalties.push_back({play_s, i, agent::libagent::Penalty::None, -1.0});
   return sc;
 }
+
+int64_t playTick(const Experiment& e) { return std::max<int64_t>(1, std::llround(e.start.penalised / kTickSeconds)); }
 
 }  // namespace simswift::experiment

@@ -7,8 +7,12 @@
 //   seed: 2017                     # trial seeds derive from (seed, trial index)
 //   time_limit: 180                # s of simulated time per trial (> 0)
 //   trials_per_position: 10
+//   start: {penalised: 1.0}        # s the robots stand penalised at their start
+//                                  # poses before the trial's clock starts (PLAYING)
 //   found: {distance: 0.300, sees: true}   # m (inclusive, >= ball radius); sees: the
-//                                  # ball must also be in a camera's view
+//                                  # robot's vision (the oracle's detector model, as
+//                                  # its perception gets it) reports the true ball in
+//                                  # the latest camera frame, at that distance or less
 //   fallen: {sideline_after: 30}   # s down (not got up) before the robot is moved
 //                                  # to the sideline, as the thesis did
 //   tracks: {every: 0.5}           # s between robot track samples
@@ -27,6 +31,13 @@
 //         - {team: 19, player: 2, x: -3.25, y: 3.0, theta: -1.5708}
 //         - {team: 19, player: 3, x: -2.0, y: -3.0, theta: 1.5708, behaviour: script,
 //            actions: [{t: 0.5, action: walk, forward: 250}]}   # script: the scenario's actions
+//
+// A trial starts as the thesis's experiment controller started its tests
+// (findballexp, §3.2.6 and §5.1): the robots are penalised (game state
+// INITIAL) and stand at their start poses, the ball lies at its position,
+// their programs start with no ball knowledge; after `start.penalised` s
+// the game goes to PLAYING and every robot is unpenalised at once. Find
+// times and the time limit count from that moment.
 //
 // Trials are numbered setup-major: trial = (setup * positions + position) *
 // trials_per_position + repeat. Every error is a ConfigError naming file,
@@ -72,8 +83,16 @@ struct Setup {
 };
 
 struct FoundSpec {
-  double distance = 0.300;  // m, robot (torso, on the ground) to ball centre, inclusive
-  bool sees = true;         // and the ball is in a camera's field of view
+  // m, inclusive. With `sees`, the distance the robot's vision measured (the
+  // oracle's detection: from the point between its feet to the ball, with
+  // the detector's noise, as the thesis's controller took the robot's own
+  // estimate); without, the true ground distance from that point.
+  double distance = 0.300;
+  bool sees = true;  // the robot's vision reports the (true) ball in the latest frame
+};
+
+struct StartSpec {
+  double penalised = 1.0;  // s penalised at the start poses before PLAYING (0.05..60)
 };
 
 struct FallenSpec {
@@ -89,6 +108,7 @@ struct Experiment {
   uint64_t seed = 1;
   double time_limit = 180;   // s
   int trials_per_position = 1;
+  StartSpec start;
   FoundSpec found;
   FallenSpec fallen;
   double track_every = 0.5;  // s
@@ -117,9 +137,14 @@ struct TrialSpec {
 TrialSpec trialSpec(const Experiment& e, int index);
 
 // The scenario of one trial without behaviours: robots standing at their
-// start poses, ball placed, seed set, duration = time limit. The
-// BehaviourFactory then fills in each robot's behaviour.
+// start poses, ball placed, seed set, the game (penalised in INITIAL, then
+// PLAYING and unpenalised at playTicks), duration = start + time limit.
+// The BehaviourFactory then fills in each robot's behaviour.
 runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t);
+
+// The tick at whose end the robots are unpenalised and PLAYING begins; the
+// trial's clock counts from it.
+int64_t playTick(const Experiment& e);
 
 // The side of the match a setup's team plays on: the first team number in
 // the setup blue, a second one red (the scenario's own default).

@@ -121,7 +121,119 @@ std::string robotsLine(const Setup& s) {
   return o.str();
 }
 
+// Ours beside one thesis table (5.3-5.8), position by position, over the
+// positions both have; the summary row is over those positions only.
+struct Beside {
+  std::vector<int> positions;
+  int thesis_found = 0, thesis_tests = 0, our_found = 0, our_tests = 0;
+  double thesis_total_s = 0, our_total_s = 0;
+};
+
+Beside besideThesis(const ThesisTable& t, const std::vector<PositionStats>& ours) {
+  Beside b;
+  for (const PositionStats& p : ours)
+    for (const ThesisRow& r : t.rows)
+      if (r.position == p.position) {
+        b.positions.push_back(p.position);
+        b.thesis_found += r.found;
+        b.thesis_tests += r.tests;
+        b.thesis_total_s += r.total_s;
+        b.our_found += p.found;
+        b.our_tests += p.tests;
+        b.our_total_s += p.total_s;
+      }
+  return b;
+}
+
+std::string rate(int found, int tests) {
+  return std::to_string(found) + "/" + std::to_string(tests) + " (" +
+         fixed(tests ? 100.0 * found / tests : 0, 0) + " %)";
+}
+
+std::string meanOverFinds(double total, int found) { return found ? f2(total / found) : "-"; }
+
+std::string tableTitle(const ThesisTable& t) {
+  return t.number + " (" + t.component + ", " + std::to_string(t.robots) + " robot" + (t.robots > 1 ? "s" : "") +
+         ", " + (t.real ? "real NAO V5s" : "simulation") + ")";
+}
+
+std::string besideTable(const ThesisTable& t, const std::vector<PositionStats>& ours) {
+  std::ostringstream s;
+  s << "Beside thesis table " << tableTitle(t) << ":\n\n"
+    << "| Position | Found (thesis) | Found (ours) | Avg. Seconds (thesis) | Avg. Seconds (ours) | Std. Dev. (thesis) "
+       "| Std. Dev. (ours) |\n|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const PositionStats& p : ours) {
+    const ThesisRow* r = nullptr;
+    for (const ThesisRow& q : t.rows)
+      if (q.position == p.position) r = &q;
+    s << "| " << p.position << " | " << (r ? std::to_string(r->found) + "/" + std::to_string(r->tests) : "-") << " | "
+      << p.found << "/" << p.tests << " | " << (r ? f2(r->avg_s) : "-") << " | " << f2(p.avg_s) << " | "
+      << (r ? f2(r->sd_s) : "-") << " | " << f2(p.sd_s) << " |\n";
+  }
+  const Beside b = besideThesis(t, ours);
+  s << "| Positions in both (" << b.positions.size() << ") | " << b.thesis_found << "/" << b.thesis_tests << " | "
+    << b.our_found << "/" << b.our_tests << " | " << meanOverFinds(b.thesis_total_s, b.thesis_found) << " | "
+    << meanOverFinds(b.our_total_s, b.our_found) << " | | |\n\n"
+    << "The last row's seconds are means over the finds (Total / Found over those positions).\n\n";
+  return s.str();
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
 }  // namespace
+
+const char* const kWallClockHeading = "## Wall clock (differs between runs)";
+
+std::string deterministicPart(const std::string& report) {
+  const size_t k = report.find(std::string("\n") + kWallClockHeading);
+  return k == std::string::npos ? report : report.substr(0, k + 1);
+}
+
+std::string wallClockSection(const Experiment& e, const std::vector<TrialResult>& results, const RunWall* run) {
+  std::ostringstream s;
+  s << kWallClockHeading << "\n\n"
+    << "Real-time factor = simulated s / wall s of one trial in its worker process, i.e. per core (a trial's robot "
+       "threads take turns in lock-step), penalised start included. These figures depend on the machine and its "
+       "load; nothing above this section does. Per trial: timing.md, timing.csv.\n\n"
+    << "| Setup | Trials | Simulated s | Worker wall s | Real-time factor: min | median | max |\n"
+    << "|---|---:|---:|---:|---:|---:|---:|\n";
+  auto row = [&](const std::string& label, const std::string& setup) {
+    double sim = 0, wall = 0;
+    std::vector<double> rtf;
+    for (const TrialResult& r : results) {
+      if ((!setup.empty() && r.setup != setup) || r.wall_s <= 0) continue;
+      sim += r.sim_s;
+      wall += r.wall_s;
+      rtf.push_back(r.realTimeFactor());
+    }
+    if (rtf.empty()) {
+      s << "| " << label << " | 0 | | | | | |\n";
+      return;
+    }
+    s << "| " << label << " | " << rtf.size() << " | " << fixed(sim, 1) << " | " << fixed(wall, 1) << " | "
+      << f2(*std::min_element(rtf.begin(), rtf.end())) << " | " << f2(median(rtf)) << " | "
+      << f2(*std::max_element(rtf.begin(), rtf.end())) << " |\n";
+  };
+  for (const Setup& st : e.setups) row("`" + st.name + "`", st.name);
+  if (e.setups.size() > 1) row("all", "");
+  s << "\n";
+  if (run && run->ran > 0) {
+    const long w = std::lround(run->wall_s);
+    s << "The run that completed this folder ran " << run->ran << " trial(s) with " << run->jobs
+      << " worker process(es) in " << w / 60 << " min " << w % 60 << " s of wall time ("
+      << fixed(run->wall_s, 1) << " s): " << fixed(run->trial_sim_s, 1) << " simulated s, "
+      << fixed(run->wall_s > 0 ? run->trial_sim_s / run->wall_s : 0, 2) << " simulated s per wall s on the whole "
+      << "machine.\n";
+  } else {
+    s << "This folder was assembled from earlier runs or merged shards: no single run's wall time.\n";
+  }
+  return s.str();
+}
 
 std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& results) {
   std::ostringstream s;
@@ -129,13 +241,20 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
     << e.numTrials() << " trials: " << e.setups.size() << " setup(s) x " << e.balls.size() << " ball position(s) x "
     << e.trials_per_position << " trial(s). Time limit " << fixed(e.time_limit, 1) << " s; found = a robot within "
     << fixed(e.found.distance * 1000, 0) << " mm of the ball (inclusive)"
-    << (e.found.sees ? " that has it in a camera's view" : "") << "; a robot down for "
+    << (e.found.sees ? " whose vision (the detector model its perception gets) reports the ball in the latest "
+                       "frame, at that detected distance"
+                     : "")
+    << "; a robot down for "
     << fixed(e.fallen.sideline_after, 1) << " s is moved to the sideline. Seed " << e.seed
     << " (each trial's seed is in results.csv).\n\n"
     << "Seconds are simulated seconds. Avg. Seconds = Total / Found (0 when none found); Std. Dev. is the "
        "population standard deviation of the find times; the Average rows are the plain means of the "
-       "position rows, as in the thesis. Wall-clock figures (real-time factor per trial) are in timing.md, "
-       "the only output that differs between runs.\n\n";
+       "position rows, as in the thesis. Trials start as the thesis's experiment controller started them: "
+       "the robots stand penalised at their start poses for "
+    << fixed(e.start.penalised, 2)
+    << " s, then the game goes to PLAYING and they are unpenalised; find times count from that moment. "
+       "Wall-clock figures (real-time factor) are in the last section and in timing.md: everything above that "
+       "section is the same in every run.\n\n";
 
   s << "Ball positions (table 5.2):";
   for (const BallPosition& b : e.balls)
@@ -150,6 +269,7 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
     s << "## Setup `" << setup.name << "`";
     if (!setup.thesis_table.empty()) s << " (repeats thesis table " << setup.thesis_table << ")";
     s << "\n\n" << setup.robots.size() << " robot(s): " << robotsLine(setup) << ".\n\n" << thesisLayout(rows) << "\n";
+    if (const ThesisTable* t = thesisTable(setup.thesis_table)) s << besideTable(*t, rows);
 
     // Beyond the thesis's table: a mean over finds, falls, moves, walking.
     std::vector<double> times;
@@ -182,6 +302,27 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
       << "[find times](figures/findtime_" << setup.name << ".png) (box plot per position).\n\n";
   }
 
+  // Per component (setup) beside its thesis table: find rate and mean find
+  // time over the positions both have.
+  if (!setup_of_table.empty()) {
+    s << "## Per component beside the thesis\n\n"
+      << "Each setup that names a thesis table, over the ball positions both have; mean find time = Total "
+         "Seconds / Found over those positions (the thesis's printed Average rows are the plain means of its "
+         "position averages, counting 0.00 for a position never found).\n\n"
+      << "| Setup | Thesis table | Positions | Find rate (thesis) | Find rate (ours) | Mean find s (thesis) | Mean "
+         "find s (ours) |\n|---|---|---:|---:|---:|---:|---:|\n";
+    for (size_t si = 0; si < e.setups.size(); ++si) {
+      const ThesisTable* t = thesisTable(e.setups[si].thesis_table);
+      if (!t) continue;
+      const Beside b = besideThesis(*t, setupTable(e, results, static_cast<int>(si)));
+      s << "| `" << e.setups[si].name << "` | " << tableTitle(*t) << " | " << b.positions.size() << " | "
+        << rate(b.thesis_found, b.thesis_tests) << " | " << rate(b.our_found, b.our_tests) << " | "
+        << meanOverFinds(b.thesis_total_s, b.thesis_found) << " | " << meanOverFinds(b.our_total_s, b.our_found)
+        << " |\n";
+    }
+    s << "\n";
+  }
+
   // Comparisons 5.9-5.12: thesis columns beside ours.
   bool header = false;
   for (const ThesisComparison& c : thesisComparisons()) {
@@ -192,7 +333,8 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
       s << "## Beside the thesis (tables 5.9-5.12)\n\n"
         << "Thesis columns are the thesis's own figures (sim = its rcssserver3d simulation, real = NAO V5s); "
            "ours are this run's setups that name the table in `thesis_table:`. Found counts are shown as "
-           "found/tests.\n\n";
+           "found/tests. Each column's Total/Average row is over its own positions (the thesis's: all of its "
+           "table); the per-component table above compares the positions both have.\n\n";
       header = true;
       // Positions are compared by number: say so where ours lie elsewhere.
       std::string moved;

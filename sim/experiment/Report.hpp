@@ -40,7 +40,24 @@ std::vector<PositionStats> setupTable(const Experiment& e, const std::vector<Tri
 // "Average" rows (tables 5.5-5.8), several give "Sub-" rows and a "Grand" one.
 std::vector<std::pair<int, int>> summaryGroups(int rows);  // [first, last) row indices
 
-// The whole report. `results` sorted by trial, one per trial.
+// The whole report's deterministic part (everything but the wall clock).
+// `results` sorted by trial, one per trial.
 std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& results);
+
+// The wall clock of a batch invocation (runBatch), for the timing part.
+struct RunWall {
+  int jobs = 0;         // worker processes
+  int ran = 0;          // trials this invocation ran
+  double wall_s = 0;    // s, from its first trial launched to its last one done
+  double trial_wall_s = 0, trial_sim_s = 0;  // summed over those trials
+};
+
+// The report's last section, headed kWallClockHeading: real-time factor
+// (simulated s / wall s of a trial in one worker, i.e. per core) per setup
+// and overall, and the invocation's wall time if `run` is given. The only
+// part of report.md that differs between runs; deterministicPart() cuts it off.
+extern const char* const kWallClockHeading;
+std::string wallClockSection(const Experiment& e, const std::vector<TrialResult>& results, const RunWall* run);
+std::string deterministicPart(const std::string& report);
 
 }  // namespace simswift::experiment

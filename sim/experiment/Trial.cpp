@@ -94,13 +94,18 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
 
   runner::Runner run(sc);
   hooks.behaviours->attach(e, t, run);
-  run.start();
+  run.start();  // the t = 0 penalties: the GameController's placer takes the robots to the sideline
+  // ... and the experiment puts them on their start poses, penalised, as
+  // findballexp did (they stay there when unpenalised: Return::Sideline).
+  for (int i = 0; i < n; ++i) run.placeRobot(i, setup.robots[i].x, setup.robots[i].y, setup.robots[i].theta);
   hooks.behaviours->startPlay(e, t, run);
   World& w = run.world();
 
-  const int64_t limit = std::llround(e.time_limit / kTickSeconds);
+  const int64_t play = playTick(e);  // PLAYING from the end of this tick: the trial's clock starts
+  const int64_t limit = play + std::llround(e.time_limit / kTickSeconds);
   const int64_t track_every = std::max<int64_t>(1, std::llround(e.track_every / kTickSeconds));
   const int64_t sideline_ticks = std::max<int64_t>(1, std::llround(e.fallen.sideline_after / kTickSeconds));
+  auto clock = [&](int64_t tick) { return static_cast<double>(tick - play) * kTickSeconds; };  // s since PLAYING
   std::vector<int64_t> down_since(n, -1);  // tick the robot went down, -1 = up
   std::vector<runner::FallDetector> down(n);
   std::vector<Pose2> last(n);
@@ -108,9 +113,8 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
     const Pose2 p = torsoPose(w, i);
     if (count) res.robots[i].distance_m += std::hypot(p.x - last[i].x, p.y - last[i].y);
     last[i] = p;
-    res.tracks.push_back({i, w.time(), p.x, p.y, p.theta});
+    res.tracks.push_back({i, clock(run.ticks()), p.x, p.y, p.theta});
   };
-  for (int i = 0; i < n; ++i) sample(i, false);
 
   while (run.ticks() < limit) {
     run.tick();  // 1.
@@ -126,19 +130,24 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
       } else if (tick - down_since[i] >= sideline_ticks) {
         double x, y, theta;
         sidelineSpot(e, w, i, &x, &y, &theta);
-        sample(i, true);  // the walk up to the move counts, the move does not
+        if (tick > play) sample(i, true);  // the walk up to the move counts, the move does not
         run.placeRobot(i, x, y, theta);
         last[i] = torsoPose(w, i);
         ++res.robots[i].sideline_moves;
         down_since[i] = -1;
       }
     }
+    if (tick < play) continue;  // penalised: nothing is timed or tracked yet
+    if (tick == play) {  // the robots are unpenalised at the end of this tick: tracks start here
+      for (int i = 0; i < n; ++i) sample(i, false);
+      continue;
+    }
     const int finder = hooks.found->finder(e, run);  // 4. (3. below, so the last leg is sampled)
-    if (tick % track_every == 0 || finder >= 0 || tick == limit)
+    if ((tick - play) % track_every == 0 || finder >= 0 || tick == limit)
       for (int i = 0; i < n; ++i) sample(i, true);  // 3.
     if (finder >= 0) {
       res.found = true;
-      res.seconds = w.time();
+      res.seconds = clock(tick);
       res.finder = tag(setup.robots[finder].team, setup.robots[finder].player);
       break;
     }

@@ -1,16 +1,21 @@
 // One find-ball trial: a pure function of (experiment, trial index).
 //
 // runTrial builds the trial's scenario (robots at their start poses, the
-// ball at its position, the trial's seed), lets the BehaviourFactory set
-// behaviours up, and ticks the Runner until the FoundRule names a finder or
-// the time limit passes. Each tick, in this order:
-//   1. Runner::tick() (robots, physics, sensors);
+// ball at its position, the trial's seed, the game: penalised, then
+// PLAYING), lets the BehaviourFactory set behaviours up, starts the Runner
+// (its t = 0 penalties take the robots to the sideline), puts the robots back
+// on their start poses, penalised, and ticks until the FoundRule names a
+// finder or the time limit after PLAYING passes. Each tick, in this order:
+//   1. Runner::tick() (robots, physics, sensors, vision, game);
 //   2. the fallen-robot rule: a robot down (torso below kFallHeight, until
 //      above kStandHeight) for `fallen.sideline_after` s is moved to its
 //      nearest touch line, standing, facing the field;
-//   3. track sample every `tracks.every` s (walked distance is summed over
-//      these samples, which also averages out the walk's sway);
+//   (until playTick nothing else: the robots are penalised; at playTick
+//   they are unpenalised and the trial's clock starts at 0)
+//   3. track sample every `tracks.every` s of play (walked distance is
+//      summed over these samples, which also averages out the walk's sway);
 //   4. the found rule.
+// Find times and track times are s since PLAYING.
 //
 // Results are written as one CSV row (deterministic) plus a track file and
 // a timing line (wall clock: never part of the results).
@@ -34,7 +39,7 @@ struct RobotOutcome {
 
 struct TrackSample {
   int robot = 0;              // index in the setup
-  double t = 0;               // s
+  double t = 0;               // s since PLAYING
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame, torso
 };
 
@@ -45,7 +50,7 @@ struct TrialResult {
   int repeat = 0;
   uint64_t seed = 0;
   bool found = false;
-  double seconds = 0;         // find time (s) if found
+  double seconds = 0;         // find time (s since PLAYING) if found
   std::string finder;         // "t19p3" if found
   int resets = 0;             // world resets after a numerical blow-up
   std::vector<RobotOutcome> robots;

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "sim/camera/CameraModel.hpp"
+#include "sim/vision/VisionOracle.hpp"
 
 namespace simswift::experiment {
 
@@ -18,41 +18,29 @@ void ScriptBehaviours::configure(const Experiment& e, const TrialSpec& t, runner
   for (const ExperimentRobot& r : e.setups[t.setup].robots) check(e, r);
 }
 
-namespace {
-int headLink(const NaoModel& m) {
-  const int j = m.jointIndex("HeadPitch");
-  return j < 0 ? -1 : m.joints()[j].child_link;
-}
-}  // namespace
-
-double GroundTruthFoundRule::ballDistance(const World& w, int robot) {
-  const RobotBody& body = w.robot(robot);
-  const Eigen::Vector3d torso = body.linkPose(body.model().rootLink()).translation();
-  const Eigen::Vector3d ball = w.ballPosition();
-  return std::hypot(ball.x() - torso.x(), ball.y() - torso.y());
+double VisionFoundRule::ballDistance(runner::Runner& r, int robot) {
+  const vision::GroundFrame g = r.visionOracle().groundFrame(r.world(), robot);
+  const Eigen::Vector3d ball = r.world().ballPosition();
+  return std::hypot(ball.x() - g.origin.x(), ball.y() - g.origin.y());
 }
 
-bool GroundTruthFoundRule::ballInView(const World& w, int robot) {
-  const RobotBody& body = w.robot(robot);
-  const int head = headLink(body.model());
-  if (head < 0) return false;
-  const Eigen::Isometry3d head_pose = body.linkPose(head);
-  const Eigen::Vector3d ball = w.ballPosition();
-  for (camera::CameraId id : {camera::kTop, camera::kBottom}) {
-    const camera::CameraModel cam = camera::CameraModel::naoCamera(head_pose, id);
-    const auto px = cam.project(ball);
-    if (px && cam.inImage(*px)) return true;
-  }
-  return false;
+bool VisionFoundRule::seesBall(const runner::Runner& r, int robot, double* distance_m) {
+  const vision::VisionOracle::BallSighting s = r.visionOracle().ballSighting(robot);
+  if (s.frame < 0 || s.frame != r.lastFrame()) return false;
+  if (distance_m) *distance_m = s.distance_mm * 1e-3;
+  return true;
 }
 
-int GroundTruthFoundRule::finder(const Experiment& e, runner::Runner& r) const {
-  const World& w = r.world();
-  for (int i = 0; i < w.numRobots(); ++i) {
+int VisionFoundRule::finder(const Experiment& e, runner::Runner& r) const {
+  for (int i = 0; i < r.numRobots(); ++i) {
+    double d = 0;
+    if (e.found.sees) {
+      if (!seesBall(r, i, &d)) continue;
+    } else {
+      d = ballDistance(r, i);
+    }
     // Inclusive, as the thesis's "within 300mm (inclusive)"; 1 um slack for rounding.
-    if (ballDistance(w, i) > e.found.distance + 1e-6) continue;
-    if (e.found.sees && !ballInView(w, i)) continue;
-    return i;
+    if (d <= e.found.distance + 1e-6) return i;
   }
   return -1;
 }
@@ -60,7 +48,7 @@ int GroundTruthFoundRule::finder(const Experiment& e, runner::Runner& r) const {
 TrialHooks defaultHooks() {
   TrialHooks h;
   h.behaviours = std::make_shared<ScriptBehaviours>();
-  h.found = std::make_shared<GroundTruthFoundRule>();
+  h.found = std::make_shared<VisionFoundRule>();
   return h;
 }
 

@@ -2,35 +2,13 @@
 //
 //  - BehaviourFactory: says which behaviours this build can run (refused at
 //    validation, before any trial) and sets each robot up for a trial: its
-//    behaviour and overrides, the vision block, and -- once the robots run
-//    game states -- penalised at placement, ball knowledge cleared, then
-//    PLAYING (findballexp's sequence, thesis §3.2.6).
-//  - FoundRule: after every tick, which robot (if any) has found the ball.
+//    behaviour and overrides. The start itself (penalised at the start
+//    poses, then PLAYING) is the trial's (Experiment.hpp, runTrial).
+//  - FoundRule: after every tick of play, which robot (if any) has found
+//    the ball.
 //
-// defaultHooks() is what this build has: script robots only, and a found
-// rule computed from ground truth. When the behaviours (issue 12) and the
-// vision oracle (issue 11) land, the lead plugs them in here: a factory that
-// maps findball2016/findball2017/striker to the scenario's behaviour: field
-// and passes Experiment::vision_yaml and the robot's config_yaml through,
-// and a FoundRule using the oracle's "seen". A sketch (field names are
-// whatever those issues call them):
-//
-//   struct BehaviourHooks : BehaviourFactory {
-//     void check(const Experiment&, const ExperimentRobot&) const override {}  // all built
-//     void configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const override {
-//       const Setup& s = e.setups[t.setup];
-//       for (size_t i = 0; i < s.robots.size(); ++i) {
-//         if (s.robots[i].behaviour == Behaviour::Script) continue;       // actions already set
-//         sc.robots[i].behaviour = behaviourName(s.robots[i].behaviour);  // scenario behaviour:
-//         sc.robots[i].behaviour_overrides = s.robots[i].config_yaml;     // its config overrides
-//       }
-//       sc.vision = e.vision_yaml;                                        // scenario vision:
-//     }
-//     void startPlay(...) const override { /* penalise, clear ball knowledge, PLAYING */ }
-//   };
-//   // app/simswift.cpp:
-//   experimentMain(argc - 1, argv + 1, {std::make_shared<BehaviourHooks>(),
-//                                       std::make_shared<OracleFoundRule>()});
+// defaultHooks(): script robots only (ScriptBehaviours) and the VisionFoundRule;
+// behaviourHooks() (BehaviourHooks.hpp) adds the agent/behaviour behaviours.
 #pragma once
 
 #include <memory>
@@ -77,17 +55,20 @@ class ScriptBehaviours : public BehaviourFactory {
   void configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const override;
 };
 
-// Found from ground truth: the ball centre within `found.distance` of the
-// robot (torso, on the ground; inclusive) and, if `found.sees`, projecting
-// into the top or bottom camera's image (60.9 x 47.6 deg, from the true head
-// pose; occlusion is not checked). TODO(issue 11): replace "in a camera's
-// view" by the vision oracle's "seen" (detection range, occlusion, noise).
-class GroundTruthFoundRule : public FoundRule {
+// Found by what the robot's vision reports (thesis §5.1: a robot "could both
+// see the ball, and was within 300mm (inclusive)"): with `found.sees`, the
+// vision oracle gave the robot the true ball (no false positive) in the
+// latest camera frame -- the same detector model, range, occlusion, noise
+// and draws its Perception got -- at a detected distance <= found.distance;
+// without, the true ground distance from the point between its feet.
+// Deterministic: the oracle's draws are seeded per (seed, robot, frame).
+class VisionFoundRule : public FoundRule {
  public:
   int finder(const Experiment& e, runner::Runner& r) const override;
-  // The geometric test alone, for one robot of a world.
-  static bool ballInView(const World& w, int robot);
-  static double ballDistance(const World& w, int robot);  // m, on the ground
+  // m, true ground distance from the point between robot's feet to the ball.
+  static double ballDistance(runner::Runner& r, int robot);
+  // The robot's latest frame showed it the true ball; its detected distance (m).
+  static bool seesBall(const runner::Runner& r, int robot, double* distance_m);
 };
 
 TrialHooks defaultHooks();

@@ -106,6 +106,10 @@ class Runner {
   // Blackboard between ticks (tests, benchmarks).
   agent::program::RobotProgram* program(int i) const { return robots_[i]->program.get(); }
   RunStats stats() const;  // so far
+  // The vision oracle (after start()): what each robot was shown in the
+  // last camera frame (the experiment's found rule reads its ball sightings).
+  const vision::VisionOracle& visionOracle() const { return *vision_; }
+  int64_t lastFrame() const { return last_frame_; }  // index of the last camera frame (-1: none yet)
   // Teleports robot i, standing, to (x, y) m facing theta rad (field frame)
   // and restarts its sensors from rest (the experiment's sideline rule).
   void placeRobot(int i, double x, double y, double theta);

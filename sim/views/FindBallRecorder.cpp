@@ -26,17 +26,7 @@ FindBallViewData viewFromInfo(const agent::blackboard::FindBallInfo& fb, int pla
   self.target_x = fb.point_x;
   self.target_y = fb.point_y;
   d.robots.push_back(self);
-  for (const agent::blackboard::FindBallTeammate& t : fb.teammates) {
-    ViewRobot r;
-    r.player = t.player;
-    r.x = t.x;
-    r.y = t.y;
-    r.theta = t.theta;
-    r.has_target = t.has_target;
-    r.target_x = t.target_x;
-    r.target_y = t.target_y;
-    d.robots.push_back(r);
-  }
+  for (const agent::blackboard::FindBallTeammate& t : fb.teammates) d.robots.push_back(viewRobot(t));
   static const char* kinds[] = {"findball2016", "findball2017", "striker"};
   const char* kind = fb.kind >= 0 && fb.kind < 3 ? kinds[fb.kind] : "?";
   char caption[128];

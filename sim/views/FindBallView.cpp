@@ -171,9 +171,22 @@ void setDistribution(FindBallViewData& d, const agent::behaviour::PositionalDist
   d.probabilities = p.probabilities();
 }
 
+ViewRobot viewRobot(const agent::blackboard::FindBallTeammate& t) {
+  ViewRobot r;
+  r.player = t.player;
+  r.x = t.x;
+  r.y = t.y;
+  r.theta = t.theta;
+  r.has_target = t.has_target;
+  r.target_x = t.target_x;
+  r.target_y = t.target_y;
+  return r;
+}
+
 }  // namespace sim::views
 
 #include "agent/behaviour/Behaviour.hpp"
+#include "agent/behaviour/BehaviourModule.hpp"
 
 namespace sim::views {
 
@@ -200,19 +213,8 @@ FindBallViewData robotView(const agent::behaviour::BehaviourInputs& in,
     self.target_y = behaviour.searchPoint().y;
   }
   d.robots.push_back(self);
-  for (const Teammate& t : in.teammates) {
-    ViewRobot r;
-    r.player = t.player;
-    r.x = t.pose.x;
-    r.y = t.pose.y;
-    r.theta = t.pose.theta;
-    if (t.search && t.search->segment >= 0) {
-      r.has_target = true;
-      r.target_x = t.search->point.x;
-      r.target_y = t.search->point.y;
-    }
-    d.robots.push_back(r);
-  }
+  // Teammates through the findball section's conversion (BehaviourModule).
+  for (const Teammate& t : in.teammates) d.robots.push_back(viewRobot(findBallTeammate(t)));
   char caption[96];
   std::snprintf(caption, sizeof caption, "t=%.1f s  robot %d  %s", in.time, in.player,
                 behaviourKindName(c.kind));

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "agent/blackboard/FindBallInfo.hpp"
+
 namespace agent::behaviour {
 class PositionalDistribution;
 }
@@ -69,6 +71,8 @@ class FindBallView {
 
 // Copies a distribution's grid and probabilities into the view data.
 void setDistribution(FindBallViewData& d, const agent::behaviour::PositionalDistribution& p);
+// A teammate from the Blackboard's findball section, as drawn.
+ViewRobot viewRobot(const agent::blackboard::FindBallTeammate& t);
 
 }  // namespace sim::views
 

@@ -260,6 +260,13 @@ int VisionOracle::fill(const World& world, int robot, al::CameraFrame& frame) {
   const int n = std::min<int>(static_cast<int>(seen.size()), al::kMaxObservations);
   for (int i = 0; i < n; ++i) frame.observations[i] = seen[i].obs;
   frame.num_observations = n;
+  if (robot >= static_cast<int>(sightings_.size())) sightings_.resize(robot + 1);
+  for (int i = 0; i < n; ++i) {
+    if (seen[i].obs.type != al::ObservationType::Ball || seen[i].false_positive) continue;
+    BallSighting& b = sightings_[robot];
+    if (b.frame != frame.frame_index || seen[i].obs.distance < b.distance_mm) b.distance_mm = seen[i].obs.distance;
+    b.frame = frame.frame_index;
+  }
   const int dropped = static_cast<int>(seen.size()) - n;
   dropped_ += dropped;
   return dropped;

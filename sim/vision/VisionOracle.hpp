@@ -88,6 +88,19 @@ class VisionOracle {
   // lines), at most kMaxObservations. Returns how many did not fit.
   int fill(const World& world, int robot, agent::libagent::CameraFrame& frame);
 
+  // What fill() last told `robot` of the true ball (false positives never
+  // count): the camera frame index it was in (-1: never) and the detected
+  // distance (mm, from the point between the feet; the nearer of the two
+  // cameras' detections). The experiment's found rule reads it, so "sees the
+  // ball" is exactly what the robot's perception was given.
+  struct BallSighting {
+    int64_t frame = -1;
+    double distance_mm = 0;
+  };
+  BallSighting ballSighting(int robot) const {
+    return robot >= 0 && robot < static_cast<int>(sightings_.size()) ? sightings_[robot] : BallSighting{};
+  }
+
   // True camera pose (camera frame in the field, m; x along the optical axis,
   // y left, z up), without the camera position error.
   Eigen::Isometry3d cameraPose(const World& world, int robot, int camera) const;
@@ -126,6 +139,7 @@ class VisionOracle {
   int64_t bounds_tick_ = -1;
   std::vector<Eigen::AlignedBox3d> bounds_;
   int64_t dropped_ = 0;
+  std::vector<BallSighting> sightings_;  // by robot index (fill)
 };
 
 }  // namespace simswift::vision

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "sim/experiment/Batch.hpp"
+#include "sim/experiment/Report.hpp"
 #include "sim/experiment/Trial.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
 
@@ -36,10 +37,18 @@ BatchOutcome runInto(const Experiment& e, const std::string& dir, int jobs, int 
   return runBatch(e, defaultHooks(), o);
 }
 
+// Everything but the wall clock (timing.*, report.md's last section) is
+// byte-identical.
 void expectSameResults(const std::string& a, const std::string& b) {
   for (const char* f : {"results.csv", "tracks.csv", "report.md", "figures/routes_walker.png",
                         "figures/findtime_walker.dat"}) {
-    const std::string x = readAll(a + "/" + f), y = readAll(b + "/" + f);
+    std::string x = readAll(a + "/" + f), y = readAll(b + "/" + f);
+    if (std::string(f) == "report.md") {
+      EXPECT_NE(x.find(kWallClockHeading), std::string::npos) << a << "/report.md has no wall-clock section";
+      x = deterministicPart(x);
+      y = deterministicPart(y);
+      EXPECT_EQ(x.find(kWallClockHeading), std::string::npos);
+    }
     EXPECT_FALSE(x.empty()) << a << "/" << f;
     EXPECT_TRUE(x == y) << f << " differs between " << a << " and " << b;
   }
@@ -67,6 +76,24 @@ TEST(Batch, RerunsAndJobCountsGiveIdenticalResults) {
   const BatchOutcome oa = runInto(e, a, 1);
   EXPECT_TRUE(oa.assembled) << oa.message;
   EXPECT_EQ(oa.ran, 4);
+  // The report's wall-clock part: each setup's real-time factors (per core)
+  // and the run's wall time.
+  {
+    const std::string rep = readAll(a + "/report.md");
+    const std::string wall = rep.substr(rep.find(kWallClockHeading));
+    std::vector<std::string> cells;
+    for (const std::string& l : split(wall, '\n'))
+      if (l.rfind("| `walker` |", 0) == 0) cells = split(l, '|');
+    ASSERT_EQ(cells.size(), 9u) << wall;  // 7 cells between 8 bars
+    EXPECT_EQ(std::stoi(cells[2]), 4);    // trials
+    // Simulated s: 1 s penalised + 7 s (not found) or + 3..7 s (found).
+    EXPECT_GE(std::stod(cells[3]), 4 * (1.0 + 3.0));
+    EXPECT_LE(std::stod(cells[3]), 4 * (1.0 + 7.0) + 0.1);
+    EXPECT_GT(std::stod(cells[6]), 0.0);                    // median real-time factor
+    EXPECT_LE(std::stod(cells[5]), std::stod(cells[6]));
+    EXPECT_LE(std::stod(cells[6]), std::stod(cells[7]));
+    EXPECT_NE(wall.find("ran 4 trial(s) with 1 worker process(es)"), std::string::npos) << wall;
+  }
   EXPECT_TRUE(runInto(e, b, 2).assembled);
   EXPECT_TRUE(runInto(e, c, 2).assembled);
   expectSameResults(a, b);
@@ -252,6 +279,80 @@ TEST(Batch, FoundRuleNeedsTheBallInView) {
   const TrialResult ahead = runTrial(file(0.28, true), 0, defaultHooks());
   EXPECT_TRUE(ahead.found);
   EXPECT_LT(ahead.seconds, 0.05);
+}
+
+// "Sees the ball" is what the robot's vision was given (the oracle's
+// detector model), not geometry: a ball 0.8 m ahead (found distance 1 m) is
+// found on the first frame of play; beyond the detector's range, or hidden
+// behind a second robot (facing away, so it does not see the ball itself),
+// it is not -- although it is in the camera's view both times.
+TEST(Batch, FoundRuleUsesTheRobotsVision) {
+  auto file = [](const std::string& vision, bool occluder) {
+    std::ostringstream s;
+    s << "name: sees\nseed: 4\ntime_limit: 0.5\ntrials_per_position: 1\n"
+      << "found: {distance: 1.0, sees: true}\n" << vision
+      << "balls: [{position: 1, x: 0.8, y: 0.0}]\n"
+      << "setups:\n  - name: s\n    robots:\n"
+      << "      - {team: 19, player: 2, x: 0.0, y: 0.0, theta: 0.0, behaviour: script,"
+      << " actions: [{t: 0, action: stand}]}\n";
+    if (occluder)
+      s << "      - {team: 19, player: 3, x: 0.4, y: 0.0, theta: 3.14159, behaviour: script,"
+        << " actions: [{t: 0, action: stand}]}\n";
+    return Experiment::parse(s.str(), "sees.yaml");
+  };
+  const TrialResult seen = runTrial(file("", false), 0, defaultHooks());
+  EXPECT_TRUE(seen.found);
+  EXPECT_EQ(seen.finder, "t19p2");
+  EXPECT_LT(seen.seconds, 0.05);  // the frame at the start of play
+  const TrialResult far = runTrial(file("vision: {ball: {max_distance_mm: 600}}\n", false), 0, defaultHooks());
+  EXPECT_FALSE(far.found);
+  const TrialResult hidden = runTrial(file("", true), 0, defaultHooks());
+  EXPECT_FALSE(hidden.found);
+}
+
+// The trial starts as findballexp's did: penalised (INITIAL) at the start
+// poses -- not at the GameController's sideline spot -- for start.penalised
+// s, then PLAYING and unpenalised; times count from then. A script robot
+// told to walk from t = 0 stands still while penalised.
+TEST(Batch, TrialsStartPenalisedThenPlay) {
+  struct Watch : FoundRule {
+    mutable std::vector<agent::blackboard::GameInfo> seen;  // per call (tick of play)
+    mutable std::vector<double> x;                          // robot 0's torso x (m)
+    int finder(const Experiment&, runner::Runner& r) const override {
+      seen.push_back(r.program(0)->board().game.read());
+      x.push_back(r.stats().robots[0].x);
+      return -1;
+    }
+  };
+  const std::string text =
+      "name: start\nseed: 6\ntime_limit: 2.0\ntrials_per_position: 1\nstart: {penalised: 0.6}\n"
+      "tracks: {every: 0.1}\nballs: [{position: 1, x: 3.0, y: -2.0}]\n"
+      "setups:\n  - name: s\n    robots:\n"
+      "      - {team: 19, player: 3, x: -2.0, y: -2.9, theta: 1.5708, behaviour: script,\n"
+      "         actions: [{t: 0, action: walk, forward: 250}]}\n";
+  const Experiment e = Experiment::parse(text, "start.yaml");
+  TrialHooks hooks = defaultHooks();
+  auto watch = std::make_shared<Watch>();
+  hooks.found = watch;
+  const TrialResult r = runTrial(e, 0, hooks);
+  EXPECT_FALSE(r.found);
+  ASSERT_EQ(watch->seen.size(), 200u);  // 2 s of play, every tick
+  // The first call: the robot's last frame was taken while it was penalised.
+  EXPECT_TRUE(watch->seen.front().known);
+  EXPECT_TRUE(watch->seen.front().penalised);
+  EXPECT_EQ(watch->seen.front().state, agent::blackboard::GameStateId::INITIAL);
+  EXPECT_FALSE(watch->seen.back().penalised);
+  EXPECT_EQ(watch->seen.back().state, agent::blackboard::GameStateId::PLAYING);
+  // Tracks start at PLAYING (t = 0) on the start pose (1 cm, 0.05 rad): it
+  // stood penalised there, not at the sideline spot (x = -3.2 m).
+  ASSERT_FALSE(r.tracks.empty());
+  EXPECT_DOUBLE_EQ(r.tracks.front().t, 0.0);
+  EXPECT_NEAR(r.tracks.front().x, -2.0, 0.01);
+  EXPECT_NEAR(r.tracks.front().y, -2.9, 0.03);
+  EXPECT_NEAR(r.tracks.front().theta, 1.5708, 0.05);
+  EXPECT_NEAR(r.tracks.back().t, 2.0, 1e-9);
+  // Then it walks (toward +y).
+  EXPECT_GT(r.tracks.back().y - r.tracks.front().y, 0.1);
 }
 
 // A robot pushed over that does not get up is moved to its nearest touch

@@ -110,6 +110,24 @@ TEST(ExperimentFile, FoundDistanceBelowBallRadius) {
               "must be >= the ball radius 0.05");
 }
 
+// The found rule reads the robots' ball detections: vision that cannot see
+// the ball is refused unless the rule does without them.
+TEST(ExperimentFile, FoundRuleNeedsBallDetections) {
+  const std::string off = replaced(kGood, "found: {distance: 0.3}\n",
+                                   "found: {distance: 0.3, sees: true}\nvision: {ball: {enabled: false}}\n");
+  expectError(off, "bad.yaml:5: found.sees", "needs the robots' ball detections");
+  expectError(replaced(off, "distance: 0.3, sees: true", "distance: 0.3"), "bad.yaml:6: vision",
+              "needs the robots' ball detections");
+  EXPECT_EQ(errorOf(replaced(off, "sees: true", "sees: false")), "");
+}
+
+TEST(ExperimentFile, StartPenalisedRange) {
+  expectError(replaced(kGood, "seed: 1\n", "seed: 1\nstart: {penalised: 0}\n"), "bad.yaml:3: start.penalised",
+              "must be in [0.05, 60]");
+  expectError(replaced(kGood, "seed: 1\n", "seed: 1\nstart: {penalized: 1}\n"), "bad.yaml:3:",
+              "unknown key 'penalized'");
+}
+
 TEST(ExperimentFile, DuplicatePlayers) {
   expectError(replaced(kGood, "player: 3", "player: 2"), "bad.yaml:13: setups[0].robots[1].player",
               "team 19 player 2 appears twice");
@@ -206,6 +224,26 @@ TEST(ExperimentFile, ShippedExperiments) {
 
   const Experiment script = Experiment::loadFile(src + "/scenarios/findball_script.yaml");
   EXPECT_NO_THROW(checkBehaviours(script, defaultHooks()));
+
+  // The default (scripts/build-and-run.sh): a slice of the simulated
+  // comparison, thesis positions and start points, both components.
+  const Experiment quick = Experiment::loadFile(src + "/scenarios/findball_quick.yaml");
+  EXPECT_EQ(quick.numTrials(), 30);
+  ASSERT_EQ(quick.setups.size(), 2u);
+  EXPECT_EQ(quick.setups[0].thesis_table, "5.3");
+  EXPECT_EQ(quick.setups[1].thesis_table, "5.4");
+  EXPECT_EQ(quick.setups[0].robots[0].behaviour, Behaviour::FindBall2016);
+  EXPECT_EQ(quick.setups[1].robots[0].behaviour, Behaviour::FindBall2017);
+  EXPECT_DOUBLE_EQ(quick.time_limit, full.time_limit);
+  EXPECT_DOUBLE_EQ(quick.found.distance, full.found.distance);
+  for (const BallPosition& b : quick.balls) {
+    EXPECT_NEAR(b.x * 1000, thesisBallPositions().at(b.number - 1).x_mm, 1e-9) << "position " << b.number;
+    EXPECT_NEAR(b.y * 1000, thesisBallPositions().at(b.number - 1).y_mm, 1e-9) << "position " << b.number;
+  }
+  for (size_t k = 0; k < quick.setups[0].robots.size(); ++k) {
+    EXPECT_DOUBLE_EQ(quick.setups[0].robots[k].x, full.setups[0].robots[k].x);
+    EXPECT_DOUBLE_EQ(quick.setups[0].robots[k].y, full.setups[0].robots[k].y);
+  }
 }
 
 // The vision: block is the scenario's (read by sim/vision's reader): checked
@@ -253,8 +291,27 @@ TEST(ExperimentFile, TrialSpecs) {
   ASSERT_TRUE(sc.ball.has_value());
   EXPECT_DOUBLE_EQ(sc.ball->second, 1.5);
   EXPECT_EQ(sc.seed, t4.seed);
-  EXPECT_DOUBLE_EQ(sc.duration, e.time_limit);
+  // 1 s penalised (the default start), then the time limit.
+  EXPECT_EQ(playTick(e), 100);
+  EXPECT_DOUBLE_EQ(sc.duration, 1.0 + e.time_limit);
   ASSERT_EQ(sc.robots.size(), 1u);
   EXPECT_EQ(sc.robots[0].player, 2);
   EXPECT_EQ(sc.robots[0].actions.size(), 1u);
+  // findballexp's start: penalised from t = 0 (INITIAL), then PLAYING and
+  // unpenalised at 1 s, left where they stand.
+  EXPECT_EQ(sc.game.initial_state, agent::libagent::GameStateValue::Initial);
+  ASSERT_EQ(sc.game.timeline.size(), 1u);
+  EXPECT_EQ(sc.game.timeline[0].state, agent::libagent::GameStateValue::Playing);
+  EXPECT_DOUBLE_EQ(sc.game.timeline[0].t_s, 1.0);
+  ASSERT_EQ(sc.game.penalties.size(), 2u);
+  EXPECT_DOUBLE_EQ(sc.game.penalties[0].t_s, 0.0);
+  EXPECT_NE(sc.game.penalties[0].penalty, agent::libagent::Penalty::None);
+  EXPECT_LT(sc.game.penalties[0].duration_s, 0);  // until lifted
+  EXPECT_DOUBLE_EQ(sc.game.penalties[1].t_s, 1.0);
+  EXPECT_EQ(sc.game.penalties[1].penalty, agent::libagent::Penalty::None);
+  EXPECT_EQ(sc.game.on_unpenalise, game::GameConfig::Return::Sideline);
+  // start: {penalised: 2.5}
+  const Experiment late = Experiment::parse(exptest::tinyExperiment(3) + "start: {penalised: 2.5}\n", "tiny.yaml");
+  EXPECT_EQ(playTick(late), 250);
+  EXPECT_DOUBLE_EQ(trialScenario(late, t4).game.timeline[0].t_s, 2.5);
 }
