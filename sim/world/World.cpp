@@ -88,6 +88,7 @@ Eigen::Isometry3d planarPose(double x, double y, double theta, double z) {
 World::World(const FieldConfig& field, const WorldConfig& config)
     : impl_(std::make_unique<Impl>()), field_(field), config_(config) {
   if (config_.substeps < 1) throw ConfigError("world: substeps must be >= 1");
+  if (!(config_.quick_w > 0 && config_.quick_w < 2)) throw ConfigError("world: quick_w must be in (0, 2)");
   if (config_.sole_nx < 1 || config_.sole_ny < 1 || config_.sole_nx * config_.sole_ny > 64)
     throw ConfigError("world: sole_nx x sole_ny must be 1..64 points");
   if (!(config_.sole_stiffness > 0) || !(config_.sole_damping >= 0))
@@ -98,6 +99,7 @@ World::World(const FieldConfig& field, const WorldConfig& config)
   dWorldSetERP(world_, config_.erp);
   dWorldSetCFM(world_, config_.cfm);
   dWorldSetQuickStepNumIterations(world_, config_.quick_iterations);
+  dWorldSetQuickStepW(world_, config_.quick_w);
   // Let resting contacts sink 1 mm before pushing back (stops jitter), and
   // cap the push-out speed so deep penetrations resolve without a kick.
   dWorldSetContactSurfaceLayer(world_, 0.001);
