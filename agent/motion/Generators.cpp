@@ -170,10 +170,16 @@ void KeyframeGenerator::tick(double dt, libagent::JointValues& out, bool with_he
 // thigh forward, ShoulderPitch 0 points the arms along the torso's x,
 // pi/2 down along the body, > pi/2 behind it.
 std::vector<Keyframe> getupFrontFrames(const WalkConfig& cfg) {
-  // Tuned in simswift (random search over these poses, pushed-over trials):
-  // 10 / 10 stand within ~6 s of the push. The shoulders (2.3 N*m) cannot
-  // lift the chest by swinging the arms into the ground, so the arms go round:
-  // out sideways, turned overhead, and the strong legs do the lifting.
+  // Tuned in simswift for the NAO's motors (torque falling linearly with
+  // speed, gear efficiency 0.8; issue 10) by scripts/tune-getup-front.py, an
+  // evolution strategy over the frames after the arms are overhead, scored
+  // on pushed-over trials with noise seeds 500-505 (the test uses 100-109).
+  // The previous sequence swept the arms from overhead down under the
+  // shoulders while the chest lay on them: a 2.3 N*m shoulder cannot lift the
+  // chest on a 0.2 m lever, so it stalled. This one tucks the legs first,
+  // then pikes (hips flexed, knees straight, legs spread by HipYawPitch) so
+  // the weight rocks back onto the feet and the arms only steady it; the
+  // strong leg motors do the lifting.
   std::vector<Keyframe> f;
   JointArray a{};
   // Face down: arms out sideways along the ground (free to move there).
@@ -183,26 +189,26 @@ std::vector<Keyframe> getupFrontFrames(const WalkConfig& cfg) {
   // Turn the arms about their own axis to point overhead.
   setArms(a, -1.357f, 1.3f, 0.0f, -0.05f);
   f.push_back({0.3, a, 1.0f});
-  // Sweep them in beside the head along the ground, elbows half bent.
-  setArms(a, -1.357f, 0.19f, 0.0f, -0.657f);
-  f.push_back({0.33, a, 1.0f});
-  // Hands down under the shoulders while the legs tuck (knees under the hips,
-  // HipYawPitch opened): the hips rise and the chest comes off the ground.
-  setArms(a, 0.181f, 0.19f, 0.0f, -0.115f);
-  setLegs(a, -0.487f, 0.26f, -1.53f, 2.11f, -0.53f);
-  f.push_back({0.504, a, 1.0f});
-  // Arms push back, legs spread wide (HipYawPitch -1 rad, rolls out): the
-  // body rocks back over the feet into a wide squat.
-  setArms(a, 0.574f, 0.19f, 0.0f, -0.531f);
-  setLegs(a, -1.015f, 0.6f, -1.498f, 1.428f, -0.443f);
-  f.push_back({0.6, a, 1.0f});
-  // Close the legs into a deep squat, arms forward for balance.
-  setArms(a, 0.805f, 0.15f, -1.2f, -0.4f);
-  setLegs(a, -0.321f, 0.332f, -1.184f, 1.917f, -0.68f);
-  f.push_back({0.828, a, 1.0f});
-  // Crouch, then stand (slowly: the CoM must stay over the feet).
-  f.push_back({1.307, crouchAngles(), 1.0f});
-  f.push_back({0.8, walkStandAngles(cfg), 1.0f});
+  // Arms in beside the head, elbows turned; legs still straight.
+  setArms(a, -1.076f, 0.219f, -0.990f, -0.657f);
+  setLegs(a, 0.282f, 0.227f, -0.334f, -0.053f, 0.030f, -0.126f);
+  f.push_back({0.2, a, 1.0f});
+  // Quick tuck: knees under the hips, HipYawPitch opened; arms stay forward.
+  setArms(a, -1.5f, 0.188f, -1.277f, -0.04f);
+  setLegs(a, -0.642f, 0.519f, -1.502f, 1.894f, -0.213f, 0.278f);
+  f.push_back({0.2, a, 1.0f});
+  // Pike: knees straight with the hips fully flexed and the legs spread, the
+  // arms pushing back: the weight rocks back over the feet.
+  setArms(a, 0.390f, 0.649f, 1.160f, -0.417f);
+  setLegs(a, -0.762f, 0.521f, -1.53f, -0.032f, -0.232f, -0.105f);
+  f.push_back({0.591, a, 1.0f});
+  // Sink into a wide squat, arms forward for balance.
+  setArms(a, 0.868f, 0.092f, -1.28f, -0.04f);
+  setLegs(a, -0.552f, 0.561f, -1.103f, 1.434f, -0.283f, 0.283f);
+  f.push_back({0.81, a, 1.0f});
+  // Crouch, then stand.
+  f.push_back({0.357, crouchAngles(), 1.0f});
+  f.push_back({0.302, walkStandAngles(cfg), 1.0f});
   return f;
 }
 

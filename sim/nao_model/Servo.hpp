@@ -21,19 +21,17 @@ struct ServoConfig {
   // the next tick) a step command shows in the measured angle after about
   // 20 ms: the 2 DCM cycles SPL teams report for the NAO (the thesis, section
   // 3.3.1.2, describes the same one-tick actuation delay on its simulator).
-  double kp = 60.0;           // 1/s (100 with the faithful motor, see TODO below)
+  double kp = 100.0;          // 1/s
   // Gear efficiency: the fraction of the motor torque times the reduction
   // that reaches the joint. Not published; planetary + spur stages of this
   // size are 0.6-0.8 (facts.md section 1). 0.8 is the upper end: the NAO's
   // type B legs must hold a one-legged 5.3 kg crouch at 210 mm hip height
   // and its get-ups lift the body with them.
-  double gear_efficiency = 1.0;
-  // TODO(issue 10): the faithful motor is the DC-motor line (torque_speed_line
-  // = true), gear_efficiency 0.8 and kp 100 (a 10 ms position loop). Walk and
-  // kick work with it, but the get-ups (keyframes tuned on the old servo)
-  // stand 0 / 10 and must be retuned first; until then the defaults keep the
-  // old servo: a hard velocity motor capped at the stall torque.
-  bool torque_speed_line = false;
+  double gear_efficiency = 0.8;
+  // The DC motor's torque-speed line (torque = stall at rest, 0 at the
+  // no-load speed). false: a hard velocity motor capped at the stall torque
+  // (the servo before issue 10; kept for comparisons).
+  bool torque_speed_line = true;
   double torque_scale = 1.0;   // multiplies every joint's torque (tests)
   double limp_damping = 0.02;  // N*m*s/rad of friction left in a limp joint
   // Floor (kg*m^2) on every link's principal moments of inertia, applied when

@@ -3,7 +3,7 @@
 // FieldGeometry.cpp, the hash in StateHash.cpp.
 //
 // SOLVER AND SUBSTEPS (WorldConfig defaults): dWorldQuickStep, 20
-// iterations, 2 substeps of 5 ms, with RobotBody's inertia floor
+// iterations, over-relaxation 1.7, 2 substeps of 5 ms, with RobotBody's inertia floor
 // (ServoConfig::min_link_inertia = 5e-4 kg m^2, the motors' reflected rotor
 // inertia). Why, measured with the URDF NAO holding a knee-bent stand for
 // 10 s (CPU-time real-time factor for 1 / 3 / 10 robots, no sensors, on a
@@ -44,6 +44,31 @@
 // iterations or substeps shrink it, and both cost more than the 10 % of
 // speed allowed. ERP 0.8 at 20 iterations is the best that keeps the speed:
 // it does NOT reach the 0.5 mm goal (1.5 mm peak, 0.6 mm typical).
+//
+// Issue 10, second pass, with the faithful motor on (torque-speed line,
+// efficiency 0.8, kp 100), same bench walk (seed 5), one run each (the CPU
+// RTF is noisy on the shared machine: 40-58 for identical settings):
+//
+//   setting (else ERP 0.8, 20 iter, W 1.3)  peak / median  slip mean  RTF
+//   baseline                               : 1.46 / 0.61 mm  3.0 mm   56
+//   QuickStep W 1.0                        : 1.68 / 0.90 mm  3.9 mm   49
+//   QuickStep W 1.5                        : 1.38 / 0.48 mm  2.9 mm   50
+//   QuickStep W 1.7 (CHOSEN)               : 1.08 / 0.35 mm  2.7 mm   54-58
+//   QuickStep W 1.8                        : 1.18 / 0.34 mm  2.7 mm   59
+//   QuickStep W 1.9                        : 2.32 / 0.54 mm  3.3 mm   52
+//   W 1.7 + ERP 0.9                        : 1.30 / 0.35 mm  2.8 mm
+//   sole grid 3 x 2 / 2 x 2 (W 1.3)        : 1.63 / 1.68 mm  3.3 / 2.4 mm
+//   CFM 1e-6 / 1e-4 (W 1.3)                : 1.51 / 1.48 mm  3.1 mm
+//   25 / 30 iterations (W 1.3)             : 1.21 / 0.98 mm  2.3 / 2.1 mm  40 / 44
+//   per-hinge ERP: not available for a hinge's positional rows in ODE 0.16.2
+//     (dParamERP / dParamCFM on a hinge set its motor and stop rows only).
+//
+// Over-relaxation 1.7 speeds up the Gauss-Seidel convergence through the
+// chain of light leg links at no cost; above 1.8 it overshoots. It halves
+// the typical separation (median 0.35 mm, 99 % of ticks below 0.84 mm) but
+// the PEAK stays at 1.1 mm and the stance slip at 2.7 mm/step mean: the
+// issue's 0.5 mm peak and 2 mm slip are NOT met within the speed budget
+// (30 iterations get 1.0 mm / 2.1 mm at about -25 % RTF).
 //
 // ORDER OF ONE TICK (step()), fixed:
 //   for each substep of dt = 10 ms / substeps:
@@ -88,6 +113,7 @@ Eigen::Isometry3d planarPose(double x, double y, double theta, double z) {
 World::World(const FieldConfig& field, const WorldConfig& config)
     : impl_(std::make_unique<Impl>()), field_(field), config_(config) {
   if (config_.substeps < 1) throw ConfigError("world: substeps must be >= 1");
+  if (!(config_.quick_w > 0 && config_.quick_w < 2)) throw ConfigError("world: quick_w must be in (0, 2)");
   if (config_.sole_nx < 1 || config_.sole_ny < 1 || config_.sole_nx * config_.sole_ny > 64)
     throw ConfigError("world: sole_nx x sole_ny must be 1..64 points");
   if (!(config_.sole_stiffness > 0) || !(config_.sole_damping >= 0))
@@ -98,6 +124,7 @@ World::World(const FieldConfig& field, const WorldConfig& config)
   dWorldSetERP(world_, config_.erp);
   dWorldSetCFM(world_, config_.cfm);
   dWorldSetQuickStepNumIterations(world_, config_.quick_iterations);
+  dWorldSetQuickStepW(world_, config_.quick_w);
   // Let resting contacts sink 1 mm before pushing back (stops jitter), and
   // cap the push-out speed so deep penetrations resolve without a kick.
   dWorldSetContactSurfaceLayer(world_, 0.001);

@@ -27,6 +27,7 @@ struct WorldConfig {
   Solver solver = Solver::Quick;     // see World.cpp for why (measured)
   int substeps = 2;                  // physics steps per 10 ms tick
   int quick_iterations = 20;
+  double quick_w = 1.7;              // QuickStep's over-relaxation (ODE's default 1.3), see World.cpp
   double erp = 0.8;
   double cfm = 1e-5;
   double gravity = 9.81;             // m/s^2

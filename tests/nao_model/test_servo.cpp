@@ -181,3 +181,12 @@ TEST(Servo, JointUnderKnownLoadSlowsAlongTheTorqueSpeedLine) {
     dWorldDestroy(w);
   }
 }
+
+// The defaults are the NAO's motor (issue 10): the torque-speed line on,
+// gear efficiency 0.8, a 10 ms position loop.
+TEST(Servo, DefaultsAreTheFaithfulMotor) {
+  const ServoConfig cfg;
+  EXPECT_TRUE(cfg.torque_speed_line);
+  EXPECT_DOUBLE_EQ(cfg.gear_efficiency, 0.8);
+  EXPECT_DOUBLE_EQ(cfg.kp, 100.0);
+}

@@ -136,6 +136,19 @@ TEST(MotionGetupTuning, DISABLED_Trace) {
                   s[S::InertialSensor_AngleY], h.motion().getupAttempts(), q[J::LShoulderPitch], c[J::LShoulderPitch],
                   q[J::LElbowRoll], c[J::LElbowRoll], q[J::LHipYawPitch], c[J::LHipYawPitch], q[J::LHipPitch],
                   c[J::LHipPitch], q[J::LKneePitch], c[J::LKneePitch], q[J::LAnklePitch], c[J::LAnklePitch]);
+      if (std::getenv("GETUP_TORQUE")) {
+        // Torque delivered / the motor's cap at rest (stall x efficiency x stiffness), per left joint.
+        const auto& robot = h.runner().world().robot(0);
+        std::printf("        torque/stall:");
+        for (const char* name : {"LShoulderPitch", "LShoulderRoll", "LElbowRoll", "LHipYawPitch", "LHipRoll",
+                                 "LHipPitch", "LKneePitch", "LAnklePitch"}) {
+          const int j = robot.model().jointIndex(name);
+          const auto& lim = robot.servos().limits(j);
+          const double stall = lim.max_effort * robot.servos().config().gear_efficiency;
+          std::printf(" %s %+.2f", name + 1, robot.jointTorque(j) / stall);
+        }
+        std::printf("\n");
+      }
     }
     if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > 0.25) {
       up_at = i * 0.01;
