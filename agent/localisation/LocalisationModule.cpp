@@ -23,9 +23,13 @@ void LocalisationModule::run(blackboard::Blackboard& board) {
     perception::odometryStep(last_, motion.odometry, &f, &l, &t);
   }
   last_ = motion.odometry;
-  // A penalised robot is carried off and put back at the sideline.
-  if (was_penalised_ && !game.penalised) filter_.reset(InitialPose::PenaltyReturn);
+  // A robot penalised while playing is carried off and put back at the
+  // penalty return spot. One penalised before it ever played (in INITIAL,
+  // as at the start of a test) stays where it entered: its sideline-entry
+  // belief still holds, so it is kept.
+  if (was_penalised_ && !game.penalised && has_played_) filter_.reset(InitialPose::PenaltyReturn);
   was_penalised_ = game.penalised;
+  if (game.state == blackboard::GameStateId::PLAYING && !game.penalised) has_played_ = true;
   filter_.update(f, l, t, board.vision.read(), frame.time,
                  game.penalised || perception::postureIsDown(motion.posture));
   board.localisation.write(filter_.estimate());

@@ -3,7 +3,8 @@
 //
 // Initial poses come from the game state: when the game starts in INITIAL or
 // READY, the belief starts on the own half's touch lines (robots enter from
-// the sideline); it restarts at the penalty return spot when a penalty ends.
+// the sideline); it restarts at the penalty return spot when a penalty given
+// during play ends (a robot penalised since the start keeps its entry belief).
 // With no game, or one that starts in PLAYING (a test field, robots placed
 // by hand), it starts at `known_start` when the team configured one (as on a
 // test bench), otherwise anywhere in the own half.
@@ -38,6 +39,7 @@ class LocalisationModule : public program::Module {
   Localiser filter_;
   bool started_ = false;
   bool was_penalised_ = false;
+  bool has_played_ = false;  // was in PLAYING, unpenalised, at some frame
   blackboard::Odometry last_;
 };
 
