@@ -13,6 +13,7 @@
 
 #include "agent/behaviour/Geometry.hpp"
 #include "agent/behaviour/SearchPayload.hpp"
+#include "agent/motion/WalkConfig.hpp"
 
 namespace agent::behaviour {
 
@@ -61,10 +62,11 @@ struct GameInfo {
 };
 
 // The walk's real (achieved) top speeds, for planning and travel times.
+// Defaults: the walk's own limits (one home: agent/motion/WalkConfig.hpp).
 struct WalkLimits {
-  double max_forward = 300.0;  // mm/s
-  double max_left = 200.0;     // mm/s
-  double max_turn = 0.8;       // rad/s
+  double max_forward = motion::WalkConfig{}.max_forward;  // mm/s
+  double max_left = motion::WalkConfig{}.max_left;        // mm/s
+  double max_turn = motion::WalkConfig{}.max_turn;        // rad/s
 };
 
 struct BehaviourInputs {
