@@ -129,9 +129,9 @@ int main(int argc, char** argv) {
           printSensors(s, t_us);
           const agent::blackboard::GameInfo g = program.board().game.read();
           const agent::blackboard::TeamInfo tm = program.board().team.read();
-          std::printf("  game: known %d state %s penalised %d | team: sent %lld received %lld\n", g.known ? 1 : 0,
+          std::printf("  game: known %d state %s penalised %d | team: received %lld malformed %lld\n", g.known ? 1 : 0,
                       agent::blackboard::gameStateName(g.state), g.penalised ? 1 : 0,
-                      static_cast<long long>(tm.sent), static_cast<long long>(tm.received));
+                      static_cast<long long>(tm.received), static_cast<long long>(tm.malformed));
           std::fflush(stdout);
         });
       program.start();

@@ -14,42 +14,25 @@
 #include <string>
 
 #include "BenchResults.hpp"
-#include "agent/program/Postures.hpp"
+#include "BenchSetup.hpp"
 #include "sim/camera/RobotCameras.hpp"
 #include "sim/camera/Yuv.hpp"
 #include "sim/world/World.hpp"
 
 using namespace simswift;
 using namespace simswift::camera;
-using Clock = std::chrono::steady_clock;
-
-namespace {
-
-// The robot program's standing posture (agent/program/Postures.hpp), model joint order.
-std::vector<double> standingPosture(const NaoModel& m) {
-  return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
-}
-
-double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
-
-}  // namespace
+using bench::Clock;
+using bench::seconds;
 
 int main(int argc, char** argv) {
-  std::string out = SIMSWIFT_BENCH_RESULTS;
-  int frames = 300;
-  double sim_seconds = 10.0;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--out") && i + 1 < argc) out = argv[++i];
-    else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--seconds") && i + 1 < argc) sim_seconds = std::atof(argv[++i]);
-    else {
-      std::fprintf(stderr, "usage: %s [--out FILE] [--frames N] [--seconds S]\n", argv[0]);
-      return 2;
-    }
-  }
+  bench::FrameArgs args;  // --frames default 300
+  if (!bench::parseFrameArgs(argc, argv, &args)) return 2;
+  const std::string& out = args.out;
+  const int frames = args.frames;
+  const double sim_seconds = args.sim_seconds;
 
-  auto model = std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
-  const auto q = standingPosture(*model);
+  const auto model = bench::loadNao();
+  const auto q = bench::standingPosture(*model);
 
   // --- One camera: a game-like view (field, goal, another robot, ball).
   {

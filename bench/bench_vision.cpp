@@ -16,16 +16,15 @@
 #include <string>
 
 #include "BenchResults.hpp"
-#include "agent/program/Postures.hpp"
+#include "BenchSetup.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/vision/VisionOracle.hpp"
 
 using namespace simswift;
-using Clock = std::chrono::steady_clock;
+using bench::Clock;
+using bench::seconds;
 
 namespace {
-
-double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
 // 3 robots walking through the runner (which runs the oracle in every
 // frame). At each frame the bench also times one extra oracle pass over the
@@ -87,23 +86,17 @@ Walking walking(double sim_s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string out = SIMSWIFT_BENCH_RESULTS;
-  int frames = 3000;
-  double sim_seconds = 10.0;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--out") && i + 1 < argc) out = argv[++i];
-    else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--seconds") && i + 1 < argc) sim_seconds = std::atof(argv[++i]);
-    else {
-      std::fprintf(stderr, "usage: %s [--frames N] [--seconds S] [--out FILE]\n", argv[0]);
-      return 2;
-    }
-  }
+  bench::FrameArgs args;
+  args.frames = 3000;
+  if (!bench::parseFrameArgs(argc, argv, &args)) return 2;
+  const std::string& out = args.out;
+  const int frames = args.frames;
+  const double sim_seconds = args.sim_seconds;
 
   // --- The oracle alone, 3 robots, static game-like scene.
   {
-    auto model = std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
-    const auto q = model->postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+    const auto model = bench::loadNao();
+    const auto q = bench::standingPosture(*model);
     World world(FieldConfig::spl2017());
     world.addRobot(model, -1.5, 0.0, 0.0, q);
     world.addRobot(model, -1.0, 1.5, -0.8, q);

@@ -20,13 +20,11 @@ and a candidate scores the mean over its trials. Tune on other noise seeds
 
 Standard library only; --workers processes (default 1: the machine is shared).
 """
-import argparse
-import json
 import os
-import random
-import subprocess
-import tempfile
-from multiprocessing import Pool
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from getup_tuning import check_runner, clamp, evolve, parser, run_trial, start_mean, up_score  # noqa: E402
 
 # Symmetric frame columns (GETUP_FRAMES format) and their ranges (rad):
 # sp sr ey er hyp hr hp kn ap ar.
@@ -45,10 +43,6 @@ START = [
 START_TAIL = [1.307, 0.8]  # crouch, stand durations
 
 
-def clamp(v, lo, hi):
-    return max(lo, min(hi, v))
-
-
 def norm(v, lo, hi):
     return (v - lo) / (hi - lo)
 
@@ -62,7 +56,7 @@ def start_genes(frames):
     return x
 
 
-def decode(x, nframes):
+def decode(x, nframes=len(START)):
     lines = [OPENING.rstrip("\n")]
     w = 1 + len(RANGES)
     for f in range(nframes):
@@ -76,65 +70,24 @@ def decode(x, nframes):
     return "\n".join(lines) + "\n"
 
 
-def trial_score(args, text, trial):
-    with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
-        f.write(text)
-        path = f.name
-    env = dict(os.environ, GETUP_DIR="front", GETUP_FRAMES=path, GETUP_SEED=str(trial), GETUP_ONE="1",
-               GETUP_QUIET="1", GETUP_SEED_BASE=str(args.seed_base))
-    out = subprocess.run([args.runner, "--gtest_filter=*DISABLED_Trace", "--gtest_also_run_disabled_tests"],
-                         env=env, capture_output=True, text=True).stdout
-    os.unlink(path)
-    for line in out.splitlines():
-        if line.startswith("RESULT"):  # RESULT front trial N: UP|down up_at T attempts A best R besth H
-            w = line.split()
-            if w[4] == "UP":
-                return 3 + (13 - float(w[6])) / 13
-            return float(w[w.index("best") + 1])
-    raise RuntimeError("no RESULT line from %s (is it built with the tuning test?)" % args.runner)
-
-
 def score(job):
-    args, x, nframes = job
-    text = decode(x, nframes)
-    results = [trial_score(args, text, t) for t in range(args.trials)]
+    args, x = job
+    text = decode(x)
+    results = []
+    for t in range(args.trials):
+        w = run_trial(args, text, t, "front")
+        up = up_score(w)
+        results.append(up if up is not None else float(w[w.index("best") + 1]))
     return sum(results) / len(results)
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--runner", default="build/tests/test_runner")
-    p.add_argument("--start", help="JSON written by an earlier run (its x is the start)")
-    p.add_argument("--sigma", type=float, default=0.1, help="mutation step in gene units (0..1)")
-    p.add_argument("--generations", type=int, default=40)
-    p.add_argument("--trials", type=int, default=3, help="pushed-over trials per candidate")
-    p.add_argument("--seed-base", type=int, default=500, help="noise seed base (the test uses 100)")
-    p.add_argument("--rng", type=int, default=1, help="seed of the search itself")
+    p = parser(__doc__, sigma=0.1, generations=40, trials=3, test_seed=100, out="getup-front-best.json")
     p.add_argument("--workers", type=int, default=1)
-    p.add_argument("--out", default="getup-front-best.json")
     args = p.parse_args()
-    if not os.path.exists(args.runner):
-        p.error("--runner %s: no such file (build the tests first)" % args.runner)
-
-    nframes = len(START)
-    rng = random.Random(args.rng)
-    mean = json.load(open(args.start))["x"] if args.start else start_genes(START)
-    sigma, lam, mu = args.sigma, 12, 3  # (mu/mu, lambda)-ES with the parent re-evaluated
-    best = (float("-inf"), None)
-    with Pool(args.workers) as pool:
-        for g in range(args.generations):
-            pop = [[clamp(m + sigma * rng.gauss(0, 1), -0.05, 1.05) for m in mean] for _ in range(lam)] + [mean]
-            scores = pool.map(score, [(args, x, nframes) for x in pop])
-            order = sorted(range(len(pop)), key=lambda i: -scores[i])
-            if scores[order[0]] > best[0]:
-                best = (scores[order[0]], pop[order[0]])
-                with open(args.out, "w") as f:
-                    json.dump({"score": best[0], "x": best[1], "frames": decode(best[1], nframes)}, f)
-            mean = [sum(pop[i][d] for i in order[:mu]) / mu for d in range(len(mean))]
-            sigma *= 0.98
-            print("generation %d: best %.3f, this generation %.3f, parent %.3f, sigma %.3f"
-                  % (g, best[0], scores[order[0]], scores[-1], sigma), flush=True)
-    print("best frames (%s):\n%s" % (args.out, decode(best[1], nframes)))
+    check_runner(p, args)
+    evolve(args, score, start_mean(args, start_genes(START)), decode, lam=12, mu=3, lo=-0.05, hi=1.05,
+           decay=0.98, workers=args.workers)
 
 
 if __name__ == "__main__":

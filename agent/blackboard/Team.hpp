@@ -27,7 +27,6 @@ struct TeamInfo {
   TeammateReport mates[kMaxTeammates + 1];  // indexed by player number (0 unused)
   int64_t received = 0;   // packets accepted
   int64_t malformed = 0;  // packets dropped as malformed
-  int64_t sent = 0;
 };
 
 }  // namespace agent::blackboard

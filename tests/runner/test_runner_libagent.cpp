@@ -425,9 +425,12 @@ TEST(SimswiftAgent, ExternalProgramReadsTheGameStateAndTalksToItsTeammate) {
   ASSERT_NE(g2, std::string::npos) << text;
   const std::string line = text.substr(g2, text.find('\n', g2) - g2);
   EXPECT_NE(line.find("penalised 1"), std::string::npos) << line;
-  long long sent = -1, received = -1;
-  ASSERT_EQ(std::sscanf(line.substr(line.find("team:")).c_str(), "team: sent %lld received %lld", &sent, &received), 2)
+  long long received = -1, malformed = -1;
+  ASSERT_EQ(std::sscanf(line.substr(line.find("team:")).c_str(), "team: received %lld malformed %lld", &received,
+                        &malformed),
+            2)
       << line;
+  EXPECT_EQ(malformed, 0);
   EXPECT_GE(received, 5);  // the builtin teammate's packets (5 Hz for 2 s)
   const agent::blackboard::TeamInfo mate = r.program(1)->board().team.read();
   EXPECT_TRUE(mate.mates[1].valid) << "the builtin teammate heard nothing from the external player";
