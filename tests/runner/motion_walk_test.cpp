@@ -23,6 +23,19 @@ void relative(const Pose2& a, const Pose2& b, double* fwd, double* left) {
   *left = -s * dx + c * dy;
 }
 
+// Walks at the command (mm/s, rad/s) for 2 s to reach speed, then `seconds`
+// more, measured: the displacement over those seconds in the heading frame
+// at their start (m). False if the robot fell.
+bool walkMeasured(MotionHarness& h, double forward, double left, double turn, double seconds, double* fwd,
+                  double* lft) {
+  h.request(ActionType::WALK, forward, left, turn);
+  bool ok = h.run(2.0);
+  const Pose2 p0 = h.pose();
+  ok = h.run(seconds) && ok;
+  relative(p0, h.pose(), fwd, lft);
+  return ok;
+}
+
 }  // namespace
 
 TEST(MotionPhysics, StandsStill) {
@@ -40,12 +53,8 @@ TEST(MotionPhysics, WalkForwardFullSpeed) {
   MotionHarness h(11, -4.0, 0.0, 0.0);
   h.request(ActionType::STAND);
   ASSERT_TRUE(h.run(1.0));
-  h.request(ActionType::WALK, 300, 0, 0);
-  bool ok = h.run(2.0);
-  const Pose2 p0 = h.pose();
-  ok = h.run(20.0) && ok;
   double fwd, left;
-  relative(p0, h.pose(), &fwd, &left);
+  const bool ok = walkMeasured(h, 300, 0, 0, 20.0, &fwd, &left);
   std::printf("[motion] forward 300 mm/s x 20 s: %.0f mm/s (%.0f %%), drift %.0f mm (%.0f %% of distance)\n",
               fwd / 20 * 1000, fwd / 20 / 0.3 * 100, left * 1000, std::fabs(left / fwd) * 100);
   EXPECT_TRUE(ok) << "fell";
@@ -60,12 +69,8 @@ TEST(MotionPhysics, SideStepFullSpeed) {
   MotionHarness h(12);
   h.request(ActionType::STAND);
   ASSERT_TRUE(h.run(1.0));
-  h.request(ActionType::WALK, 0, 200, 0);
-  bool ok = h.run(2.0);
-  const Pose2 p0 = h.pose();
-  ok = h.run(8.0) && ok;
   double fwd, left;
-  relative(p0, h.pose(), &fwd, &left);
+  const bool ok = walkMeasured(h, 0, 200, 0, 8.0, &fwd, &left);
   std::printf("[motion] left 200 mm/s x 8 s: %.0f mm/s (%.0f %%), forward drift %.0f mm\n", left / 8 * 1000,
               left / 8 / 0.2 * 100, fwd * 1000);
   EXPECT_TRUE(ok) << "fell";
@@ -181,12 +186,8 @@ TEST(MotionPhysics, OdometryAfterThreeMetres) {
 TEST(MotionPhysics, WalkSlowForwardAndCombined) {
   for (uint64_t seed : {21, 22}) {
     MotionHarness h(seed);
-    h.request(ActionType::WALK, 100, 0, 0);
-    bool ok = h.run(2.0);
-    const Pose2 p0 = h.pose();
-    ok = h.run(8.0) && ok;
     double fwd, left;
-    relative(p0, h.pose(), &fwd, &left);
+    const bool ok = walkMeasured(h, 100, 0, 0, 8.0, &fwd, &left);
     std::printf("[motion] forward 100 mm/s x 8 s, seed %llu: %.0f %%\n", static_cast<unsigned long long>(seed),
                 fwd / 8 / 0.1 * 100);
     EXPECT_TRUE(ok);
