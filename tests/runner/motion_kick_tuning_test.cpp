@@ -2,8 +2,11 @@
 // ball placed as MotionPhysics.FullPowerKick* places it, on KICK_N seeds from
 // KICK_SEED_BASE (default 900: tune on other seeds than the tests' 200-239),
 // with the KickConfig fields overridden by KICK_<FIELD> (e.g. KICK_WIND_BACK=90,
-// KICK_REACH, KICK_LIFT, KICK_SHIFT, KICK_HEIGHT, KICK_STRIKE_TIME_FAST).
-// KICK_FOOT=left|right (default right). Prints one line per kick and a summary.
+// KICK_REACH, KICK_LIFT, KICK_SHIFT, KICK_HEIGHT, KICK_STRIKE_TIME_FAST,
+// KICK_ARM_SWING, KICK_ANKLE_ROLL_MARGIN). KICK_FOOT=left|right (default
+// right). Distances prints a summary; Diagnose one line per kick (where the
+// foot meets the ball, foot and ball speeds, the stance foot's slip and yaw,
+// commands at a joint limit), and with KICK_TRACE a line per tick.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,6 +33,7 @@ void overrides(agent::motion::MotionConfig& cfg) {
   override("KICK_REACH", &cfg.kick.reach);
   override("KICK_STRIKE_TIME_FAST", &cfg.kick.strike_time_fast);
   override("KICK_ARM_SWING", &cfg.kick.arm_swing);
+  override("KICK_ANKLE_ROLL_MARGIN", &cfg.kick.ankle_roll_margin);
 }
 }  // namespace
 
