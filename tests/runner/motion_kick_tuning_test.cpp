@@ -3,7 +3,8 @@
 // KICK_SEED_BASE (default 900: tune on other seeds than the tests' 200-239),
 // with the KickConfig fields overridden by KICK_<FIELD> (e.g. KICK_WIND_BACK=90,
 // KICK_REACH, KICK_LIFT, KICK_SHIFT, KICK_HEIGHT, KICK_STRIKE_TIME_FAST,
-// KICK_ARM_SWING, KICK_ANKLE_ROLL_MARGIN). KICK_FOOT=left|right (default
+// KICK_ARM_SWING, KICK_ANKLE_ROLL_MARGIN), KICK_POWER and KICK_DIRECTION (rad)
+// for Distances. KICK_FOOT=left|right (default
 // right). Distances prints a summary; Diagnose one line per kick (where the
 // foot meets the ball, foot and ball speeds, the stance foot's slip and yaw,
 // commands at a joint limit), and with KICK_TRACE a line per tick.
@@ -53,7 +54,9 @@ TEST(MotionKickTuning, DISABLED_Distances) {
     h.request(ActionType::STAND);
     h.run(1.0);
     const Eigen::Vector3d b0 = h.runner().world().ballPosition();
-    h.kick(foot, 1.0, 0.0);
+    const double power = std::getenv("KICK_POWER") ? std::atof(std::getenv("KICK_POWER")) : 1.0;
+    const double direction = std::getenv("KICK_DIRECTION") ? std::atof(std::getenv("KICK_DIRECTION")) : 0.0;
+    h.kick(foot, power, direction);
     if (!h.run(6.0)) ++fell;
     d.push_back((h.runner().world().ballPosition() - b0).head<2>().norm());
   }
