@@ -47,14 +47,14 @@ struct WalkConfig {
   double sway = 0.0;
 
   // --- Support-foot switching from the FSRs' lateral centre of pressure
-  double switch_min_fraction = 0.75;
+  double switch_min_fraction = 0.75;  // of the period before a CoP sign change counts
   // Fraction of the step period in which the feet finish their horizontal
   // motion (step length, sideways step, turn); the remainder only lowers
   // the swing foot. Walk2014 moves the support foot until the very end, so
   // a swing foot that lands early (the FSR switch fires at ~0.94 T) slides
   // against the support foot during weight transfer and the step comes up
   // short; 1.0 restores Walk2014's profile.
-  double horizontal_fraction = 0.9;  // of the period before a CoP sign change counts
+  double horizontal_fraction = 0.9;
   double switch_forced_periods = 3.0; // switch regardless after this many periods
   // kg on both feet together to trust the FSRs (2 N); below it (robot
   // lifted) switch on time (1 period)
@@ -92,14 +92,20 @@ struct WalkConfig {
   double odometry_left_scale = 1.0;
   double odometry_turn_scale = 1.0;
 
-  // --- Heading hold: the yaw rate measured by GyroscopeZ over each step is
-  // compared with the step's turn; a fraction of the error is added to the
-  // next steps' turn (rad/s), up to a limit. Slipping feet otherwise make a
+  // --- Heading hold: the heading rate (headingRate(): GyroscopeX/Y/Z with
+  // AngleX / AngleY, the Euler yaw rate) measured over the last two steps
+  // (one walk cycle: the torso yaws one way on left steps and back on right
+  // steps, so one step's rate is mostly that wobble) is compared with the
+  // turn asked over them; a fraction of the error is added to the next
+  // steps' turn (rad/s), up to a limit. Slipping feet otherwise make a
   // straight walk curve. Only while the feet carry weight.
-  double heading_gain = 0.3;          // of the rate error (rad/s) per step
+  // 0.7: tried 0.15 / 0.3 / 0.5 / 0.7 / 1.0 on seeds 40-49 (forward 200 +
+  // left +-100, 150 + 50, 250 + 100, 10 s): 0.7 held the heading best; 1.0
+  // starts to overshoot from cycle to cycle.
+  double heading_gain = 0.7;          // of the cycle's rate error (rad/s), per step
   double heading_max_correction = 0.6;  // rad/s (0.3 capped the 0.8 rad/s turn at 88 %)
-  // Odometry turn from the gyro (GyroscopeZ, rad/s) while stepping on the
-  // ground; from the feet (x odometry_turn_scale) otherwise.
+  // Odometry turn from headingRate() while stepping on the ground; from
+  // the feet (x odometry_turn_scale) otherwise.
   bool odometry_turn_from_gyro = true;
 
   double stiffness = 1.0;  // leg and arm stiffness while walking
