@@ -40,6 +40,15 @@ bool before(const timespec& a, const timespec& b) {
   return a.tv_sec < b.tv_sec || (a.tv_sec == b.tv_sec && a.tv_nsec < b.tv_nsec);
 }
 
+// Polls before sleeping (BodyHost::waitAnswer): about 50-100 us of pause
+// instructions on x86.
+constexpr int kAnswerSpins = 1000;
+inline void cpuRelax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
+
 // Waits on `s` until the absolute CLOCK_MONOTONIC `deadline`; false on timeout.
 bool waitUntil(sem_t* s, const timespec& deadline) {
   for (;;) {
@@ -291,6 +300,14 @@ bool BodyHost::publishSensors(const SensorValues& values, int64_t sim_time_us, i
 bool BodyHost::answered() const { return al::validSlot(al::loadIndex(block_->actuators_latest)); }
 
 bool BodyHost::waitAnswer(double timeout_s) {
+  // The Motion thread usually answers within tens of microseconds of the
+  // tick: look for the answer a little while before going to sleep, which
+  // saves a futex sleep and wake-up (a fifth of a walking robot's wall time
+  // was the kernel's, measured with perf).
+  for (int spin = 0; spin < kAnswerSpins; ++spin) {
+    if (answered()) return true;
+    cpuRelax();
+  }
   const timespec deadline = monotonicIn(timeout_s);
   int polls = 0;
   for (;;) {

@@ -132,7 +132,8 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
         sidelineSpot(e, w, i, &x, &y, &theta);
         if (tick > play) sample(i, true);  // the walk up to the move counts, the move does not
         run.placeRobot(i, x, y, theta);
-        last[i] = torsoPose(w, i);
+        if (tick > play) sample(i, false);  // where it was put (the track jumps here)
+        else last[i] = torsoPose(w, i);
         ++res.robots[i].sideline_moves;
         down_since[i] = -1;
       }

@@ -110,6 +110,15 @@ RobotBody::RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSp
     dJointSetFeedback(h, &feedback_[j]);
     joints_[j] = h;
   }
+  std::vector<JointProjector::Hinge> hinges;
+  for (const JointSpec& spec : joints) {
+    const Eigen::Vector3d anchor = zero[spec.child_link].translation();
+    auto local = [&](int link) {
+      return Eigen::Vector3d(linkPose(link).linear().transpose() * (anchor - vec(dBodyGetPosition(bodies_[link]))));
+    };
+    hinges.push_back({spec.child_link, spec.parent_link, local(spec.child_link), local(spec.parent_link)});
+  }
+  projector_ = std::make_unique<JointProjector>(bodies_, hinges);
 
   // Geoms: one per collision shape, in the given space, offset from the
   // body (CoM) frame. Self-collision is left to the world's callback, which

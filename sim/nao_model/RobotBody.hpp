@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "sim/nao_model/JointProjector.hpp"
 #include "sim/nao_model/NaoModel.hpp"
 #include "sim/nao_model/Servo.hpp"
 
@@ -70,6 +71,12 @@ class RobotBody {
   // Largest distance (m) between a hinge's anchor as seen from its child and
   // from its parent: how far the joint constraints give under load.
   double anchorSeparation() const;
+  // Called by the World after every physics substep: moves the links so the
+  // hinge anchors meet again (JointProjector); links with pinned[link] set
+  // (touching the ground) stay. Returns the largest separation left (m).
+  double projectJoints(const std::vector<char>& pinned, int sweeps, double tolerance) {
+    return projector_->project(pinned, sweeps, tolerance);
+  }
   dBodyID body(int link) const { return bodies_[link]; }
   dBodyID torsoBody() const { return bodies_[model_->rootLink()]; }
   Eigen::Isometry3d linkPose(int link) const;            // link frame in world
@@ -102,6 +109,7 @@ class RobotBody {
   std::vector<Eigen::Vector3d> com_;
   std::vector<dJointFeedback> feedback_;  // per joint, filled by ODE each step
   std::vector<double> motor_cap_;         // per joint, the motor's torque cap last substep (N*m)
+  std::unique_ptr<JointProjector> projector_;
   // Link frames in the world for torso pose `torso` and joint angles (rad).
   std::vector<Eigen::Isometry3d> forwardKinematics(const Eigen::Isometry3d& torso,
                                                    const std::vector<double>& angles) const;

@@ -30,6 +30,11 @@ struct WorldConfig {
   double quick_w = 1.7;              // QuickStep's over-relaxation (ODE's default 1.3), see World.cpp
   double erp = 0.8;
   double cfm = 1e-5;
+  // After each substep, up to this many Gauss-Seidel sweeps move each
+  // robot's links until its hinge anchors are within the tolerance
+  // (JointProjector; see World.cpp for why). 0 turns it off.
+  int joint_projection_sweeps = 16;
+  double joint_projection_tolerance = 1e-4;  // m
   double gravity = 9.81;             // m/s^2
   double blowup_linear_speed = 50;   // m/s: beyond this a body has blown up
   double blowup_angular_speed = 200; // rad/s
@@ -42,6 +47,14 @@ struct WorldConfig {
   int sole_nx = 4, sole_ny = 3;
   double sole_stiffness = 2.0e5;     // N/m, whole sole: 52 N (the NAO) sinks 0.26 mm
   double sole_damping = 2.0e3;       // N*s/m, whole sole: about critical for 5.3 kg
+  // Static friction that holds (Contacts.cpp): each sole point in contact
+  // remembers where it touched down (m, world xy); the friction rows are
+  // asked to remove this fraction of the drift from it per substep, within
+  // the friction cone, as the joints' ERP does for their anchors. A point
+  // that drifts farther than sole_anchor_slip really slides: it re-anchors
+  // where it is. 0 turns the anchors off.
+  double sole_anchor_erp = 0.2;
+  double sole_anchor_slip = 0.005;   // m
   ServoConfig servo;
 };
 
@@ -133,6 +146,7 @@ class World {
 
  private:
   void checkBlowUps();
+  void projectJoints();
   void checkPlacement(const char* what, double x, double y, double theta) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -5,6 +5,8 @@
 #include <ode/ode.h>
 
 #include <Eigen/Geometry>
+#include <array>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -16,6 +18,7 @@ namespace simswift {
 struct ContactCandidate {
   dContactGeom geom;   // as dCollide returned it (normal pushes g1's body out)
   GeomTag a, b;        // tags of geom.g1 and geom.g2
+  int sole_point = -1; // for a sole grid point on the ground: its index in the grid
 };
 
 struct World::Impl {
@@ -54,9 +57,18 @@ struct World::Impl {
     bool first;
     size_t slot;  // index into feedback
     Eigen::Vector3d position;
+    bool sole;    // a point of a sole's patch on the ground
   };
   std::vector<dJointFeedback> feedback;
   std::vector<Feedback> feedback_meta;
+
+  // Sole points in contact with the ground: where each touched down (m,
+  // world xy), keyed by (robot, link, grid point). Rebuilt every substep
+  // from the contacts; a point that lifts off is forgotten.
+  std::map<std::array<int, 3>, Eigen::Vector2d> sole_anchors;
+
+  // Scratch: which links of one robot touch the ground (World::projectJoints).
+  std::vector<char> pinned;
 
   // Reused ray for rayCast (not in any space).
   dGeomID ray = nullptr;
@@ -67,6 +79,10 @@ struct World::Impl {
   // substep of `dt` s (sorted, so the order never depends on memory).
   void collide(dWorldID world, dSpaceID space, const FieldConfig& field, const WorldConfig& cfg,
                double dt);
+  // Contacts.cpp: the friction drift correction of one sole point on the
+  // ground (reads sole_anchors, writes the point's anchor into `anchors`).
+  void anchorSolePoint(const ContactCandidate& c, const WorldConfig& cfg, double dt,
+                       std::map<std::array<int, 3>, Eigen::Vector2d>& anchors, dContact& contact) const;
   // Contacts.cpp: after the step, appends the robot-link contact forces,
   // scaled by `scale` (1/substeps), to `out`.
   void gatherContacts(double scale, std::vector<LinkContact>& out) const;

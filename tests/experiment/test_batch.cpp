@@ -375,15 +375,16 @@ TEST(Batch, FallenRobotMovedToTheSideline) {
   // robot may be moved in the middle of its get-up, which then topples it:
   // as when a referee picks up a robot that is getting up.)
   EXPECT_EQ(r.robots[0].sideline_moves, 1);
-  // The sample taken at the move: on the top touch line (it started at
-  // y = +1), standing (torso above kStandHeight is not in the track, but its
-  // heading is), facing the field. What the script robot does afterwards
-  // is its own business.
+  // The sample taken at the move, where the robot was put: on the top touch
+  // line (it started at y = +1), standing (torso above kStandHeight is not in
+  // the track, but its heading is), facing the field. What the script robot
+  // does afterwards is its own business.
   bool moved = false;
+  const double play_s = static_cast<double>(playTick(e)) * simswift::kTickSeconds;  // track clock's zero
   for (const TrackSample& p : r.tracks)
     if (std::abs(p.y - 3.0) < 0.02 && std::abs(p.theta + M_PI / 2) < 0.05) {
       moved = true;
-      EXPECT_GE(p.t, 0.5 + 1.5);  // pushed at 0.5 s, then 1.5 s down at least
+      EXPECT_GE(p.t + play_s, 0.5 + 1.5);  // pushed at 0.5 s (scenario clock), then 1.5 s down at least
       break;
     }
   EXPECT_TRUE(moved);

@@ -71,6 +71,7 @@ TEST(MotionPhysics, FullPowerKickLeft) { kickTrials(Foot::LEFT, 220); }
 // within 10 s in at least 9 of 10.
 void getupTrials(bool forwards) {
   int standing = 0;
+  double separation = 0;  // m: the hinge anchors, fall and get-up included (issue 10: < 0.5 mm)
   for (int trial = 0; trial < 10; ++trial) {
     MotionHarness h(100 + trial + (forwards ? 0 : 50));
     h.request(ActionType::STAND);
@@ -82,6 +83,7 @@ void getupTrials(bool forwards) {
     double up_at = 0;  // s after the push
     for (int i = 0; i < 1000 && !up_again; ++i) {  // standing within 10 s of the push, fall included
       h.run(0.01);
+      separation = std::max(separation, h.runner().world().robot(0).anchorSeparation());
       const auto st = h.state();
       if (motion_test::downOrGettingUp(st.posture)) fell = true;
       // Standing again: reported STANDING, torso above 0.25 m and upright within 0.3 rad.
@@ -104,8 +106,10 @@ void getupTrials(bool forwards) {
                 fell ? "fell" : "did not fall", standing_text, h.motion().getupAttempts());
     if (fell && up_again) ++standing;
   }
-  std::printf("[motion] get-up %s: %d / 10\n", forwards ? "front" : "back", standing);
+  std::printf("[motion] get-up %s: %d / 10; hinge anchors apart <= %.2f mm\n", forwards ? "front" : "back", standing,
+              separation * 1000);
   EXPECT_GE(standing, 9);
+  EXPECT_LT(separation, 0.0005);
 }
 
 // Front: 10 / 10 stand on the first attempt, about 6 s after the push
@@ -125,6 +129,7 @@ TEST(MotionPhysics, PushedOverIsDetectedAndFallsLimp) {
     h.run(1.0);
     h.push(forwards ? 3.0 : -3.0, 0.0);
     bool limp_while_falling = false, lying_reported = false;
+    double height_when_lying = 1.0;  // m, torso
     for (int i = 0; i < 300; ++i) {
       h.run(0.01);
       const auto st = h.state();
@@ -133,12 +138,16 @@ TEST(MotionPhysics, PushedOverIsDetectedAndFallsLimp) {
         for (int j = 0; j < agent::libagent::kNumJoints; ++j)
           if (h.checked().last_command.stiffnesses[j] > 0.0f) limp_while_falling = false;
       }
-      if (st.posture == (forwards ? agent::blackboard::BodyState::FALLEN_FORWARD
-                                  : agent::blackboard::BodyState::FALLEN_BACKWARD))
+      if (!lying_reported && st.posture == (forwards ? agent::blackboard::BodyState::FALLEN_FORWARD
+                                                     : agent::blackboard::BodyState::FALLEN_BACKWARD)) {
         lying_reported = true;
+        height_when_lying = h.torsoHeight();
+      }
     }
     EXPECT_TRUE(limp_while_falling) << (forwards ? "forward" : "backward");
     EXPECT_TRUE(lying_reported) << (forwards ? "forward" : "backward");
-    EXPECT_LT(h.torsoHeight(), 0.2);
+    // Reported lying while the torso really is on the ground (the get-up
+    // that follows raises it again within the 3 s).
+    EXPECT_LT(height_when_lying, 0.2) << (forwards ? "forward" : "backward");
   }
 }

@@ -128,3 +128,23 @@ TEST(WorldHardening, PushIsAnImpulseOnTheWholeRobot) {
   w.step();
   EXPECT_NEAR((momentum(w, i) - p1).norm(), 0.0, 0.02);
 }
+
+// The solver's own settings are checked too, each error naming its field.
+TEST(WorldHardening, RefusesAbsurdSolverSettings) {
+  auto refused = [](auto change, const char* field) {
+    WorldConfig c;
+    change(c);
+    try {
+      World w(FieldConfig::spl2017(), c);
+      ADD_FAILURE() << field << " accepted";
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  refused([](WorldConfig& c) { c.quick_w = 2.5; }, "quick_w");
+  refused([](WorldConfig& c) { c.sole_anchor_erp = 1.5; }, "sole_anchor_erp");
+  refused([](WorldConfig& c) { c.sole_anchor_slip = 0; }, "sole_anchor_slip");
+  refused([](WorldConfig& c) { c.joint_projection_sweeps = -1; }, "joint_projection_sweeps");
+  refused([](WorldConfig& c) { c.joint_projection_tolerance = std::numeric_limits<double>::quiet_NaN(); },
+          "joint_projection_tolerance");
+}
