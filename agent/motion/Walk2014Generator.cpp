@@ -124,6 +124,7 @@ void Walk2014Generator::reset() {
   gyro_x_ = gyro_y_ = 0;
   yaw_measured_ = yaw_time_ = yaw_asked_ = turn_correction_ = 0;
   prev_yaw_measured_ = prev_yaw_time_ = prev_yaw_asked_ = 0;
+  ended_fraction_[0] = ended_fraction_[1] = 1.0;
 }
 
 void Walk2014Generator::setRequest(bool walk, const WalkSpeed& speed) {
@@ -132,6 +133,11 @@ void Walk2014Generator::setRequest(bool walk, const WalkSpeed& speed) {
 }
 
 void Walk2014Generator::beginStep() {
+  // When did this swing side's step really end (fraction of its period)?
+  if (state_ == State::Walking && t_ > 0 && t_ < cfg_.switch_forced_periods * period_)
+    ended_fraction_[swing_left_ ? 0 : 1] = t_ / period_;
+  else if (state_ != State::Walking)
+    ended_fraction_[0] = ended_fraction_[1] = 1.0;
   if (steps_ == 0 || state_ != State::Walking) {
     // First step: lead with the foot on the side we are going to.
     swing_left_ = !(target_.left < 0 || (target_.left == 0 && target_.turn < 0));
@@ -200,7 +206,15 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       // horizontal_fraction of the period; the rest of the step only lowers
       // the swing foot, so when it lands early the feet do not slide
       // against each other while the weight transfers.
-      const double hfrac = std::min(1.0, frac / cfg_.horizontal_fraction);
+      // ... or by the time this side's last step ended, if sooner: in a
+      // combined walk the trailing sideways step ends at ~0.91 T, and motion
+      // still planned after the switch is lost.
+      const double h_end =
+          cfg_.adapt_horizontal_to_switch
+              ? std::max(cfg_.switch_min_fraction,
+                         std::min(cfg_.horizontal_fraction, ended_fraction_[swing_left_ ? 0 : 1]))
+              : cfg_.horizontal_fraction;
+      const double hfrac = std::min(1.0, frac / h_end);
       const double gain_f = tableGain(cfg_.forward_gains, step_speed_.forward / cfg_.max_forward);
       const double gain_l = tableGain(cfg_.left_gains, step_speed_.left / cfg_.max_left);
       const double F = gain_f * step_speed_.forward * period_;

@@ -129,6 +129,7 @@ class Walk2014Generator {
   double yaw_asked_ = 0;       // rad the latched turn asked for over the same time
   double yaw_time_ = 0;        // s of this step spent on the ground
   double prev_yaw_measured_ = 0, prev_yaw_asked_ = 0, prev_yaw_time_ = 0;  // the step before
+  double ended_fraction_[2] = {1.0, 1.0};  // last step's end / period, swing left [0] / right [1]
   double turn_correction_ = 0; // rad/s added to the latched turn (heading hold)
   WalkSpeed odo_;
   Feet feet_;

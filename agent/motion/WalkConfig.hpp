@@ -56,6 +56,9 @@ struct WalkConfig {
   // all gains 1.0 (forward / left at 100 %): 1.0 -> 0.97 / 0.89, 0.97 ->
   // 1.02 / 0.95, 0.95 -> 1.04 / 0.95, 0.9 -> 1.11 / 1.04.
   double horizontal_fraction = 0.97;
+  // Finish the horizontal motion by when this swing side's last step ended,
+  // if that was sooner (never before switch_min_fraction).
+  bool adapt_horizontal_to_switch = true;
   double switch_forced_periods = 3.0; // switch regardless after this many periods
   // kg on both feet together to trust the FSRs (2 N); below it (robot
   // lifted) switch on time (1 period)
