@@ -361,18 +361,40 @@ void KickGenerator::tick(const libagent::SensorValues& sensors, double dt, libag
   const double shift_y = sgn * now_.shift;
   // now_.y aims the strike sideways in the robot frame (+ = left).
   const FootPose support = footPose(0, shift_y, -now_.height, 0);
-  const FootPose kicking = footPose(now_.x, shift_y + now_.y, -now_.height + now_.z, 0);
-  const auto q = kick_right ? legsInverse(support, kicking) : legsInverse(kicking, support);
+  // With the hips far over the support foot, a level kicking sole would need
+  // more AnkleRoll than the joint has (lifted, up to ~0.5 rad against a
+  // 0.398 rad limit). Tilt the kicking sole by the excess instead, so every
+  // target is one the leg reaches and no motor is driven into its stop.
+  const auto& lim = jointLimits()[kick_right ? J::RAnkleRoll : J::LAnkleRoll];
+  const double lo = lim.lower + cfg_.ankle_roll_margin, hi = lim.upper - cfg_.ankle_roll_margin;
+  double sole_roll = 0;  // rad, the kicking sole's roll in the hip frame
+  std::array<LegAngles, 2> q{};
+  for (int pass = 0; pass < 3; ++pass) {
+    const FootPose kicking = footPose(now_.x, shift_y + now_.y, -now_.height + now_.z, 0, sole_roll);
+    q = kick_right ? legsInverse(support, kicking) : legsInverse(kicking, support);
+    const double roll = q[kick_right ? 1 : 0].ankle_roll;
+    const double excess = roll - std::max(lo, std::min(hi, roll));
+    if (excess == 0) break;
+    sole_roll -= excess;  // the sole rolls with the ankle, the hip roll barely changes
+  }
   writeLegs(q, out);
   // Balance on the support ankle (same feedback as the walk).
   const int sp = kick_right ? J::LAnklePitch : J::RAnklePitch;
   const int sr = kick_right ? J::LAnkleRoll : J::RAnkleRoll;
   out.angles[sp] += static_cast<float>(walk_.gyro_pitch_gain * gyro_y_);
   out.angles[sr] += static_cast<float>(walk_.gyro_roll_gain * gyro_x_);
-  // Arms out a little for balance, the kicking side's arm swings against the leg.
-  const double swing = 0.004 * now_.x;
-  out.angles[J::LShoulderPitch] = static_cast<float>(1.5 + (kick_right ? swing : -swing));
-  out.angles[J::RShoulderPitch] = static_cast<float>(1.5 + (kick_right ? -swing : swing));
+  // Arms out a little for balance, swinging against the leg as a person's
+  // do: the kicking side's arm goes back (ShoulderPitch up) and the other
+  // forward while the foot goes forward. The leg's swing puts angular
+  // momentum about the vertical into the body that the stance foot's friction
+  // must take; the arms' opposite swing takes part of it, so the stance foot
+  // and the aim turn less.
+  // Kept off the ShoulderPitch stops (a motor held at a stop only heats).
+  const double swing = cfg_.arm_swing * now_.x;
+  const auto& sh = jointLimits()[J::LShoulderPitch];  // both shoulders share the range
+  const auto arm = [&](double a) { return static_cast<float>(std::max(sh.lower + 0.05, std::min(sh.upper - 0.05, a))); };
+  out.angles[J::LShoulderPitch] = arm(1.5 + (kick_right ? -swing : swing));
+  out.angles[J::RShoulderPitch] = arm(1.5 + (kick_right ? swing : -swing));
   out.angles[J::LShoulderRoll] = 0.25f;
   out.angles[J::RShoulderRoll] = -0.25f;
   out.angles[J::LElbowYaw] = -1.2f;

@@ -3,6 +3,7 @@
 // Units: rad, s, mm.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -132,6 +133,46 @@ TEST(Kick, RunsToCompletionWithinLimitsAndLiftsTheKickingFoot) {
     EXPECT_TRUE(kick.done());
     EXPECT_LT(ticks, 400);
     EXPECT_GT(max_knee_diff, 0.3);  // the kicking knee bends to lift the foot
+  }
+}
+
+// The strike's reaction turns the robot about the stance foot; the arms swing
+// against the kicking leg (kicking side back, the other forward) to take part
+// of it. And the kick asks no joint (hands aside: closed is their end) for an
+// angle at or past its range's end: a level kicking sole with the hips over
+// the support foot would need more AnkleRoll than the joint has.
+TEST(Kick, ArmsSwingAgainstTheLegAndNoJointIsSentToItsStop) {
+  WalkConfig wc;
+  const auto& lim = agent::motion::jointLimits();
+  for (auto foot : {bb::Foot::LEFT, bb::Foot::RIGHT}) {
+    const bool right = foot == bb::Foot::RIGHT;
+    KickGenerator kick(wc);
+    kick.start(foot, 1.0, 0.0);
+    agent::libagent::SensorValues s{};
+    agent::libagent::JointValues out{};
+    // rad: the kicking HipPitch's extremes (< 0 is the thigh forward: the
+    // strike; the largest is the wind-back) and, there, the kicking side's
+    // ShoulderPitch minus the other's (> 0: the kicking side's arm further back).
+    double strike_hip = 1e9, windback_hip = -1e9;
+    double arm_at_strike = 0, arm_at_windback = 0;
+    double closest = 1e9;                     // rad, nearest any command came to its range's ends
+    for (int ticks = 0; !kick.done() && ticks < 1000; ++ticks) {
+      kick.tick(s, 0.01, out);
+      const double hip = out.angles[right ? J::RHipPitch : J::LHipPitch];
+      const double arm = out.angles[right ? J::RShoulderPitch : J::LShoulderPitch] -
+                         out.angles[right ? J::LShoulderPitch : J::RShoulderPitch];
+      if (hip < strike_hip) { strike_hip = hip; arm_at_strike = arm; }
+      if (hip > windback_hip) { windback_hip = hip; arm_at_windback = arm; }
+      for (int j = 0; j < agent::libagent::kNumJoints; ++j) {
+        if (j == J::LHand || j == J::RHand) continue;
+        const double room = std::min(out.angles[j] - lim[j].lower, lim[j].upper - out.angles[j]);
+        closest = std::min(closest, room);
+      }
+    }
+    EXPECT_GT(arm_at_strike, 1.0) << (right ? "right" : "left");      // kicking-side arm back at the strike
+    EXPECT_LT(arm_at_windback, -0.5) << (right ? "right" : "left");  // and forward at the wind-back
+    // The support HipRoll comes closest (0.017 rad, with the hips 70 mm over).
+    EXPECT_GE(closest, 0.01) << (right ? "right" : "left");
   }
 }
 
