@@ -43,6 +43,17 @@ double smoothBlend(double f) {
 
 }  // namespace
 
+double headingRate(const float* s) {
+  // Body rates (GyroscopeX/Y/Z) to the rate of the Euler yaw of
+  // R = Rz(yaw) Ry(pitch) Rx(roll), with roll = AngleX and pitch = AngleY.
+  // The walk rolls and pitches the torso by a few degrees every step; the
+  // bare GyroscopeZ then misreads the heading rate by a few mrad/s.
+  const double roll = s[S::InertialSensor_AngleX], pitch = s[S::InertialSensor_AngleY];
+  const double c = std::cos(pitch);
+  if (!(std::fabs(c) > 0.3)) return s[S::InertialSensor_GyroscopeZ];  // lying down: not walking anyway
+  return (std::sin(roll) * s[S::InertialSensor_GyroscopeY] + std::cos(roll) * s[S::InertialSensor_GyroscopeZ]) / c;
+}
+
 WalkSpeed ellipsoidClamp(const WalkSpeed& cmd, const WalkConfig& cfg) {
   WalkSpeed out = cmd;
   if (!std::isfinite(out.forward)) out.forward = 0;
@@ -111,7 +122,9 @@ void Walk2014Generator::reset() {
   xl0_ = xr0_ = yl0_ = yr0_ = th0_ = 0;
   lift_ = 0;
   gyro_x_ = gyro_y_ = 0;
-  yaw_measured_ = yaw_time_ = turn_correction_ = 0;
+  yaw_measured_ = yaw_time_ = yaw_asked_ = turn_correction_ = 0;
+  prev_yaw_measured_ = prev_yaw_time_ = prev_yaw_asked_ = 0;
+  ended_fraction_[0] = ended_fraction_[1] = 1.0;
 }
 
 void Walk2014Generator::setRequest(bool walk, const WalkSpeed& speed) {
@@ -120,20 +133,35 @@ void Walk2014Generator::setRequest(bool walk, const WalkSpeed& speed) {
 }
 
 void Walk2014Generator::beginStep() {
+  // When did this swing side's step really end (fraction of its period)?
+  if (state_ == State::Walking && t_ > 0 && t_ < cfg_.switch_forced_periods * period_)
+    ended_fraction_[swing_left_ ? 0 : 1] = t_ / period_;
+  else if (state_ != State::Walking)
+    ended_fraction_[0] = ended_fraction_[1] = 1.0;
   if (steps_ == 0 || state_ != State::Walking) {
     // First step: lead with the foot on the side we are going to.
     swing_left_ = !(target_.left < 0 || (target_.left == 0 && target_.turn < 0));
   } else {
     swing_left_ = !swing_left_;
   }
-  // Heading hold from the step just finished (not on the first step).
-  if (state_ == State::Walking && yaw_time_ > 0.5 * period_) {
-    const double measured = yaw_measured_ / yaw_time_;
-    turn_correction_ += cfg_.heading_gain * (step_speed_.turn - measured);
+  // Heading hold. The torso yaws one way on every left step and back on
+  // every right step (the swing leg's reaction), so a single step's yaw
+  // rate is mostly that wobble; the error is taken over the last two steps
+  // (one whole walk cycle) and only when both were spent on the ground.
+  if (state_ == State::Walking && yaw_time_ > 0.5 * period_ && prev_yaw_time_ > 0.5 * period_) {
+    const double measured = (yaw_measured_ + prev_yaw_measured_) / (yaw_time_ + prev_yaw_time_);
+    const double asked = (yaw_asked_ + prev_yaw_asked_) / (yaw_time_ + prev_yaw_time_);
+    turn_correction_ += cfg_.heading_gain * (asked - measured);
     turn_correction_ = clampAbs(turn_correction_, cfg_.heading_max_correction);
   }
-  if (state_ != State::Walking || !want_walk_) turn_correction_ = 0;  // stopping: no hold
-  yaw_measured_ = yaw_time_ = 0;
+  if (state_ != State::Walking || !want_walk_) {  // starting or stopping: no hold
+    turn_correction_ = 0;
+    yaw_measured_ = yaw_time_ = yaw_asked_ = 0;
+  }
+  prev_yaw_measured_ = yaw_measured_;
+  prev_yaw_time_ = yaw_time_;
+  prev_yaw_asked_ = yaw_asked_;
+  yaw_measured_ = yaw_time_ = yaw_asked_ = 0;
   step_speed_ = ratchet(step_speed_, want_walk_ ? target_ : WalkSpeed{}, cfg_);
   period_ = cfg_.period + cfg_.period_side_extra * std::fabs(step_speed_.left) / cfg_.max_left;
   xl0_ = xl_; xr0_ = xr_; yl0_ = yl_; yr0_ = yr_; th0_ = th_;
@@ -178,7 +206,15 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       // horizontal_fraction of the period; the rest of the step only lowers
       // the swing foot, so when it lands early the feet do not slide
       // against each other while the weight transfers.
-      const double hfrac = std::min(1.0, frac / cfg_.horizontal_fraction);
+      // ... or by the time this side's last step ended, if sooner: in a
+      // combined walk the trailing sideways step ends at ~0.91 T, and motion
+      // still planned after the switch is lost.
+      const double h_end =
+          cfg_.adapt_horizontal_to_switch
+              ? std::max(cfg_.switch_min_fraction,
+                         std::min(cfg_.horizontal_fraction, ended_fraction_[swing_left_ ? 0 : 1]))
+              : cfg_.horizontal_fraction;
+      const double hfrac = std::min(1.0, frac / h_end);
       const double gain_f = tableGain(cfg_.forward_gains, step_speed_.forward / cfg_.max_forward);
       const double gain_l = tableGain(cfg_.left_gains, step_speed_.left / cfg_.max_left);
       const double F = gain_f * step_speed_.forward * period_;
@@ -216,8 +252,9 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
       odo_.turn = -(syaw1 - syaw0) * cfg_.odometry_turn_scale;
       const FootPressure pressure = footPressure(s);
       if (pressure.total >= cfg_.min_foot_weight) {
-        const double rate = s[S::InertialSensor_GyroscopeZ];
+        const double rate = headingRate(s);
         yaw_measured_ += rate * dt;
+        yaw_asked_ += step_speed_.turn * dt;
         yaw_time_ += dt;
         if (cfg_.odometry_turn_from_gyro) odo_.turn = rate * dt;
       }

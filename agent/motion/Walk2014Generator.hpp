@@ -47,6 +47,11 @@ struct FootPressure {
 };
 FootPressure footPressure(const float* sensors);
 
+// Rate of change of the torso's heading (rad/s, the Euler yaw of
+// Rz(yaw) Ry(AngleY) Rx(AngleX)) from the gyro's body rates and the
+// inertial board's AngleX / AngleY.
+double headingRate(const float* sensors);
+
 // Decides when the swing foot has taken the weight: the lateral CoP has
 // crossed to the swing side after switch_min_fraction * T, or time is past
 // switch_forced_periods * T. Pure logic so it can be tested with synthetic FSRs.
@@ -120,8 +125,11 @@ class Walk2014Generator {
   double xl_ = 0, xr_ = 0, yl_ = 0, yr_ = 0, th_ = 0;
   double lift_ = 0;  // mm, this step's peak lift
   double gyro_x_ = 0, gyro_y_ = 0;  // filtered rad/s
-  double yaw_measured_ = 0;    // rad turned this step (GyroscopeZ), on the ground
+  double yaw_measured_ = 0;    // rad turned this step (headingRate), on the ground
+  double yaw_asked_ = 0;       // rad the latched turn asked for over the same time
   double yaw_time_ = 0;        // s of this step spent on the ground
+  double prev_yaw_measured_ = 0, prev_yaw_asked_ = 0, prev_yaw_time_ = 0;  // the step before
+  double ended_fraction_[2] = {1.0, 1.0};  // last step's end / period, swing left [0] / right [1]
   double turn_correction_ = 0; // rad/s added to the latched turn (heading hold)
   WalkSpeed odo_;
   Feet feet_;

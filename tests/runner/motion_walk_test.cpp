@@ -183,8 +183,9 @@ TEST(MotionPhysics, OdometryAfterThreeMetres) {
 }
 
 // Issue 10, gains 1.0: forward 100 mm/s reaches >= 90 % (seeds 21-22, 8 s),
-// and forward 200 + left 100 mm/s: forward within 10 %, left and the
-// heading drift see the TODO below (seeds 23-24, 10 s). Bench seeds 1-5 differ.
+// and forward 200 + left 100 mm/s is within 10 % on each axis with a heading
+// drift under 0.005 rad/s (seeds 23-24, 10 s). Bench seeds 1-5 differ; the
+// walk's heading hold was tuned on seeds 40-79.
 TEST(MotionPhysics, WalkSlowForwardAndCombined) {
   for (uint64_t seed : {21, 22}) {
     MotionHarness h(seed);
@@ -200,23 +201,38 @@ TEST(MotionPhysics, WalkSlowForwardAndCombined) {
     h.request(ActionType::WALK, 200, 100, 0);
     bool ok = h.run(2.0);
     const Pose2 p0 = h.pose();
-    double turned = 0, last = p0.theta;
-    for (int i = 0; i < 1000; ++i) {
+    // Heading every tick (unwrapped, rad) for its least-squares slope.
+    double turned = 0, last = p0.theta, st = 0, sy = 0, stt = 0, sty = 0;
+    const int n = 1000;
+    for (int i = 1; i <= n; ++i) {
       ok = h.run(0.01) && ok;
       const double th = h.pose().theta;
       turned += wrapAngle(th - last);
       last = th;
+      const double t = i * 0.01;
+      st += t;
+      sy += turned;
+      stt += t * t;
+      sty += t * turned;
     }
+    const double slope = (n * sty - st * sy) / (n * stt - st * st);
     double fwd, left;
     relative(p0, h.pose(), &fwd, &left);
-    std::printf("[motion] forward 200 + left 100 mm/s x 10 s, seed %llu: forward %.2f, left %.2f, drift %.1f mrad/s\n",
-                static_cast<unsigned long long>(seed), fwd / 10 / 0.2, left / 10 / 0.1, turned / 10 * 1000);
+    std::printf(
+        "[motion] forward 200 + left 100 mm/s x 10 s, seed %llu: forward %.2f, left %.2f, drift %.1f mrad/s "
+        "(least-squares slope %.1f mrad/s)\n",
+        static_cast<unsigned long long>(seed), fwd / 10 / 0.2, left / 10 / 0.1, turned / 10 * 1000, slope * 1000);
     EXPECT_TRUE(ok);
     EXPECT_NEAR(fwd / 10 / 0.2, 1.0, 0.1) << "seed " << seed;
-    // TODO(issue 10): the issue asks for left within 10 % and drift < 0.005
-    // rad/s; measured left 1.08-1.10 and drift 6.8-7.4 mrad/s on these seeds
-    // (bench seed 4: 0.96, 2.5 mrad/s). Guarded at the measured level.
-    EXPECT_NEAR(left / 10 / 0.1, 1.0, 0.15) << "seed " << seed;
+    EXPECT_NEAR(left / 10 / 0.1, 1.0, 0.1) << "seed " << seed;
+    // Drift: the slope of the heading over the 10 s. The torso also yaws
+    // back and forth by 0.01-0.02 rad within each walk cycle, so the bare
+    // end-to-start difference / 10 s depends on where in the cycle the 10 s
+    // end (seeds 23, 24: 3.3 / 2.9 mrad/s; tuning seeds 60-79 reach 5.9, bench
+    // seed 4 5.9, with slopes under 1.8); it is held to 0.010.
+    // TODO(issue 10): end-to-start drift under 0.005 on every seed needs a
+    // smaller in-cycle yaw swing.
+    EXPECT_LT(std::fabs(slope), 0.005) << "seed " << seed;
     EXPECT_LT(std::fabs(turned / 10), 0.010) << "seed " << seed;
   }
 }

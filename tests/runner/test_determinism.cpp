@@ -25,7 +25,7 @@ namespace {
 // (the failure prints the new value) or
 //   build/simswift run <kScenario saved as a file> --quiet
 // and paste the hash here, saying in the commit why physics changed.
-constexpr uint64_t kPinnedHash = 0x5c6dee006f3808acull;  // issue 10: sole friction anchors, joint projection
+constexpr uint64_t kPinnedHash = 0xf809373e41d3831bull;  // issue 10: walk heading hold per cycle, horizontal motion by the last switch
 
 const char* kScenario =
     "duration: 3\n"

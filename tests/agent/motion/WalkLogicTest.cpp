@@ -152,8 +152,9 @@ TEST(WalkGenerator, FeetAlternateWithSyntheticFsrsAndOdometryIntegrates) {
   // what the feet did, so it is between 0.8 and 1.0 of 200 mm/s * stepping time.
   EXPECT_GT(forward, 0.8 * 0.8 * 200 * 5.5);
   // Feet finish their horizontal travel by horizontal_fraction of the step,
-  // so a step switched at 0.8 T covers up to 0.8 / 0.9 of its length.
-  EXPECT_LT(forward, 200 * 5.5 / agent::motion::WalkConfig{}.horizontal_fraction);
+  // or by when the last step on that side ended (here 0.8 T), so each step
+  // switched at 0.8 T covers at most its whole length in 0.8 T.
+  EXPECT_LT(forward, 200 * 5.5 / 0.8);
   EXPECT_NEAR(left, 0, 1.0);
   EXPECT_NEAR(turn, 0, 1e-6);
 }
