@@ -18,7 +18,6 @@ namespace simswift {
 
 namespace {
 
-constexpr double kStopFudgeFactor = 0.1;  // ODE's dParamFudgeFactor for the hinges' stops (0..1)
 
 void toOde(const Eigen::Matrix3d& r, dMatrix3 out) {
   // dMatrix3 is 3x4 row-major (the 4th column is padding).
@@ -105,14 +104,14 @@ RobotBody::RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSp
     dJointAttach(h, bodies_[spec.child_link], bodies_[spec.parent_link]);
     dJointSetHingeAnchor(h, anchor.x(), anchor.y(), anchor.z());
     dJointSetHingeAxis(h, axis.x(), axis.y(), axis.z());
-    dJointSetHingeParam(h, dParamLoStop, spec.lower);
-    dJointSetHingeParam(h, dParamHiStop, spec.upper);
-    // A motor pushing a joint off its stop gets its whole FMax applied for a
-    // step with ODE's default fudge factor 1: a light link commanded to its
-    // limit (the kick's AnkleRoll, the hands at 0) snapped 0.4 rad off the
-    // stop in one tick, every ~0.13 s. 0.1 removes the snaps (measured on
-    // kick seed 654 left with the ankle commanded to its limit).
-    dJointSetHingeParam(h, dParamFudgeFactor, kStopFudgeFactor);
+    // The mechanical stops sit kStopBeyondLimit outside the range the servo
+    // is commanded within, so a motor holding a joint at its limit holds it
+    // there itself: a motor pressing against an ODE stop gets its whole FMax
+    // applied for a step when it pulls away (the stop's "jumping"), and a
+    // light link commanded to its limit (the kick's AnkleRoll, the hands at 0)
+    // snapped 0.4 rad off the stop in one tick, every ~0.13 s.
+    dJointSetHingeParam(h, dParamLoStop, spec.lower - kStopBeyondLimit);
+    dJointSetHingeParam(h, dParamHiStop, spec.upper + kStopBeyondLimit);
     dJointSetHingeParam(h, dParamVel, 0);
     dJointSetHingeParam(h, dParamFMax, 0);
     dJointSetFeedback(h, &feedback_[j]);

@@ -33,6 +33,10 @@ struct GeomTag {
 
 class RobotBody {
  public:
+  // rad: the hinges' stops lie this far outside each joint's limits (the
+  // range servo targets are clamped to); see RobotBody.cpp.
+  static constexpr double kStopBeyondLimit = 0.01;
+
   // Builds bodies/geoms/joints in `world`/`space` with the torso at
   // `torso_pose` and all joints at `posture` (rad, indexed like
   // model.joints(); missing entries = 0; clamped to the limits).
