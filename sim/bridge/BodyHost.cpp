@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -40,9 +41,9 @@ bool before(const timespec& a, const timespec& b) {
   return a.tv_sec < b.tv_sec || (a.tv_sec == b.tv_sec && a.tv_nsec < b.tv_nsec);
 }
 
-// Polls before sleeping (BodyHost::waitAnswer): about 50-100 us of pause
-// instructions on x86.
-constexpr int kAnswerSpins = 1000;
+// Polls before sleeping (BodyHost::waitAnswer): up to this long (wall
+// clock: only how long to wait, never simulation), with pause instructions.
+constexpr double kAnswerSpinSeconds = 300e-6;
 inline void cpuRelax() {
 #if defined(__x86_64__) || defined(__i386__)
   __builtin_ia32_pause();
@@ -300,13 +301,19 @@ bool BodyHost::publishSensors(const SensorValues& values, int64_t sim_time_us, i
 bool BodyHost::answered() const { return al::validSlot(al::loadIndex(block_->actuators_latest)); }
 
 bool BodyHost::waitAnswer(double timeout_s) {
-  // The Motion thread usually answers within tens of microseconds of the
-  // tick: look for the answer a little while before going to sleep, which
+  // The Motion thread usually answers within a few hundred microseconds of
+  // the tick: look for the answer that long before going to sleep, which
   // saves a futex sleep and wake-up (a fifth of a walking robot's wall time
   // was the kernel's, measured with perf).
-  for (int spin = 0; spin < kAnswerSpins; ++spin) {
+  const timespec spin_until = monotonicIn(std::min(kAnswerSpinSeconds, timeout_s));
+  for (int spin = 0;; ++spin) {
     if (answered()) return true;
     cpuRelax();
+    if (spin % 64 == 63) {
+      timespec now{};
+      clock_gettime(CLOCK_MONOTONIC, &now);
+      if (!before(now, spin_until)) break;
+    }
   }
   const timespec deadline = monotonicIn(timeout_s);
   int polls = 0;
