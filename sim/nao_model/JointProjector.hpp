@@ -7,9 +7,10 @@
 // and ankle joints come apart by up to about 1 mm, and ERP only pulls them
 // back over the next steps. This pass moves the bodies themselves, mass
 // weighted, so that every hinge's anchor as seen from its child meets the
-// one seen from its parent; velocities are left to the solver. Links that
-// touch the ground are held where they are (the contacts hold them), so the
-// correction never pushes a sole into the carpet or slides it.
+// one seen from its parent; velocities are left to the solver. The caller
+// pins the links that must not move (the World: feet standing on their
+// soles, which their friction holds), so the correction never slides a
+// standing foot; a pass between two pinned links may not close fully.
 //
 // Units: m, kg, kg m^2; world frame.
 #pragma once
