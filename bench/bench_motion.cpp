@@ -23,6 +23,7 @@
 #include "BenchResults.hpp"
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/motion/MotionModule.hpp"
+#include "sim/runner/HeadingDrift.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/StanceSlip.hpp"
 
@@ -133,17 +134,13 @@ int main(int argc, char** argv) {
     const Eigen::Isometry3d p0 = rig.pose();
     // Heading every tick for its least-squares slope (the walk's per-step
     // yaw wobble, +-0.02-0.03 rad, weighs on the end-to-start figure).
-    double turned = 0, st = 0, sy = 0, stt = 0, sty = 0;
-    const int n = 1000;
-    for (int i = 1; i <= n; ++i) {
+    double turned = 0;
+    simswift::runner::HeadingDrift drift;
+    for (int i = 1; i <= 1000; ++i) {
       rig.run(0.01, &turned);
-      const double t = i * 0.01;
-      st += t;
-      sy += turned;
-      stt += t * t;
-      sty += t * turned;
+      drift.add(i * 0.01, turned);
     }
-    const double slope = (n * sty - st * sy) / (n * stt - st * st);
+    const double slope = drift.slope();
     const Eigen::Vector3d d = p0.rotation().transpose() * (rig.pose().translation() - p0.translation());
     sb::report("motion.walk.combined_200_100.forward_ratio", d.x() * 1000 / 10 / 200, "ratio");
     sb::report("motion.walk.combined_200_100.left_ratio", d.y() * 1000 / 10 / 100, "ratio");

@@ -36,15 +36,26 @@ void overrides(agent::motion::MotionConfig& cfg) {
   override("KICK_ARM_SWING", &cfg.kick.arm_swing);
   override("KICK_ANKLE_ROLL_MARGIN", &cfg.kick.ankle_roll_margin);
 }
+// Which kicks to run: KICK_FOOT (left|right, default right), KICK_N seeds
+// (default 10) from KICK_SEED_BASE (default 900).
+struct KickRuns {
+  Foot foot;
+  int n, base;
+};
+KickRuns kickRuns() {
+  const char* foot_env = std::getenv("KICK_FOOT");
+  return {foot_env && std::string(foot_env) == "left" ? Foot::LEFT : Foot::RIGHT,
+          std::getenv("KICK_N") ? std::atoi(std::getenv("KICK_N")) : 10,
+          std::getenv("KICK_SEED_BASE") ? std::atoi(std::getenv("KICK_SEED_BASE")) : 900};
+}
 }  // namespace
 
 TEST(MotionKickTuning, DISABLED_Distances) {
   agent::motion::MotionConfig cfg;
   overrides(cfg);
-  const char* foot_env = std::getenv("KICK_FOOT");
-  const Foot foot = foot_env && std::string(foot_env) == "left" ? Foot::LEFT : Foot::RIGHT;
-  const int n = std::getenv("KICK_N") ? std::atoi(std::getenv("KICK_N")) : 10;
-  const int base = std::getenv("KICK_SEED_BASE") ? std::atoi(std::getenv("KICK_SEED_BASE")) : 900;
+  const KickRuns runs = kickRuns();
+  const Foot foot = runs.foot;
+  const int n = runs.n, base = runs.base;
   std::vector<double> d;
   int fell = 0;
   for (int s = base; s < base + n; ++s) {
@@ -72,10 +83,9 @@ TEST(MotionKickTuning, DISABLED_Distances) {
 TEST(MotionKickTuning, DISABLED_Diagnose) {
   agent::motion::MotionConfig cfg;
   overrides(cfg);
-  const char* foot_env = std::getenv("KICK_FOOT");
-  const Foot foot = foot_env && std::string(foot_env) == "left" ? Foot::LEFT : Foot::RIGHT;
-  const int n = std::getenv("KICK_N") ? std::atoi(std::getenv("KICK_N")) : 10;
-  const int base = std::getenv("KICK_SEED_BASE") ? std::atoi(std::getenv("KICK_SEED_BASE")) : 900;
+  const KickRuns runs = kickRuns();
+  const Foot foot = runs.foot;
+  const int n = runs.n, base = runs.base;
   for (int s = base; s < base + n; ++s) {
     const double y = foot == Foot::RIGHT ? -0.05 : 0.05;
     MotionHarness h(static_cast<uint64_t>(s), -3.0, 0.0, 0.0,

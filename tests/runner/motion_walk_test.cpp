@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "sim/runner/HeadingDrift.hpp"
 #include "sim/runner/StanceSlip.hpp"
 #include "tests/runner/motion_harness.hpp"
 
@@ -202,20 +203,16 @@ TEST(MotionPhysics, WalkSlowForwardAndCombined) {
     bool ok = h.run(2.0);
     const Pose2 p0 = h.pose();
     // Heading every tick (unwrapped, rad) for its least-squares slope.
-    double turned = 0, last = p0.theta, st = 0, sy = 0, stt = 0, sty = 0;
-    const int n = 1000;
-    for (int i = 1; i <= n; ++i) {
+    double turned = 0, last = p0.theta;
+    simswift::runner::HeadingDrift drift;
+    for (int i = 1; i <= 1000; ++i) {
       ok = h.run(0.01) && ok;
       const double th = h.pose().theta;
       turned += wrapAngle(th - last);
       last = th;
-      const double t = i * 0.01;
-      st += t;
-      sy += turned;
-      stt += t * t;
-      sty += t * turned;
+      drift.add(i * 0.01, turned);
     }
-    const double slope = (n * sty - st * sy) / (n * stt - st * st);
+    const double slope = drift.slope();
     double fwd, left;
     relative(p0, h.pose(), &fwd, &left);
     std::printf(
