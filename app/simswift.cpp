@@ -42,6 +42,7 @@ const char* kUsage =
     "  --realtime             pace the run with the wall clock (default: as fast as possible);\n"
     "                         external robot programs run free: not waited for, skipped\n"
     "                         cycles counted, 50 in a row sit the robot down\n"
+    "  --check                validate the scenario, its model and field; run nothing\n"
     "  --duration S           simulated seconds (overrides the scenario)\n"
     "  --seed N               noise seed (overrides the scenario)\n"
     "  --no-noise             exact sensors\n"
@@ -111,6 +112,7 @@ int main(int argc, char** argv) {
   std::optional<double> duration, watchdog, attach;
   std::optional<uint64_t> seed;
   bool no_noise = false;
+  bool check = false;  // validate scenario, model and field; run nothing
   std::optional<std::string> dump_dir, overview_dir, resolution, model, field;
   std::optional<int> every;
   std::optional<std::string> findball_dir;
@@ -122,6 +124,7 @@ int main(int argc, char** argv) {
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--realtime") opt.realtime = true;
+    else if (a == "--check") check = true;
     else if (a == "--duration") duration = numberArg(i, argc, argv, "--duration", 0.01, 1e6);
     else if (a == "--seed") seed = seedArg(i, argc, argv);
     else if (a == "--no-noise") no_noise = true;
@@ -193,6 +196,19 @@ int main(int argc, char** argv) {
   if (overview_dir) {
     sc.camera.overview.enabled = true;
     sc.camera.overview.dir = *overview_dir;
+  }
+  if (check) {
+    // What Runner::start() would refuse before the first tick, without
+    // starting robot programs (an external robot's program need not run).
+    try {
+      simswift::NaoModel::loadUrdf(sc.modelFile());
+      sc.checkAgainstField(simswift::FieldConfig::loadYaml(sc.fieldFile()));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "simswift: %s\n", e.what());
+      return 2;
+    }
+    std::printf("%s: ok (%zu robots, %g s)\n", path.c_str(), sc.robots.size(), sc.duration);
+    return 0;
   }
   // Progress lines only on runs long enough to wonder about.
   if (sc.duration < 10) opt.progress = false;

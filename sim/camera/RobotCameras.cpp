@@ -47,6 +47,7 @@ void RobotCameras::syncScene(const World& world) {
     s.link_poses.resize(links);
     for (int l = 0; l < links; ++l) s.link_poses[l] = body.linkPose(l);
   }
+  scene_.show_ball = world.hasBall();
   scene_.ball_position = world.ballPosition();
   scene_.ball_orientation = world.ballOrientation();
 }

@@ -154,7 +154,8 @@ void Runner::start() {
   wc.solver = scenario_.solver == "quick" ? WorldConfig::Solver::Quick : WorldConfig::Solver::Exact;
   wc.quick_iterations = scenario_.quick_iterations;
   world_ = std::make_unique<World>(field, wc);
-  if (scenario_.ball) world_->placeBall(scenario_.ball->first, scenario_.ball->second);
+  if (scenario_.no_ball) world_->removeBall();
+  else if (scenario_.ball) world_->placeBall(scenario_.ball->first, scenario_.ball->second);
   if (scenario_.camera.any() && !camerasAvailable())
     throw RunnerError("camera rendering was asked for (camera: enabled, --dump-frames or --overview), but this "
                       "simswift was built without cameras (-DSIMSWIFT_CAMERAS=OFF)");

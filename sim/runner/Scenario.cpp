@@ -341,7 +341,11 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     else
       sc.vision.enabled = top.boolean("vision");
   }
-  if (auto b = top.optionalMap("ball")) {
+  if (root["ball"] && root["ball"].IsScalar()) {
+    // The only scalar a ball takes: a world without one (a search with
+    // nothing to find), rather than a ball parked somewhere out of sight.
+    if (top.choice("ball", "none", {"none"}) == "none") sc.no_ball = true;
+  } else if (auto b = top.optionalMap("ball")) {
     const Range pos = Range::closed(-limits::kMaxPosition, limits::kMaxPosition);
     sc.ball = std::make_pair(b->number("x", pos), b->number("y", pos));
     sc.ball_line = b->node().Mark().line + 1;

@@ -17,7 +17,8 @@
 //                width: 960, height: 540, dir: overview}   # whole-field PNGs (+ MP4)
 //   vision: {ball: {max_distance_mm: 2500, false_positive_rate: 0.01}, ...}
 //                                  # detector model (sim/vision/VisionConfig.hpp); or on/off
-//   ball: {x: 1.0, y: 0.0}         # m, field frame
+//   ball: {x: 1.0, y: 0.0}         # m, field frame (default: the centre spot)
+//   ball: none                     # no ball in the world (nobody can see one)
 //   robots:
 //     - {team: 19, player: 1, x: -1.0, y: 0.0, theta: 0.0,  # m, m, rad (field frame)
 //        colour: blue,                 # side of the match (blue or red), see below
@@ -161,6 +162,7 @@ struct Scenario {
   // when the scenario's noise master switch is off (see Runner::start).
   vision::VisionConfig vision;
   std::optional<std::pair<double, double>> ball;  // m, field frame
+  bool no_ball = false;                           // `ball: none`
   int ball_line = 0;
   std::vector<RobotSpec> robots;
   network::TeamNetworkConfig team_comms;  // team_comms: (defaults: no loss, no delay, no budget)

@@ -350,8 +350,9 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
     return noisy ? p : 1.0;
   };
 
-  // --- Ball.
-  {
+  // --- Ball (none in a `ball: none` world; draws are per object, so the
+  // other features' draws do not depend on it).
+  if (world.hasBall()) {
     const DetectorSpec& s = config_[Feature::Ball];
     const Eigen::Vector3d b = world.ballPosition();
     Draws r = drawsFor(Feature::Ball, 0);

@@ -237,6 +237,7 @@ void World::placeRobot(int i, double x, double y, double theta,
 }
 
 void World::placeBall(double x, double y) {
+  if (!hasBall()) throw WorldError("placeBall: the ball was removed (ball: none)");
   checkPlacement("placeBall", x, y, 0);
   const double r = field_.ball.diameter / 2;
   impl_->ball_placed = Eigen::Vector3d(x, y, r);
@@ -265,6 +266,17 @@ Eigen::Quaterniond World::ballOrientation() const {
 }
 
 dBodyID World::ballBody() const { return impl_->ball; }
+
+void World::removeBall() {
+  if (!hasBall()) return;
+  dBodySetLinearVel(impl_->ball, 0, 0, 0);
+  dBodySetAngularVel(impl_->ball, 0, 0, 0);
+  dBodyDisable(impl_->ball);
+  dGeomDisable(impl_->ball_geom);
+  impl_->ball_removed = true;
+}
+
+bool World::hasBall() const { return !impl_->ball_removed; }
 
 Eigen::Vector3d World::ballVelocity() const {
   const dReal* v = dBodyGetLinearVel(impl_->ball);
@@ -344,6 +356,7 @@ void World::checkBlowUps() {
                        "robot " + std::to_string(i) +
                            " blew up (NaN or speed beyond limits); reset to its last placement"});
   }
+  if (!hasBall()) return;
   const Eigen::Vector3d bp = ballPosition(), bv = ballVelocity();
   const dReal* bw = dBodyGetAngularVel(impl_->ball);
   const bool ball_bad = !bp.allFinite() || !bv.allFinite() || !std::isfinite(bw[0]) ||

@@ -104,6 +104,12 @@ class World {
   // Positions must be finite and within config().max_distance (WorldError).
   void placeRobot(int i, double x, double y, double theta, const std::vector<double>& posture);
   void placeBall(double x, double y);
+  // Takes the ball out of the world for good (a scenario's `ball: none`):
+  // its body and geom are disabled (no contacts, no motion) and hasBall()
+  // is false, so vision, cameras and views show no ball. placeBall() after
+  // this throws WorldError.
+  void removeBall();
+  bool hasBall() const;
   void setBallVelocity(const Eigen::Vector3d& v);  // m/s, world; |v| <= blowup_linear_speed
 
   // A push: an impulse of `impulse` N*s (world frame) at the torso's centre

@@ -32,6 +32,7 @@ struct World::Impl {
   dGeomID ball_geom = nullptr;
   GeomTag ball_tag{GeomTag::Ball, -1, -1};
   Eigen::Vector3d ball_placed = Eigen::Vector3d::Zero();  // last placeBall (m, field)
+  bool ball_removed = false;  // removeBall(): scenario `ball: none`
 
   // Robots: one simple space each (own-link pairs are never tested), the
   // model kept alive, and where each was last placed (for blow-up resets).

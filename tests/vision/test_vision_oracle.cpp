@@ -221,6 +221,18 @@ TEST_F(OneRobot, BallJustInsideAndJustOutsideTheFieldOfView) {
   }
 }
 
+TEST_F(OneRobot, NoBallWorldShowsNoBall) {
+  // `ball: none`: a ball 1 m straight ahead is seen; once removed, never.
+  VisionOracle o(world.field(), exact(), 1);
+  const Eigen::Vector2d ahead = ballAlong(o, world, 1, 0, -0.2);
+  world.placeBall(ahead.x(), ahead.y());
+  EXPECT_EQ(ofType(o.observe(world, 0, 1), al::ObservationType::Ball, 1).size(), 1u);
+  world.removeBall();
+  EXPECT_FALSE(world.hasBall());
+  EXPECT_TRUE(ofType(o.observe(world, 0, 1), al::ObservationType::Ball, 1).empty());
+  EXPECT_THROW(world.placeBall(0, 0), WorldError);
+}
+
 TEST_F(OneRobot, BallJustInsideAndJustOutsideTheDistanceLimit) {
   VisionOracle o(world.field(), exact(), 1);
   const GroundFrame g = o.groundFrame(world, 0);
@@ -263,8 +275,9 @@ TEST(VisionOracleScene, BallHiddenBehindARobotIsNotSeen) {
   // Step aside: the ball is seen.
   world.placeRobot(blocker, 0.0, 1.2, M_PI, stand());
   EXPECT_EQ(ofType(o.observe(world, 0, 0), al::ObservationType::Ball).size(), 1u);
-  for (const SeenObject& s : o.observe(world, 0, 0))
+  for (const SeenObject& s : o.observe(world, 0, 0)) {
     if (s.obs.type != al::ObservationType::Robot) EXPECT_EQ(s.obs.colour, -1);
+  }
   // Lying on its back 1 m ahead: still seen, flagged fallen.
   Eigen::Isometry3d lying = Eigen::Isometry3d::Identity();
   lying.linear() = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();

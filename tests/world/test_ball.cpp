@@ -129,3 +129,17 @@ TEST(Ball, BallBlowUpIsResetAndReported) {
   EXPECT_NEAR(w.ballPosition().x(), 1.0, 1e-6);
   EXPECT_LT(w.ballVelocity().norm(), 1e-3);
 }
+
+TEST(Ball, RemovedBallNeitherMovesNorCollides) {
+  // `ball: none`: the disabled body stays exactly where it was, however it
+  // was moving, and no contact or gravity acts on it.
+  World w(splField());
+  w.placeBall(0.0, 0.0);
+  w.setBallVelocity(Eigen::Vector3d(2.0, 0.0, 0.0));
+  w.removeBall();
+  EXPECT_FALSE(w.hasBall());
+  const Eigen::Vector3d before = w.ballPosition();
+  run(w, 0.5);
+  EXPECT_EQ(w.ballPosition(), before);
+  EXPECT_EQ(w.ballVelocity().norm(), 0.0);
+}

@@ -1,0 +1,93 @@
+// Every file in scenarios/ is loaded as a user would load it, so a shipped
+// file can never rot: experiments through `simswift experiment --check`,
+// scenarios through `simswift run --check` and, where every robot runs the
+// builtin program, a brief run (0.2 simulated s) as well. A scenario whose
+// robots run in another process is only checked: its program is not ours
+// to start here, and two tests must not share libagent names.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code = -1;
+  std::string output;
+};
+
+Result shell(const std::string& cmd) {
+  Result r;
+  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+  if (!p) return r;
+  char buf[512];
+  while (fgets(buf, sizeof buf, p)) r.output += buf;
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A top-level `balls:` key makes a file an experiment (sim/experiment/Experiment.hpp).
+bool isExperiment(const std::string& text) { return text.rfind("balls:", 0) == 0 || text.find("\nballs:") != std::string::npos; }
+
+std::vector<fs::path> shippedFiles() {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(fs::path(SIMSWIFT_SOURCE_DIR) / "scenarios"))
+    if (e.path().extension() == ".yaml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+const std::string kBin = std::string(SIMSWIFT_BINARY_DIR) + "/simswift";
+
+TEST(ShippedScenarios, ThereAreSome) { EXPECT_GE(shippedFiles().size(), 10u); }
+
+TEST(ShippedScenarios, EveryFileIsAcceptedAndBuiltinOnesRun) {
+  for (const fs::path& f : shippedFiles()) {
+    SCOPED_TRACE(f.filename().string());
+    const std::string text = slurp(f);
+    if (isExperiment(text)) {
+      const Result r = shell(kBin + " experiment " + f.string() + " --check");
+      EXPECT_EQ(r.code, 0) << r.output;
+      continue;
+    }
+    const Result c = shell(kBin + " run " + f.string() + " --check");
+    EXPECT_EQ(c.code, 0) << c.output;
+    EXPECT_NE(c.output.find(": ok ("), std::string::npos) << c.output;
+    if (text.find("external") != std::string::npos) continue;  // its program runs elsewhere
+    const Result r = shell(kBin + " run " + f.string() + " --duration 0.2 --quiet");
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("hash "), std::string::npos) << r.output;
+  }
+}
+
+TEST(ShippedScenarios, CheckRefusesABadFileWithExitTwo) {
+  const fs::path bad = fs::temp_directory_path() / "simswift_bad_ball.yaml";
+  {
+    std::ofstream out(bad);
+    out << "duration: 1\nball: nowhere\nrobots:\n  - {team: 19, player: 1, x: 0, y: 0, theta: 0}\n";
+  }
+  const Result r = shell(kBin + " run " + bad.string() + " --check");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find(":2"), std::string::npos) << r.output;  // file:line
+  EXPECT_NE(r.output.find("ball"), std::string::npos) << r.output;
+  fs::remove(bad);
+}
+
+}  // namespace
