@@ -83,14 +83,17 @@ struct SensorValues {
   float sonar[kNumSonars];     // m
 };
 
-// Button presses of one cycle: one byte, a bit per touch sensor. simswift
-// sets a bit when that sensor went from released to pressed in the cycle.
+// Button presses: one byte per sensor slot, counted chest-button clicks as
+// libagent reports them (rUNSWift 2017 libagent.cpp, doButtons): a series
+// of n clicks ends when the button has stayed up for more than 18 cycles,
+// and n sets bit n-1 of the next slot. libagent keeps 2, 3 and 4 clicks
+// for itself (limp/stiff, start/kill the program, wifi), so a robot program
+// sees in practice the single click. Head touches and foot bumpers never
+// appear here: they are plain sensor values.
 using ButtonPresses = uint8_t;
 namespace Buttons {
-constexpr ButtonPresses kChest = 1u << 0;
-constexpr ButtonPresses kHeadFront = 1u << 1;
-constexpr ButtonPresses kHeadMiddle = 1u << 2;
-constexpr ButtonPresses kHeadRear = 1u << 3;
+constexpr ButtonPresses clicks(int n) { return static_cast<ButtonPresses>(1u << (n - 1)); }  // n = 1..8
+constexpr ButtonPresses kSingleClick = clicks(1);
 }  // namespace Buttons
 
 // One RGB LED (or group) on or off per colour.

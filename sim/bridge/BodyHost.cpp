@@ -86,26 +86,25 @@ void* openSized(const std::string& name, size_t size, int* fd_out = nullptr) {
   return p;
 }
 
-// Sets bit `bit` of the press mask on a rising edge of `value` (0/1 sensor).
-void edge(float value, al::ButtonPresses bit, al::ButtonPresses& held, al::ButtonPresses& pressed) {
-  const bool down = value > 0.5f;
-  if (down && !(held & bit)) pressed |= bit;
-  held = down ? (held | bit) : (held & ~bit);
-}
 }  // namespace
 
 BodyHost::BodyHost(int team, int player, Mode mode, const al::JointValues& initial, const BodyHostOptions& options)
-    : team_(team), player_(player), tag_(al::robotTag(team, player)), mode_(mode), options_(options) {
+    : team_(team),
+      player_(player),
+      tag_(al::robotTag(team, player)),
+      mode_(mode),
+      options_(options),
+      libagent_(options.start) {
   if (team < al::kMinTeamNumber || team > al::kMaxTeamNumber || player < al::kMinPlayer || player > al::kMaxPlayer)
     throw BridgeError("robot " + tag_ + ": the team must be an SPL team number " + std::to_string(al::kMinTeamNumber) +
                       ".." + std::to_string(al::kMaxTeamNumber) + " and the player " +
                       std::to_string(al::kMinPlayer) + ".." + std::to_string(al::kMaxPlayer));
-  names_ = options.bare_names ? al::bareNames() : al::simulationNames(team, player);
+  names_ = releaseNames(options.release, team, player, options.bare_names);
   if (mode == Mode::InProcess) {
     names_ = {"<in-process " + tag_ + ">", "", "", ""};
-    own_block_.reset(new AgentData());  // value-initialised: all zero
+    own_block_.reset(new unsigned char[blockSize(options.release)]());  // zeroed
     own_ext_.reset(new SimExtension());
-    block_ = own_block_.get();
+    raw_ = own_block_.get();
     ext_ = own_ext_.get();
     if (options.images) {
       own_images_.reset(new al::CameraImages());
@@ -162,7 +161,9 @@ void BodyHost::setUpNamed() {
   cleanup::registerShm(names_.extension);
   named_set_up_ = true;
   try {
-    block_ = static_cast<AgentData*>(openSized(names_.memory, sizeof(AgentData)));
+    // Created before any program waits for it: a 2016 program opens it
+    // without O_CREAT, so it must exist first (as libagent's on a NAO).
+    raw_ = openSized(names_.memory, blockSize(options_.release));
     cleanup::registerShm(names_.memory);
     sem_t* s = sem_open(names_.semaphore.c_str(), O_CREAT, 0600, 0);
     if (s == SEM_FAILED) throw BridgeError(sysError("sem_open " + names_.semaphore));
@@ -186,16 +187,46 @@ void BodyHost::setUpNamed() {
   close(fd);
 }
 
+template <class F>
+decltype(auto) BodyHost::withBlock(F&& f) {
+  switch (options_.release) {
+    case Release::R2016: return f(*static_cast<release::AgentData2016*>(raw_));
+    case Release::R2018: return f(*static_cast<release::AgentData2018*>(raw_));
+    case Release::R2017: break;
+  }
+  return f(*static_cast<release::AgentData2017*>(raw_));
+}
+
+template <class F>
+decltype(auto) BodyHost::withBlock(F&& f) const {
+  return const_cast<BodyHost*>(this)->withBlock(std::forward<F>(f));
+}
+
+bool BodyHost::standing() const {
+  return withBlock([](auto& b) { return static_cast<bool>(b.standing); });
+}
+
+void BodyHost::writeStanding(const LibagentBehaviour::Standing& s) {
+  if (!s.write) return;
+  withBlock([&](auto& b) { b.standing = *s.write; });
+}
+
 void BodyHost::initialise(const al::JointValues& initial) {
-  AgentData& b = *block_;
-  std::memset(static_cast<void*>(&b), 0, sizeof b);
-  for (int s = 0; s < al::kSlots; ++s) b.joints[s] = initial;
-  al::storeIndex(b.sensors_read, 0);
-  al::storeIndex(b.sensors_latest, 0);
-  al::storeIndex(b.actuators_read, 0);
-  // Parked: no command yet (the program's first one unparks it).
-  al::storeIndex(b.actuators_latest, al::kActuatorsParked);
+  if (options_.release == Release::R2017) block_ = static_cast<AgentData*>(raw_);
+  withBlock([&](auto& b) {
+    std::memset(static_cast<void*>(&b), 0, sizeof b);
+    for (int s = 0; s < al::kSlots; ++s) b.joints[s] = initial;
+    al::storeIndex(b.sensors_read, 0);
+    al::storeIndex(b.sensors_latest, 0);
+    al::storeIndex(b.actuators_read, 0);
+    // Parked: no command yet (the program's first one unparks it).
+    al::storeIndex(b.actuators_latest, al::kActuatorsParked);
+    // Stiff start: `standing` until the program's first command (the
+    // thesis's SimulationThread); limp start: clear, as libagent boots.
+    b.standing = options_.start == StartMode::Stiff;
+  });
   last_.joints = initial;
+  for (int j = 0; j < al::kNumJoints; ++j) measured_[j] = initial.angles[j];
 
   SimExtension& x = *ext_;
   const int32_t pid = x.simulator_pid.load();
@@ -223,10 +254,11 @@ void BodyHost::releaseNamed() {
   if (!named_set_up_) return;
   named_set_up_ = false;
   if (images_) munmap(images_, sizeof(al::CameraImages));
-  if (block_) munmap(block_, sizeof(AgentData));
+  if (raw_) munmap(raw_, blockSize(options_.release));
   if (ext_) munmap(ext_, sizeof(SimExtension));
   if (tick_) sem_close(tick_);
   images_ = nullptr;
+  raw_ = nullptr;
   block_ = nullptr;
   ext_ = nullptr;
   tick_ = nullptr;
@@ -251,7 +283,12 @@ BodyHost::~BodyHost() {
   releaseNamed();
 }
 
-al::AgentConnection BodyHost::connect() { return al::AgentConnection(block_, tick_, ext_); }
+al::AgentConnection BodyHost::connect() {
+  if (!block_)
+    throw BridgeError("robot " + tag_ + ": an in-process robot program speaks the 2017 block; release " +
+                      std::to_string(releaseYear(options_.release)) + " needs an external program");
+  return al::AgentConnection(block_, tick_, ext_);
+}
 
 void BodyHost::setSync(SyncMode mode) {
   sync_ = mode;
@@ -259,20 +296,20 @@ void BodyHost::setSync(SyncMode mode) {
 }
 
 bool BodyHost::publishSensors(const SensorValues& values, int64_t sim_time_us, int64_t tick) {
-  AgentData& b = *block_;
-  namespace S = al::Sensors;
-  al::ButtonPresses pressed = 0;
-  edge(values.sensors[S::ChestBoard_Button], al::Buttons::kChest, held_, pressed);
-  edge(values.sensors[S::Head_Touch_Front], al::Buttons::kHeadFront, held_, pressed);
-  edge(values.sensors[S::Head_Touch_Middle], al::Buttons::kHeadMiddle, held_, pressed);
-  edge(values.sensors[S::Head_Touch_Rear], al::Buttons::kHeadRear, held_, pressed);
-
-  const int slot = al::writerSlot(b.sensors_latest, b.sensors_read);
-  b.sensors[slot] = values;
-  b.buttons[slot] = pressed;
-  ext_->slot_time_us[slot] = sim_time_us;
-  ext_->slot_tick[slot] = tick;
-  al::storeIndex(b.sensors_latest, static_cast<uint8_t>(slot));
+  LibagentBehaviour::Standing standing;
+  const al::ButtonPresses pressed = libagent_.onSensors(values, standing);
+  for (const std::string& m : libagent_.takeLog())
+    std::fprintf(stderr, "robot %s: libagent: %s (tick %lld)\n", tag_.c_str(), m.c_str(), static_cast<long long>(tick));
+  for (int j = 0; j < al::kNumJoints; ++j) measured_[j] = values.joints.angles[j];
+  withBlock([&](auto& b) {
+    const int slot = al::writerSlot(b.sensors_latest, b.sensors_read);
+    b.sensors[slot] = values;
+    b.buttons[slot] = pressed;
+    ext_->slot_time_us[slot] = sim_time_us;
+    ext_->slot_tick[slot] = tick;
+    if (standing.write) b.standing = *standing.write;
+    al::storeIndex(b.sensors_latest, static_cast<uint8_t>(slot));
+  });
 
   int value = 0;
   sem_getvalue(tick_, &value);
@@ -289,7 +326,7 @@ bool BodyHost::publishSensors(const SensorValues& values, int64_t sim_time_us, i
   ++skipped_total_;
   ++skipped_run_;
   ext_->skipped.fetch_add(1);
-  if (skipped_run_ >= kContactLostCycles && !contact_lost_) {
+  if (skipped_run_ > kContactLostCycles && !contact_lost_) {
     contact_lost_ = true;
     ++contact_lost_events_;
     std::fprintf(stderr, "robot %s: contact lost (%d cycles skipped) at tick %lld: sitting down\n", tag_.c_str(),
@@ -298,7 +335,9 @@ bool BodyHost::publishSensors(const SensorValues& values, int64_t sim_time_us, i
   return false;
 }
 
-bool BodyHost::answered() const { return al::validSlot(al::loadIndex(block_->actuators_latest)); }
+bool BodyHost::answered() const {
+  return withBlock([](auto& b) { return al::validSlot(al::loadIndex(b.actuators_latest)); });
+}
 
 bool BodyHost::waitAnswer(double timeout_s) {
   // The Motion thread usually answers within a few hundred microseconds of
@@ -338,24 +377,35 @@ bool BodyHost::waitAnswer(double timeout_s) {
 }
 
 ActuatorCommand BodyHost::readActuators() {
-  if (contact_lost_) {
-    ActuatorCommand sit;
-    sit.joints = agent::program::postureCommand(agent::program::Posture::Crouch);
-    for (float& s : sit.joints.stiffnesses) s = agent::program::kSafeSitStiffness;
-    return sit;
+  if (answered()) {
+    LibagentBehaviour::Standing standing;
+    withBlock([&](auto& b) {
+      using Block = std::decay_t<decltype(b)>;
+      const int slot = al::claimLatest(b.actuators_latest, b.actuators_read);
+      last_.joints = b.joints[slot];
+      last_.leds = b.leds[slot];
+      last_.sonar = b.sonar[slot];
+      last_.stiffen = false;
+      if constexpr (release::hasStiffen<Block>()) {
+        // Acted on once, then NONE in its slot (libagent's postCallback).
+        last_.stiffen = b.stiffen[slot] == al::STIFFEN;
+        if (last_.stiffen) libagent_.stiffen(standing);
+        b.stiffen[slot] = al::NONE;
+      }
+      last_.say.assign(b.sayTexts[slot], strnlen(b.sayTexts[slot], release::sayLength<Block>()));
+      if (standing.write) b.standing = *standing.write;
+      // Lock-step: consumed; the next valid index is the next answer.
+      if (sync_ == SyncMode::LockStep) al::storeIndex(b.actuators_latest, al::kActuatorsParked);
+    });
+    commanded_ = true;
+    ++commands_read_;
   }
-  AgentData& b = *block_;
-  if (!answered()) return last_;  // nothing new: the previous command stands
-  const int slot = al::claimLatest(b.actuators_latest, b.actuators_read);
-  last_.joints = b.joints[slot];
-  last_.leds = b.leds[slot];
-  last_.sonar = b.sonar[slot];
-  last_.stiffen = b.stiffen[slot] == al::STIFFEN;
-  last_.say.assign(b.sayTexts[slot], strnlen(b.sayTexts[slot], al::kSayTextLength));
-  ++commands_read_;
-  // Lock-step: consumed; the next valid index is the next answer.
-  if (sync_ == SyncMode::LockStep) al::storeIndex(b.actuators_latest, al::kActuatorsParked);
-  return last_;
+  // What the body gets: the program's command, or libagent's own (limp,
+  // `standing`, the sit after a contact loss).
+  ActuatorCommand out = last_;
+  out.joints = libagent_.body(last_.joints, commanded_, standing(), contact_lost_, measured_.data());
+  for (const std::string& m : libagent_.takeLog()) std::fprintf(stderr, "robot %s: libagent: %s\n", tag_.c_str(), m.c_str());
+  return out;
 }
 
 void BodyHost::publishFrame(const al::CameraFrame& frame) {

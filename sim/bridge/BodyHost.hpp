@@ -21,10 +21,15 @@
 // of the program.
 //
 // Free-running (SyncMode::FreeRunning, --realtime): nothing waits;
-// readActuators() returns the latest command. After kContactLostCycles
-// consecutive skipped cycles contact is lost: readActuators() returns the
-// safe sit (crouch posture at agent::program::kSafeSitStiffness) until the
-// program takes a tick again.
+// readActuators() returns the latest command. After more than
+// kContactLostCycles consecutive skipped cycles contact is lost.
+//
+// What the body does with the commands is libagent's (LibagentBehaviour.hpp):
+// start limp or stiff, `standing` and STIFFEN, counted chest clicks in
+// ButtonPresses, the two-stage sit after a contact loss and limp until
+// stiffened. The block is the one of the robot's rUNSWift release
+// (Releases.hpp: 2016, 2017 or 2018); block() is the 2017 one's (null for
+// the others).
 //
 // Named objects: opened with O_CREAT (a program that started first and
 // created empty ones is adopted: the block is sized and initialised), mode
@@ -36,6 +41,7 @@
 
 #include <semaphore.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -47,6 +53,8 @@
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/libagent/SimExtension.hpp"
 #include "agent/program/Postures.hpp"
+#include "sim/bridge/LibagentBehaviour.hpp"
+#include "sim/bridge/Releases.hpp"
 
 namespace simswift::bridge {
 
@@ -61,11 +69,13 @@ struct BridgeError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-constexpr int kContactLostCycles = 50;
+constexpr int kContactLostCycles = LibagentBehaviour::kMaxSkips;  // lost after more skipped cycles than this
 
 struct BodyHostOptions {
   bool bare_names = false;  // /libagent-memory etc. without the team/player suffix
   bool images = false;      // set up the camera images block too
+  Release release = Release::R2017;      // the program's block layout and names
+  StartMode start = StartMode::Stiff;    // libagent: start stiff (standing set) or limp
 };
 
 class BodyHost {
@@ -89,13 +99,16 @@ class BodyHost {
   const std::string& memoryName() const { return names_.memory; }
   const std::string& semaphoreName() const { return names_.semaphore; }
 
-  AgentData* block() { return block_; }
+  AgentData* block() { return block_; }  // the 2017 block; null for other releases
+  Release release() const { return options_.release; }
+  const LibagentBehaviour& libagent() const { return libagent_; }
+  bool standing() const;  // the block's `standing` flag
   SimExtension* extension() { return ext_; }
   CameraBlock* camera() { return &ext_->camera; }
   sem_t* tickSemaphore() { return tick_; }
   // The camera images (null unless options.images).
   agent::libagent::CameraImages* images() { return images_; }
-  // An in-process connection for a builtin robot program.
+  // An in-process connection for a builtin robot program (2017 block only).
   agent::libagent::AgentConnection connect();
 
   void setSync(SyncMode mode);
@@ -141,11 +154,12 @@ class BodyHost {
   Mode mode_;
   BodyHostOptions options_;
   agent::libagent::RobotNames names_;
-  AgentData* block_ = nullptr;
+  void* raw_ = nullptr;                 // the release's block
+  AgentData* block_ = nullptr;          // raw_ as the 2017 block (null otherwise)
   SimExtension* ext_ = nullptr;
   agent::libagent::CameraImages* images_ = nullptr;
   // In-process storage.
-  std::unique_ptr<AgentData> own_block_;
+  std::unique_ptr<unsigned char[]> own_block_;
   std::unique_ptr<SimExtension> own_ext_;
   std::unique_ptr<agent::libagent::CameraImages> own_images_;
   sem_t tick_local_{};
@@ -153,8 +167,16 @@ class BodyHost {
   bool named_set_up_ = false;
 
   SyncMode sync_ = SyncMode::LockStep;
-  ActuatorCommand last_;
-  agent::libagent::ButtonPresses held_ = 0;  // touch sensors pressed last cycle
+  template <class F>
+  decltype(auto) withBlock(F&& f);  // f(the release's block struct&)
+  template <class F>
+  decltype(auto) withBlock(F&& f) const;
+  void writeStanding(const LibagentBehaviour::Standing& s);
+
+  ActuatorCommand last_;                 // the program's latest command
+  bool commanded_ = false;               // it has sent one
+  LibagentBehaviour libagent_;
+  std::array<float, agent::libagent::kNumJoints> measured_{};  // angles of the last sensor slot (rad)
   int skipped_run_ = 0;
   int64_t skipped_total_ = 0;
   int64_t contact_lost_events_ = 0;

@@ -182,7 +182,7 @@ void Runner::start() {
   std::vector<std::string> ours;
   for (const RobotSpec& spec : scenario_.robots)
     if (spec.program == RobotSpec::Program::External)
-      ours.push_back(spec.bare_names ? al::bareNames().memory : al::simulationNames(spec.team, spec.player).memory);
+      ours.push_back(bridge::releaseNames(spec.release, spec.team, spec.player, spec.bare_names).memory);
   if (!ours.empty()) bridge::removeStaleObjects(ours);
   for (size_t i = 0; i < scenario_.robots.size(); ++i) {
     Robot& r = *robots_[i];
@@ -195,6 +195,8 @@ void Runner::start() {
     const bool external = r.spec.program == RobotSpec::Program::External;
     bridge::BodyHostOptions ho;
     ho.bare_names = r.spec.bare_names;
+    ho.release = r.spec.release;
+    ho.start = r.spec.start;
     ho.images = scenario_.camera.renderRobots();
     r.host = std::make_unique<bridge::BodyHost>(
         r.spec.team, r.spec.player, external ? bridge::BodyHost::Mode::Named : bridge::BodyHost::Mode::InProcess,
@@ -298,7 +300,9 @@ void Runner::waitForFirstAnswer(Robot& r) {
       std::ostringstream m;
       m << "robot " << r.tag << ": no robot program answered on " << r.host->memoryName() << " within "
         << scenario_.attach_timeout_s << " s (program: external: start one, e.g. simswift-agent --team "
-        << r.spec.team << " --player " << r.spec.player << ")";
+        << r.spec.team << " --player " << r.spec.player
+        << "; a program still running from an earlier run holds that run's removed objects and never "
+           "answers here: restart it)";
       throw RunnerError(m.str());
     }
   }

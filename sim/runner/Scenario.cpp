@@ -93,9 +93,41 @@ ScriptStep readStep(const YamlReader& r) {
   return s;
 }
 
-// One entry of a robot's `actions:` list: a body action or a push.
+sensors::Button buttonNamed(const YamlReader& r, const std::string& key) {
+  std::vector<std::string> names;
+  for (const ButtonName& n : kButtonNames) names.push_back(n.name);
+  const std::string name = r.choice(key, "chest", names);
+  for (const ButtonName& n : kButtonNames)
+    if (name == n.name) return n.button;
+  return sensors::Button::Chest;
+}
+
+// A click as a finger makes it: 0.1 s down, 0.1 s up (libagent counts a
+// series while the button is up for at most 18 cycles, 0.18 s, between).
+constexpr double kClickDown = 0.1, kClickUp = 0.1;  // s
+
+// One entry of a robot's `actions:` list: a body action, a push, or a
+// button click or press (the last three act on the body from outside, so
+// any robot program takes them).
 void readAction(const YamlReader& r, RobotSpec& rs) {
   const double t = r.number("t", Range::closed(0, limits::kMaxTime));
+  const int kinds = r.has("action") + r.has("push") + r.has("click") + r.has("press");
+  if (kinds > 1) r.fail("an actions entry holds one of 'action', 'push', 'click' or 'press'");
+  if (r.has("click")) {
+    const sensors::Button b = buttonNamed(r, "click");
+    const int count = r.integer("count", 1, Range::closed(1, 8));  // ButtonPresses holds 8 bits
+    for (int k = 0; k < count; ++k)
+      rs.buttons.push_back({t + k * (kClickDown + kClickUp), kClickDown, b});
+    r.finish();
+    return;
+  }
+  if (r.has("press")) {
+    const sensors::Button b = buttonNamed(r, "press");
+    const double held = r.number("for", Range::closed(0.01, limits::kMaxTime));  // s
+    rs.buttons.push_back({t, held, b});
+    r.finish();
+    return;
+  }
   if (r.has("push")) {
     if (r.has("action")) r.fail("an actions entry holds either 'action' or 'push', not both");
     YamlReader p = r.map("push");
@@ -139,11 +171,7 @@ RobotSpec::ButtonPress readButton(const YamlReader& r) {
   RobotSpec::ButtonPress b;
   b.t_s = r.number("t", Range::closed(0, limits::kMaxTime));
   b.duration_s = r.number("duration", 0.1, Range::closed(0, limits::kMaxTime));
-  std::vector<std::string> names;
-  for (const ButtonName& n : kButtonNames) names.push_back(n.name);
-  const std::string name = r.choice("button", "chest", names);
-  for (const ButtonName& n : kButtonNames)
-    if (name == n.name) b.button = n.button;
+  b.button = buttonNamed(r, "button");
   r.finish();
   return b;
 }
@@ -210,6 +238,16 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
 }
 
 }  // namespace
+
+// libagent: {start: stiff | limp, release: 2016 | 2017 | 2018}
+void readLibagent(const YamlReader& r, RobotSpec& rs) {
+  rs.start = r.choice("start", "stiff", {"stiff", "limp"}) == "limp" ? bridge::StartMode::Limp : bridge::StartMode::Stiff;
+  const int year = r.integer("release", 2017, Range::closed(0, 1000000));
+  if (!bridge::parseRelease(year, &rs.release))
+    r.fail("release", "expected one of 2016, 2017, 2018 (the rUNSWift releases for the NAO V5; got " +
+                          std::to_string(year) + ")");
+  r.finish();
+}
 
 void readActions(const YamlReader& robot, RobotSpec& rs) {
   for (const YamlReader& a : robot.list("actions")) readAction(a, rs);
@@ -353,6 +391,7 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
   }
 
   std::set<int> numbers;               // libagent name numbers in use
+  std::set<std::string> memories;      // libagent memory names in use (releases name differently)
   std::vector<std::pair<int, TeamColour>> teams;  // team number -> colour, in order of appearance
   int bare = 0;
   for (const YamlReader& r : top.list("robots")) {
@@ -382,9 +421,17 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
                              (rs.colour == TeamColour::Blue ? "blue" : "red"));
       teams.emplace_back(rs.team, rs.colour);
     }
+    if (auto l = r.optionalMap("libagent")) readLibagent(*l, rs);
     rs.bare_names = r.choice("names", "simulation", {"simulation", "bare"}) == "bare";
+    if (rs.release == bridge::Release::R2016) {
+      if (r.has("names") && !rs.bare_names)
+        r.fail("names", "rUNSWift 2016 has only the robot build's names (/libagent-memory): names: bare");
+      rs.bare_names = true;
+    }
     if (rs.bare_names && ++bare > 1)
       r.fail("names", "only one robot can have the bare names (/libagent-memory)");
+    const std::string memory = bridge::releaseNames(rs.release, rs.team, rs.player, rs.bare_names).memory;
+    if (!memories.insert(memory).second) r.fail("libagent", "two robots would share " + memory);
     const Range pos = Range::closed(-limits::kMaxPosition, limits::kMaxPosition);
     rs.x = r.number("x", 0.0, pos);
     rs.y = r.number("y", 0.0, pos);
@@ -401,11 +448,16 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     if (r.has("buttons"))
       for (const YamlReader& b : r.list("buttons")) rs.buttons.push_back(readButton(b));
     if (r.has("actions")) {
-      if (rs.program == RobotSpec::Program::External)
-        r.fail("actions", "an external robot runs its own program; actions need program: builtin");
-      if (!rs.script.empty()) r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
       readActions(r, rs);
+      if (!rs.actions.empty() && rs.program == RobotSpec::Program::External)
+        r.fail("actions", "an external robot runs its own program; body actions need program: builtin "
+                          "(pushes, clicks and presses are fine)");
+      if (!rs.actions.empty() && !rs.script.empty())
+        r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
     }
+    if (rs.program == RobotSpec::Program::Builtin && rs.release != bridge::Release::R2017)
+      r.fail("libagent", "the builtin robot program speaks the 2017 block; release " +
+                             std::to_string(bridge::releaseYear(rs.release)) + " needs program: external");
     if (r.has("behaviour")) {
       if (rs.program == RobotSpec::Program::External)
         r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin");

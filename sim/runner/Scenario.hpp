@@ -71,6 +71,8 @@
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/Postures.hpp"
 #include "sim/game/GameController.hpp"
+#include "sim/bridge/LibagentBehaviour.hpp"
+#include "sim/bridge/Releases.hpp"
 #include "sim/network/TeamNetwork.hpp"
 #include "sim/sensors/Buttons.hpp"
 #include "sim/vision/VisionConfig.hpp"
@@ -92,6 +94,11 @@ struct RobotSpec {
   int player = 1;
   TeamColour colour = TeamColour::Blue;  // side of the match
   bool bare_names = false;               // /libagent-memory without suffix
+  // libagent: {start: stiff | limp, release: 2016 | 2017 | 2018}: how the
+  // body side starts (sim/bridge/LibagentBehaviour.hpp) and which rUNSWift
+  // release's block and names it serves (sim/bridge/Releases.hpp).
+  bridge::StartMode start = bridge::StartMode::Stiff;
+  bridge::Release release = bridge::Release::R2017;
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
   agent::program::Posture posture = agent::program::Posture::Stand;
   enum class Program { Builtin, External } program = Program::Builtin;
@@ -112,7 +119,9 @@ struct RobotSpec {
   std::vector<Push> pushes;
   // Touch sensors pressed by the scenario (any program), e.g.
   //   buttons: [{t: 2.0, button: chest, duration: 0.1}]
-  // held from t for duration s (chest, head_front, head_middle, head_rear).
+  // held from t for duration s (chest, head_front, head_middle, head_rear);
+  // also from actions: {t: 5, click: chest, count: 2} (clicks of 0.1 s
+  // down, 0.1 s up) and {t: 9, press: chest, for: 3.2}.
   struct ButtonPress { double t_s = 0, duration_s = 0.1; sensors::Button button = sensors::Button::Chest; };
   std::vector<ButtonPress> buttons;
   bool buttonHeld(sensors::Button b, double t_s) const;  // any press of b covers t_s

@@ -22,6 +22,7 @@
 
 namespace al = agent::libagent;
 namespace ap = agent::program;
+namespace bridge = simswift::bridge;
 using simswift::bridge::BodyHost;
 using simswift::bridge::BridgeError;
 using Clock = std::chrono::steady_clock;
@@ -49,21 +50,27 @@ TEST(BodyHost, SensorsAndActuatorsRoundTrip) {
   EXPECT_EQ(got.sonar[3], 0.42f);
   EXPECT_EQ(conn.simTimeUs(), 250000);
   EXPECT_EQ(conn.tick(), 25);
-  EXPECT_EQ(conn.buttons(), al::Buttons::kChest);  // pressed this cycle
+  EXPECT_EQ(conn.buttons(), 0);  // a press is no click until released (test_libagent_behaviour.cpp)
 
   al::ActuatorCommand cmd;
   cmd.joints.angles[al::Joints::LShoulderPitch] = 0.75f;
   cmd.joints.stiffnesses[al::Joints::LShoulderPitch] = 0.5f;
   cmd.sonar = 68.0f;
-  cmd.stiffen = true;
+  cmd.stiffen = true;  // read back once; it also sets `standing` (libagent), so the body sits limp this cycle
   cmd.say = "ready";
   cmd.leds.chest.red = true;
   cmd.leds.right_ear = 0x155;
   conn.writeActuators(cmd);
   ASSERT_TRUE(host.waitAnswer(1.0));
   const al::ActuatorCommand back = host.readActuators();
-  EXPECT_EQ(back.joints.angles[al::Joints::LShoulderPitch], 0.75f);
-  EXPECT_EQ(back.joints.stiffnesses[al::Joints::LShoulderPitch], 0.5f);
+  EXPECT_TRUE(host.standing());
+  EXPECT_EQ(back.joints.stiffnesses[al::Joints::LShoulderPitch], 0.0f);
+  cmd.stiffen = false;
+  conn.writeActuators(cmd);  // clears `standing`, as libagent's Effector
+  ASSERT_TRUE(host.waitAnswer(1.0));
+  const al::ActuatorCommand obeyed = host.readActuators();
+  EXPECT_EQ(obeyed.joints.angles[al::Joints::LShoulderPitch], 0.75f);
+  EXPECT_EQ(obeyed.joints.stiffnesses[al::Joints::LShoulderPitch], 0.5f);
   EXPECT_EQ(back.sonar, 68.0f);
   EXPECT_TRUE(back.stiffen);
   EXPECT_EQ(back.say, "ready");
@@ -136,6 +143,7 @@ TEST(BodyHost, LockStepSeesAnswersFromTheEffectorSlotLoopQuirk) {
       for (; i != b.actuators_latest && i != b.actuators_read; ++i) {
       }
       b.joints[i].angles[al::Joints::HeadYaw] = 0.1f * k;
+      b.standing = false;  // the Effector clears the start's `standing`
       al::storeIndex(b.actuators_latest, static_cast<uint8_t>(i));
     });
     ASSERT_TRUE(host.waitAnswer(2.0)) << "tick " << k;
@@ -149,41 +157,80 @@ TEST(BodyHost, LockStepSeesAnswersFromTheEffectorSlotLoopQuirk) {
 }
 
 // Free-running: a program that does not wait on the semaphore: the body
-// posts once, then counts every cycle as skipped; after 50 in a row it sits
-// the robot down, and recovers once the program takes a tick again.
-TEST(BodyHost, FreeRunningCountsSkippedCyclesAndSitsDownWhenContactIsLost) {
+// posts once, then counts every cycle as skipped; after more than 50 in a
+// row contact is lost and the body sits down as libagent does (200 cycles
+// to the middle pose at stiffness 1, 100 to the sit pose at 0.2), then
+// stays limp, also once the program answers again, until a STIFFEN.
+TEST(BodyHost, ContactLostSitsDownAsLibagentAndStaysLimpUntilStiffened) {
+  using LB = bridge::LibagentBehaviour;
   BodyHost host(5, 1, BodyHost::Mode::InProcess);
   host.setSync(al::SyncMode::FreeRunning);
   al::AgentConnection conn = host.connect();
+  const al::JointValues stand = ap::postureCommand(ap::Posture::Stand);
   al::SensorValues v{};
+  for (int j = 0; j < al::kNumJoints; ++j) v.joints.angles[j] = stand.angles[j];
   EXPECT_TRUE(host.publishSensors(v, 10000, 1));
-  for (int k = 2; k <= 50; ++k) EXPECT_FALSE(host.publishSensors(v, k * 10000, k));
-  EXPECT_EQ(host.skippedCycles(), 49);
-  EXPECT_EQ(host.extension()->skipped.load(), 49);
-  EXPECT_FALSE(host.contactLost());
-  EXPECT_FALSE(host.publishSensors(v, 510000, 51));
-  EXPECT_TRUE(host.contactLost());  // 50 consecutive skipped cycles
+  ASSERT_TRUE(conn.waitTick());
+  conn.readSensors();
+  conn.writeActuators(stand);
+  EXPECT_EQ(host.readActuators().joints.angles[al::Joints::LKneePitch], stand.angles[al::Joints::LKneePitch]);
+  EXPECT_TRUE(host.publishSensors(v, 20000, 2));  // not taken from here on
+  for (int k = 3; k <= 52; ++k) EXPECT_FALSE(host.publishSensors(v, k * 10000, k));
+  EXPECT_EQ(host.skippedCycles(), 50);
+  EXPECT_EQ(host.extension()->skipped.load(), 50);
+  EXPECT_FALSE(host.contactLost());  // libagent: more than MAX_SKIPS (50)
+  EXPECT_FALSE(host.publishSensors(v, 530000, 53));
+  EXPECT_TRUE(host.contactLost());
   EXPECT_EQ(host.contactLostEvents(), 1);
 
-  const al::ActuatorCommand sit = host.readActuators();
-  const ap::JointArray crouch = ap::postureAngles(ap::Posture::Crouch);
-  for (int j = 0; j < al::kNumJoints; ++j) {
-    EXPECT_EQ(sit.joints.angles[j], crouch[j]);
-    EXPECT_EQ(sit.joints.stiffnesses[j], ap::kSafeSitStiffness);
+  const auto& middle = LB::sitMiddleAngles();
+  const auto& sit = LB::sitAngles();
+  for (int c = 1; c <= LB::kSitMiddleCycles + LB::kSitDownCycles + 1; ++c) {
+    const al::JointValues j = host.readActuators().joints;
+    SCOPED_TRACE("sit cycle " + std::to_string(c));
+    if (c == 1) {  // the first step from the measured angles
+      const float k = 1.0f / LB::kSitMiddleCycles;
+      EXPECT_NEAR(j.angles[al::Joints::LShoulderPitch], (1 - k) * stand.angles[al::Joints::LShoulderPitch] + k * middle[al::Joints::LShoulderPitch], 1e-6);
+    }
+    if (c == LB::kSitMiddleCycles) {
+      for (int q = 0; q < al::kNumJoints; ++q) EXPECT_NEAR(j.angles[q], middle[q], 1e-5);
+      EXPECT_EQ(j.stiffnesses[al::Joints::LKneePitch], LB::kSitMiddleStiffness);
+    }
+    if (c == LB::kSitMiddleCycles + 1) EXPECT_EQ(j.stiffnesses[al::Joints::LKneePitch], LB::kSitDownStiffness);
+    if (c == LB::kSitMiddleCycles + LB::kSitDownCycles) {
+      for (int q = 0; q < al::kNumJoints; ++q) EXPECT_NEAR(j.angles[q], sit[q], 1e-5);
+      EXPECT_EQ(j.stiffnesses[al::Joints::LKneePitch], LB::kSitDownStiffness);
+      EXPECT_FALSE(host.libagent().limp());
+    }
+    if (c == LB::kSitMiddleCycles + LB::kSitDownCycles + 1) {
+      for (int q = 0; q < al::kNumJoints; ++q) EXPECT_EQ(j.stiffnesses[q], 0.0f);
+      EXPECT_TRUE(host.libagent().limp());
+    }
   }
 
-  // The program takes its tick again: the next cycle posts and contact is back.
+  // The program takes its tick again: contact is back, the body stays limp.
   ASSERT_TRUE(conn.waitTick());
-  EXPECT_TRUE(host.publishSensors(v, 520000, 52));
+  EXPECT_TRUE(host.publishSensors(v, 540000, 54));
   EXPECT_FALSE(host.contactLost());
   EXPECT_EQ(host.consecutiveSkipped(), 0);
-  // Free-running: a command is read without being consumed (not parked).
   conn.readSensors();
-  al::JointValues j{};
-  j.angles[al::Joints::HeadYaw] = 0.4f;
-  conn.writeActuators(j);
-  EXPECT_EQ(host.readActuators().joints.angles[al::Joints::HeadYaw], 0.4f);
-  EXPECT_TRUE(host.answered());
+  conn.writeActuators(stand);
+  EXPECT_EQ(host.readActuators().joints.stiffnesses[al::Joints::LKneePitch], 0.0f);
+  // STIFFEN: acted on once (NONE written back), `standing` set, still limp
+  // while it is; the program's next command clears it and is obeyed.
+  al::ActuatorCommand st;
+  st.joints = stand;
+  st.stiffen = true;
+  conn.writeActuators(st);
+  EXPECT_EQ(host.readActuators().joints.stiffnesses[al::Joints::LKneePitch], 0.0f);
+  EXPECT_TRUE(host.standing());
+  EXPECT_FALSE(host.libagent().limp());
+  for (int s = 0; s < al::kSlots; ++s) EXPECT_EQ(host.block()->stiffen[s], al::NONE);
+  conn.writeActuators(stand);
+  EXPECT_FALSE(host.standing());
+  const al::JointValues obeyed = host.readActuators().joints;
+  EXPECT_EQ(obeyed.stiffnesses[al::Joints::LKneePitch], stand.stiffnesses[al::Joints::LKneePitch]);
+  EXPECT_EQ(obeyed.angles[al::Joints::LKneePitch], stand.angles[al::Joints::LKneePitch]);
 }
 
 namespace {
