@@ -31,9 +31,6 @@ std::optional<Posture> parsePosture(const std::string& name);  // "stand", ...
 // Fills a JointValues (angles, stiffnesses; temperatures/currents 0).
 agent::libagent::JointValues postureCommand(Posture p);
 
-// Stiffness of the body side's safe sit (crouch) when contact is lost: enough
-// to fold down slowly rather than drop, little enough not to fight a fall.
-constexpr float kSafeSitStiffness = 0.4f;
 
 // libagent index of a NAO joint name ("HeadYaw"), -1 if unknown.
 int jointIndex(const std::string& name);

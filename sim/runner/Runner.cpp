@@ -203,7 +203,7 @@ void Runner::start() {
         initial, ho);
     r.images = r.host->images();
     if (external && free_running_) r.host->setSync(SyncMode::FreeRunning);
-    r.latched.joints = initial;
+    r.latched = r.host->readActuators();  // what the body gets before any command (limp or stiff start)
     r.ext = r.host->extension();  // game state + team link, beside the block
     if (!external) {
       // The robot program: the standard modules (agent/program/ModuleOrder).

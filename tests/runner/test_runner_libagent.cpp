@@ -266,7 +266,7 @@ TEST(LibagentClient, StandingRobotsFsrsSumToItsMassInKg) {
 }
 
 // Free-running (--realtime): the program sleeps 600 ms; the simulator keeps
-// its pace, counts the skipped cycles and, after 50, sits the body down.
+// its pace, counts the skipped cycles and, after more than 50, sits the body down.
 TEST(LibagentClient, FreeRunningClientThatSleepsIsSatDownAndSkipsAreCounted) {
   const int team = 94, player = 5;
   Runner r(robotScenario(2.0, team, player, "external"));
@@ -300,7 +300,7 @@ TEST(LibagentClient, FreeRunningClientThatSleepsIsSatDownAndSkipsAreCounted) {
   EXPECT_GE(r.host(0).skippedCycles(), 50);
   EXPECT_EQ(r.host(0).contactLostEvents(), 1);
   EXPECT_NE(summary.find("skipped "), std::string::npos) << summary;
-  // Sitting: the knees bend well past the standing 0.8 rad toward the crouch's 1.6.
+  // Sitting: the knees bend well past the standing 0.8 rad toward libagent's sit (125 deg).
   EXPECT_GT(knee_max, knee_start + 0.3);
 }
 
@@ -491,4 +491,189 @@ TEST(ScenarioTeams, SplTeamNumbersAndColours) {
   const std::string two_bare =
       error("robots:\n  - {team: 19, player: 1, names: bare}\n  - {team: 19, player: 2, names: bare}\n");
   EXPECT_NE(two_bare.find("robots[1].names: only one robot"), std::string::npos) << two_bare;
+}
+
+// ---- libagent's releases and behaviour through unchanged clients.
+
+namespace {
+
+Scenario releaseScenario(double duration, int team, int player, const std::string& libagent,
+                         const std::string& actions = "") {
+  return Scenario::parse("duration: " + std::to_string(duration) +
+                             "\nseed: 3\nattach_timeout: 20\nwatchdog: 10\nrobots:\n  - {team: " +
+                             std::to_string(team) + ", player: " + std::to_string(player) +
+                             ", x: -1.0, program: external, libagent: " + libagent +
+                             (actions.empty() ? "" : ", actions: " + actions) + "}\n",
+                         "release.yaml");
+}
+
+std::vector<std::string> releaseClient(int release, int team, int player, long ticks,
+                                       std::vector<std::string> extra = {}) {
+  std::vector<std::string> a = clientArgs(team, player, ticks, std::move(extra));
+  a[0] = kBin + "/libagent" + std::to_string(release) + "-client";
+  return a;
+}
+
+// Runs `r` to its end with `client` attached; the client's stdout.
+std::string runWith(Runner& r, pid_t client, const std::string& out) {
+  try {
+    r.run(quiet());
+  } catch (...) {
+    kill(client, SIGKILL);
+    waitpid(client, nullptr, 0);
+    throw;
+  }
+  EXPECT_EQ(waitExit(client, 10), 0);
+  const std::string text = slurp(out);
+  std::remove(out.c_str());
+  return text;
+}
+
+double fsrSum(const std::string& text) {
+  const size_t at = text.find("fsr-sum-kg ");
+  return at == std::string::npos ? -1 : std::stod(text.substr(at + 11));
+}
+
+}  // namespace
+
+// Each release's client (its own block and names) attaches, runs in
+// lock-step and reads a standing robot's mass on the FSRs within 2 %:
+// 2017 and 2018 started before or after the simulator; 2016, which opens
+// the objects without O_CREAT, after it (started before, it says why it
+// cannot attach, as on a NAO before libagent is loaded).
+TEST(LibagentReleases, EachReleasesClientAttachesInLockStepAndReadsTheMass) {
+  const int team = 71, player = 3;
+  for (int release : {2016, 2017, 2018}) {
+    for (bool client_first : {false, true}) {
+      SCOPED_TRACE("release " + std::to_string(release) + (client_first ? ", client first" : ", simulator first"));
+      const std::string out = tmpPath("release.txt");
+      if (client_first && release == 2016) {
+        const std::string err = tmpPath("release-err.txt");
+        const pid_t early = spawn(releaseClient(release, team, player, 10, {"--hold"}), out, err);
+        EXPECT_EQ(waitExit(early, 10), 4);
+        EXPECT_NE(slurp(err).find("must be up before a 2016 robot program starts"), std::string::npos) << slurp(err);
+        std::remove(err.c_str());
+        continue;
+      }
+      Runner r(releaseScenario(2.0, team, player, "{release: " + std::to_string(release) + "}"));
+      pid_t client = -1;
+      if (client_first) client = spawn(releaseClient(release, team, player, 200, {"--hold", "--print-fsr"}), out);
+      r.start();
+      EXPECT_EQ(r.host(0).memoryName(), release == 2016   ? std::string("/libagent-memory")
+                                        : release == 2018 ? "/libagent-memory" + std::to_string(team * 6 + player)
+                                                          : "/libagent-memory" + std::to_string(team * 11 + player));
+      if (!client_first) client = spawn(releaseClient(release, team, player, 200, {"--hold", "--print-fsr"}), out);
+      const double sum = fsrSum(runWith(r, client, out));
+      const double mass = r.world().robot(0).model().totalMass();
+      std::printf("release %d: FSR sum %.3f kg, model %.3f kg\n", release, sum, mass);
+      EXPECT_NEAR(sum, mass, 0.02 * mass);
+    }
+  }
+}
+
+// start: stiff (default): `standing` from attach until the program's first
+// command (its Effector clears it), then never again.
+TEST(LibagentReleases, StandingIsSetUntilTheFirstCommand) {
+  const int team = 72, player = 1;
+  Runner r(releaseScenario(0.5, team, player, "{start: stiff}"));
+  r.start();
+  const std::string out = tmpPath("standing.txt");
+  const pid_t client = spawn(releaseClient(2017, team, player, 50, {"--hold", "--print-standing"}), out);
+  const std::string text = runWith(r, client, out);
+  EXPECT_NE(text.find("standing 1 1\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("standing 2 0\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("standing 3 1"), std::string::npos) << text;
+}
+
+// start: limp: the joints read stiffness 0 and the torso sinks until the
+// program sends STIFFEN; then `standing` once, and the body holds the
+// program's command.
+TEST(LibagentReleases, LimpStartSinksUntilStiffenThenStandingOnceAndTheCommandHolds) {
+  const int team = 72, player = 2;
+  Runner r(releaseScenario(3.0, team, player, "{start: limp}"));
+  r.start();
+  const std::string out = tmpPath("limp.txt");
+  const long stiffen_at = 150;
+  const pid_t client =
+      spawn(releaseClient(2017, team, player, 300, {"--stand", "--print-standing", "--stiffen-at", std::to_string(stiffen_at)}), out);
+  const simswift::RobotBody& body = r.world().robot(0);
+  auto torsoZ = [&] { return body.linkPose(body.model().rootLink()).translation().z(); };
+  double z0 = 0, z_before = 0;
+  float stiffness_read_max = 0;
+  try {
+    while (r.ticks() < 300) {
+      r.tick();
+      if (r.ticks() == 1) z0 = torsoZ();
+      const al::AgentData& b = *r.host(0).block();
+      if (r.ticks() < stiffen_at)
+        for (float st : b.sensors[al::loadIndex(b.sensors_latest)].joints.stiffnesses)
+          stiffness_read_max = std::max(stiffness_read_max, st);
+      if (r.ticks() == stiffen_at) z_before = torsoZ();
+    }
+  } catch (...) {
+    kill(client, SIGKILL);
+    waitpid(client, nullptr, 0);
+    throw;
+  }
+  r.shutdown();
+  EXPECT_EQ(waitExit(client, 10), 0);
+  const std::string text = slurp(out);
+  std::remove(out.c_str());
+  std::printf("torso %.3f m at start, %.3f m before STIFFEN; knees %.3f rad at the end\n", z0, z_before,
+              modelJoint(r, "LKneePitch"));
+  EXPECT_EQ(stiffness_read_max, 0.0f);
+  EXPECT_LT(z_before, z0 - 0.03);  // the limp body sags
+  // STIFFEN with tick 150's command: `standing` read on the next tick, cleared after.
+  EXPECT_NE(text.find("standing " + std::to_string(stiffen_at + 1) + " 1\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("standing " + std::to_string(stiffen_at + 2) + " 0\n"), std::string::npos) << text;
+  EXPECT_FALSE(r.host(0).libagent().limp());
+  EXPECT_NEAR(modelJoint(r, "LKneePitch"), 0.8, 0.1);  // the program's stand holds
+}
+
+// Clicks from the scenario: one chest click reaches ButtonPresses (bit 0)
+// exactly once; a double click makes the body limp and a second one stiff
+// again, with `standing`; head touches never reach ButtonPresses.
+TEST(LibagentReleases, ScenarioClicksAreCountedAsLibagentCountsThem) {
+  const int team = 72, player = 3;
+  Runner r(releaseScenario(4.0, team, player, "{start: stiff}",
+                           "[{t: 0.2, click: chest}, {t: 1.0, click: chest, count: 2}, "
+                           "{t: 2.0, click: chest, count: 2}, {t: 3.0, press: head_front, for: 0.3}]"));
+  r.start();
+  const std::string out = tmpPath("clicks.txt");
+  const pid_t client = spawn(releaseClient(2017, team, player, 400, {"--stand", "--print-standing"}), out);
+  int single = 0, other = 0;
+  double single_at = -1;
+  bool limp_seen = false;
+  try {
+    while (r.ticks() < 400) {
+      r.tick();
+      const al::AgentData& b = *r.host(0).block();
+      const al::ButtonPresses p = b.buttons[al::loadIndex(b.sensors_latest)];
+      if (p == al::Buttons::kSingleClick) {
+        ++single;
+        single_at = r.world().time();
+      } else if (p != 0) {
+        ++other;
+      }
+      if (r.world().time() > 1.5 && r.world().time() < 2.0) limp_seen = limp_seen || r.host(0).libagent().limp();
+    }
+  } catch (...) {
+    kill(client, SIGKILL);
+    waitpid(client, nullptr, 0);
+    throw;
+  }
+  r.shutdown();
+  EXPECT_EQ(waitExit(client, 10), 0);
+  const std::string text = slurp(out);
+  std::remove(out.c_str());
+  EXPECT_EQ(single, 1);
+  EXPECT_EQ(other, 0);
+  // Pressed 0.2-0.3 s; up from the tick at 0.3 s; out after more than 18 cycles up.
+  EXPECT_NEAR(single_at, 0.3 + 0.19, 0.011);
+  EXPECT_TRUE(limp_seen);
+  // The second double click sets `standing` once (the client read it on one tick).
+  size_t sets = 0;
+  for (size_t at = text.find(" 1\n"); at != std::string::npos; at = text.find(" 1\n", at + 1)) ++sets;
+  EXPECT_EQ(sets, 2u) << text;  // tick 1 (the start's) and the one after the stiffening clicks
+  EXPECT_FALSE(r.host(0).libagent().limp());
 }

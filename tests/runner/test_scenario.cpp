@@ -103,3 +103,27 @@ TEST(Scenario, ShippedScenariosLoad) {
     EXPECT_FALSE(s.robots.empty()) << f;
   }
 }
+
+TEST(Scenario, LibagentAndClickValuesAreCheckedWithFileLineAndKey) {
+  struct Case {
+    const char* robot;
+    const char* want;
+  };
+  const Case cases[] = {
+      {"libagent: {release: 2019}", "robots[0].libagent.release: expected one of 2016, 2017, 2018"},
+      {"libagent: {start: floppy}", "robots[0].libagent.start: expected one of stiff, limp"},
+      {"program: external, actions: [{t: 1, click: elbow}]", "robots[0].actions[0].click: expected one of chest"},
+      {"program: external, actions: [{t: 1, click: chest, count: 0}]", "robots[0].actions[0].count"},
+      {"libagent: {release: 2016}", "robots[0].libagent: the builtin robot program speaks the 2017 block"},
+  };
+  for (const Case& c : cases) {
+    try {
+      Scenario::parse(std::string("duration: 1\nrobots:\n  - {team: 19, player: 1, ") + c.robot + "}\n", "bad.yaml");
+      ADD_FAILURE() << c.robot << ": accepted";
+    } catch (const simswift::ConfigError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("bad.yaml:3"), std::string::npos) << m;
+      EXPECT_NE(m.find(c.want), std::string::npos) << m;
+    }
+  }
+}

@@ -1,11 +1,15 @@
 // A robot program as a team would bring it: it knows nothing of simswift.
-// It declares the libagent block itself, from the byte layout of rUNSWift
-// 2017's AgentData in facts.md section 2 (on purpose no project header, so
-// a drift of simswift's block from the published one breaks the tests that
-// run this program), opens the objects by the simulation build's names and
-// does only what libagent's clients do:
+// It declares the libagent block itself, from the byte layout of the public
+// rUNSWift release it is built for (LIBAGENT_RELEASE = 2016, 2017 or 2018;
+// on purpose no project header, so a drift of simswift's blocks from the
+// published ones breaks the tests that run it), opens the objects by that
+// release's names and does only what libagent's clients do:
 //   sem_wait; sensors_read = sensors_latest; read that slot;
-//   pick a slot with the Effector's loop; write it; actuators_latest = slot.
+//   pick a slot with the Effector's loop; write it; clear `standing`;
+//   actuators_latest = slot.
+// Names: 2016 has only the robot build (/libagent-memory, opened without
+// O_CREAT: the body side must exist first); 2017 N = team x 11 + player;
+// 2018 N = team x 6 + player (both opened with O_CREAT, either side first).
 //
 // Motion: holds the joint angles it measured on its first tick, then a
 // scripted head and leg move (ticks counted from its first tick):
@@ -14,15 +18,22 @@
 //              250..350: knees +2d, hips and ankles -d (both legs)
 // tests/runner/test_runner_libagent.cpp runs the same moves in-process.
 //
-//   libagent2017-client --team T --player P [--bare] --ticks N [--hold]
-//                       [--sleep-at K MS] [--timeout S] [--print-fsr]
+//   libagent<R>-client --team T --player P [--bare] --ticks N [--hold]
+//                      [--stand] [--sleep-at K MS] [--timeout S] [--print-fsr]
+//                      [--print-standing] [--stiffen-at K]
 //
-// --hold: no scripted move, only hold the first tick's angles. --print-fsr:
-// print the mean sum of the eight FSRs (kg) over the last 100 ticks.
+// --hold: no scripted move, only hold the first tick's angles. --stand:
+// hold the NAO's stand instead (knees 0.8, hips and ankles -0.4 rad).
+// --print-fsr: print the mean sum of the eight FSRs (kg) over the last 100
+// ticks. --print-standing: print "standing K 0|1" for the first ticks and
+// every change. --stiffen-at K: send STIFFEN with tick K's command (not in 2016).
 //
 // It answers N ticks and exits 0; with --timeout S it gives up (exit 3)
 // when no tick comes for S wall-clock seconds; --sleep-at K MS sleeps MS ms
 // before answering tick K (a program missing cycles).
+#ifndef LIBAGENT_RELEASE
+#define LIBAGENT_RELEASE 2017
+#endif
 #include <fcntl.h>
 #include <semaphore.h>
 #include <sys/mman.h>
@@ -58,6 +69,13 @@ struct LED {
   RGB leftEye, rightEye, chestButton, leftFoot, rightFoot;
 };
 enum StiffenCommand { NONE = 0, STIFFEN };
+#if LIBAGENT_RELEASE == 2016
+constexpr int kSayLength = 35;
+#elif LIBAGENT_RELEASE == 2018
+constexpr int kSayLength = 70;
+#else
+constexpr int kSayLength = 35;
+#endif
 struct AgentData {
   volatile uint8_t sensors_read;      // 0
   volatile uint8_t sensors_latest;    // 1
@@ -68,11 +86,20 @@ struct AgentData {
   JointValues joints[3];              // 1892
   LED leds[3];                        // 3092
   float sonar[3];                     // 3152
+#if LIBAGENT_RELEASE != 2016
   StiffenCommand stiffen[3];          // 3164
-  char sayTexts[3][35];               // 3176
-  volatile bool standing;             // 3281
+#endif
+  char sayTexts[3][kSayLength];       // 2016: 3164; 2017, 2018: 3176
+  volatile bool standing;             // 2016: 3269; 2017: 3281; 2018: 3386
 };
+#if LIBAGENT_RELEASE == 2016
+static_assert(sizeof(AgentData) == 3272, "the 2016 block is 3272 bytes");
+#elif LIBAGENT_RELEASE == 2018
+static_assert(sizeof(AgentData) == 3388, "the 2018 block is 3388 bytes");
+#else
 static_assert(sizeof(AgentData) == 3284, "the 2017 block is 3284 bytes");
+#endif
+const std::string kName = "libagent" + std::to_string(LIBAGENT_RELEASE) + "-client";
 
 // Joint slots used by the script (libagent order).
 enum { HeadYaw = 0, LHipPitch = 10, LKneePitch = 11, LAnklePitch = 12, RHipPitch = 15, RKneePitch = 16,
@@ -88,7 +115,7 @@ float ramp(long k, long t0, long t1) {
 }
 
 [[noreturn]] void usage(const char* msg) {
-  std::fprintf(stderr, "libagent2017-client: %s\n", msg);
+  std::fprintf(stderr, "%s: %s\n", kName.c_str(), msg);
   std::exit(2);
 }
 
@@ -96,8 +123,8 @@ float ramp(long k, long t0, long t1) {
 
 int main(int argc, char** argv) {
   int team = -1, player = -1;
-  bool bare = false, print_fsr = false, hold_only = false;
-  long ticks = -1, sleep_at = -1, sleep_ms = 0;
+  bool bare = LIBAGENT_RELEASE == 2016, print_fsr = false, hold_only = false, stand = false, print_standing = false;
+  long ticks = -1, sleep_at = -1, sleep_ms = 0, stiffen_at = -1;
   double timeout_s = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -115,15 +142,28 @@ int main(int argc, char** argv) {
     } else if (a == "--timeout") timeout_s = std::atof(next());
     else if (a == "--print-fsr") print_fsr = true;
     else if (a == "--hold") hold_only = true;
+    else if (a == "--stand") hold_only = stand = true;
+    else if (a == "--print-standing") print_standing = true;
+    else if (a == "--stiffen-at") stiffen_at = std::atol(next());
     else usage(("unknown argument " + a).c_str());
   }
   if (ticks < 0 || (!bare && (team < 0 || player < 1))) usage("need --team, --player (or --bare) and --ticks");
 
-  // The simulation build's names: N = team x 11 + player, no separator.
-  const std::string suffix = bare ? "" : std::to_string(team * 11 + player);
+  // The simulation build's names: N = team x 11 (2018: x 6) + player, no separator.
+  const int factor = LIBAGENT_RELEASE == 2018 ? 6 : 11;
+  const std::string suffix = bare ? "" : std::to_string(team * factor + player);
   const std::string mem_name = "/libagent-memory" + suffix, sem_name = "/libagent-semaphore" + suffix;
-  const int fd = shm_open(mem_name.c_str(), O_CREAT | O_RDWR, 0600);
+  // 2016 opens libagent's objects without O_CREAT: they must exist already.
+  const int create = LIBAGENT_RELEASE == 2016 ? 0 : O_CREAT;
+  const int fd = shm_open(mem_name.c_str(), create | O_RDWR, 0600);
   if (fd < 0) {
+    if (errno == ENOENT && !create) {
+      std::fprintf(stderr,
+                   "%s: %s does not exist: the body side (libagent on a NAO, simswift here) must be up before a "
+                   "2016 robot program starts, which opens its objects without O_CREAT\n",
+                   kName.c_str(), mem_name.c_str());
+      return 4;
+    }
     std::perror(("shm_open " + mem_name).c_str());
     return 1;
   }
@@ -133,13 +173,14 @@ int main(int argc, char** argv) {
     std::perror("mmap");
     return 1;
   }
-  sem_t* sem = sem_open(sem_name.c_str(), O_CREAT, 0600, 0);
+  sem_t* sem = create ? sem_open(sem_name.c_str(), O_CREAT, 0600, 0) : sem_open(sem_name.c_str(), 0);
   if (sem == SEM_FAILED) {
     std::perror(("sem_open " + sem_name).c_str());
     return 1;
   }
   AgentData* block = static_cast<AgentData*>(p);
-  std::fprintf(stderr, "libagent2017-client: opened %s and %s\n", mem_name.c_str(), sem_name.c_str());
+  std::fprintf(stderr, "%s: opened %s and %s\n", kName.c_str(), mem_name.c_str(), sem_name.c_str());
+  int last_standing = -1;
 
   JointValues hold{};
   double fsr_sum = 0;
@@ -154,7 +195,7 @@ int main(int argc, char** argv) {
       while ((r = sem_timedwait(sem, &deadline)) != 0 && errno == EINTR) {
       }
       if (r != 0) {
-        std::fprintf(stderr, "libagent2017-client: no tick for %.1f s after %ld ticks: stopping\n", timeout_s, k - 1);
+        std::fprintf(stderr, "%s: no tick for %.1f s after %ld ticks: stopping\n", kName.c_str(), timeout_s, k - 1);
         return 3;
       }
     } else {
@@ -163,11 +204,21 @@ int main(int argc, char** argv) {
     }
     block->sensors_read = block->sensors_latest;
     const SensorValues s = block->sensors[block->sensors_read];
+    const int standing_now = block->standing ? 1 : 0;
+    if (print_standing && (k <= 3 || standing_now != last_standing))
+      std::printf("standing %ld %d\n", k, standing_now);
+    last_standing = standing_now;
 
     // Motion.
     if (k == 1) {
       hold = s.joints;
       for (float& st : hold.stiffnesses) st = 1.0f;
+      if (stand) {
+        for (float& a : hold.angles) a = 0.0f;
+        for (int hip : {LHipPitch, RHipPitch}) hold.angles[hip] = -0.4f;
+        for (int knee : {LKneePitch, RKneePitch}) hold.angles[knee] = 0.8f;
+        for (int ankle : {LAnklePitch, RAnklePitch}) hold.angles[ankle] = -0.4f;
+      }
     }
     JointValues cmd = hold;
     if (!hold_only) {
@@ -195,14 +246,16 @@ int main(int argc, char** argv) {
     block->joints[i] = cmd;
     block->leds[i] = LED{};
     block->sonar[i] = 0.0f;
-    block->stiffen[i] = NONE;
+#if LIBAGENT_RELEASE != 2016
+    block->stiffen[i] = k == stiffen_at ? STIFFEN : NONE;
+#endif
     block->sayTexts[i][0] = '\0';
     if (block->standing) block->standing = false;
     __atomic_thread_fence(__ATOMIC_SEQ_CST);
     block->actuators_latest = static_cast<uint8_t>(i);
   }
   if (print_fsr && fsr_n > 0) std::printf("fsr-sum-kg %.4f\n", fsr_sum / fsr_n);
-  std::fprintf(stderr, "libagent2017-client: answered %ld ticks\n", ticks);
+  std::fprintf(stderr, "%s: answered %ld ticks\n", kName.c_str(), ticks);
   munmap(p, sizeof(AgentData));
   sem_close(sem);
   return 0;
