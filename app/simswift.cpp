@@ -3,6 +3,7 @@
 //
 //   simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]
 //   simswift experiment merge DIR... --out DIR      (sim/experiment/Command.cpp)
+//   simswift clean [--team T --player P]
 //   simswift run SCENARIO.yaml [--realtime] [--duration S] [--seed N]
 //                [--no-noise] [--watchdog S|off] [--print-hash-every N]
 //                [--model URDF] [--field YAML]
@@ -11,6 +12,7 @@
 //
 // Exit codes: 0 success, 1 run failure (watchdog, I/O), 2 bad command line
 // or bad input file (scenario, model, field: the message names file and line).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstdint>
@@ -31,6 +33,7 @@ const char* kUsage =
     "usage: simswift run SCENARIO.yaml [options]\n"
     "       simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]   (see experiment --help)\n"
     "       simswift experiment merge DIR... --out DIR\n"
+    "       simswift clean [--team T --player P]   remove objects a killed run left in /dev/shm\n"
     "       simswift --version | --help\n"
     "\n"
     "Runs a scenario in lock-step with its robot programs and prints\n"
@@ -91,6 +94,36 @@ uint64_t seedArg(int& i, int argc, char** argv) {
 
 }  // namespace
 
+// simswift clean [--team T --player P]: removes the named objects a killed
+// simulator left in /dev/shm (all robots, or that robot under every
+// release's names) and names the pid of any simulator still running one.
+int cleanMain(int argc, char** argv) {
+  std::optional<int> team, player;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--team") team = static_cast<int>(numberArg(i, argc, argv, "--team", agent::libagent::kMinTeamNumber,
+                                                      agent::libagent::kMaxTeamNumber));
+    else if (a == "--player") player = static_cast<int>(numberArg(i, argc, argv, "--player", agent::libagent::kMinPlayer,
+                                                                agent::libagent::kMaxPlayer));
+    else usageError("clean: unknown argument '" + a + "'");
+  }
+  if (team.has_value() != player.has_value()) usageError("clean: give both --team and --player, or neither");
+  namespace sb = simswift::bridge;
+  std::vector<std::string> only;
+  if (team)
+    for (sb::Release rel : {sb::Release::R2017, sb::Release::R2018})
+      only.push_back(sb::releaseNames(rel, *team, *player, false).memory);
+  const std::vector<std::string> removed = sb::removeStaleObjects({}, only);
+  int live = 0;
+  for (const sb::LiveRobot& r : sb::liveRobots()) {
+    if (!only.empty() && std::find(only.begin(), only.end(), r.memory) == only.end()) continue;
+    std::printf("%s: in use by a running simswift (pid %d): left alone\n", r.memory.c_str(), r.pid);
+    ++live;
+  }
+  std::printf("removed %zu robot(s) left by killed runs; %d in use\n", removed.size(), live);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   using namespace simswift::runner;
   if (argc < 2) usageError("missing command");
@@ -105,6 +138,7 @@ int main(int argc, char** argv) {
   }
   if (cmd == "experiment")  // the behaviours of agent/behaviour (issue 12) in the trials
     return simswift::experiment::experimentMain(argc - 1, argv + 1, simswift::experiment::behaviourHooks());
+  if (cmd == "clean") return cleanMain(argc, argv);
   if (cmd != "run") usageError("unknown command '" + cmd + "'");
 
   std::string path;

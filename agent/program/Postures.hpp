@@ -31,7 +31,6 @@ std::optional<Posture> parsePosture(const std::string& name);  // "stand", ...
 // Fills a JointValues (angles, stiffnesses; temperatures/currents 0).
 agent::libagent::JointValues postureCommand(Posture p);
 
-
 // libagent index of a NAO joint name ("HeadYaw"), -1 if unknown.
 int jointIndex(const std::string& name);
 

@@ -206,6 +206,15 @@ namespace simswift::bridge {
 // run takes those over, adopting what a waiting program opened). Returns
 // the memory names removed. Objects without a simswift extension (a robot
 // program waiting for its simulator) are left alone.
-std::vector<std::string> removeStaleObjects(const std::vector<std::string>& keep);
+// With `only` non-empty, just those memory names are looked at.
+std::vector<std::string> removeStaleObjects(const std::vector<std::string>& keep,
+                                            const std::vector<std::string>& only = {});
+
+// Robots in /dev/shm whose simulator still runs (memory name, its pid).
+struct LiveRobot {
+  std::string memory;
+  int pid = 0;
+};
+std::vector<LiveRobot> liveRobots();
 
 }  // namespace simswift::bridge

@@ -54,19 +54,50 @@ int lockIfOwnerGone(const std::string& name, int* pid) {
 }
 }  // namespace
 
-std::vector<std::string> removeStaleObjects(const std::vector<std::string>& keep) {
-  std::vector<std::string> removed;
-  DIR* d = opendir("/dev/shm");
-  if (!d) return removed;
+namespace {
+// Suffixes of every simswift extension object in /dev/shm.
+std::vector<std::string> extensionSuffixes() {
   std::vector<std::string> suffixes;
+  DIR* d = opendir("/dev/shm");
+  if (!d) return suffixes;
   while (dirent* e = readdir(d)) {
     std::string suffix;
     if (extensionSuffix(e->d_name, &suffix)) suffixes.push_back(suffix);
   }
   closedir(d);
-  for (const std::string& suffix : suffixes) {
+  std::sort(suffixes.begin(), suffixes.end());
+  return suffixes;
+}
+}  // namespace
+
+std::vector<LiveRobot> liveRobots() {
+  std::vector<LiveRobot> live;
+  for (const std::string& suffix : extensionSuffixes()) {
+    const al::RobotNames n = al::namesWithSuffix(suffix);
+    const int fd = shm_open(n.extension.c_str(), O_RDONLY, 0);
+    if (fd < 0) continue;
+    struct stat st {};
+    if (fstat(fd, &st) == 0 && static_cast<size_t>(st.st_size) >= sizeof(al::SimExtension)) {
+      void* p = mmap(nullptr, sizeof(al::SimExtension), PROT_READ, MAP_SHARED, fd, 0);
+      if (p != MAP_FAILED) {
+        const auto* x = static_cast<const al::SimExtension*>(p);
+        const int pid = x->simulator_pid.load();
+        if (x->magic == al::kExtensionMagic && pid != 0 && al::processAlive(pid, x->simulator_start.load()))
+          live.push_back({n.memory, pid});
+        munmap(p, sizeof(al::SimExtension));
+      }
+    }
+    close(fd);
+  }
+  return live;
+}
+
+std::vector<std::string> removeStaleObjects(const std::vector<std::string>& keep, const std::vector<std::string>& only) {
+  std::vector<std::string> removed;
+  for (const std::string& suffix : extensionSuffixes()) {
     const al::RobotNames n = al::namesWithSuffix(suffix);
     if (std::find(keep.begin(), keep.end(), n.memory) != keep.end()) continue;
+    if (!only.empty() && std::find(only.begin(), only.end(), n.memory) == only.end()) continue;
     int pid = 0;
     const int fd = lockIfOwnerGone(n.extension, &pid);
     if (fd < 0) continue;

@@ -2,7 +2,9 @@
 // with code 2 and a message naming the file and the line; never an abort.
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +12,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "sim/bridge/BodyHost.hpp"
 
 namespace {
 
@@ -116,4 +120,38 @@ TEST(Cli, BreakpointInGdbDoesNotTripTheWatchdog) {
   EXPECT_EQ(gdb.find("did not answer"), std::string::npos) << gdb;
   EXPECT_NE(gdb.find("exited normally"), std::string::npos) << gdb;
   EXPECT_EQ(hashOf(gdb), hashOf(plain)) << gdb << "\n" << plain;
+}
+
+// simswift clean: the objects of a SIGKILLed simulator go; a live
+// simulator's robot stays and its pid is named.
+TEST(Cli, CleanRemovesWhatAKilledRunLeftAndNamesLiveOwners) {
+  namespace sb = simswift::bridge;
+  const pid_t child = fork();
+  if (child == 0) {
+    sb::BodyHost host(93, 4, sb::BodyHost::Mode::Named);
+    std::printf("ready\n");
+    std::fflush(stdout);
+    pause();
+    _exit(0);
+  }
+  const std::string memory = "/dev/shm/libagent-memory" + std::to_string(93 * 11 + 4);
+  for (int i = 0; i < 500 && !fs::exists(memory); ++i) usleep(10000);
+  ASSERT_TRUE(fs::exists(memory));
+  kill(child, SIGKILL);
+  waitpid(child, nullptr, 0);
+  ASSERT_TRUE(fs::exists(memory));  // a SIGKILL leaves it
+  sb::BodyHost live(93, 5, sb::BodyHost::Mode::Named);
+  FILE* p = popen((std::string(SIMSWIFT_BINARY_DIR) + "/simswift clean --team 93 --player 4 2>&1").c_str(), "r");
+  std::string out;
+  char buf[256];
+  while (fgets(buf, sizeof buf, p)) out += buf;
+  EXPECT_EQ(WEXITSTATUS(pclose(p)), 0) << out;
+  EXPECT_FALSE(fs::exists(memory)) << out;
+  EXPECT_NE(out.find("removed 1 robot(s)"), std::string::npos) << out;
+  p = popen((std::string(SIMSWIFT_BINARY_DIR) + "/simswift clean --team 93 --player 5 2>&1").c_str(), "r");
+  out.clear();
+  while (fgets(buf, sizeof buf, p)) out += buf;
+  pclose(p);
+  EXPECT_NE(out.find("in use by a running simswift (pid " + std::to_string(getpid()) + ")"), std::string::npos) << out;
+  EXPECT_TRUE(fs::exists("/dev/shm/libagent-memory" + std::to_string(93 * 11 + 5)));
 }
