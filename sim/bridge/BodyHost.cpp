@@ -16,6 +16,7 @@
 #include <new>
 
 #include "agent/libagent/TripleBuffer.hpp"
+#include "sim/bridge/AttachedProcesses.hpp"
 
 namespace simswift::bridge {
 
@@ -431,9 +432,23 @@ bool BodyHost::waitPerceptionDone(double timeout_s) {
 void BodyHost::shutdown() {
   ext_->shutdown.store(1);
   ext_->camera.shutdown.store(1);
-  int value = 0;
-  sem_getvalue(tick_, &value);
-  if (value <= 0) sem_post(tick_);
+  // A simswift-aware program (AgentConnection) is woken and reads the
+  // shutdown flag. An unchanged libagent program is not: woken, it would
+  // re-read the last sensor slot as if a new cycle had come. It stays in
+  // sem_wait on a semaphore this run unlinks, so it can never attach to the
+  // next run: name it, so the user stops it (libagent itself kills the
+  // robot program when it unloads).
+  if (mode_ == Mode::InProcess || clientAnnounced()) {
+    int value = 0;
+    sem_getvalue(tick_, &value);
+    if (value <= 0) sem_post(tick_);
+  } else {
+    for (const AttachedProcess& p : processesMapping(names_.memory))
+      std::fprintf(stderr,
+                   "robot %s: program %s (pid %d) is still attached to %s; it will wait for a cycle that never "
+                   "comes: stop it before the next run\n",
+                   tag_.c_str(), p.name.c_str(), p.pid, names_.memory.c_str());
+  }
   sem_post(&ext_->camera.frame_ready);
 }
 

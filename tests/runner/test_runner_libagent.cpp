@@ -677,3 +677,27 @@ TEST(LibagentReleases, ScenarioClicksAreCountedAsLibagentCountsThem) {
   EXPECT_EQ(sets, 2u) << text;  // tick 1 (the start's) and the one after the stiffening clicks
   EXPECT_FALSE(r.host(0).libagent().limp());
 }
+
+// The end of a run: an unchanged program still attached is not woken (it
+// would re-read the last sensor slot as a new cycle) and is named, pid and
+// all, so the user can stop it before the next run.
+TEST(LibagentReleases, AtTheEndAnUnchangedProgramIsNotWokenAndIsNamed) {
+  const int team = 72, player = 4;
+  Runner r(releaseScenario(0.3, team, player, "{start: stiff}"));
+  r.start();
+  const pid_t client = spawn(releaseClient(2017, team, player, 100000, {"--hold"}));
+  testing::internal::CaptureStderr();
+  try {
+    r.run(quiet());
+  } catch (...) {
+    testing::internal::GetCapturedStderr();
+    kill(client, SIGKILL);
+    waitpid(client, nullptr, 0);
+    throw;
+  }
+  const std::string err = testing::internal::GetCapturedStderr();
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_FALSE(r.host(0).answered()) << "the program answered a cycle after the end";
+  EXPECT_EQ(waitExit(client, 0.2), -1) << "it waits (and is killed here)";
+  EXPECT_NE(err.find("(pid " + std::to_string(client) + ") is still attached"), std::string::npos) << err;
+}
