@@ -1,8 +1,8 @@
 """What the get-up tuning scripts share (tune-getup-front.py, tune-getup-roll.py).
 
 run_trial() runs one pushed-over trial of a candidate GETUP_FRAMES text
-through the tuning harness (tests/runner/motion_getup_tuning_test.cpp,
-DISABLED_Trace) and returns its RESULT line's words:
+through the tuning harness (tools/getup_tuning.cpp,
+MotionGetupTuning.Trace) and returns its RESULT line's words:
   RESULT <dir> trial N: UP|down up_at T attempts A best R besth H
 evolve() is the (mu/mu, lambda)-ES both scripts search with, the parent
 re-evaluated each generation; the best candidate so far is kept in --out.
@@ -24,7 +24,7 @@ def clamp(v, lo, hi):
 def parser(doc, sigma, generations, trials, test_seed, out):
     """The options both scripts take; the defaults differ per script."""
     p = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--runner", default="build/tests/test_runner")
+    p.add_argument("--runner", default="build/tools/getup-tuning")
     p.add_argument("--start", help="JSON written by an earlier run (its x is the start)")
     p.add_argument("--sigma", type=float, default=sigma, help="mutation step in gene units (0..1)")
     p.add_argument("--generations", type=int, default=generations)
@@ -38,7 +38,7 @@ def parser(doc, sigma, generations, trials, test_seed, out):
 
 def check_runner(p, args):
     if not os.path.exists(args.runner):
-        p.error("--runner %s: no such file (build the tests first)" % args.runner)
+        p.error("--runner %s: no such file (build the tools first)" % args.runner)
 
 
 def run_trial(args, text, trial, direction, extra_env=None):
@@ -48,7 +48,7 @@ def run_trial(args, text, trial, direction, extra_env=None):
     env = dict(os.environ, GETUP_DIR=direction, GETUP_FRAMES=path, GETUP_SEED=str(trial), GETUP_ONE="1",
                GETUP_QUIET="1", GETUP_SEED_BASE=str(args.seed_base), **(extra_env or {}))
     try:
-        out = subprocess.run([args.runner, "--gtest_filter=*DISABLED_Trace", "--gtest_also_run_disabled_tests"],
+        out = subprocess.run([args.runner, "--gtest_filter=*Trace"],
                              env=env, capture_output=True, text=True).stdout
     finally:
         os.unlink(path)

@@ -6,7 +6,7 @@ retuned for the faithful motors (torque falling linearly with speed, gear
 efficiency 0.8): an evolution strategy over the symmetric keyframes after the
 arms have gone overhead, starting from the previous sequence. Each candidate
 is written as a GETUP_FRAMES file and run through the tuning harness
-(tests/runner/motion_getup_tuning_test.cpp, DISABLED_Trace) on several
+(tools/getup_tuning.cpp, build/tools/getup-tuning) on several
 pushed-over trials; a trial scores
 
   3 + (13 - t) / 13      if the robot stands on the first attempt, t s after the push

@@ -5,7 +5,7 @@ How the roll in agent/motion/Generators.cpp (getupBackFrames) was found: an
 evolution strategy over three asymmetric whole-body keyframes that follow a
 fixed V-sit and precede the unchanged front get-up. Each candidate is written
 as a GETUP_FRAMES file and run through the tuning harness
-(tests/runner/motion_getup_tuning_test.cpp, DISABLED_Trace) on several pushed-
+(tools/getup_tuning.cpp, build/tools/getup-tuning) on several pushed-
 over trials; the score of a trial is
 
   3 + (13 - t) / 13      if the robot stands on the first attempt, t s after the push

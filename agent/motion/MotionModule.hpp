@@ -32,7 +32,7 @@ struct MotionConfig {
   float falling_stiffness = 0.0f;  // the safe limp fall (0 = limp, joints free)
   bool auto_getup = true;        // get up after a fall unless DEAD / LIMP is requested
   float limp_stiffness = 0.1f;   // LIMP action
-  double lifted_weight = 4.0;    // N on both feet below which the robot is in the air
+  double lifted_weight = 4.0;    // kg (the FSR unit; standing: 5.3) on both feet below which the robot is in the air
   double transition_time = 0.8;  // s to move to the stand from another posture
   // Get-up sequences; empty = the built-in ones (Generators.hpp).
   std::vector<Keyframe> getup_front, getup_back;

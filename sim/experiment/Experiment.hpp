@@ -66,7 +66,7 @@ struct BallPosition {
 };
 
 struct ExperimentRobot {
-  int team = 0;            // SPL team number (GameController, 0..99), e.g. 19
+  int team = 0;            // SPL team number (GameController byte, 0..255), e.g. 19
   int player = 2;          // 1..5
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
   Behaviour behaviour = Behaviour::Script;

@@ -1,4 +1,4 @@
-// Transcribed from /work/shared/reference/thesis.txt, chapter 5 (numbers as
+// Transcribed from the thesis "Using 3D Simulation to Develop Robot Code" (UNSW Sydney, 2017), chapter 5 (numbers as
 // printed, including their rounding).
 #include "sim/experiment/ThesisTables.hpp"
 

@@ -1,5 +1,5 @@
 // The libagent interface end to end: a robot program as a team brings it
-// (tests/libagent_client: rUNSWift 2017's block declared from facts.md, no
+// (tests/libagent_client: each rUNSWift release's block declared from its public layout, no
 // project header, libagent's protocol only) runs in lock-step, started
 // before or after the simulator, with the same state hash as the same moves
 // done in-process; FSRs in kg; free-running mode sits a silent robot down;
@@ -118,7 +118,7 @@ double modelJoint(Runner& r, const char* name) {
   return body.jointAngle(body.model().jointIndex(name));
 }
 
-// The client's moves (tests/libagent_client/libagent2017_client.cpp), done
+// The client's moves (tests/libagent_client/libagent_client.cpp), done
 // by the in-process robot program with the same float arithmetic. k counts
 // ticks from the first (t = 10 ms -> k = 1).
 float ramp(long k, long t0, long t1) {

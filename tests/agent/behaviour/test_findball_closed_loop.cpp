@@ -10,49 +10,11 @@
 #include <random>
 
 #include "KinematicWorld.hpp"
+#include "Table51Setup.hpp"
 
 using namespace agent::behaviour;
 
-namespace {
-
-// Table 5.1's robot starts (on the touch line, facing into the field).
-const Pose2 kRobot2{-3250, 3000, -kPi / 2};
-const Pose2 kRobot3{-2000, -3000, kPi / 2};
-const Pose2 kRobot4{-1750, 3000, -kPi / 2};
-// Table 5.2's ball positions 1..5.
-const Point2 kBalls[5] = {{2250, 0}, {4000, -2500}, {4000, 2500}, {4500, 3000}, {2250, 3000}};
-
-BehaviourConfig config(BehaviourKind k) {
-  BehaviourConfig c;
-  c.kind = k;
-  return c;
-}
-
-// Start poses jittered by the seed (0 = table 5.1 exactly): +-150 mm, +-0.3 rad,
-// kept on the field. The kinematic world has no noise of its own.
-Pose2 jitter(Pose2 p, unsigned seed) {
-  if (seed == 0) return p;
-  std::mt19937 rng(seed * 7919u + static_cast<unsigned>(p.x));
-  std::uniform_real_distribution<double> mm(-150, 150), rad(-0.3, 0.3);
-  p.x += mm(rng);
-  p.y = std::clamp(p.y + mm(rng), -3000.0, 3000.0);
-  p.theta += rad(rng);
-  return p;
-}
-
-double findTime(BehaviourKind kind, int robots, Point2 ball, double limit = 180.0,
-                unsigned seed = 0) {
-  kin::World w;
-  w.ball = ball;
-  w.add(2, jitter(kRobot2, seed), config(kind));
-  if (robots == 3) {
-    w.add(3, jitter(kRobot3, seed), config(kind));
-    w.add(4, jitter(kRobot4, seed), config(kind));
-  }
-  return w.runUntilFound(limit);
-}
-
-}  // namespace
+using namespace agent::behaviour::table51;
 
 TEST(FindBallLogic, OneRobot2017FindsTable52Balls1235Within180s) {
   // Table 5.1's exact start (seed 0) and five jittered ones.
@@ -61,26 +23,6 @@ TEST(FindBallLogic, OneRobot2017FindsTable52Balls1235Within180s) {
       const double t = findTime(BehaviourKind::FINDBALL_2017, 1, kBalls[i - 1], 180.0, seed);
       if (seed == 0) std::printf("2017, 1 robot, ball %d: found after %.1f s\n", i, t);
       EXPECT_LE(t, 180.0) << "ball position " << i << ", start seed " << seed;
-    }
-}
-
-TEST(FindBallLogic, TimesTable) {
-  // Kinematic times (s) for the README: mean [min, max] over start-pose
-  // seeds 1..5; 400 = not found within 400 s.
-  for (int robots : {1, 3})
-    for (auto kind : {BehaviourKind::FINDBALL_2016, BehaviourKind::FINDBALL_2017}) {
-      std::printf("%s, %d robot(s):", kind == BehaviourKind::FINDBALL_2016 ? "2016" : "2017", robots);
-      for (const Point2& b : kBalls) {
-        double sum = 0, lo = 1e9, hi = 0;
-        for (unsigned seed = 1; seed <= 5; ++seed) {
-          const double t = std::min(400.0, findTime(kind, robots, b, 400.0, seed));
-          sum += t;
-          lo = std::min(lo, t);
-          hi = std::max(hi, t);
-        }
-        std::printf("  %5.1f [%5.1f, %5.1f]", sum / 5, lo, hi);
-      }
-      std::printf("\n");
     }
 }
 

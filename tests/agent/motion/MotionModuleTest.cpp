@@ -281,3 +281,34 @@ TEST(MotionModule, KickRequestRunsTheKickOnce) {
   EXPECT_TRUE(kicked);
   EXPECT_EQ(motion.mode(), MotionModule::Mode::Walk);  // once, not repeated
 }
+
+// lifted_weight is compared with the FSRs' sum in kg (their unit): a robot
+// walking on its 5.3 kg keeps stepping; one whose feet carry 2.4 kg (picked
+// up by the torso) for more than 0.5 s is asked to stop.
+TEST(MotionModule, PickedUpInKgStopsWalkingFullWeightDoesNot) {
+  for (const float per_sensor : {0.66f, 0.3f}) {  // kg each of 8: 5.3 kg, 2.4 kg
+    bb::Blackboard board;
+    MotionModule motion(board);
+    bb::MotionRequest req;
+    req.body.type = bb::ActionType::WALK;
+    req.body.forward = 200;
+    req.sequence = 1;
+    board.motion_request.write(req);
+    agent::libagent::JointValues cmd{};
+    agent::libagent::SensorValues s = standingSensors(cmd);
+    bool stepped = false;
+    for (int t = 0; t < 300; ++t) {
+      motion.tickSeconds(s, t * 0.01, cmd);
+      s.joints = cmd;
+      stepped = stepped || motion.walk().stepping();
+      if (t == 100)  // 1 s of walking on full weight, then the weight of this case
+        for (int i = 0; i < 4; ++i) s.sensors[S::LFoot_FSR_FrontLeft + i] = s.sensors[S::RFoot_FSR_FrontLeft + i] = per_sensor;
+    }
+    EXPECT_LT(MotionConfig{}.lifted_weight, 8 * 0.66);  // kg: below a standing NAO's
+    EXPECT_TRUE(stepped);
+    // This step's forward speed (mm/s): the request's on full weight; none
+    // once picked up (the walk is asked to stop).
+    if (per_sensor > 0.5f) EXPECT_GT(motion.walk().latched().forward, 100) << "full weight: still walking";
+    else EXPECT_NEAR(motion.walk().latched().forward, 0, 1e-6) << "2.4 kg for 2 s: picked up, stops";
+  }
+}

@@ -1,4 +1,4 @@
-// Throwaway tuning harness for the get-up keyframes (DISABLED_: run by hand).
+// Tuning harness for the get-up keyframes (run by hand: build/tools/getup-tuning).
 // GETUP_FRAMES=<file> overrides the front (GETUP_DIR=front) or back sequence
 // with keyframes read from a text file, so sequences can be tuned without a
 // rebuild. Line format (rad, s; symmetric arms/legs as in Generators.cpp):
@@ -77,7 +77,7 @@ std::vector<agent::motion::Keyframe> readFrames(const std::string& path, const a
 
 }  // namespace
 
-TEST(MotionGetupTuning, DISABLED_Trace) {
+TEST(MotionGetupTuning, Trace) {
   const char* dir = std::getenv("GETUP_DIR");
   const bool forwards = !dir || std::string(dir) != "back";
   const char* seed_env = std::getenv("GETUP_SEED");

@@ -1,4 +1,4 @@
-// Throwaway tuning harness for the kick (DISABLED_: run by hand). Kicks a
+// Tuning harness for the kick (run by hand: build/tools/kick-tuning). Kicks a
 // ball placed as MotionPhysics.FullPowerKick* places it, on KICK_N seeds from
 // KICK_SEED_BASE (default 900: tune on other seeds than the tests' 200-239),
 // with the KickConfig fields overridden by KICK_<FIELD> (e.g. KICK_WIND_BACK=90,
@@ -50,7 +50,7 @@ KickRuns kickRuns() {
 }
 }  // namespace
 
-TEST(MotionKickTuning, DISABLED_Distances) {
+TEST(MotionKickTuning, Distances) {
   agent::motion::MotionConfig cfg;
   overrides(cfg);
   const KickRuns runs = kickRuns();
@@ -80,7 +80,7 @@ TEST(MotionKickTuning, DISABLED_Distances) {
 
 // Per-kick diagnosis (KICK_DIAG): where and how fast the foot meets the ball,
 // what the stance foot and torso do meanwhile. One line per seed.
-TEST(MotionKickTuning, DISABLED_Diagnose) {
+TEST(MotionKickTuning, Diagnose) {
   agent::motion::MotionConfig cfg;
   overrides(cfg);
   const KickRuns runs = kickRuns();
