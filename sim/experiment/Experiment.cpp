@@ -116,6 +116,9 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
       f->fail("distance", "must be >= the ball radius " + std::to_string(ball_radius) + " m (got " +
                               std::to_string(e.found.distance) + ")");
     e.found.sees = f->boolean("sees", true);
+    e.found.seen_frames = f->integer("seen_frames", 1, Range::closed(1, 300));  // 300 frames: 10 s
+    if (!e.found.sees && e.found.seen_frames != 1)
+      f->fail("seen_frames", "counts frames the robot saw the ball: it needs sees: true");
     f->finish();
   }
   if (auto f = top.optionalMap("fallen")) {
@@ -307,5 +310,18 @@ runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t) {
 }
 
 int64_t playTick(const Experiment& e) { return std::max<int64_t>(1, std::llround(e.start.penalised / kTickSeconds)); }
+
+}  // namespace simswift::experiment
+
+namespace simswift::experiment {
+
+bool foundBy(const FoundSpec& f, int64_t sighting_frame, double sighting_distance_m, int consecutive,
+             int64_t last_frame, double true_distance_m) {
+  // Inclusive, as the thesis's "within 300mm (inclusive)"; 1 um slack for rounding.
+  const double slack = 1e-6;
+  if (!f.sees) return true_distance_m <= f.distance + slack;
+  return sighting_frame >= 0 && sighting_frame == last_frame && consecutive >= f.seen_frames &&
+         sighting_distance_m <= f.distance + slack;
+}
 
 }  // namespace simswift::experiment

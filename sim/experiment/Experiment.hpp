@@ -9,10 +9,12 @@
 //   trials_per_position: 10
 //   start: {penalised: 1.0}        # s the robots stand penalised at their start
 //                                  # poses before the trial's clock starts (PLAYING)
-//   found: {distance: 0.300, sees: true}   # m (inclusive, >= ball radius); sees: the
-//                                  # robot's vision (the oracle's detector model, as
-//                                  # its perception gets it) reports the true ball in
-//                                  # the latest camera frame, at that distance or less
+//   found: {distance: 0.300, sees: true, seen_frames: 5}   # m (inclusive, >= ball
+//                                  # radius); sees: the robot's vision (the oracle's
+//                                  # detector model, as its perception gets it) reports
+//                                  # the true ball in the latest seen_frames camera
+//                                  # frames in a row (default 1), the latest at that
+//                                  # distance or less
 //   fallen: {sideline_after: 30}   # s down (not got up) before the robot is moved
 //                                  # to the sideline, as the thesis did
 //   tracks: {every: 0.5}           # s between robot track samples
@@ -89,7 +91,17 @@ struct FoundSpec {
   // estimate); without, the true ground distance from that point.
   double distance = 0.300;
   bool sees = true;  // the robot's vision reports the (true) ball in the latest frame
+  // With `sees`: camera frames in a row (ending with the latest) in which
+  // the robot saw the ball. The thesis's controller (jcol2/findballexp)
+  // waited for a robot's ball_seen_count >= 5; 1 = the latest frame alone.
+  int seen_frames = 1;
 };
+
+// The found rule for one robot: its latest sighting of the true ball
+// (frame, measured distance, frames in a row), the latest camera frame, and
+// (without `sees`) its true ground distance to the ball (m).
+bool foundBy(const FoundSpec& f, int64_t sighting_frame, double sighting_distance_m, int consecutive,
+             int64_t last_frame, double true_distance_m);
 
 struct StartSpec {
   double penalised = 1.0;  // s penalised at the start poses before PLAYING (0.05..60)

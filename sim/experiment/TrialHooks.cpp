@@ -24,23 +24,11 @@ double VisionFoundRule::ballDistance(runner::Runner& r, int robot) {
   return std::hypot(ball.x() - g.origin.x(), ball.y() - g.origin.y());
 }
 
-bool VisionFoundRule::seesBall(const runner::Runner& r, int robot, double* distance_m) {
-  const vision::VisionOracle::BallSighting s = r.visionOracle().ballSighting(robot);
-  if (s.frame < 0 || s.frame != r.lastFrame()) return false;
-  if (distance_m) *distance_m = s.distance_mm * 1e-3;
-  return true;
-}
-
 int VisionFoundRule::finder(const Experiment& e, runner::Runner& r) const {
   for (int i = 0; i < r.numRobots(); ++i) {
-    double d = 0;
-    if (e.found.sees) {
-      if (!seesBall(r, i, &d)) continue;
-    } else {
-      d = ballDistance(r, i);
-    }
-    // Inclusive, as the thesis's "within 300mm (inclusive)"; 1 um slack for rounding.
-    if (d <= e.found.distance + 1e-6) return i;
+    const vision::VisionOracle::BallSighting s = r.visionOracle().ballSighting(i);
+    const double true_distance = e.found.sees ? 0.0 : ballDistance(r, i);
+    if (foundBy(e.found, s.frame, s.distance_mm * 1e-3, s.consecutive, r.lastFrame(), true_distance)) return i;
   }
   return -1;
 }

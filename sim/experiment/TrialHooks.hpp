@@ -58,7 +58,7 @@ class ScriptBehaviours : public BehaviourFactory {
 // Found by what the robot's vision reports (thesis §5.1: a robot "could both
 // see the ball, and was within 300mm (inclusive)"): with `found.sees`, the
 // vision oracle gave the robot the true ball (no false positive) in the
-// latest camera frame -- the same detector model, range, occlusion, noise
+// latest found.seen_frames camera frames in a row -- the same detector model, range, occlusion, noise
 // and draws its Perception got -- at a detected distance <= found.distance;
 // without, the true ground distance from the point between its feet.
 // Deterministic: the oracle's draws are seeded per (seed, robot, frame).
@@ -67,8 +67,6 @@ class VisionFoundRule : public FoundRule {
   int finder(const Experiment& e, runner::Runner& r) const override;
   // m, true ground distance from the point between robot's feet to the ball.
   static double ballDistance(runner::Runner& r, int robot);
-  // The robot's latest frame showed it the true ball; its detected distance (m).
-  static bool seesBall(const runner::Runner& r, int robot, double* distance_m);
 };
 
 TrialHooks defaultHooks();

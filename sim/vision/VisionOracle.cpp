@@ -264,7 +264,13 @@ int VisionOracle::fill(const World& world, int robot, al::CameraFrame& frame) {
   for (int i = 0; i < n; ++i) {
     if (seen[i].obs.type != al::ObservationType::Ball || seen[i].false_positive) continue;
     BallSighting& b = sightings_[robot];
-    if (b.frame != frame.frame_index || seen[i].obs.distance < b.distance_mm) b.distance_mm = seen[i].obs.distance;
+    if (b.frame != frame.frame_index) {
+      // Both cameras may see it in one frame: a frame counts once.
+      b.consecutive = b.frame == frame.frame_index - 1 ? b.consecutive + 1 : 1;
+      b.distance_mm = seen[i].obs.distance;
+    } else if (seen[i].obs.distance < b.distance_mm) {
+      b.distance_mm = seen[i].obs.distance;
+    }
     b.frame = frame.frame_index;
   }
   const int dropped = static_cast<int>(seen.size()) - n;

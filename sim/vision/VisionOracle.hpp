@@ -94,8 +94,9 @@ class VisionOracle {
   // cameras' detections). The experiment's found rule reads it, so "sees the
   // ball" is exactly what the robot's perception was given.
   struct BallSighting {
-    int64_t frame = -1;
-    double distance_mm = 0;
+    int64_t frame = -1;       // last camera frame that saw the true ball (-1: never)
+    double distance_mm = 0;   // as measured in that frame (nearest camera)
+    int consecutive = 0;      // frames in a row, ending with `frame`, that saw it
   };
   BallSighting ballSighting(int robot) const {
     return robot >= 0 && robot < static_cast<int>(sightings_.size()) ? sightings_[robot] : BallSighting{};

@@ -186,6 +186,11 @@ TEST(ExperimentFile, ShippedExperiments) {
   EXPECT_DOUBLE_EQ(full.balls[3].y, 3.0);
   EXPECT_DOUBLE_EQ(full.time_limit, 180);
   EXPECT_DOUBLE_EQ(full.found.distance, 0.3);
+  EXPECT_EQ(full.found.seen_frames, 5);  // the thesis's controller: ball_seen_count >= 5
+  // Position 5 on the bottom touch line (the controller's -3 m; table 5.2 prints +3000).
+  EXPECT_EQ(full.balls[4].number, 5);
+  EXPECT_DOUBLE_EQ(full.balls[4].x, 2.25);
+  EXPECT_DOUBLE_EQ(full.balls[4].y, -3.0);
   ASSERT_EQ(full.setups.size(), 2u);
   ASSERT_EQ(full.setups[0].robots.size(), 3u);
   EXPECT_EQ(full.setups[0].robots[1].player, 3);
@@ -314,4 +319,25 @@ TEST(ExperimentFile, TrialSpecs) {
   const Experiment late = Experiment::parse(exptest::tinyExperiment(3) + "start: {penalised: 2.5}\n", "tiny.yaml");
   EXPECT_EQ(playTick(late), 250);
   EXPECT_DOUBLE_EQ(trialScenario(late, t4).game.timeline[0].t_s, 2.5);
+}
+
+// The found rule: within `distance` of the ball, seen in the latest
+// `seen_frames` frames in a row (the thesis's controller: 5).
+TEST(ExperimentFile, FoundRuleCountsFramesInARow) {
+  FoundSpec f;
+  f.seen_frames = 5;
+  const int64_t last = 100;
+  EXPECT_FALSE(foundBy(f, last, 0.25, 4, last, 0));  // 4 frames: not yet
+  EXPECT_TRUE(foundBy(f, last, 0.25, 5, last, 0));   // 5: found
+  EXPECT_TRUE(foundBy(f, last, 0.300, 5, last, 0));  // inclusive
+  EXPECT_FALSE(foundBy(f, last, 0.301, 9, last, 0));  // too far
+  EXPECT_FALSE(foundBy(f, last - 1, 0.25, 9, last, 0));  // not in the latest frame
+  f.seen_frames = 1;
+  EXPECT_TRUE(foundBy(f, last, 0.25, 1, last, 0));
+  f.sees = false;  // true distance only
+  EXPECT_TRUE(foundBy(f, -1, 0, 0, last, 0.29));
+  EXPECT_FALSE(foundBy(f, last, 0.1, 9, last, 0.31));
+  expectError(replaced(kGood, "distance: 0.3", "distance: 0.3, sees: false, seen_frames: 5"),
+              "bad.yaml:5: found.seen_frames", "needs sees: true");
+  expectError(replaced(kGood, "distance: 0.3", "distance: 0.3, seen_frames: 0"), "bad.yaml:5: found.seen_frames", "");
 }

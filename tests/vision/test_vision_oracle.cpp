@@ -233,6 +233,27 @@ TEST_F(OneRobot, NoBallWorldShowsNoBall) {
   EXPECT_THROW(world.placeBall(0, 0), WorldError);
 }
 
+TEST_F(OneRobot, BallSightingsCountFramesInARow) {
+  // The experiment's found rule counts camera frames in a row that saw the
+  // ball (the thesis's controller: 5); a frame without it starts over.
+  VisionOracle o(world.field(), exact(), 1);
+  const Eigen::Vector2d ahead = ballAlong(o, world, 1, 0, -0.2);
+  auto frame = [&](int64_t k) {
+    al::CameraFrame f{};
+    f.frame_index = k;
+    o.fill(world, 0, f);
+    return o.ballSighting(0);
+  };
+  world.placeBall(ahead.x(), ahead.y());
+  for (int64_t k = 1; k <= 5; ++k) EXPECT_EQ(frame(k).consecutive, k);
+  world.placeBall(-4.0, 2.0);  // behind the robot
+  EXPECT_EQ(frame(6).frame, 5);  // the last sighting stays frame 5
+  world.placeBall(ahead.x(), ahead.y());
+  const auto s = frame(7);
+  EXPECT_EQ(s.frame, 7);
+  EXPECT_EQ(s.consecutive, 1);
+}
+
 TEST_F(OneRobot, BallJustInsideAndJustOutsideTheDistanceLimit) {
   VisionOracle o(world.field(), exact(), 1);
   const GroundFrame g = o.groundFrame(world, 0);
