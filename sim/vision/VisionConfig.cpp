@@ -79,6 +79,11 @@ DetectorSpec readDetector(const YamlReader& r, DetectorSpec s, bool is_ball) {
 }  // namespace
 
 VisionConfig readVisionConfig(const YamlReader& r, VisionConfig c) {
+  if (r.has("preset") && r.choice("preset", "simswift2017", {"simswift2017"}) == "simswift2017") {
+    c.ball_model = BallModel::Thesis2017;
+    c[Feature::Ball].max_distance_mm = 2500;  // SimVisionAdapter's range
+    c[Feature::Ball].false_positive_rate = 0;
+  }
   c.enabled = r.boolean("enabled", c.enabled);
   c.noise = r.boolean("noise", c.noise);
   c.hfov_deg = r.number("hfov_deg", c.hfov_deg, Range::closed(1, 179));

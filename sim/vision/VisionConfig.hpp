@@ -3,6 +3,8 @@
 // read from a scenario's `vision:` block (see readVisionConfig):
 //
 //   vision:
+//     preset: simswift2017     # the ball as the thesis's simulated vision saw
+//                              #   it (BallModel::Thesis2017); other objects as below
 //     enabled: on              # off: frames carry no observations
 //     noise: on                # off (or the scenario's noise: off): exact
 //                              #   observations, no misses, no false positives
@@ -77,8 +79,17 @@ struct DetectorSpec {
   double probability(double d_mm) const;
 };
 
+// How the ball is seen. Detector: the detector model above (range,
+// image, occlusion, misses, phantoms, noise). Thesis2017: the thesis's
+// simulated vision (rUNSWift 2018 release, SimVisionAdapter): the ball up to
+// 2500 mm and within +-30 deg of the camera's heading, no vertical test,
+// no misses, phantoms, occlusion or noise; `vision: {preset: simswift2017}`.
+enum class BallModel { Detector, Thesis2017 };
+
 struct VisionConfig {
   bool enabled = true;
+  BallModel ball_model = BallModel::Detector;
+  double thesis_ball_half_angle_deg = 30;  // Thesis2017: either side of the camera's heading
   bool noise = true;                 // false: exact, no misses, no false positives
   double hfov_deg = 60.9;            // each camera (facts.md section 1)
   double vfov_deg = 47.6;

@@ -249,7 +249,40 @@ std::vector<SeenObject> VisionOracle::observe(const World& world, int robot, int
   std::vector<SeenObject> out;
   if (!config_.enabled || blind(world, robot)) return out;
   for (int cam = 0; cam < 2; ++cam) observeCamera(world, robot, cam, frame, out);
+  if (config_.ball_model == BallModel::Thesis2017) observeThesisBall(world, robot, out);
   return out;
+}
+
+// The thesis's simulated ball detection (rUNSWift 2018 SimVisionAdapter):
+// the true ball, exact, when within the ball range of the robot and within
+// +-thesis_ball_half_angle_deg of the camera's heading on the ground; no
+// vertical test, no occlusion, no misses. Reported once (top camera).
+void VisionOracle::observeThesisBall(const World& world, int robot, std::vector<SeenObject>& out) const {
+  if (!world.hasBall() || !config_[Feature::Ball].enabled) return;
+  const GroundFrame g = groundFrame(world, robot);
+  const Eigen::Isometry3d cam = cameraPose(world, robot, 0);
+  const Eigen::Vector3d axis = cam.linear().col(0);
+  const Eigen::Vector2d ball = xy(world.ballPosition());
+  const Eigen::Vector2d from_eye = ball - xy(cam.translation());
+  const double off_axis = std::abs(wrap(std::atan2(from_eye.y(), from_eye.x()) - std::atan2(axis.y(), axis.x())));
+  const Eigen::Vector2d rel = g.toRobot(ball);  // m, robot frame
+  const DetectorSpec& s = config_[Feature::Ball];
+  if (off_axis > config_.thesis_ball_half_angle_deg * kDeg || rel.norm() * 1000 > s.max_distance_mm ||
+      rel.norm() * 1000 < s.min_distance_mm)
+    return;
+  SeenObject o;
+  o.obs = al::Observation{};
+  o.obs.type = al::ObservationType::Ball;
+  o.obs.camera = 0;
+  o.obs.x = static_cast<float>(rel.x() * 1000);
+  o.obs.y = static_cast<float>(rel.y() * 1000);
+  o.obs.distance = static_cast<float>(rel.norm() * 1000);
+  o.obs.heading = static_cast<float>(std::atan2(rel.y(), rel.x()));
+  o.obs.team = -1;
+  o.obs.colour = -1;
+  o.obs.corner = al::CornerKind::None;
+  o.obs.confidence = 1.0f;
+  out.push_back(o);
 }
 
 int VisionOracle::fill(const World& world, int robot, al::CameraFrame& frame) {
@@ -358,7 +391,7 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
 
   // --- Ball (none in a `ball: none` world; draws are per object, so the
   // other features' draws do not depend on it).
-  if (world.hasBall()) {
+  if (world.hasBall() && config_.ball_model == BallModel::Detector) {
     const DetectorSpec& s = config_[Feature::Ball];
     const Eigen::Vector3d b = world.ballPosition();
     Draws r = drawsFor(Feature::Ball, 0);

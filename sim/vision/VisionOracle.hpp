@@ -141,6 +141,7 @@ class VisionOracle {
   std::vector<Eigen::AlignedBox3d> bounds_;
   int64_t dropped_ = 0;
   std::vector<BallSighting> sightings_;  // by robot index (fill)
+  void observeThesisBall(const World& world, int robot, std::vector<SeenObject>& out) const;
 };
 
 }  // namespace simswift::vision

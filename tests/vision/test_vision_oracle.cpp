@@ -254,6 +254,51 @@ TEST_F(OneRobot, BallSightingsCountFramesInARow) {
   EXPECT_EQ(s.consecutive, 1);
 }
 
+TEST_F(OneRobot, Simswift2017PresetSeesTheBallAsTheThesisDid) {
+  // vision: {preset: simswift2017}: the ball within 2500 mm and +-30 deg of
+  // the camera's heading, with no vertical test and no occlusion.
+  VisionConfig c = exact();
+  c.ball_model = BallModel::Thesis2017;
+  VisionOracle o(world.field(), c, 1);
+  const Eigen::Isometry3d cam = o.cameraPose(world, 0, 0);
+  const Eigen::Vector2d eye(cam.translation().x(), cam.translation().y());
+  const double heading = std::atan2(cam.linear()(1, 0), cam.linear()(0, 0));
+  auto ballAt = [&](double off_deg, double from_eye_m) {
+    const double a = heading + off_deg * kDeg;
+    const Eigen::Vector2d b = eye + from_eye_m * Eigen::Vector2d(std::cos(a), std::sin(a));
+    world.placeBall(b.x(), b.y());
+    return ofType(o.observe(world, 0, 0), al::ObservationType::Ball);
+  };
+  EXPECT_EQ(ballAt(29, 2.35).size(), 1u);  // ~2.4 m from the robot, inside 30 deg
+  EXPECT_TRUE(ballAt(31, 2.35).empty());
+  EXPECT_TRUE(ballAt(-31, 2.35).empty());
+  EXPECT_TRUE(ballAt(0, 2.6).empty());  // beyond 2500 mm
+  // Right at the feet: far below the cameras' vertical field of view, still reported.
+  EXPECT_EQ(ballAt(0, 0.12).size(), 1u);
+  // Behind another robot: no occlusion.
+  const auto seen = ballAt(0, 2.0);
+  ASSERT_EQ(seen.size(), 1u);
+  world.addRobot(model(), eye.x() + std::cos(heading) * 1.0, eye.y() + std::sin(heading) * 1.0, M_PI, stand());
+  EXPECT_EQ(ofType(o.observe(world, 0, 0), al::ObservationType::Ball).size(), 1u);
+  // Exact, robot-relative.
+  const Eigen::Vector2d rel = o.groundFrame(world, 0).toRobot(Eigen::Vector2d(world.ballPosition().x(), world.ballPosition().y())) * 1000;
+  EXPECT_NEAR(seen[0].obs.distance, rel.norm(), 0.5);
+}
+
+TEST(VisionConfig, PresetSimswift2017IsReadFromTheScenario) {
+  const runner::Scenario s = runner::Scenario::parse("duration: 1\nvision: {preset: simswift2017}\nrobots:\n  - {team: 19, player: 1}\n",
+                                     "p.yaml");
+  EXPECT_EQ(s.vision.ball_model, BallModel::Thesis2017);
+  EXPECT_EQ(s.vision[Feature::Ball].max_distance_mm, 2500);
+  EXPECT_EQ(s.vision[Feature::Ball].false_positive_rate, 0);
+  try {
+    runner::Scenario::parse("duration: 1\nvision: {preset: simspark}\nrobots:\n  - {team: 19, player: 1}\n", "p.yaml");
+    ADD_FAILURE() << "accepted";
+  } catch (const simswift::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("p.yaml:2: vision.preset"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(OneRobot, BallJustInsideAndJustOutsideTheDistanceLimit) {
   VisionOracle o(world.field(), exact(), 1);
   const GroundFrame g = o.groundFrame(world, 0);
