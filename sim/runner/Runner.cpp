@@ -322,40 +322,9 @@ void Runner::watchdogFail(const Robot& r, const char* thread) const {
   throw WatchdogError(m.str());
 }
 
-// One 10 ms tick, in this fixed order:
-//  1. Every robot's joint command latched at the end of the previous tick goes
-//     to its servos: a command written during tick k acts during tick k+1,
-//     like the DCM sending Motion's output on its next cycle.
-//  2. World::step(): physics advances 10 ms.
-//  3. Sensors are read from the new state and published into each robot's
-//     triple buffer with the simulated time; then all tick semaphores are
-//     posted, releasing every robot's Motion thread.
-//  4. The runner waits until every robot's Motion has answered, i.e. written
-//     a command and set actuators_latest (watchdog: wall clock; the first
-//     tick waits up to attach_timeout). Free-running external robots are
-//     not waited for.
-//  5. Each robot's actuators are latched (used in step 1 of the next tick).
-//  6. At 30 Hz of simulated time (when floor(t * 30) advances) every robot
-//     with a Perception thread (every builtin program has one) gets a camera
-//     frame -- rendered or not -- and the runner waits for its
-//     perception_done (same watchdog). The robot program reads the sensors of
-//     the tick just done (step 3) as the frame's sensors.
-//  7. Team network and GameController (teamAndGame): every robot's outbox is
-//     drained and due packets go into inboxes (TeamNetwork::exchange), the
-//     game state advances (penalised robots to the sideline and back) and is
-//     written into every robot's GameStateBlock. No robot thread runs here
-//     (all answered in 4 and 6; none is posted before step 3 of the next
-//     tick), so the robot code sees the same packets and states at the same
-//     simulated time whatever the thread timing.
-//  8. FindBall view frames, if asked (--findball-view): each robot's findball
-//     section is read while no robot thread runs (drawing only: no effect
-//     on the simulation).
-// Threads may run in any order inside 3-4 and 6: the runner reads nothing
-// until they have all answered, so the result does not depend on timing.
-void Runner::tick() {
-  if (!started_) start();
-  if (stopped_) throw RunnerError("tick after shutdown");
-  // 1.
+// The stages of one tick, in the order Runner.hpp documents (Runner::tick).
+
+void Runner::applyCommands() {
   for (size_t i = 0; i < robots_.size(); ++i) {
     Robot& r = *robots_[i];
     std::array<float, al::kNumJoints> angles, stiff;
@@ -366,7 +335,9 @@ void Runner::tick() {
     world_->robot(static_cast<int>(i)).setCommand(angles, stiff);
     r.sensors->setSonarMode(r.latched.sonar);
   }
-  // Scenario pushes (actions: {t, push}) due by now: impulses (N*s) through the World.
+}
+
+void Runner::applyPushes() {
   for (size_t i = 0; i < robots_.size(); ++i) {
     Robot& r = *robots_[i];
     while (r.next_push < r.spec.pushes.size() && r.spec.pushes[r.next_push].t_s <= world_->time() + 1e-9) {
@@ -374,11 +345,9 @@ void Runner::tick() {
       world_->applyImpulse(static_cast<int>(i), Eigen::Vector3d(p.jx, p.jy, 0.0));
     }
   }
-  // 2.
-  world_->step();
-#ifdef SIMSWIFT_HAVE_CAMERAS
-  if (overview_) overview_->maybeCapture(*cameras_, *world_);
-#endif
+}
+
+void Runner::handleWorldEvents() {
   for (const WorldEvent& e : world_->takeEvents()) {
     if (e.kind == WorldEvent::Kind::BlowUp) {
       ++blowups_;
@@ -386,9 +355,15 @@ void Runner::tick() {
       if (e.robot >= 0 && e.robot < numRobots()) robots_[e.robot]->sensors->reset(*world_);
     }
   }
-  const int64_t tick = world_->tick();
-  const int64_t t_us = tick * agent::nao::kMotionTickUs;  // exact integer time
-  // 3.
+}
+
+void Runner::captureOverview() {
+#ifdef SIMSWIFT_HAVE_CAMERAS
+  if (overview_) overview_->maybeCapture(*cameras_, *world_);
+#endif
+}
+
+void Runner::publishSensors(int64_t tick, int64_t t_us) {
   for (auto& rp : robots_) {
     Robot& r = *rp;
     for (sensors::Button b : {sensors::Button::Chest, sensors::Button::HeadFront, sensors::Button::HeadMiddle,
@@ -399,7 +374,9 @@ void Runner::tick() {
     for (int j = 0; j < al::kNumJoints; ++j) r.values.joints.stiffnesses[j] = r.latched.joints.stiffnesses[j];
   }
   for (auto& r : robots_) r->host->publishSensors(r->values, t_us, tick);
-  // 4.
+}
+
+void Runner::awaitMotion() {
   for (auto& rp : robots_) {
     Robot& r = *rp;
     const bool external = r.spec.program == RobotSpec::Program::External;
@@ -414,44 +391,67 @@ void Runner::tick() {
       r.perception = r.host->hasPerception();
     }
   }
-  // 5.
-  for (auto& r : robots_) r->latched = r->host->readActuators();
+}
 
-  // Fall bookkeeping (torso frame origin height, m).
+void Runner::latchActuators() {
+  for (auto& r : robots_) r->latched = r->host->readActuators();
+}
+
+void Runner::updateFalls() {
   for (size_t i = 0; i < robots_.size(); ++i) {
     const RobotBody& body = world_->robot(static_cast<int>(i));
-    robots_[i]->fall.update(body.linkPose(body.model().rootLink()).translation().z());
+    robots_[i]->fall.update(body.linkPose(body.model().rootLink()).translation().z());  // torso origin height, m
   }
+}
 
-  // 6. Integer arithmetic: frame k is due once t_us * 30 / 1e6 reaches k.
+void Runner::cameraFrame(int64_t t_us) {
+  // Integer arithmetic: frame k is due once t_us * 30 / 1e6 reaches k.
   const int64_t frame = t_us * agent::nao::kCameraFramesPerSecond / 1000000;
-  if (frame > last_frame_) {
-    last_frame_ = frame;
-    al::CameraFrame f{};
-    f.sim_time_us = t_us;
-    f.frame_index = frame;
-    f.num_observations = 0;
-    bool any = false;
-    for (size_t i = 0; i < robots_.size(); ++i) {
-      Robot& r = *robots_[i];
-      al::CameraFrame fr = f;  // images_valid and observations are per robot
-      if (r.perception) vision_->fill(*world_, static_cast<int>(i), fr);  // both cameras (sim/vision)
-      renderFrame(frame, t_us, fr, r, static_cast<int>(i));
-      if (r.perception) {
-        r.host->publishFrame(fr);
-        any = true;
-      }
+  if (frame <= last_frame_) return;
+  last_frame_ = frame;
+  al::CameraFrame f{};
+  f.sim_time_us = t_us;
+  f.frame_index = frame;
+  f.num_observations = 0;
+  bool any = false;
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    Robot& r = *robots_[i];
+    al::CameraFrame fr = f;  // images_valid and observations are per robot
+    if (r.perception) vision_->fill(*world_, static_cast<int>(i), fr);  // both cameras (sim/vision)
+    renderFrame(frame, t_us, fr, r, static_cast<int>(i));
+    if (r.perception) {
+      r.host->publishFrame(fr);
+      any = true;
     }
-    if (any)
-      for (auto& r : robots_)
-        if (r->perception)
-          while (!r->host->waitPerceptionDone(watchdogWait()))
-            if (watchdogArmed()) watchdogFail(*r, "perception");
   }
-  // 7.
-  teamAndGame(t_us);
-  // 8.
+  if (any)
+    for (auto& r : robots_)
+      if (r->perception)
+        while (!r->host->waitPerceptionDone(watchdogWait()))
+          if (watchdogArmed()) watchdogFail(*r, "perception");
+}
+
+void Runner::captureViews(int64_t t_us) {
   if (findball_view_config_) captureFindBallView(t_us);
+}
+
+void Runner::tick() {
+  if (!started_) start();
+  if (stopped_) throw RunnerError("tick after shutdown");
+  applyCommands();
+  applyPushes();
+  world_->step();
+  handleWorldEvents();
+  captureOverview();
+  const int64_t tick = world_->tick();
+  const int64_t t_us = tick * agent::nao::kMotionTickUs;  // exact integer time
+  publishSensors(tick, t_us);
+  awaitMotion();
+  latchActuators();
+  updateFalls();
+  cameraFrame(t_us);
+  teamAndGame(t_us);
+  captureViews(t_us);
 }
 
 void Runner::captureFindBallView(int64_t t_us) {

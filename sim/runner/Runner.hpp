@@ -1,9 +1,35 @@
 // The lock-step runner: one World, one BodyHost + SensorSuite per robot, and
 // the robot programs' threads (builtin: in this process; external: another
-// process attached by name). Each 10 ms tick runs a fixed sequence (see
-// Runner::tick() in Runner.cpp) in which every robot thread must answer
-// before physics moves on, so the outcome does not depend on thread timing:
-// the same scenario and seed give the same state hash.
+// process attached by name). Each 10 ms tick runs these stages, in this
+// order (Runner::tick; this is the one place the order is written down):
+//   1. applyCommands      every robot's command latched last tick goes to its
+//                         servos (and sonar mode): a command written during
+//                         tick k acts during k+1, as the DCM sends Motion's
+//                         output on its next cycle
+//   2. applyPushes        scenario pushes due by now (World::applyImpulse)
+//   3. World::step        physics advances 10 ms (its own substeps: World.hpp)
+//   4. handleWorldEvents  blow-ups: counted, the robot's sensors restarted
+//   5. captureOverview    the overview camera's frame, if one is due
+//   6. publishSensors     scenario buttons, sensors read from the new state,
+//                         each robot's slot written and its tick posted
+//                         (the body side of libagent: sim/bridge/BodyHost)
+//   7. awaitMotion        every robot's Motion answers (the first tick waits
+//                         attach_timeout for external programs; then the
+//                         wall-clock watchdog; free-running external robots
+//                         are not waited for)
+//   8. latchActuators     each robot's command (or libagent's own: limp, the
+//                         sit), applied in stage 1 of the next tick
+//   9. updateFalls        fall bookkeeping (statistics only)
+//  10. cameraFrame        at 30 Hz of simulated time every robot with a
+//                         Perception thread gets its frame (observations,
+//                         images if rendered) and the runner waits for it
+//  11. teamAndGame        team network and GameController: outboxes drained,
+//                         due packets delivered, game state advanced (robots
+//                         penalised to the sideline and back) and written
+//  12. captureViews       FindBall view frames, if asked (drawing only)
+// Robot threads run only inside stages 6-7 and 10, and the runner reads
+// nothing of theirs until all have answered, so the outcome does not depend
+// on thread timing: the same scenario and seed give the same state hash.
 //
 // A robot program answers a tick the way libagent's clients do (it writes a
 // joint command and sets actuators_latest; see sim/bridge/BodyHost.hpp), so
@@ -125,7 +151,7 @@ class Runner {
   // Team communication and game states (after start()). Robot i's extension
   // objects beside its libagent block: the game state and the team link
   // (see agent/libagent/SimExtensions.hpp). The runner touches them only in
-  // tick step 7, while no robot thread runs.
+  // tick stage 11 (teamAndGame), while no robot thread runs.
   agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext; }
   const network::TeamNetwork& teamNetwork() const { return *network_; }
   const game::GameController& gameController() const { return *game_; }
@@ -188,10 +214,21 @@ class Runner {
   std::unique_ptr<game::GameController> game_;
   std::unique_ptr<game::PenaltyPlacer> placer_;
   std::vector<agent::libagent::TeamLink*> links_;  // by robot index, for the network
-  void teamAndGame(int64_t t_us);  // tick step 7
+  // Tick stages (see the top of this file).
+  void applyCommands();
+  void applyPushes();
+  void handleWorldEvents();
+  void captureOverview();
+  void publishSensors(int64_t tick, int64_t t_us);
+  void awaitMotion();
+  void latchActuators();
+  void updateFalls();
+  void cameraFrame(int64_t t_us);
+  void teamAndGame(int64_t t_us);
+  void captureViews(int64_t t_us);
   std::optional<sim::views::FindBallRecorderConfig> findball_view_config_;
   std::unique_ptr<sim::views::FindBallRecorder> findball_view_;
-  void captureFindBallView(int64_t t_us);  // tick step 8
+  void captureFindBallView(int64_t t_us);
   std::chrono::steady_clock::time_point wall_start_;
 };
 

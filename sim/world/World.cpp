@@ -99,21 +99,21 @@
 // steps: WalkConfig::horizontal_fraction went from 0.9 back toward
 // Walk2014's 1.0 (0.97).
 
-// ORDER OF ONE TICK (step()), fixed:
-//   for each substep of dt = 10 ms / substeps:
-//     1. every robot's servos set their hinge motors (RobotBody::applyServos)
-//     2. collide; contacts sorted, contact joints created (sole points'
-//        friction anchored); ODE's random generator (QuickStep's row
-//        shuffle) reseeded from the tick
-//     3. dWorldStep / dWorldQuickStep(dt)
-//     4. contact forces on robot links read back, scaled 1/substeps
-//     5. each robot's hinge anchors projected together (JointProjector)
-//     6. contact joints removed
-//     0. blow-up check per robot and for the ball (reset + WorldEvent)
-//        BEFORE the step: ODE aborts (dxNormalize3/4 assertions) rather
-//        than returning when it integrates an infinite rotation
-//     0'. (first substep only) pending pushes become forces on the torsos
-//   then: the blow-up check once more, tick counter + 1.
+// ORDER OF ONE TICK (step()), fixed; each substep of dt = 10 ms / substeps:
+//   1. checkBlowUps      a robot or the ball with NaN/inf, absurd speed or far
+//                        away is reset (+ WorldEvent) BEFORE it is integrated:
+//                        ODE aborts (dxNormalize3/4) rather than returning
+//   2. applyPushes       first substep only: pending pushes become forces on
+//                        the torsos (F = J / dt gives exactly the impulse J)
+//   3. applyServos       every robot's servos set their hinge motors
+//   4. collide           contacts sorted, contact joints created (sole
+//                        points' friction anchored)
+//   5. integrate         ODE's random generator (QuickStep's row shuffle)
+//                        reseeded from the tick, then dWorldStep/QuickStep(dt)
+//   6. gatherContacts    contact forces on robot links, scaled 1/substeps
+//   7. projectJoints     each robot's hinge anchors brought back together
+//   8. clearContacts     contact joints removed
+// then checkBlowUps once more and the tick counter + 1.
 #include <cmath>
 #include <mutex>
 
@@ -295,36 +295,40 @@ void World::step() {
   const int n = config_.substeps;
   const double dt = kTickSeconds / n;
   contacts_.clear();
-  for (int s = 0; s < n; ++s) {
-    // 0. Nothing absurd reaches the integrator.
+  for (int sub = 0; sub < n; ++sub) {
     checkBlowUps();
-    if (s == 0) {
-      // 0'. Pushes: F = J / dt over this substep gives exactly the impulse J.
-      for (int i = 0; i < numRobots(); ++i) {
-        Eigen::Vector3d& j = impl_->pending_impulse[i];
-        if (j.isZero()) continue;
-        const Eigen::Vector3d f = j / dt;
-        dBodyAddForce(robots_[i]->torsoBody(), f.x(), f.y(), f.z());
-        j.setZero();
-      }
-    }
+    if (sub == 0) applyPendingPushes(dt);
     for (auto& r : robots_) r->applyServos(dt);
     impl_->collide(world_, space_, field_, config_, dt);
-    // QuickStep shuffles its constraint rows with ODE's one process-wide
-    // random generator; reseeding it from the tick makes every world's
-    // result a function of its own state, whatever other worlds did.
-    dRandSetSeed(static_cast<unsigned long>(tick_) * 16u + static_cast<unsigned long>(s));
-    if (config_.solver == WorldConfig::Solver::Exact) {
-      dWorldStep(world_, dt);
-    } else {
-      dWorldQuickStep(world_, dt);
-    }
+    integrate(sub, dt);
     impl_->gatherContacts(1.0 / n, contacts_);
     if (config_.joint_projection_sweeps > 0) projectJoints();
     dJointGroupEmpty(impl_->contact_group);
   }
   ++tick_;
   checkBlowUps();
+}
+
+void World::applyPendingPushes(double dt) {
+  for (int i = 0; i < numRobots(); ++i) {
+    Eigen::Vector3d& j = impl_->pending_impulse[i];
+    if (j.isZero()) continue;
+    const Eigen::Vector3d f = j / dt;  // N over one substep: exactly the impulse
+    dBodyAddForce(robots_[i]->torsoBody(), f.x(), f.y(), f.z());
+    j.setZero();
+  }
+}
+
+void World::integrate(int substep, double dt) {
+  // QuickStep shuffles its constraint rows with ODE's one process-wide
+  // random generator; reseeding it from the tick makes every world's
+  // result a function of its own state, whatever other worlds did.
+  dRandSetSeed(static_cast<unsigned long>(tick_) * 16u + static_cast<unsigned long>(substep));
+  if (config_.solver == WorldConfig::Solver::Exact) {
+    dWorldStep(world_, dt);
+  } else {
+    dWorldQuickStep(world_, dt);
+  }
 }
 
 // Each robot's hinge anchors brought back together. Feet standing on their

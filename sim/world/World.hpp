@@ -151,7 +151,10 @@ class World {
   dBodyID ballBody() const;  // for tests that must reach past the API
 
  private:
+  // Stages of step() (World.cpp gives the order).
   void checkBlowUps();
+  void applyPendingPushes(double dt);
+  void integrate(int substep, double dt);
   void projectJoints();
   void checkPlacement(const char* what, double x, double y, double theta) const;
   struct Impl;
