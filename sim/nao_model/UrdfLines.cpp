@@ -3,6 +3,7 @@
 
 #include <tinyxml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -147,9 +148,9 @@ UrdfLines::UrdfLines(const std::string& xml, const std::string& source) {
   if (xml.size() > UrdfLimits::kMaxBytes)
     fail(source, 1, "URDF is " + std::to_string(xml.size()) + " bytes, more than the " +
                         std::to_string(UrdfLimits::kMaxBytes >> 20) + " MB limit");
-  if (xml.find('\0') != std::string::npos) {
-    int row = 1;
-    for (size_t i = 0; i < xml.find('\0'); ++i) row += xml[i] == '\n';
+  if (const size_t nul = xml.find('\0'); nul != std::string::npos) {
+    // Found once: the line count is one pass up to it (linear in the size).
+    const int row = 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
     fail(source, row, "URDF contains a NUL byte (not a text file?)");
   }
   int line = 1;

@@ -177,3 +177,20 @@ TEST(UrdfHardening, ParseErrorsCarryALine) {
   const int line = replaceIn(xml, "joint", "LKneePitch", "effort=\"", "effort=\"abc");
   expectError(xml, line, "<limit effort=\"abc");
 }
+
+TEST(UrdfHardening, NulByteNearTheEndOfABigFileNamesItsLine) {
+  // 3 MB of comment lines, then a NUL: refused at the NUL's line (the line
+  // is counted in one pass; it was counted once per byte before).
+  std::string xml = readUrdf();
+  const size_t end = xml.rfind("</robot>");
+  std::string pad = "<!--\n";
+  for (int i = 0; i < 42000; ++i) pad += std::string(70, 'x') + "\n";
+  pad += "-->\n<link name=\"bad";
+  pad += '\0';
+  pad += "\"/>\n";
+  xml.insert(end, pad);
+  const size_t nul = xml.find('\0');
+  const std::string err = errorOf(xml);
+  EXPECT_EQ(err.rfind("bad.urdf:" + std::to_string(lineAt(xml, nul)) + ": ", 0), 0u) << err.substr(0, 200);
+  EXPECT_NE(err.find("NUL byte"), std::string::npos) << err.substr(0, 200);
+}
