@@ -53,8 +53,10 @@
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/libagent/SimExtension.hpp"
 #include "agent/program/Postures.hpp"
+#include "sim/bridge/Cleanup.hpp"
 #include "sim/bridge/LibagentBehaviour.hpp"
 #include "sim/bridge/Releases.hpp"
+#include "sim/bridge/StaleObjects.hpp"
 
 namespace simswift::bridge {
 
@@ -184,37 +186,5 @@ class BodyHost {
   int64_t frames_posted_ = 0;  // camera frames published (camera.frames_posted)
   bool contact_lost_ = false;
 };
-
-// Unlinks every registered named object at exit and on SIGINT/SIGTERM (then
-// re-raises the signal), so an interrupted run leaves nothing in /dev/shm.
-namespace cleanup {
-void registerShm(const std::string& name);
-void registerSem(const std::string& name);
-void unregister(const std::string& name);
-// Unlinks everything registered by this process now (e.g. before _exit when
-// a robot thread hangs and cannot be joined).
-void removeAll();
-}  // namespace cleanup
-
-}  // namespace simswift::bridge
-
-namespace simswift::bridge {
-
-// Unlinks the named objects (extension, block, semaphore, images) of every
-// simulated robot in /dev/shm whose owning simulator is gone (killed
-// without cleaning up), except robots whose memory name is in `keep` (this
-// run takes those over, adopting what a waiting program opened). Returns
-// the memory names removed. Objects without a simswift extension (a robot
-// program waiting for its simulator) are left alone.
-// With `only` non-empty, just those memory names are looked at.
-std::vector<std::string> removeStaleObjects(const std::vector<std::string>& keep,
-                                            const std::vector<std::string>& only = {});
-
-// Robots in /dev/shm whose simulator still runs (memory name, its pid).
-struct LiveRobot {
-  std::string memory;
-  int pid = 0;
-};
-std::vector<LiveRobot> liveRobots();
 
 }  // namespace simswift::bridge

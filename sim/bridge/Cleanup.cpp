@@ -11,7 +11,7 @@
 #include <cstring>
 #include <mutex>
 
-#include "sim/bridge/BodyHost.hpp"
+#include "sim/bridge/Cleanup.hpp"
 
 namespace simswift::bridge::cleanup {
 namespace {

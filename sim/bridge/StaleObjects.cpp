@@ -13,7 +13,10 @@
 #include <cstdio>
 #include <cstring>
 
-#include "sim/bridge/BodyHost.hpp"
+#include "sim/bridge/StaleObjects.hpp"
+
+#include "agent/libagent/SharedNames.hpp"
+#include "agent/libagent/SimExtension.hpp"
 
 namespace simswift::bridge {
 
