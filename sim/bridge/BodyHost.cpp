@@ -17,6 +17,7 @@
 
 #include "agent/libagent/TripleBuffer.hpp"
 #include "sim/bridge/AttachedProcesses.hpp"
+#include "sim/bridge/WaitStrategy.hpp"
 
 namespace simswift::bridge {
 
@@ -24,41 +25,6 @@ namespace al = agent::libagent;
 
 namespace {
 std::string sysError(const std::string& what) { return what + ": " + std::strerror(errno); }
-
-// Absolute CLOCK_MONOTONIC time `s` seconds from now (watchdog only).
-timespec monotonicIn(double s) {
-  timespec t{};
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  const double whole = std::floor(s);
-  t.tv_sec += static_cast<time_t>(whole);
-  t.tv_nsec += static_cast<long>((s - whole) * 1e9);
-  if (t.tv_nsec >= 1000000000L) {
-    t.tv_sec += 1;
-    t.tv_nsec -= 1000000000L;
-  }
-  return t;
-}
-bool before(const timespec& a, const timespec& b) {
-  return a.tv_sec < b.tv_sec || (a.tv_sec == b.tv_sec && a.tv_nsec < b.tv_nsec);
-}
-
-// Polls before sleeping (BodyHost::waitAnswer): up to this long (wall
-// clock: only how long to wait, never simulation), with pause instructions.
-constexpr double kAnswerSpinSeconds = 300e-6;
-inline void cpuRelax() {
-#if defined(__x86_64__) || defined(__i386__)
-  __builtin_ia32_pause();
-#endif
-}
-
-// Waits on `s` until the absolute CLOCK_MONOTONIC `deadline`; false on timeout.
-bool waitUntil(sem_t* s, const timespec& deadline) {
-  for (;;) {
-    if (sem_clockwait(s, CLOCK_MONOTONIC, &deadline) == 0) return true;
-    if (errno == ETIMEDOUT) return false;
-    if (errno != EINTR) throw BridgeError(sysError("sem_clockwait"));
-  }
-}
 
 // Opens (creating if needed) a 0600 shm object and sizes it to `size`.
 // Returns the mapping; `fd_out` (if given) keeps the descriptor open.
@@ -341,40 +307,8 @@ bool BodyHost::answered() const {
 }
 
 bool BodyHost::waitAnswer(double timeout_s) {
-  // The Motion thread usually answers within a few hundred microseconds of
-  // the tick: look for the answer that long before going to sleep, which
-  // saves a futex sleep and wake-up (a fifth of a walking robot's wall time
-  // was the kernel's, measured with perf).
-  const timespec spin_until = monotonicIn(std::min(kAnswerSpinSeconds, timeout_s));
-  for (int spin = 0;; ++spin) {
-    if (answered()) return true;
-    cpuRelax();
-    if (spin % 64 == 63) {
-      timespec now{};
-      clock_gettime(CLOCK_MONOTONIC, &now);
-      if (!before(now, spin_until)) break;
-    }
-  }
-  const timespec deadline = monotonicIn(timeout_s);
-  int polls = 0;
-  for (;;) {
-    if (answered()) return true;
-    timespec now{};
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    if (!before(now, deadline)) return answered();
-    if (clientAnnounced()) {
-      // A simswift-aware program posts `answered` after publishing: sleep on
-      // it (bounded, so a missed post costs at most 1 ms).
-      timespec t = monotonicIn(0.001);
-      if (before(deadline, t)) t = deadline;
-      sem_clockwait(&ext_->answered, CLOCK_MONOTONIC, &t);
-    } else if (++polls < 200) {
-      sched_yield();  // an unchanged libagent program: poll the index
-    } else {
-      timespec nap{0, 20000};  // 20 us
-      nanosleep(&nap, nullptr);
-    }
-  }
+  return waitFor([this] { return answered(); },
+                 [this]() -> sem_t* { return clientAnnounced() ? &ext_->answered : nullptr; }, timeout_s);
 }
 
 ActuatorCommand BodyHost::readActuators() {
