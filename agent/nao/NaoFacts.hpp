@@ -4,7 +4,7 @@
 // and the camera matrix; sim/ includes this header for the same facts (the
 // simulator may include agent/ headers, never the reverse). The figures are
 // the published Aldebaran ones restated in facts.md section 1;
-// tests/agent/nao/NaoFactsTest.cpp holds them against models/nao_v5.urdf.
+// tests/nao_model/test_nao_facts.cpp holds them against models/nao_v5.urdf.
 //
 // Units: mm, rad, rad/s. Frames: x forward, y left, z up (NAO convention).
 #pragma once

@@ -9,7 +9,7 @@
 // The robot program itself provides `sensors` (before the Motion modules)
 // and `frame` (before the Perception modules). The bracketed modules are
 // optional: a PerceptionStep given by a test or tool, and a behaviour (the
-// scenario's action script, later the real behaviour). Without a behaviour
+// scenario's action script or one of agent/behaviour's). Without a behaviour
 // nothing writes the behaviour request, so Motion must then be a generator
 // (a held posture or joint script) -- the start-up check says so otherwise.
 #pragma once

@@ -111,7 +111,7 @@ void RobotProgram::perceptionLoop() {
     while (conn_.waitFrame()) {
       const agent::libagent::CameraFrame& cf = conn_.frame();
       // The Motion thread is between ticks while a frame is processed (the
-      // body side waits for motion_done before posting a frame), so the
+      // body side waits for its answer before posting a frame), so the
       // sensors section holds the sensors of the tick at frame time.
       blackboard::FrameInfo f;
       f.sim_time_us = cf.sim_time_us;

@@ -3,7 +3,7 @@
 //
 //   Motion     (thread "t<T>p<P>-motion"):  loop { waitTick; readSensors ->
 //              sensors section; touch -> motion -> effector; writeActuators
-//              (posts motion_done) }
+//              (sets actuators_latest: the answer the body side waits for) }
 //   Perception (thread "t<T>p<P>-percept"): loop { wait frame_ready; frame
 //              (+ the sensors of the tick just done) -> frame section;
 //              game state -> vision adapter -> localisation -> ball tracker

@@ -11,8 +11,10 @@
 //   timing.csv, timing.md                          wall clock: real-time factors (also
 //                                                  report.md's last section)
 //
-// Each trial runs in its own forked process (ODE's global random generator
-// rules out two worlds stepping in one process), at most `jobs` at a time.
+// Each trial runs in its own forked process, at most `jobs` at a time: a
+// trial that crashes or hangs takes only itself down, and its memory is
+// returned when it ends. (Two worlds could share a process: World::step
+// reseeds ODE's one random generator from its own tick.)
 // Everything but timing.* and report.md's wall-clock section is a pure
 // function of the experiment file, so reruns, --jobs, shards + merge and
 // interrupted-then-resumed runs give byte-identical results.

@@ -14,7 +14,7 @@ void ScriptBehaviours::check(const Experiment& e, const ExperimentRobot& r) cons
 
 void ScriptBehaviours::configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const {
   // trialScenario already copied each script robot's actions; nothing else
-  // to set. (vision_yaml has no consumer until the vision oracle lands.)
+  // to set.
   for (const ExperimentRobot& r : e.setups[t.setup].robots) check(e, r);
 }
 

@@ -103,7 +103,7 @@ class Runner {
   Runner& operator=(const Runner&) = delete;
 
   // Before start(): replace a builtin robot's Motion step (robot index in
-  // scenario order). The walk plugs in here.
+  // scenario order), e.g. a test's motion generator.
   void setMotionGenerator(int robot, std::unique_ptr<agent::program::MotionGenerator> motion);
   // Before start(): replace a builtin robot's Perception step.
   void setPerceptionStep(int robot, std::unique_ptr<agent::program::PerceptionStep> perception);
