@@ -13,8 +13,8 @@
 //
 // Each trial runs in its own forked process, at most `jobs` at a time: a
 // trial that crashes or hangs takes only itself down, and its memory is
-// returned when it ends. (Two worlds could share a process: World::step
-// reseeds ODE's one random generator from its own tick.)
+// returned when it ends. (Worlds stepped one after another could share a
+// process: World::step reseeds ODE's one random generator from its tick.)
 // Everything but timing.* and report.md's wall-clock section is a pure
 // function of the experiment file, so reruns, --jobs, shards + merge and
 // interrupted-then-resumed runs give byte-identical results.
