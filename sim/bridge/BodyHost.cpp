@@ -173,11 +173,6 @@ bool BodyHost::standing() const {
   return withBlock([](auto& b) { return static_cast<bool>(b.standing); });
 }
 
-void BodyHost::writeStanding(const LibagentBehaviour::Standing& s) {
-  if (!s.write) return;
-  withBlock([&](auto& b) { b.standing = *s.write; });
-}
-
 void BodyHost::initialise(const al::JointValues& initial) {
   if (options_.release == Release::R2017) block_ = static_cast<AgentData*>(raw_);
   withBlock([&](auto& b) {

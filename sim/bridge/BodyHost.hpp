@@ -173,7 +173,6 @@ class BodyHost {
   decltype(auto) withBlock(F&& f);  // f(the release's block struct&)
   template <class F>
   decltype(auto) withBlock(F&& f) const;
-  void writeStanding(const LibagentBehaviour::Standing& s);
 
   ActuatorCommand last_;                 // the program's latest command
   bool commanded_ = false;               // it has sent one

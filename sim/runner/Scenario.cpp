@@ -237,8 +237,6 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
   return g;
 }
 
-}  // namespace
-
 // libagent: {start: stiff | limp, release: 2016 | 2017 | 2018}
 void readLibagent(const YamlReader& r, RobotSpec& rs) {
   rs.start = r.choice("start", "stiff", {"stiff", "limp"}) == "limp" ? bridge::StartMode::Limp : bridge::StartMode::Stiff;
@@ -248,6 +246,8 @@ void readLibagent(const YamlReader& r, RobotSpec& rs) {
                           std::to_string(year) + ")");
   r.finish();
 }
+
+}  // namespace
 
 void readActions(const YamlReader& robot, RobotSpec& rs) {
   for (const YamlReader& a : robot.list("actions")) readAction(a, rs);
