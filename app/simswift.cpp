@@ -46,6 +46,8 @@ const char* kUsage =
     "                         external robot programs run free: not waited for, skipped\n"
     "                         cycles counted, 50 in a row sit the robot down\n"
     "  --check                validate the scenario, its model and field; run nothing\n"
+    "  --inline               run builtin robot programs' Motion and Perception steps on the\n"
+    "                         simulator's thread (faster; same hash; no named robot threads for gdb)\n"
     "  --duration S           simulated seconds (overrides the scenario)\n"
     "  --seed N               noise seed (overrides the scenario)\n"
     "  --no-noise             exact sensors\n"
@@ -147,6 +149,7 @@ int main(int argc, char** argv) {
   std::optional<uint64_t> seed;
   bool no_noise = false;
   bool check = false;  // validate scenario, model and field; run nothing
+  bool inline_programs = false;  // --inline: builtin programs on the simulator's thread
   std::optional<std::string> dump_dir, overview_dir, resolution, model, field;
   std::optional<int> every;
   std::optional<std::string> findball_dir;
@@ -159,6 +162,7 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     if (a == "--realtime") opt.realtime = true;
     else if (a == "--check") check = true;
+    else if (a == "--inline") inline_programs = true;
     else if (a == "--duration") duration = numberArg(i, argc, argv, "--duration", 0.01, 1e6);
     else if (a == "--seed") seed = seedArg(i, argc, argv);
     else if (a == "--no-noise") no_noise = true;
@@ -249,6 +253,7 @@ int main(int argc, char** argv) {
 
   try {
     Runner runner(sc);
+    if (inline_programs) runner.setThreading(agent::program::Threading::Inline);
     if (findball_dir) {
       sim::views::FindBallRecorderConfig fc;
       fc.dir = *findball_dir;

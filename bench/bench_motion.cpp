@@ -40,6 +40,7 @@ struct Rig {
             "seed: " + std::to_string(seed) + "\nnoise: on\nrobots:\n  - {team: 0, player: 1, x: " + std::to_string(x) + ", y: 0}\n",
             "bench_motion")) {
     runner.setMotionGenerator(0, std::make_unique<agent::motion::MotionModule>(board));
+    runner.setThreading(agent::program::Threading::Inline);  // as the experiment runs programs
     runner.start();
     torso = runner.world().robot(0).model().rootLink();
   }

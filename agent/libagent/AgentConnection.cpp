@@ -178,6 +178,11 @@ bool AgentConnection::waitTick() {
   return !shutdown();
 }
 
+bool AgentConnection::takeTick() {
+  if (shutdown()) return false;
+  return sem_trywait(tick_) == 0;
+}
+
 SensorValues AgentConnection::readSensors() {
   last_slot_ = claimLatest(block_->sensors_latest, block_->sensors_read);
   return block_->sensors[last_slot_];
@@ -218,6 +223,13 @@ bool AgentConnection::waitFrame() {
   // frame (and everything the simulator wrote before it) is visible.
   frame_taken_ = ext_->camera.frames_posted.load(std::memory_order_acquire);
   return ext_->camera.shutdown.load() == 0;
+}
+
+bool AgentConnection::takeFrame() {
+  if (ext_->camera.shutdown.load()) return false;
+  if (sem_trywait(&ext_->camera.frame_ready) != 0) return false;
+  frame_taken_ = ext_->camera.frames_posted.load(std::memory_order_acquire);  // as waitFrame()
+  return true;
 }
 
 void AgentConnection::perceptionDone() {

@@ -69,6 +69,10 @@ class AgentConnection {
   // Blocks until the body posts the next tick. False when the run is over or
   // the simulator is gone (then a message on stderr says which).
   bool waitTick();
+  // Inline (the simulator runs the program's steps on its own thread, one
+  // after the other): takes the tick it has posted, without blocking. False
+  // if none is posted or the run is over.
+  bool takeTick();
   // Triple-buffer read of the latest sensors (copy).
   SensorValues readSensors();
   // The button presses of the slot last read.
@@ -83,6 +87,8 @@ class AgentConnection {
   // perceptionDone() answers the frame it took (camera.frames_done).
   bool hasCamera() const { return ext_ != nullptr; }
   bool waitFrame();
+  // Inline: takes a posted frame without blocking (see takeTick()).
+  bool takeFrame();
   const CameraFrame& frame() const { return ext_->camera.frame; }
   void perceptionDone();
   // The rendered camera images, or null when the simulator does not render.

@@ -79,4 +79,43 @@ double distanceToLines(const Vec2& p, const std::vector<LineSegment>& lines, dou
   return std::sqrt(best2);
 }
 
+FieldLines::FieldLines(const std::vector<LineSegment>& lines, double circle_radius)
+    : circle_radius_(circle_radius) {
+  for (const LineSegment& s : lines) {
+    if (s.a.y == s.b.y) {
+      along_x_.push_back({s.a.y, std::min(s.a.x, s.b.x), std::max(s.a.x, s.b.x)});
+    } else if (s.a.x == s.b.x) {
+      along_y_.push_back({s.a.x, std::min(s.a.y, s.b.y), std::max(s.a.y, s.b.y)});
+    } else {
+      slanted_.push_back(s);
+    }
+  }
+}
+
+double FieldLines::distance(const Vec2& p) const {
+  const double circle = std::sqrt(p.x * p.x + p.y * p.y) - circle_radius_;
+  double best2 = circle * circle;
+  // fl(ex^2 + ey^2) >= fl(ey^2): a segment whose perpendicular part alone
+  // is no nearer cannot lower the minimum.
+  for (const AxisSegment& s : along_x_) {
+    const double ey = p.y - s.at, ey2 = ey * ey;
+    if (ey2 >= best2) continue;
+    const double ex = p.x - std::clamp(p.x, s.lo, s.hi);
+    best2 = std::min(best2, ex * ex + ey2);
+  }
+  for (const AxisSegment& s : along_y_) {
+    const double ex = p.x - s.at, ex2 = ex * ex;
+    if (ex2 >= best2) continue;
+    const double ey = p.y - std::clamp(p.y, s.lo, s.hi);
+    best2 = std::min(best2, ex2 + ey * ey);
+  }
+  for (const LineSegment& s : slanted_) {
+    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+    const double t = std::clamp(((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+    const double ex = p.x - (s.a.x + t * dx), ey = p.y - (s.a.y + t * dy);
+    best2 = std::min(best2, ex * ex + ey * ey);
+  }
+  return std::sqrt(best2);
+}
+
 }  // namespace agent::localisation

@@ -21,7 +21,7 @@ double wrapAngle(double a) {
 }
 
 Localiser::Localiser(const LocaliserConfig& cfg, const FieldModel& field)
-    : cfg_(cfg), field_(field), landmarks_(field.landmarks()), lines_(field.lines()), rng_(cfg.seed) {
+    : cfg_(cfg), field_(field), landmarks_(field.landmarks()), lines_(field.lines(), field.centre_circle_radius), rng_(cfg.seed) {
   for (const Landmark& l : landmarks_) {
     by_kind_[static_cast<int>(l.kind)].push_back(l.at);
     if (l.kind == FeatureKind::Corner) corners_by_shape_[static_cast<int>(l.shape)].push_back(l.at);
@@ -84,6 +84,9 @@ void Localiser::collect(const blackboard::VisionMeasurements& vision) {
     if (!(d > 1.0) || d > 7000.0) continue;  // behind the feet or beyond any useful range
     Obs o{f.kind, f.where.x, f.where.y, d, std::atan2(f.where.y, f.where.x),
           f.kind == FeatureKind::Corner ? f.shape : blackboard::CornerShape::Unknown};
+    o.sigma = cfg_.line_floor + cfg_.line_fraction * d;
+    o.inv_sd2 = 1.0 / sq(cfg_.distance_floor + cfg_.distance_fraction * d);
+    o.inv_sb2 = 1.0 / sq(d * cfg_.bearing_sigma);
     (f.kind == FeatureKind::LinePoint ? lines : obs_).push_back(o);
   }
   // Line points from one frame are strongly correlated: use a few, spread out.
@@ -98,15 +101,13 @@ double Localiser::likelihood(const Particle& p) const {
     double fit = 0;
     if (o.kind == FeatureKind::LinePoint) {
       const Vec2 f{p.x + c * o.x - s * o.y, p.y + s * o.x + c * o.y};
-      const double sigma = cfg_.line_floor + cfg_.line_fraction * o.d;
-      fit = std::exp(-0.5 * sq(distanceToLines(f, lines_, field_.centre_circle_radius) / sigma));
+      fit = std::exp(-0.5 * sq(lines_.distance(f) / o.sigma));
     } else {
       // The landmark in the particle's robot frame minus the observation,
       // split along and across the line of sight: the along part is the
       // distance error, the across part / distance the bearing error.
       const double ux = o.x / o.d, uy = o.y / o.d;
-      const double inv_sd2 = 1.0 / sq(cfg_.distance_floor + cfg_.distance_fraction * o.d);
-      const double inv_sb2 = 1.0 / sq(o.d * cfg_.bearing_sigma);
+      const double inv_sd2 = o.inv_sd2, inv_sb2 = o.inv_sb2;
       double best = 1e300;
       for (const Vec2& lm : candidatesFor(o)) {
         const double dx = lm.x - p.x, dy = lm.y - p.y;

@@ -118,6 +118,10 @@ class Localiser {
     blackboard::FeatureKind kind;
     double x, y, d, b;  // mm robot-relative, distance, bearing
     blackboard::CornerShape shape;  // corners: L / T / X when the detector told
+    // Per observation, not per particle (likelihood() runs per particle):
+    double sigma = 0;    // mm, line points: the line distance's deviation
+    double inv_sd2 = 0;  // 1/mm^2, point features: along the line of sight
+    double inv_sb2 = 0;  // 1/mm^2, point features: across it
   };
   // Landmarks an observation may be: same kind, and same corner shape when known.
   const std::vector<Vec2>& candidatesFor(const Obs& o) const;
@@ -135,7 +139,7 @@ class Localiser {
   LocaliserConfig cfg_;
   FieldModel field_;
   std::vector<Landmark> landmarks_;
-  std::vector<LineSegment> lines_;
+  FieldLines lines_;  // the straight lines and the centre circle, for line points
   std::vector<Vec2> by_kind_[static_cast<int>(blackboard::FeatureKind::NUM_KINDS)];  // landmark positions
   std::vector<Vec2> corners_by_shape_[4];  // indexed by CornerShape
   Random rng_;

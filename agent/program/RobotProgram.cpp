@@ -49,7 +49,7 @@ void RobotProgram::setMotion(std::unique_ptr<MotionGenerator> motion) {
   cfg_.motion_generator = std::move(motion);
 }
 
-void RobotProgram::start() {
+void RobotProgram::start(Threading threading) {
   buildSchedule(cfg_, board_, [this](const blackboard::ActuatorRequest& a) { pending_ = a.joints; }, schedule_);
   schedule_.check();  // throws ModuleError before any thread starts
   for (const auto& m : schedule_.modules(ThreadId::Perception))
@@ -58,13 +58,41 @@ void RobotProgram::start() {
       step_module_ = p;
     }
   // Perception runs at every frame whether or not images are rendered.
-  const bool with_perception = conn_.hasCamera();
+  with_perception_ = conn_.hasCamera();
+  threading_ = threading;
   // Announce first: the simulator decides whether to send camera frames once
   // Motion has answered its first tick, which may happen as soon as the
   // thread exists.
-  conn_.announce(with_perception);
+  conn_.announce(with_perception_);
+  if (threading_ == Threading::Inline) return;
   motion_thread_ = std::thread([this] { motionLoop(); });
-  if (with_perception) perception_thread_ = std::thread([this] { perceptionLoop(); });
+  if (with_perception_) perception_thread_ = std::thread([this] { perceptionLoop(); });
+}
+
+bool RobotProgram::stepMotion() {
+  if (threading_ != Threading::Inline) throw std::logic_error("RobotProgram::stepMotion: the program runs its own threads");
+  if (failed_ || !conn_.takeTick()) return false;
+  try {
+    motionStep();
+    return true;
+  } catch (const std::exception& e) {
+    failed_ = true;
+    fail("motion", e);
+    return false;
+  }
+}
+
+bool RobotProgram::stepPerception() {
+  if (threading_ != Threading::Inline) throw std::logic_error("RobotProgram::stepPerception: the program runs its own threads");
+  if (failed_ || !with_perception_ || !conn_.takeFrame()) return false;
+  try {
+    perceptionStep();
+    return true;
+  } catch (const std::exception& e) {
+    failed_ = true;
+    fail("perception", e);
+    return false;
+  }
 }
 
 void RobotProgram::join() {
@@ -80,59 +108,63 @@ std::string RobotProgram::error() const {
 void RobotProgram::fail(const std::string& thread, const std::exception& e) {
   std::lock_guard<std::mutex> lock(error_mutex_);
   if (error_.empty()) error_ = tag_ + "-" + thread + ": " + e.what();
-  std::fprintf(stderr, "robot %s: %s thread stopped: %s\n", tag_.c_str(), thread.c_str(), e.what());
+  std::fprintf(stderr, "robot %s: %s %s: %s\n", tag_.c_str(), thread.c_str(),
+               threading_ == Threading::Inline ? "step failed" : "thread stopped", e.what());
 }
 
 void RobotProgram::motionLoop() {
   nameThisThread(tag_ + "-motion");
   try {
-    while (conn_.waitTick()) {
-      blackboard::SensorFrame s;
-      s.values = conn_.readSensors();
-      s.sim_time_us = conn_.simTimeUs();
-      s.time = static_cast<double>(s.sim_time_us) * 1e-6;
-      board_.sensors.write(s);
-      if (cfg_.step_hook) cfg_.step_hook(ThreadId::Motion);
-      schedule_.run(ThreadId::Motion, board_);  // touch -> motion -> effector
-      conn_.writeActuators(pending_);
-      motion_ticks_.fetch_add(1);
-      if (after_tick_) after_tick_(s.values, s.sim_time_us);
-    }
+    while (conn_.waitTick()) motionStep();
   } catch (const std::exception& e) {
     // No acknowledgement follows: the simulator's watchdog reports this robot.
     fail("motion", e);
   }
 }
 
+void RobotProgram::motionStep() {
+  blackboard::SensorFrame s;
+  s.values = conn_.readSensors();
+  s.sim_time_us = conn_.simTimeUs();
+  s.time = static_cast<double>(s.sim_time_us) * 1e-6;
+  board_.sensors.write(s);
+  if (cfg_.step_hook) cfg_.step_hook(ThreadId::Motion);
+  schedule_.run(ThreadId::Motion, board_);  // touch -> motion -> effector
+  conn_.writeActuators(pending_);
+  motion_ticks_.fetch_add(1);
+  if (after_tick_) after_tick_(s.values, s.sim_time_us);
+}
+
 void RobotProgram::perceptionLoop() {
   nameThisThread(tag_ + "-percept");
   try {
-    double last_time = -1;
-    while (conn_.waitFrame()) {
-      const agent::libagent::CameraFrame& cf = conn_.frame();
-      // The Motion thread is between ticks while a frame is processed (the
-      // body side waits for its answer before posting a frame), so the
-      // sensors section holds the sensors of the tick at frame time.
-      blackboard::FrameInfo f;
-      f.sim_time_us = cf.sim_time_us;
-      f.frame_index = cf.frame_index;
-      f.time = static_cast<double>(cf.sim_time_us) * 1e-6;
-      f.dt = last_time < 0 ? 0 : f.time - last_time;
-      last_time = f.time;
-      f.sensors = board_.sensors.read().values;
-      f.num_observations = std::clamp<int32_t>(cf.num_observations, 0, agent::libagent::kMaxObservations);
-      std::copy(cf.observations, cf.observations + f.num_observations, f.observations);
-      f.images_valid = cf.images_valid != 0;
-      board_.frame.write(f);
-      if (step_module_) step_module_->setFrame(&cf);
-      if (cfg_.step_hook) cfg_.step_hook(ThreadId::Perception);
-      schedule_.run(ThreadId::Perception, board_);
-      perception_frames_.fetch_add(1);
-      conn_.perceptionDone();
-    }
+    while (conn_.waitFrame()) perceptionStep();
   } catch (const std::exception& e) {
     fail("perception", e);
   }
+}
+
+void RobotProgram::perceptionStep() {
+  const agent::libagent::CameraFrame& cf = conn_.frame();
+  // The Motion thread is between ticks while a frame is processed (the
+  // body side waits for its answer before posting a frame), so the
+  // sensors section holds the sensors of the tick at frame time.
+  blackboard::FrameInfo f;
+  f.sim_time_us = cf.sim_time_us;
+  f.frame_index = cf.frame_index;
+  f.time = static_cast<double>(cf.sim_time_us) * 1e-6;
+  f.dt = last_frame_time_ < 0 ? 0 : f.time - last_frame_time_;
+  last_frame_time_ = f.time;
+  f.sensors = board_.sensors.read().values;
+  f.num_observations = std::clamp<int32_t>(cf.num_observations, 0, agent::libagent::kMaxObservations);
+  std::copy(cf.observations, cf.observations + f.num_observations, f.observations);
+  f.images_valid = cf.images_valid != 0;
+  board_.frame.write(f);
+  if (step_module_) step_module_->setFrame(&cf);
+  if (cfg_.step_hook) cfg_.step_hook(ThreadId::Perception);
+  schedule_.run(ThreadId::Perception, board_);
+  perception_frames_.fetch_add(1);
+  conn_.perceptionDone();
 }
 
 }  // namespace agent::program

@@ -9,6 +9,14 @@
 //              game state -> vision adapter -> localisation -> ball tracker
 //              -> team receive -> behaviour -> team send; post perception_done }
 //
+// Two ways to run the same steps (the same order, the same results: the
+// same state hash, tested):
+//   Threading::Named   the two threads above, each blocking on its wake-up
+//                      (gdb sees them by name; an external program's way)
+//   Threading::Inline  no threads: the simulator calls stepMotion() /
+//                      stepPerception() on its own thread right after it
+//                      posts the tick / frame (no hand-over between threads:
+//                      experiments and benchmarks)
 // start() checks the modules' declared reads and writes first: a module
 // reading a section nobody provides throws ModuleError naming both.
 // Robot code sees simulated time only (the sensor slot's time in the
@@ -31,6 +39,8 @@
 
 namespace agent::program {
 
+enum class Threading { Named, Inline };
+
 class RobotProgram {
  public:
   // The standard modules; `cfg` says which motion and behaviour.
@@ -46,11 +56,20 @@ class RobotProgram {
   // Replace the Motion step by a generator (before start()).
   void setMotion(std::unique_ptr<MotionGenerator> motion);
   // Checks and orders the modules, announces the program to the body side,
-  // then starts the threads. Throws ModuleError (nothing announced or
-  // started) if a module reads a section nobody provides.
-  void start();
+  // then starts the threads (Named) or waits for the simulator's calls
+  // (Inline). Throws ModuleError (nothing announced or started) if a module
+  // reads a section nobody provides.
+  void start(Threading threading = Threading::Named);
   // Waits for the threads to end (they end on shutdown).
   void join();
+
+  // Inline only: one Motion step for the tick the body side has just
+  // posted, one Perception step for the frame it has just posted. False if
+  // nothing was posted, the run is over or the step threw (error() says
+  // what); the step's answer is then missing, as a dead thread's would be.
+  bool stepMotion();
+  bool stepPerception();
+  Threading threading() const { return threading_; }
 
   // Optional hook run by Motion after each command is sent (e.g. printing).
   void setAfterTick(std::function<void(const agent::libagent::SensorValues&, int64_t)> f) {
@@ -74,6 +93,9 @@ class RobotProgram {
  private:
   void motionLoop();
   void perceptionLoop();
+  // One step of each thread's loop, after its wake-up (both modes).
+  void motionStep();
+  void perceptionStep();
   void fail(const std::string& thread, const std::exception& e);
 
   agent::libagent::AgentConnection conn_;
@@ -84,6 +106,10 @@ class RobotProgram {
   PerceptionStepModule* step_module_ = nullptr;
   agent::libagent::JointValues pending_{};  // the effector's command, sent after the Motion modules
   std::function<void(const agent::libagent::SensorValues&, int64_t)> after_tick_;
+  Threading threading_ = Threading::Named;
+  bool with_perception_ = false;
+  bool failed_ = false;          // inline: a step threw; no more steps
+  double last_frame_time_ = -1;  // s, Perception's previous frame (-1: none yet)
   std::thread motion_thread_, perception_thread_;
   std::atomic<int64_t> motion_ticks_{0}, perception_frames_{0};
   mutable std::mutex error_mutex_;

@@ -14,6 +14,7 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -271,7 +272,8 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
     }
     if (running.empty()) break;
     int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
+    rusage usage{};  // the trial process's own: its peak resident memory
+    const pid_t pid = wait4(-1, &status, 0, &usage);
     if (pid < 0) {
       if (errno == EINTR) {
         if (g_stop)
@@ -284,6 +286,7 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
     if (it == running.end()) continue;  // not ours
     const int t = it->second;
     running.erase(it);
+    wall.peak_trial_mb = std::max(wall.peak_trial_mb, static_cast<double>(usage.ru_maxrss) / 1024.0);  // KiB -> MB
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && trialDone(opt.out_dir, t)) {
       TrialResult r = parseCsvRow(readFile(trialFile(opt.out_dir, t, ".csv")));
       std::sscanf(readFile(trialFile(opt.out_dir, t, ".timing.csv")).c_str(), "%*d,%lf,%lf", &r.sim_s, &r.wall_s);
@@ -328,7 +331,8 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
       if (wall.ran > 0)
         m << "ran " << wall.ran << " trial(s) with " << jobs << " worker(s) in " << fmtDuration(wall.wall_s)
           << " of wall time (" << fixed(wall.wall_s > 0 ? wall.trial_sim_s / wall.wall_s : 0, 1)
-          << " simulated s per wall s)\n";
+          << " simulated s per wall s; peak memory of one trial process " << fixed(wall.peak_trial_mb, 0)
+          << " MB)\n";
       m << "report: " << opt.out_dir << "/report.md (also results.csv, tracks.csv, figures/, timing.md)";
     } else {
       m << "shard " << opt.shard << "/" << opt.shards << ": " << done << " trials in " << opt.out_dir

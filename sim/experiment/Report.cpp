@@ -228,7 +228,7 @@ std::string wallClockSection(const Experiment& e, const std::vector<TrialResult>
       << " worker process(es) in " << w / 60 << " min " << w % 60 << " s of wall time ("
       << fixed(run->wall_s, 1) << " s): " << fixed(run->trial_sim_s, 1) << " simulated s, "
       << fixed(run->wall_s > 0 ? run->trial_sim_s / run->wall_s : 0, 2) << " simulated s per wall s on the whole "
-      << "machine.\n";
+      << "machine. Peak resident memory of one trial process: " << fixed(run->peak_trial_mb, 0) << " MB.\n";
   } else {
     s << "This folder was assembled from earlier runs or merged shards: no single run's wall time.\n";
   }

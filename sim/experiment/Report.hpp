@@ -50,6 +50,7 @@ struct RunWall {
   int ran = 0;          // trials this invocation ran
   double wall_s = 0;    // s, from its first trial launched to its last one done
   double trial_wall_s = 0, trial_sim_s = 0;  // summed over those trials
+  double peak_trial_mb = 0;  // MB: the largest peak resident memory of one trial process
 };
 
 // The report's last section, headed kWallClockHeading: real-time factor

@@ -16,7 +16,7 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
 JointProjector::JointProjector(const std::vector<dBodyID>& bodies, const std::vector<Hinge>& hinges)
     : bodies_(bodies), hinges_(hinges), inv_mass_(bodies.size()), inv_inertia_(bodies.size()),
       x_(bodies.size()), q_(bodies.size()), r_(bodies.size()), w_(bodies.size()), iw_(bodies.size()),
-      moved_(bodies.size()) {
+      iw_state_(bodies.size()), moved_(bodies.size()) {
   for (size_t l = 0; l < bodies_.size(); ++l) {
     dMass m;
     dBodyGetMass(bodies_[l], &m);
@@ -38,16 +38,31 @@ double JointProjector::project(const std::vector<char>& pinned, int sweeps, doub
     r_[l] = q_[l].toRotationMatrix();
     const bool fixed = l < pinned.size() && pinned[l];
     w_[l] = fixed ? 0.0 : inv_mass_[l];
-    iw_[l] = fixed ? Eigen::Matrix3d::Zero() : Eigen::Matrix3d(r_[l] * inv_inertia_[l] * r_[l].transpose());
+    // The world inverse inertia is computed when a correction first needs
+    // it (most substeps most hinges are within the tolerance already).
+    if (fixed) iw_[l].setZero();
+    iw_state_[l] = fixed ? kCurrent : kFromStart;
     moved_[l] = 0;
   }
+  auto inverseInertia = [&](int l) -> const Eigen::Matrix3d& {
+    // The two forms are the ones the eager version used (at the start and
+    // after a turn); Eigen evaluates them differently in the last bit, and
+    // the lazy pass must give bit for bit the same result.
+    if (iw_state_[l] == kFromStart) {
+      iw_[l] = Eigen::Matrix3d(r_[l] * inv_inertia_[l] * r_[l].transpose());
+    } else if (iw_state_[l] == kTurned) {
+      iw_[l] = r_[l] * inv_inertia_[l] * r_[l].transpose();
+    }
+    iw_state_[l] = kCurrent;
+    return iw_[l];
+  };
   // A small rotation dtheta (rad, world frame) of link l.
   auto turn = [&](int l, const Eigen::Vector3d& dtheta) {
     Eigen::Quaterniond& q = q_[l];
     q.coeffs() += 0.5 * (Eigen::Quaterniond(0, dtheta.x(), dtheta.y(), dtheta.z()) * q).coeffs();
     q.normalize();
     r_[l] = q.toRotationMatrix();
-    iw_[l] = r_[l] * inv_inertia_[l] * r_[l].transpose();
+    iw_state_[l] = kTurned;
     moved_[l] = 1;
   };
   double worst = 0;
@@ -64,16 +79,17 @@ double JointProjector::project(const std::vector<char>& pinned, int sweeps, doub
       // Effective inverse mass of the anchor pair (3 x 3) and the positional
       // "impulse" that closes the gap: K lambda = error.
       const Eigen::Matrix3d sc = skew(arm_c), sp = skew(arm_p);
-      const Eigen::Matrix3d k = (wc + wp) * Eigen::Matrix3d::Identity() - sc * iw_[h.child] * sc -
-                                sp * iw_[h.parent] * sp;
+      const Eigen::Matrix3d& iwc = inverseInertia(h.child);
+      const Eigen::Matrix3d& iwp = inverseInertia(h.parent);
+      const Eigen::Matrix3d k = (wc + wp) * Eigen::Matrix3d::Identity() - sc * iwc * sc - sp * iwp * sp;
       const Eigen::Vector3d lambda = k.inverse() * error;
       if (wc > 0) {
         x_[h.child] -= wc * lambda;
-        turn(h.child, -(iw_[h.child] * arm_c.cross(lambda)));
+        turn(h.child, -(iwc * arm_c.cross(lambda)));
       }
       if (wp > 0) {
         x_[h.parent] += wp * lambda;
-        turn(h.parent, iw_[h.parent] * arm_p.cross(lambda));
+        turn(h.parent, iwp * arm_p.cross(lambda));
       }
     }
     if (worst <= tolerance) break;

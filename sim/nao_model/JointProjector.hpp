@@ -51,6 +51,9 @@ class JointProjector {
   std::vector<Eigen::Matrix3d> r_;
   std::vector<double> w_;
   std::vector<Eigen::Matrix3d> iw_;
+  // Whether iw_[l] is current for r_[l], or is to be computed (lazily).
+  enum : char { kCurrent, kFromStart, kTurned };
+  std::vector<char> iw_state_;
   std::vector<char> moved_;
 };
 

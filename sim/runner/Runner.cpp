@@ -245,7 +245,7 @@ void Runner::start() {
       al::AgentConnection conn = r.host->connect();
       conn.setImages(r.images);
       r.program = std::make_unique<ap::RobotProgram>(std::move(conn), std::move(pc));
-      r.program->start();
+      r.program->start(threading_);
     }
   }
   // Team network and GameController; the robots see the game state at t = 0.
@@ -313,6 +313,26 @@ void Runner::waitForFirstAnswer(Robot& r) {
 // gdb"). Off (watchdog: off / --watchdog off), the runner waits in 1 s slices.
 double Runner::watchdogWait() const { return scenario_.watchdog_s > 0 ? scenario_.watchdog_s : 1.0; }
 bool Runner::watchdogArmed() const { return scenario_.watchdog_s > 0 && !tracerAttached(); }
+
+void Runner::setThreading(ap::Threading threading) {
+  if (started_) throw RunnerError("setThreading: the runner has already started");
+  threading_ = threading;
+}
+
+bool Runner::runsInline(const Robot& r) const {
+  return r.program && r.program->threading() == ap::Threading::Inline;
+}
+
+// Inline: the builtin program's step for the tick (motion) or frame just
+// posted, here on the simulator's thread; its answer is then waiting. A step
+// that throws ends the run at once (a thread would have gone silent).
+void Runner::stepInline(Robot& r, bool motion) {
+  if (motion ? r.program->stepMotion() : r.program->stepPerception()) return;
+  const std::string error = r.program->error();
+  throw WatchdogError("robot " + r.tag + ": " + (motion ? "motion" : "perception") + " step " +
+                      (error.empty() ? "found nothing posted (inline)" : "failed: " + error) + " (tick " +
+                      std::to_string(world_->tick()) + ")");
+}
 
 void Runner::watchdogFail(const Robot& r, const char* thread) const {
   std::ostringstream m;
@@ -383,6 +403,7 @@ void Runner::awaitMotion() {
     if (external && !r.attached) {
       waitForFirstAnswer(r);
     } else if (r.host->sync() == SyncMode::LockStep) {
+      if (runsInline(r)) stepInline(r, true);
       while (!r.host->waitAnswer(watchdogWait()))
         if (watchdogArmed()) watchdogFail(r, "motion");
     }
@@ -426,9 +447,11 @@ void Runner::cameraFrame(int64_t t_us) {
   }
   if (any)
     for (auto& r : robots_)
-      if (r->perception)
+      if (r->perception) {
+        if (runsInline(*r)) stepInline(*r, false);
         while (!r->host->waitPerceptionDone(watchdogWait()))
           if (watchdogArmed()) watchdogFail(*r, "perception");
+      }
 }
 
 void Runner::captureViews(int64_t t_us) {

@@ -13,7 +13,9 @@
 //   6. publishSensors     scenario buttons, sensors read from the new state,
 //                         each robot's slot written and its tick posted
 //                         (the body side of libagent: sim/bridge/BodyHost)
-//   7. awaitMotion        every robot's Motion answers (the first tick waits
+//   7. awaitMotion        every robot's Motion answers (inline: a builtin
+//                         program's Motion step runs here, robot by robot,
+//                         on this thread; the first tick waits
 //                         attach_timeout for external programs; then the
 //                         wall-clock watchdog; free-running external robots
 //                         are not waited for)
@@ -23,6 +25,7 @@
 //  10. cameraFrame        at 30 Hz of simulated time every robot with a
 //                         Perception thread gets its frame (observations,
 //                         images if rendered) and the runner waits for it
+//                         (inline: runs its Perception step, robot by robot)
 //  11. teamAndGame        team network and GameController: outboxes drained,
 //                         due packets delivered, game state advanced (robots
 //                         penalised to the sideline and back) and written
@@ -30,6 +33,10 @@
 // Robot threads run only inside stages 6-7 and 10, and the runner reads
 // nothing of theirs until all have answered, so the outcome does not depend
 // on thread timing: the same scenario and seed give the same state hash.
+// Builtin programs run either on their own named threads (the default; gdb,
+// `simswift run`) or inline (setThreading: no threads, no hand-over; the
+// experiment and the benchmarks): the same steps in the same order, the
+// same hash (tests/runner/test_determinism.cpp).
 //
 // A robot program answers a tick the way libagent's clients do (it writes a
 // joint command and sets actuators_latest; see sim/bridge/BodyHost.hpp), so
@@ -111,6 +118,10 @@ class Runner {
   // every step (ProgramConfig::step_hook; tests jitter thread timing with it).
   void setStepHook(int robot, std::function<void(agent::program::ThreadId)> hook);
 
+  // Before start(): builtin programs on named threads (default) or inline
+  // on the runner's thread (see the top of this file).
+  void setThreading(agent::program::Threading threading);
+  agent::program::Threading threading() const { return threading_; }
   // Builds the world, hosts and programs.
   void start();
   // External robots free-running (see above); RunOptions::realtime sets it.
@@ -189,6 +200,8 @@ class Runner {
   Robot& overrideSlot(int robot, const char* what);
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
   void waitForFirstAnswer(Robot& r);
+  bool runsInline(const Robot& r) const;
+  void stepInline(Robot& r, bool motion);
   [[noreturn]] void watchdogFail(const Robot& r, const char* thread) const;
   double watchdogWait() const;  // s per wait
   bool watchdogArmed() const;   // on, and no debugger attached
@@ -197,6 +210,7 @@ class Runner {
   std::shared_ptr<const NaoModel> model_;
   std::unique_ptr<World> world_;
   std::vector<std::unique_ptr<Robot>> robots_;
+  agent::program::Threading threading_ = agent::program::Threading::Named;
   bool started_ = false;
   bool stopped_ = false;
   int64_t last_frame_ = -1;

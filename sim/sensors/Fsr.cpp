@@ -49,8 +49,13 @@ std::array<double, 4> fsrWeights(const FsrLayout& layout, const Eigen::Vector2d&
     const double det = du.x() * dv.y() - du.y() * dv.x();
     if (std::abs(det) < 1e-12) break;
     const Eigen::Vector2d r = point - p;
-    u += (r.x() * dv.y() - r.y() * dv.x()) / det;
-    v += (du.x() * r.y() - du.y() * r.x()) / det;
+    const double u1 = u + (r.x() * dv.y() - r.y() * dv.x()) / det;
+    const double v1 = v + (du.x() * r.y() - du.y() * r.x()) / det;
+    // At a fixed point every further iteration repeats this one: stopping
+    // there changes nothing (usually after 3-4 of the 12).
+    if (u1 == u && v1 == v) break;
+    u = u1;
+    v = v1;
   }
   if (!std::isfinite(u) || !std::isfinite(v)) u = v = 0.5;
   // A point outside the sensors loads the nearest edge (clamped weights).

@@ -55,8 +55,10 @@ class Jitter {
   int max_us_;
 };
 
-uint64_t runHash(bool jitter, uint64_t jitter_seed) {
+uint64_t runHash(bool jitter, uint64_t jitter_seed,
+                 agent::program::Threading threading = agent::program::Threading::Named) {
   Runner runner(Scenario::parse(kScenario, "determinism.yaml"));
+  runner.setThreading(threading);
   if (jitter) {
     // Each thread sleeps before every step (Motion up to 300 us, Perception
     // up to 2 ms); each Jitter is used by one thread only.
@@ -93,3 +95,36 @@ TEST(Determinism, JitteredRobotThreadsGiveThePinnedHash) {
     EXPECT_EQ(h, kPinnedHash) << "jitter seed " << seed << ": " << hex(h);
   }
 }
+
+// Inline (the programs' steps on the runner's thread, no robot threads) is
+// the same program in the same order: the same pinned hash.
+TEST(Determinism, InlineProgramsGiveThePinnedHash) {
+  const uint64_t h = runHash(false, 0, agent::program::Threading::Inline);
+  EXPECT_EQ(h, kPinnedHash) << "inline: " << hex(h);
+}
+
+// The same with every robot thread busy: three robots searching for the ball
+// with their behaviour, localisation, vision and team messages (perception,
+// comms and the GameController all in the loop), named threads vs inline.
+TEST(Determinism, InlineAndNamedThreadsGiveTheSameHashWithBehaviourAndTeamComms) {
+  const char* scenario =
+      "duration: 4\nseed: 11\nnoise: on\nball: {x: 2.0, y: -1.0}\nteam_comms: {loss: 0.05, delay_ms: 50}\n"
+      "robots:\n"
+      "  - {team: 19, player: 2, x: -3.25, y: 3.0, theta: -1.5708, behaviour: findball2017}\n"
+      "  - {team: 19, player: 3, x: -2.0, y: -3.0, theta: 1.5708, behaviour: findball2017}\n"
+      "  - {team: 19, player: 4, x: -1.75, y: 3.0, theta: -1.5708, behaviour: findball2017}\n";
+  uint64_t hashes[2];
+  int64_t frames[2];
+  for (int k = 0; k < 2; ++k) {
+    Runner runner(Scenario::parse(scenario, "behaviour.yaml"));
+    runner.setThreading(k ? agent::program::Threading::Inline : agent::program::Threading::Named);
+    RunOptions opt;
+    opt.progress = false;
+    hashes[k] = runner.run(opt).hash;
+    frames[k] = runner.program(0)->perceptionFrames();
+  }
+  EXPECT_EQ(hashes[1], hashes[0]) << "named " << hex(hashes[0]) << ", inline " << hex(hashes[1]);
+  EXPECT_EQ(frames[1], frames[0]);
+  EXPECT_GE(frames[0], 119);  // 30 Hz for 4 s: Perception really ran
+}
+

@@ -119,6 +119,35 @@ TEST(Runner, WatchdogNamesTheRobotAndThreadInsteadOfHanging) {
   EXPECT_LT(wall, 4.0);
 }
 
+namespace {
+// A Motion step that throws at t >= 0.3 s.
+struct ThrowingMotion : ap::MotionGenerator {
+  void tick(const al::SensorValues&, int64_t t_us, al::JointValues& out) override {
+    out = ap::postureCommand(ap::Posture::Stand);
+    if (t_us >= 300000) throw std::runtime_error("walk engine exploded");
+  }
+};
+}  // namespace
+
+// Inline, a step that throws ends the run at once (no watchdog wait: there is
+// no thread to wait for), naming the robot, the step and the program's error.
+TEST(Runner, InlineStepThatThrowsEndsTheRunNamingTheRobot) {
+  Scenario s = Scenario::parse("duration: 5\nwatchdog: 30\nrobots:\n  - {team: 1, player: 2, x: 1.0}\n", "test.yaml");
+  Runner r(s);
+  r.setThreading(ap::Threading::Inline);
+  r.setMotionGenerator(0, std::make_unique<ThrowingMotion>());
+  std::string message;
+  try {
+    r.run(quiet());
+  } catch (const WatchdogError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("robot t1p2: motion step failed: t1p2-motion: walk engine exploded (tick 30)"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(r.ticks(), 30);
+}
+
 // A second process attaches by name (simswift-agent), reads the sensors and
 // moves a joint; the joint in the world follows.
 TEST(Runner, ExternalProcessAttachesByNameAndMovesAJoint) {

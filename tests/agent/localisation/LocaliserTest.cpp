@@ -155,3 +155,25 @@ TEST(FieldModel, LandmarksAreThePointSymmetricSpl2017Set) {
   EXPECT_NEAR(al::distanceToLines({-3900, 0}, f.lines(), 750), 0, 1e-9);
   EXPECT_NEAR(al::distanceToLines({-2000, 2000}, f.lines(), 750), 1000, 1e-9);
 }
+
+TEST(FieldModel, PreparedLinesGiveExactlyTheReferenceDistance) {
+  // The filter's prepared lines (skipping segments that cannot be nearer)
+  // must give bit for bit what the plain scan gives, so the filter's output
+  // does not change: points on a 10 mm grid over the field and beyond, plus
+  // a slanted segment (none on the SPL field) to cover the general case.
+  const al::FieldModel f = al::FieldModel::spl2017();
+  std::vector<al::LineSegment> lines = f.lines();
+  const al::FieldLines spl(lines, f.centre_circle_radius);
+  lines.push_back({{-1000, -500}, {2000, 1700}});
+  const al::FieldLines with_slant(lines, f.centre_circle_radius);
+  const std::vector<al::LineSegment> spl_lines = f.lines();
+  int checked = 0;
+  for (double x = -5600; x <= 5600; x += 10)
+    for (double y = -3700; y <= 3700; y += 10) {
+      const al::Vec2 p{x + 0.37, y - 0.21};
+      ASSERT_EQ(spl.distance(p), al::distanceToLines(p, spl_lines, f.centre_circle_radius)) << x << ", " << y;
+      ASSERT_EQ(with_slant.distance(p), al::distanceToLines(p, lines, f.centre_circle_radius)) << x << ", " << y;
+      ++checked;
+    }
+  EXPECT_GT(checked, 800000);
+}
