@@ -143,9 +143,24 @@ std::vector<double> Runner::modelPosture(const ap::JointArray& angles) const {
   return model_->postureFromLibagent(angles);
 }
 
+// The composition root, in stages: the world, then one body (World robot,
+// SensorSuite, BodyHost) per robot, the builtin robots' programs, the game
+// and team network around them, the cameras and the vision oracle.
 void Runner::start() {
   if (started_) return;
   started_ = true;
+  buildWorld();
+  buildHosts();
+  buildPrograms();
+  buildTeamAndGame();
+  if (scenario_.camera.any()) startCameras();
+  buildVision();
+  wall_start_ = Clock::now();
+}
+
+// The model, the field (the scenario's placements checked against it) and
+// the World with the scenario's ball.
+void Runner::buildWorld() {
   model_ = std::make_shared<const NaoModel>(NaoModel::loadUrdf(scenario_.modelFile()));
   const FieldConfig field = FieldConfig::loadYaml(scenario_.fieldFile());
   scenario_.checkAgainstField(field);
@@ -159,7 +174,10 @@ void Runner::start() {
   if (scenario_.camera.any() && !camerasAvailable())
     throw RunnerError("camera rendering was asked for (camera: enabled, --dump-frames or --overview), but this "
                       "simswift was built without cameras (-DSIMSWIFT_CAMERAS=OFF)");
+}
 
+// The sensors' configuration: the scenario's seed and noise switches.
+sensors::SensorConfig Runner::sensorConfig() const {
   sensors::SensorConfig sc;
   sc.seed = scenario_.seed;
   sc.noise = scenario_.noise.on;
@@ -172,7 +190,14 @@ void Runner::start() {
   off(sc.fsr, scenario_.noise.fsr);
   off(sc.sonar, scenario_.noise.sonar);
   off(sc.encoder, scenario_.noise.encoder);
+  return sc;
+}
 
+// Each robot's body in the world, its SensorSuite and its BodyHost (the body
+// side of libagent: in-process for a builtin program, named shared memory
+// for an external one), in scenario order.
+void Runner::buildHosts() {
+  const sensors::SensorConfig sc = sensorConfig();
   if (robots_.empty()) {
     robots_.resize(scenario_.robots.size());
     for (auto& r : robots_) r = std::make_unique<Robot>();
@@ -205,6 +230,15 @@ void Runner::start() {
     if (external && free_running_) r.host->setSync(SyncMode::FreeRunning);
     r.latched = r.host->readActuators();  // what the body gets before any command (limp or stiff start)
     r.ext = r.host->extension();  // game state + team link, beside the block
+  }
+}
+
+// Each builtin robot's program, connected to its host and started (its
+// threads wait for their first tick). External robots bring their own.
+void Runner::buildPrograms() {
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    Robot& r = *robots_[i];
+    const bool external = r.spec.program == RobotSpec::Program::External;
     if (!external) {
       // The robot program: the standard modules (agent/program/ModuleOrder).
       // Scenario actions become its behaviour (the Motion module walks);
@@ -248,7 +282,10 @@ void Runner::start() {
       r.program->start(threading_);
     }
   }
-  // Team network and GameController; the robots see the game state at t = 0.
+}
+
+// Team network and GameController; the robots see the game state at t = 0.
+void Runner::buildTeamAndGame() {
   network_ = std::make_unique<network::TeamNetwork>(scenario_.team_comms, scenario_.seed);
   std::vector<game::GameController::RobotId> ids;
   links_.clear();
@@ -264,19 +301,19 @@ void Runner::start() {
   game_ = std::make_unique<game::GameController>(scenario_.game, ids);
   placer_ = std::make_unique<game::PenaltyPlacer>(modelPosture(ap::postureAngles(ap::Posture::Stand)));
   teamAndGame(0);
-  if (scenario_.camera.any()) startCameras();
-  {
-    vision::VisionConfig vc = scenario_.vision;
-    vc.noise = vc.noise && scenario_.noise.on;
-    vision_ = std::make_unique<vision::VisionOracle>(world_->field(), vc, scenario_.seed);
-    std::vector<int> teams, colours;
-    for (auto& r : robots_) {
-      teams.push_back(r->spec.team);
-      colours.push_back(static_cast<int>(r->spec.colour));
-    }
-    vision_->setTeams(teams, colours);
+}
+
+// The vision oracle: its noise follows the scenario's master switch too.
+void Runner::buildVision() {
+  vision::VisionConfig vc = scenario_.vision;
+  vc.noise = vc.noise && scenario_.noise.on;
+  vision_ = std::make_unique<vision::VisionOracle>(world_->field(), vc, scenario_.seed);
+  std::vector<int> teams, colours;
+  for (auto& r : robots_) {
+    teams.push_back(r->spec.team);
+    colours.push_back(static_cast<int>(r->spec.colour));
   }
-  wall_start_ = Clock::now();
+  vision_->setTeams(teams, colours);
 }
 
 void Runner::setFreeRunning(bool on) {

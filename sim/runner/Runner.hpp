@@ -122,7 +122,8 @@ class Runner {
   // on the runner's thread (see the top of this file).
   void setThreading(agent::program::Threading threading);
   agent::program::Threading threading() const { return threading_; }
-  // Builds the world, hosts and programs.
+  // Builds the world, the robots' hosts and programs, the game and team
+  // network, the cameras and the vision oracle (the build stages below).
   void start();
   // External robots free-running (see above); RunOptions::realtime sets it.
   void setFreeRunning(bool on);
@@ -197,6 +198,15 @@ class Runner {
     agent::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
   };
 
+  // Build stages (start(), in this order).
+  void buildWorld();        // model, field, World, ball
+  void buildHosts();        // per robot: World body, SensorSuite, BodyHost
+  void buildPrograms();     // per builtin robot: its RobotProgram, started
+  void buildTeamAndGame();  // TeamNetwork, GameController, the t = 0 game state
+  void startCameras();      // if the scenario renders
+  void buildVision();       // the vision oracle
+  sensors::SensorConfig sensorConfig() const;
+
   Robot& overrideSlot(int robot, const char* what);
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
   void waitForFirstAnswer(Robot& r);
@@ -221,7 +231,6 @@ class Runner {
   bool overview_finished_ = false;
   std::string overview_message_;
   bool free_running_ = false;
-  void startCameras();
   void renderFrame(int64_t frame, int64_t t_us, agent::libagent::CameraFrame& f, Robot& r, int index);
   int blowups_ = 0;
   std::unique_ptr<network::TeamNetwork> network_;
