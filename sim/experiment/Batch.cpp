@@ -21,6 +21,7 @@
 
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/experiment/Figures.hpp"
+#include "sim/experiment/PrivateShm.hpp"
 #include "sim/experiment/Report.hpp"
 #include "sim/experiment/Trial.hpp"
 
@@ -177,7 +178,8 @@ std::string trialFile(const std::string& dir, int trial, const std::string& suff
 }
 
 void runAndWriteTrial(const Experiment& e, const TrialHooks& hooks, int trial, const std::string& dir) {
-  const TrialResult r = runTrial(e, trial, hooks);
+  // Launched programs' logs and setups: dir/trials/<trial>/.
+  const TrialResult r = runTrial(e, trial, hooks, dir + "/trials/" + std::to_string(trial));
   writeAtomic(trialFile(dir, trial, ".tracks.csv"), tracksRows(r, e));
   writeAtomic(trialFile(dir, trial, ".timing.csv"), timingRow(r));
   writeAtomic(trialFile(dir, trial, ".csv"), csvRow(r, static_cast<int>(r.robots.size())));  // last: "done"
@@ -232,6 +234,23 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
   std::fflush(stderr);
   RunWall wall;
   wall.jobs = jobs;
+  // Launched robot programs open their release's fixed names: each worker
+  // gets its own /dev/shm (PrivateShm.hpp), or the trials run one at a time.
+  bool launches = false;
+  for (const Setup& s : e.setups)
+    for (const ExperimentRobot& r : s.robots) launches = launches || r.launch.launched();
+  bool private_shm = false;
+  if (launches) {
+    std::string why;
+    private_shm = privateShmAvailable(&why);
+    if (!private_shm && jobs > 1) {
+      std::fprintf(stderr,
+                   "simswift: this machine gives no private /dev/shm to a trial (%s); launched robot programs "
+                   "share names, so the trials run one at a time\n",
+                   why.c_str());
+      jobs = 1;
+    }
+  }
   const Clock::time_point wall0 = Clock::now();
   std::map<pid_t, int> running;
   size_t next = 0;
@@ -254,6 +273,10 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
         }
         int code = 0;
         try {
+          if (private_shm) {
+            const std::string err = enterPrivateShm();
+            if (!err.empty()) throw BatchError("a private /dev/shm for the trial: " + err);
+          }
           runAndWriteTrial(e, hooks, t, opt.out_dir);
         } catch (const ConfigError& ex) {
           std::fprintf(stderr, "%s\n", ex.what());

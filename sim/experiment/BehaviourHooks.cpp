@@ -14,7 +14,8 @@ void RobotBehaviours::configure(const Experiment& e, const TrialSpec& t, runner:
   for (size_t i = 0; i < s.robots.size() && i < sc.robots.size(); ++i) {
     const ExperimentRobot& r = s.robots[i];
     if (r.behaviour == Behaviour::Script) continue;  // its actions are already set
-    sc.robots[i].behaviour = agent::behaviour::behaviourFromText(behaviourName(r.behaviour), r.config_yaml, r.behaviour_where);
+    sc.robots[i].behaviour = agent::behaviour::behaviourFromText(behaviourName(r.behaviour), r.config_yaml,
+                                                                 r.behaviour_where, &sc.robots[i].behaviour_yaml);
   }
 }
 

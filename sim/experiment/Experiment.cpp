@@ -184,6 +184,16 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
       if (!s.node()["config"].IsMap()) s.fail("config", "must be a map of behaviour overrides");
       def_config = flow(s.node()["config"]);
     }
+    // The setup's program: the default of its robots. `external` (a program
+    // started by hand) cannot be restarted for each trial: refused.
+    auto readLaunch = [&e](const YamlReader& m) {
+      runner::RobotSpec tmp;
+      runner::readProgram(m, tmp, e.base.base_dir);
+      if (tmp.program == runner::RobotSpec::Program::External && !tmp.launch.launched())
+        m.fail("program", "an experiment starts every trial's programs itself: builtin or {command: [...]}");
+      return tmp.launch;
+    };
+    const runner::LaunchSpec def_launch = readLaunch(s);
     std::set<std::pair<int, int>> players;
     for (const YamlReader& r : s.list("robots")) {
       ExperimentRobot rob;
@@ -218,6 +228,7 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
         for (const auto& kv : r.node()["config"]) merged[kv.first.Scalar()] = kv.second;
         rob.config_yaml = flow(merged);
       }
+      rob.launch = r.has("program") ? readLaunch(r) : def_launch;
       if (rob.behaviour == Behaviour::Script) {
         if (!r.has("actions")) r.fail("actions", "missing: a script robot needs an actions: list (as in a scenario)");
         runner::readActions(r, rob.script);
@@ -289,7 +300,8 @@ runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t) {
     rs.y = r.y;
     rs.theta = r.theta;
     rs.posture = agent::program::Posture::Stand;
-    rs.program = runner::RobotSpec::Program::Builtin;
+    rs.program = r.launch.launched() ? runner::RobotSpec::Program::External : runner::RobotSpec::Program::Builtin;
+    rs.launch = r.launch;
     sc.robots.push_back(std::move(rs));
   }
   // findballexp's start (thesis §3.2.6, §5.1): every robot penalised at its

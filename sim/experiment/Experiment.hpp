@@ -74,6 +74,10 @@ struct ExperimentRobot {
   Behaviour behaviour = Behaviour::Script;
   std::string config_yaml;  // behaviour overrides, opaque (YAML flow text; "" = none)
   runner::RobotSpec script;  // behaviour script: its actions (the scenario's actions: list)
+  // program: builtin (default) or {command: [...]}: a program simswift
+  // starts fresh for every trial (sim/runner/ProgramProcess.hpp), given the
+  // robot's setup in its {config} file.
+  runner::LaunchSpec launch;
   std::string where;         // "file:line: setups[0].robots[1]" for later errors
   std::string behaviour_where;  // same, of the behaviour key
 };

@@ -59,6 +59,7 @@ std::vector<PositionStats> setupTable(const Experiment& e, const std::vector<Tri
     std::vector<double> times;
     for (const TrialResult& r : results) {
       if (r.setup != name || r.position != b.number) continue;
+      if (!r.failed.empty()) continue;  // its program failed: neither found nor not found
       ++tests;
       if (r.found) times.push_back(r.seconds);
     }
@@ -255,6 +256,18 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
     << " s, then the game goes to PLAYING and they are unpenalised; find times count from that moment. "
        "Wall-clock figures (real-time factor) are in the last section and in timing.md: everything above that "
        "section is the same in every run.\n\n";
+
+  int failed = 0;
+  for (const TrialResult& r : results) failed += !r.failed.empty();
+  if (failed) {
+    s << "**" << failed << " trial(s) failed** (a launched robot program crashed, exited or never attached); "
+      << "they are left out of every table below (Tests counts the trials that ran). Their logs are in "
+      << "trials/<trial>/:\n\n";
+    for (const TrialResult& r : results)
+      if (!r.failed.empty()) s << "- trial " << r.trial << " (" << r.setup << ", position " << r.position << "): "
+                                << r.failed << "\n";
+    s << "\n";
+  }
 
   s << "Ball positions (table 5.2):";
   for (const BallPosition& b : e.balls)

@@ -71,7 +71,12 @@ std::vector<std::string> splitCsv(const std::string& line) {
 
 }  // namespace
 
-TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
+namespace {
+void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& sc, const TrialHooks& hooks,
+               TrialResult& res);
+}  // namespace
+
+TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs) {
   using Clock = std::chrono::steady_clock;
   const auto wall0 = Clock::now();  // timing only
   const TrialSpec t = trialSpec(e, index);
@@ -91,7 +96,38 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
     res.robots[i].team = setup.robots[i].team;
     res.robots[i].player = setup.robots[i].player;
   }
+  if (!program_logs.empty()) sc.program_logs = program_logs;
+  try {
+    playTrial(e, t, sc, hooks, res);
+  } catch (const runner::ProgramError& err) {
+    // The trial failed, the batch goes on: the reason's first line, without
+    // the results file's separators.
+    std::string why = err.what();
+    why = why.substr(0, why.find('\n'));
+    for (char& c : why)
+      if (c == ',' || c == '"') c = ';';
+    TrialResult failed;
+    failed.trial = res.trial;
+    failed.setup = res.setup;
+    failed.position = res.position;
+    failed.repeat = res.repeat;
+    failed.seed = res.seed;
+    failed.robots = res.robots;
+    for (RobotOutcome& o : failed.robots) o = RobotOutcome{o.team, o.player};
+    failed.failed = why;
+    res = failed;
+    std::fprintf(stderr, "trial %d failed: %s\n", index, err.what());
+  }
+  res.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
+  return res;
+}
 
+namespace {
+
+void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& sc, const TrialHooks& hooks,
+               TrialResult& res) {
+  const Setup& setup = e.setups[t.setup];
+  const int n = static_cast<int>(setup.robots.size());
   runner::Runner run(sc);
   // The robot programs' steps on this thread: no hand-over between threads
   // (the same results as named threads; two trials per two cores keep both busy).
@@ -161,12 +197,12 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks) {
   res.resets = stats.blowups;
   for (int i = 0; i < n && i < static_cast<int>(stats.robots.size()); ++i) res.robots[i].falls = stats.robots[i].falls;
   res.sim_s = stats.sim_s;
-  res.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
-  return res;
 }
 
+}  // namespace
+
 std::string csvHeader(int robots) {
-  std::string h = "trial,setup,position,repeat,seed,found,seconds,finder,resets";
+  std::string h = "trial,setup,position,repeat,seed,found,seconds,finder,resets,failed";
   for (int k = 1; k <= robots; ++k) {
     const std::string r = "robot" + std::to_string(k) + "_";
     h += "," + r + "player," + r + "distance_m," + r + "falls," + r + "sideline_moves";
@@ -177,7 +213,8 @@ std::string csvHeader(int robots) {
 std::string csvRow(const TrialResult& r, int robots) {
   std::ostringstream s;
   s << r.trial << ',' << r.setup << ',' << r.position << ',' << r.repeat << ',' << r.seed << ','
-    << (r.found ? 1 : 0) << ',' << (r.found ? fixed(r.seconds, 2) : "") << ',' << r.finder << ',' << r.resets;
+    << (r.found ? 1 : 0) << ',' << (r.found ? fixed(r.seconds, 2) : "") << ',' << r.finder << ',' << r.resets << ','
+    << r.failed;
   for (int k = 0; k < robots; ++k) {
     if (k < static_cast<int>(r.robots.size())) {
       const RobotOutcome& o = r.robots[k];
@@ -193,7 +230,7 @@ std::string csvRow(const TrialResult& r, int robots) {
 
 TrialResult parseCsvRow(const std::string& line) {
   const std::vector<std::string> f = splitCsv(line);
-  if (f.size() < 9 || (f.size() - 9) % 4 != 0)
+  if (f.size() < 10 || (f.size() - 10) % 4 != 0)
     throw std::runtime_error("bad results row (" + std::to_string(f.size()) + " fields): " + line);
   TrialResult r;
   try {
@@ -206,7 +243,8 @@ TrialResult parseCsvRow(const std::string& line) {
     r.seconds = r.found ? std::stod(f[6]) : 0;
     r.finder = f[7];
     r.resets = std::stoi(f[8]);
-    for (size_t k = 9; k + 3 < f.size(); k += 4) {
+    r.failed = f[9];
+    for (size_t k = 10; k + 3 < f.size(); k += 4) {
       if (f[k].empty()) continue;
       RobotOutcome o;
       if (std::sscanf(f[k].c_str(), "t%dp%d", &o.team, &o.player) != 2) throw std::runtime_error("player " + f[k]);

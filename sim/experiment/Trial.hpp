@@ -53,6 +53,9 @@ struct TrialResult {
   double seconds = 0;         // find time (s since PLAYING) if found
   std::string finder;         // "t19p3" if found
   int resets = 0;             // world resets after a numerical blow-up
+  // Why the trial failed ("" = it ran): a launched robot program crashed,
+  // exited or never attached. A failed trial is neither found nor not found.
+  std::string failed;
   std::vector<RobotOutcome> robots;
   std::vector<TrackSample> tracks;
   // Timing (wall clock), reporting only.
@@ -60,7 +63,10 @@ struct TrialResult {
   double realTimeFactor() const { return wall_s > 0 ? sim_s / wall_s : 0; }
 };
 
-TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks);
+// Runs trial `index`. Launched robot programs (program: {command: ...})
+// start fresh for the trial, their logs and setups in program_logs ("" =
+// the experiment's default); if one fails the result says so in `failed`.
+TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs = "");
 
 // results.csv: header for up to `robots` robots, one row per trial.
 std::string csvHeader(int robots);
