@@ -25,6 +25,10 @@ std::string RunStats::summary() const {
   if (nan_commands || clamped_angles || clamped_stiffness)
     s << " | nan " << nan_commands << " clamped " << clamped_angles << "+" << clamped_stiffness;
   if (skipped_cycles) s << " | skipped " << skipped_cycles;
+  if (gc_udp_sent || !gc_returns.empty()) {
+    s << " | gc udp " << gc_udp_sent << " sent";
+    for (const GcReturns& r : gc_returns) s << (&r == &gc_returns[0] ? ", returns " : " ") << "t" << r.team << "p" << r.player << " " << r.packets;
+  }
   s << " | hash " << hashHex(hash);
   return s.str();
 }
