@@ -24,6 +24,7 @@ struct RunStats {
   // packets heard per robot (team: SPL number); wall-clock dependent,
   // reporting only.
   int64_t gc_udp_sent = 0;
+  int64_t gc_udp_failed = 0;  // sends that failed
   struct GcReturns {
     int team = 0, player = 0;
     int64_t packets = 0;

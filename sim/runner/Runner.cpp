@@ -583,6 +583,7 @@ RunStats Runner::stats() const {
   }
   if (gc_udp_) {
     s.gc_udp_sent = gc_udp_->sent();
+    s.gc_udp_failed = gc_udp_->sendErrors();
     for (const game::GameControllerUdp::Returns& c : gc_udp_->returns())
       s.gc_returns.push_back({c.team, c.player, c.packets});
   }
