@@ -263,6 +263,7 @@ int main(int argc, char** argv) {
     try {
       const RunStats stats = runner.run(opt);
       std::printf("%s\n%s", stats.summary().c_str(), stats.robotLines().c_str());
+      for (const std::string& log : runner.programLogs()) std::printf("  program log %s\n", log.c_str());
       std::fflush(stdout);
     } catch (const WatchdogError& e) {
       // The silent robot thread cannot be joined; remove the named objects

@@ -1,33 +1,50 @@
-// simswift-agent: a stand-alone robot program in its own process. It attaches
-// to a simulated robot's named shared memory (a robot with `program:
-// external` in a running simswift scenario) by libagent's simulation names
-// (/libagent-memory<N>, N = team x 11 + player) or the bare ones, and holds
-// a pose or moves one joint. Its Perception thread reads the game state and
-// exchanges team packets through the simulator's extension object.
+// simswift-agent: the reference robot program in its own process. It
+// attaches to a simulated robot's named shared memory by libagent's names
+// (/libagent-memory<N>, N = team x 11 + player, or the bare ones) and runs
+// the same modules as a scenario's `program: builtin` robot: Motion,
+// Perception (the 30 Hz camera frame's observations), localisation, team
+// comms, the game state and a behaviour or timed body actions, composed by
+// agent/program/RobotSetup.hpp from its config file and flags. It uses only
+// the libagent block and simswift's extension objects beside it, so it is
+// also the template a team reads to attach its own program.
 //
-//   simswift-agent --team T --player P [--bare] [--posture stand|crouch|limp|zero]
-//                  [--move JOINT ANGLE [--at S]] [--print] [--attach-timeout S]
+//   simswift-agent --team T --player P [--behaviour NAME] [--config FILE]
+//                  [--seed S] [--start X Y THETA] [--posture NAME]
+//                  [--move JOINT ANGLE [--at S]] [--bare] [--print] [--attach-timeout S]
 //
-// It runs until the simulator ends the run; if the simulator is killed it
-// notices within a second and exits with status 1 and a message.
+// simswift launches it with `program: {command: [simswift-agent, --config,
+// "{config}"]}`: {config} is the robot's setup as a builtin program gets it,
+// so both give the same state hash. It runs until the simulator ends the
+// run; if the simulator is killed it notices within a second and exits with
+// status 1 and a message.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <thread>
 
 #include "agent/libagent/AgentConnection.hpp"
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/program/RobotProgram.hpp"
+#include "agent/program/RobotSetup.hpp"
+#include "agent/behaviour/BehaviourYaml.hpp"
+#include "agent/config/ConfigError.hpp"
 
 namespace {
 
 const char* kUsage =
-    "usage: simswift-agent --team T --player P [options]\n"
+    "usage: simswift-agent [--team T --player P] [options]\n"
     "  --team T             SPL team number (0..255); with --player P the robot's\n"
     "                       objects are /libagent-memory<N>, N = T x 11 + P\n"
+    "  --config FILE        the robot's setup (agent/program/RobotSetup.hpp): team,\n"
+    "                       player, seed, start, behaviour, actions, posture, script;\n"
+    "                       the flags below override it\n"
+    "  --behaviour NAME     findball2016, findball2017, striker or script\n"
+    "  --seed S             the filters' random source (default 1)\n"
+    "  --start X Y THETA    known start pose for localisation (m, m, rad; field frame)\n"
     "  --bare               use the robot build's bare names (/libagent-memory)\n"
-    "  --posture NAME       stand (default), crouch, limp or zero\n"
+    "  --posture NAME       stand (default), crouch, limp or zero (no behaviour or actions)\n"
     "  --move JOINT ANGLE   move one joint (NAO name, e.g. HeadYaw) to ANGLE rad\n"
     "  --at S               ... at simulated time S s (default 0)\n"
     "  --print              print the sensors, game state and team packet counts\n"
@@ -61,8 +78,11 @@ void printSensors(const agent::libagent::SensorValues& s, int64_t t_us) {
 int main(int argc, char** argv) {
   namespace al = agent::libagent;
   namespace ap = agent::program;
-  int team = -1, player = -1;
-  ap::Posture posture = ap::Posture::Stand;
+  std::optional<int> team, player;
+  std::optional<ap::Posture> posture;
+  std::optional<std::string> behaviour, config;
+  std::optional<uint64_t> seed;
+  std::optional<agent::blackboard::FieldPose> start;
   std::string move_joint;
   double move_angle = 0, move_at = 0, attach_timeout = 10;
   bool print = false, bare = false;
@@ -74,7 +94,19 @@ int main(int argc, char** argv) {
     };
     if (a == "--team") team = static_cast<int>(number(next("--team"), "--team"));
     else if (a == "--player") player = static_cast<int>(number(next("--player"), "--player"));
-    else if (a == "--posture") {
+    else if (a == "--config") config = next("--config");
+    else if (a == "--behaviour") behaviour = next("--behaviour");
+    else if (a == "--seed") {
+      const double v = number(next("--seed"), "--seed");
+      if (v < 0 || v != static_cast<double>(static_cast<uint64_t>(v))) usageError("--seed must be a whole number");
+      seed = static_cast<uint64_t>(v);
+    } else if (a == "--start") {
+      agent::blackboard::FieldPose p;
+      p.x = number(next("--start"), "--start X") * 1000.0;  // m -> mm
+      p.y = number(next("--start"), "--start Y") * 1000.0;
+      p.theta = number(next("--start"), "--start THETA");
+      start = p;
+    } else if (a == "--posture") {
       const std::string p = next("--posture");
       auto parsed = ap::parsePosture(p);
       if (!parsed) usageError("--posture: unknown posture '" + p + "'");
@@ -91,20 +123,36 @@ int main(int argc, char** argv) {
       return 0;
     } else usageError("unknown argument '" + a + "'");
   }
-  if (team < al::kMinTeamNumber || team > al::kMaxTeamNumber)
+
+  // The setup: the config file, then the flags.
+  ap::RobotSetup setup;
+  try {
+    if (config) setup = ap::readRobotSetup(*config);
+    if (behaviour)
+      setup.behaviour = agent::behaviour::behaviourFromText(*behaviour, "", "--behaviour", &setup.behaviour_yaml);
+  } catch (const agent::config::ConfigError& e) {
+    std::fprintf(stderr, "simswift-agent: %s\n", e.what());
+    return 2;
+  }
+  if (team) setup.team = *team;
+  if (player) setup.player = *player;
+  if (seed) setup.seed = *seed;
+  if (start) setup.start = start;
+  if (posture) setup.posture = *posture;
+  if (!config && !team) usageError("--team is needed (or a --config file that names it)");
+  if (!config && !player) usageError("--player is needed (or a --config file that names it)");
+  if (setup.team < al::kMinTeamNumber || setup.team > al::kMaxTeamNumber)
     usageError("--team must be an SPL team number " + std::to_string(al::kMinTeamNumber) + ".." +
                std::to_string(al::kMaxTeamNumber));
-  if (player < al::kMinPlayer || player > al::kMaxPlayer)
+  if (setup.player < al::kMinPlayer || setup.player > al::kMaxPlayer)
     usageError("--player must be " + std::to_string(al::kMinPlayer) + ".." + std::to_string(al::kMaxPlayer));
-
-  std::vector<ap::ScriptStep> script;
   if (!move_joint.empty()) {
     ap::ScriptStep s;
     s.joint = ap::jointIndex(move_joint);
     if (s.joint < 0) usageError("--move: unknown joint '" + move_joint + "'");
     s.angle = static_cast<float>(move_angle);
     s.t_s = move_at;
-    script.push_back(s);
+    setup.script.push_back(s);
   }
 
   // The simulator may not have created the robot yet: retry for a while
@@ -113,14 +161,11 @@ int main(int argc, char** argv) {
   for (;;) {
     try {
       al::AgentConnection conn =
-          al::AgentConnection::attach(bare ? al::bareNames() : al::simulationNames(team, player));
+          al::AgentConnection::attach(bare ? al::bareNames() : al::simulationNames(setup.team, setup.player));
       std::fprintf(stderr, "simswift-agent: attached to %s\n", conn.name().c_str());
       // The game state and the team link come through the extension object
       // beside the block (filled by the simulator as for builtin robots).
-      ap::ProgramConfig pc;
-      pc.team = team;
-      pc.player = player;
-      pc.motion_generator = std::make_unique<ap::ScriptedMotion>(posture, script);
+      ap::ProgramConfig pc = ap::composeProgram(setup);
       pc.extensions = conn.extension();
       ap::RobotProgram program(std::move(conn), std::move(pc));
       if (print)

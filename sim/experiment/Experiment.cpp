@@ -10,7 +10,7 @@
 
 #include "agent/libagent/SharedNames.hpp"
 #include "sim/vision/VisionConfig.hpp"
-#include "sim/world/YamlReader.hpp"
+#include "sim/world/ConfigError.hpp"
 
 namespace simswift::experiment {
 

@@ -1,5 +1,9 @@
 #include "sim/runner/Runner.hpp"
 
+#include <filesystem>
+#include <fstream>
+#include <map>
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -29,11 +33,6 @@ namespace ap = agent::program;
 namespace ab = agent::behaviour;
 using agent::libagent::SyncMode;
 using Clock = std::chrono::steady_clock;
-
-namespace {
-// Ankle damping gain (s) of the builtin standing program; see ScriptedMotion.
-constexpr float kBuiltinAnkleGyroGain = 0.05f;
-}  // namespace
 
 Runner::Runner(Scenario scenario) : scenario_(std::move(scenario)) {}
 
@@ -155,6 +154,7 @@ void Runner::start() {
   buildTeamAndGame();
   if (scenario_.camera.any()) startCameras();
   buildVision();
+  launchPrograms();
   wall_start_ = Clock::now();
 }
 
@@ -240,36 +240,10 @@ void Runner::buildPrograms() {
     Robot& r = *robots_[i];
     const bool external = r.spec.program == RobotSpec::Program::External;
     if (!external) {
-      // The robot program: the standard modules (agent/program/ModuleOrder).
-      // Scenario actions become its behaviour (the Motion module walks);
-      // otherwise Motion is a generator: the test's, or the scripted posture.
-      ap::ProgramConfig pc;
-      pc.team = r.spec.team;
-      pc.player = r.spec.player;
-      pc.seed = scenario_.seed * 1000003ULL + static_cast<uint64_t>(i);
-      pc.motion_generator = std::move(r.motion_override);
-      if (!pc.motion_generator && r.spec.behaviour) {
-        // The behaviour (agent/behaviour) plans with the walk's top speeds
-        // (calibrated so the achieved speeds match them) and starts from the
-        // scenario's pose as a known start, as a team placing its robots on a
-        // test field configures it.
-        ab::BehaviourModuleConfig bc;
-        bc.behaviour = *r.spec.behaviour;
-        bc.team = r.spec.team;
-        bc.player = r.spec.player;
-        bc.walk.max_forward = pc.motion.walk.max_forward;
-        bc.walk.max_left = pc.motion.walk.max_left;
-        bc.walk.max_turn = pc.motion.walk.max_turn;
-        pc.behaviour = std::make_unique<ab::BehaviourModule>(bc);
-        pc.localisation.known_start = agent::blackboard::FieldPose{r.spec.x * 1000.0, r.spec.y * 1000.0, r.spec.theta};
-      } else if (!pc.motion_generator && (!r.spec.actions.empty() || !r.spec.pushes.empty())) {
-        pc.actions = r.spec.actions;
-        if (pc.actions.empty()) pc.actions.push_back({});  // pushes only: a NONE step keeps the script's STAND
-      } else if (!pc.motion_generator) {
-        auto scripted = std::make_unique<ap::ScriptedMotion>(r.spec.posture, r.spec.script);
-        scripted->setAnkleGyroDamping(kBuiltinAnkleGyroGain);
-        pc.motion_generator = std::move(scripted);
-      }
+      // The robot program: the standard modules composed from the robot's
+      // setup (agent/program/RobotSetup.hpp: the same for a launched
+      // simswift-agent), Motion replaced by a test's generator if it set one.
+      ap::ProgramConfig pc = ap::composeProgram(robotSetup(scenario_, static_cast<int>(i)), std::move(r.motion_override));
       pc.perception_step = std::move(r.perception_override);
       pc.step_hook = std::move(r.step_hook);
       // The game state and team link reach the program's modules. A test's
@@ -334,6 +308,14 @@ void Runner::setFreeRunning(bool on) {
 // the simulator, so this waits up to attach_timeout (wall clock: only how
 // long to wait for another process, never simulation).
 void Runner::waitForFirstAnswer(Robot& r) {
+  const auto wait = [&r](double slice) { return r.host->waitAnswer(slice); };
+  if (r.process) {
+    if (!waitRobot(r, scenario_.attach_timeout_s, wait))
+      throw ProgramError("robot " + r.tag + ": its program (pid " + std::to_string(r.process->pid()) +
+                         ") did not answer on " + r.host->memoryName() + " within attach_timeout " +
+                         formatNumber("%g", scenario_.attach_timeout_s) + " s; log " + r.process->logPath());
+    return;
+  }
   if (!r.host->waitAnswer(0.5)) {
     std::fprintf(stderr,
                  "waiting for robot %s on %s: start its libagent robot program (or `simswift-agent --team %d "
@@ -350,6 +332,72 @@ void Runner::waitForFirstAnswer(Robot& r) {
       throw RunnerError(m.str());
     }
   }
+}
+
+// A launched program is checked between slices of 50 ms (wall clock), so a
+// crash ends the run within a slice, never a hang.
+bool Runner::waitRobot(Robot& r, double timeout_s, const std::function<bool(double)>& wait) {
+  if (!r.process) return wait(timeout_s);
+  constexpr double kSlice = 0.05;  // s
+  for (double waited = 0; waited < timeout_s; waited += kSlice) {
+    if (wait(std::min(kSlice, timeout_s - waited))) return true;
+    checkProcess(r);
+  }
+  return false;
+}
+
+void Runner::checkProcess(Robot& r) {
+  if (r.process && r.process->ended()) throw ProgramError(r.process->endedMessage());
+}
+
+// Each launched robot's program: started with its names, seed and setup
+// filled into its command, its output in program_logs/<tag>.log. It
+// attaches by name like any external program (the first tick waits).
+void Runner::launchPrograms() {
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    Robot& r = *robots_[i];
+    if (!r.spec.launch.launched()) continue;
+    const std::filesystem::path logs(scenario_.program_logs);
+    std::error_code ec;
+    std::filesystem::create_directories(logs, ec);
+    if (ec) throw RunnerError("program_logs: cannot create " + logs.string() + ": " + ec.message());
+    const std::string config = (logs / (r.tag + ".robot.yaml")).string();
+    {
+      std::ofstream out(config);
+      out << ap::robotSetupYaml(robotSetup(scenario_, static_cast<int>(i)));
+      if (!out) throw RunnerError("program_logs: cannot write " + config);
+    }
+    const al::RobotNames& names = r.host->names();
+    // The release's N: the memory name's digits (none for the bare names).
+    const std::string number = names.memory.substr(std::string(al::kMemoryName).size());
+    const std::map<std::string, std::string> values = {
+        {"team", std::to_string(r.spec.team)},
+        {"player", std::to_string(r.spec.player)},
+        {"number", number},
+        {"memory", names.memory},
+        {"semaphore", names.semaphore},
+        {"extension", names.extension},
+        {"seed", std::to_string(programSeed(scenario_.seed, static_cast<int>(i)))},
+        {"config", std::filesystem::absolute(config).string()}};
+    std::vector<std::string> argv;
+    for (const std::string& a : r.spec.launch.command) argv.push_back(ProgramProcess::fill(a, values));
+    argv[0] = ProgramProcess::resolveCommand(argv[0], scenario_.base_dir);
+    std::vector<std::pair<std::string, std::string>> env;
+    for (const auto& [k, v] : r.spec.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
+    try {
+      r.process = std::make_unique<ProgramProcess>(r.tag, argv, ProgramProcess::fill(r.spec.launch.cwd, values), env,
+                                                   (logs / (r.tag + ".log")).string(), r.spec.launch.stop_grace_s);
+    } catch (const std::runtime_error& e) {
+      throw ProgramError(e.what());
+    }
+  }
+}
+
+std::vector<std::string> Runner::programLogs() const {
+  std::vector<std::string> out;
+  for (const auto& r : robots_)
+    if (r && r->process) out.push_back(r->tag + ": " + r->process->logPath());
+  return out;
 }
 
 // The watchdog ends a run only when it is on and no debugger is attached: a
@@ -448,7 +496,7 @@ void Runner::awaitMotion() {
       waitForFirstAnswer(r);
     } else if (r.host->sync() == SyncMode::LockStep) {
       if (runsInline(r)) stepInline(r, true);
-      while (!r.host->waitAnswer(watchdogWait()))
+      while (!waitRobot(r, watchdogWait(), [&r](double s) { return r.host->waitAnswer(s); }))
         if (watchdogArmed()) watchdogFail(r, "motion");
     }
     if (!r.attached) {
@@ -493,8 +541,9 @@ void Runner::cameraFrame(int64_t t_us) {
     for (auto& r : robots_)
       if (r->perception) {
         if (runsInline(*r)) stepInline(*r, false);
-        while (!r->host->waitPerceptionDone(watchdogWait()))
-          if (watchdogArmed()) watchdogFail(*r, "perception");
+        Robot& rr = *r;
+        while (!waitRobot(rr, watchdogWait(), [&rr](double s) { return rr.host->waitPerceptionDone(s); }))
+          if (watchdogArmed()) watchdogFail(rr, "perception");
       }
 }
 
@@ -638,6 +687,11 @@ void Runner::shutdown() {
   stopped_ = true;
   for (auto& r : robots_)
     if (r && r->host) r->host->shutdown();
+  // Launched programs see `shutdown` (simswift-agent exits); any other gets
+  // SIGTERM, then SIGKILL after its stop_grace. Reaped before the hosts
+  // remove their objects.
+  for (auto& r : robots_)
+    if (r && r->process) r->process->stop();
   // The programs stay (threads joined) until the Runner goes: their
   // Blackboards and steps can still be read after run(). A program is
   // destroyed before its host (Robot's member order).

@@ -97,6 +97,11 @@ struct WatchdogError : std::runtime_error {
 struct RunnerError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// A launched robot program ended, crashed or could not be started: the
+// message names the robot, how it ended and its log's last lines.
+struct ProgramError : RunnerError {
+  using RunnerError::RunnerError;
+};
 
 struct RunOptions {
   bool realtime = false;        // pace with the wall clock; external robots free-running
@@ -178,6 +183,8 @@ class Runner {
   // from its Blackboard between ticks; run() assembles the videos.
   void setFindBallView(const sim::views::FindBallRecorderConfig& c) { findball_view_config_ = c; }
   int64_t findBallViewFrames() const { return findball_view_ ? findball_view_->frames() : 0; }
+  // Launched programs' log files, in scenario order ("t19p2: simswift-logs/t19p2.log").
+  std::vector<std::string> programLogs() const;
   // After run(): the overview video line (empty if no overview).
   const std::string& overviewMessage() const { return overview_message_; }
   // Ends the overview (assembles the video) and returns its message; run() calls it.
@@ -202,6 +209,7 @@ class Runner {
     FallDetector fall;  // torso-height fall bookkeeping (statistics only)
     size_t next_push = 0;  // next of spec.pushes to apply
     agent::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
+    std::unique_ptr<ProgramProcess> process;  // a launched program (program: {command: ...})
   };
 
   // Build stages (start(), in this order).
@@ -211,11 +219,16 @@ class Runner {
   void buildTeamAndGame();  // TeamNetwork, GameController (and its UDP sender), the t = 0 game state
   void startCameras();      // if the scenario renders
   void buildVision();       // the vision oracle
+  void launchPrograms();    // per launched robot: its process, with its {config} file
   sensors::SensorConfig sensorConfig() const;
 
   Robot& overrideSlot(int robot, const char* what);
   std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
   void waitForFirstAnswer(Robot& r);
+  // Waits on `wait(slice_s)` up to timeout_s; a launched program that ends
+  // meanwhile ends the run at once (ProgramError). False on timeout.
+  bool waitRobot(Robot& r, double timeout_s, const std::function<bool(double)>& wait);
+  void checkProcess(Robot& r);
   bool runsInline(const Robot& r) const;
   void stepInline(Robot& r, bool motion);
   [[noreturn]] void watchdogFail(const Robot& r, const char* thread) const;

@@ -5,13 +5,15 @@
 #include <filesystem>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
-#include "agent/motion/WalkConfig.hpp"
-#include "sim/runner/BehaviourYaml.hpp"
-#include "sim/world/YamlReader.hpp"
+#include "agent/motion/ActionYaml.hpp"
+#include "agent/behaviour/BehaviourYaml.hpp"
+#include "agent/program/RobotSetup.hpp"
+#include "sim/world/ConfigError.hpp"
 
 #ifndef SIMSWIFT_INSTALL_DATADIR
 #define SIMSWIFT_INSTALL_DATADIR "/usr/local/share/simswift"
@@ -53,11 +55,8 @@ constexpr double kRobotRadius = 0.15;      // m: a NAO's footprint, centre to th
 
 namespace {
 
-// The names a scenario may use, each list once (parsePosture and
-// parseActionType in agent/ map them to the robot code's enums).
-const std::vector<std::string> kPostureNames = {"stand", "crouch", "limp", "zero"};
-const std::vector<std::string> kActionNames = {"walk",       "stand", "kick",   "getup_front", "getup_back",
-                                               "dead",       "crouch", "limp",  "none"};
+// The names a scenario may use, each list once (parsePosture in agent/
+// maps them to the robot code's enum; actions: agent/motion/ActionYaml).
 struct ButtonName {
   const char* name;
   sensors::Button button;
@@ -70,27 +69,6 @@ const ButtonName kButtonNames[] = {{"chest", sensors::Button::Chest},
 std::string resolve(const std::string& base, const std::string& p) {
   if (p.empty() || p[0] == '/' || base.empty()) return p;
   return base + "/" + p;
-}
-
-ScriptStep readStep(const YamlReader& r) {
-  ScriptStep s;
-  s.t_s = r.number("t", Range::closed(0, limits::kMaxTime));
-  const bool has_joint = r.has("joint");
-  const bool has_posture = r.has("posture");
-  if (has_joint == has_posture) r.fail("a script step needs exactly one of 'joint' or 'posture'");
-  if (has_joint) {
-    const std::string name = r.string("joint");
-    s.joint = agent::program::jointIndex(name);
-    if (s.joint < 0) r.fail("joint", "unknown joint '" + name + "' (use NAO names, e.g. HeadYaw)");
-    s.angle = static_cast<float>(r.number("angle", Range::closed(-limits::kMaxJointAngle, limits::kMaxJointAngle)));
-    s.duration_s = r.number("duration", 0.0, Range::closed(0, limits::kMaxTime));
-    if (r.has("stiffness")) s.stiffness = static_cast<float>(r.number("stiffness", Range::closed(-1, 1)));
-  } else {
-    const std::string p = r.choice("posture", "stand", kPostureNames);
-    s.posture = *agent::program::parsePosture(p);
-  }
-  r.finish();
-  return s;
 }
 
 sensors::Button buttonNamed(const YamlReader& r, const std::string& key) {
@@ -143,27 +121,7 @@ void readAction(const YamlReader& r, RobotSpec& rs) {
     r.finish();
     return;
   }
-  agent::motion::ActionStep a;
-  a.t = t;
-  const std::string name = r.choice("action", "stand", kActionNames);
-  agent::motion::parseActionType(name, &a.body.type);
-  // The walk's own limits (WalkConfig, one home): faster requests are
-  // refused rather than clamped in silence.
-  const agent::motion::WalkConfig walk;
-  a.body.forward = static_cast<float>(r.number("forward", 0.0, Range::closed(-walk.max_forward, walk.max_forward)));
-  a.body.left = static_cast<float>(r.number("left", 0.0, Range::closed(-walk.max_left, walk.max_left)));
-  a.body.turn = static_cast<float>(r.number("turn", 0.0, Range::closed(-walk.max_turn, walk.max_turn)));
-  a.body.kick_power = static_cast<float>(r.number("power", 1.0, Range::closed(0, 1)));
-  a.body.kick_direction = static_cast<float>(r.number("direction", 0.0, Range::closed(-M_PI, M_PI)));
-  a.body.foot = r.choice("foot", "right", {"left", "right"}) == "left" ? agent::blackboard::Foot::LEFT
-                                                                      : agent::blackboard::Foot::RIGHT;
-  if (r.has("head_yaw") || r.has("head_pitch")) {
-    a.has_head = true;
-    a.head.yaw = static_cast<float>(r.number("head_yaw", 0.0, Range::closed(-M_PI, M_PI)));
-    a.head.pitch = static_cast<float>(r.number("head_pitch", 0.0, Range::closed(-M_PI, M_PI)));
-  }
-  r.finish();
-  rs.actions.push_back(a);
+  rs.actions.push_back(agent::motion::readBodyAction(r, t));
 }
 
 // One entry of a robot's `buttons:` list.
@@ -260,6 +218,72 @@ void readLibagent(const YamlReader& r, RobotSpec& rs) {
 
 }  // namespace
 
+void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir) {
+  rs.program = RobotSpec::Program::Builtin;
+  if (!robot.has("program") || !robot.node()["program"].IsMap()) {
+    rs.program = robot.choice("program", "builtin", {"builtin", "external"}) == "external"
+                     ? RobotSpec::Program::External
+                     : RobotSpec::Program::Builtin;
+    return;
+  }
+  rs.program = RobotSpec::Program::External;
+  const YamlReader p = robot.map("program");
+  const YAML::Node cmd = p.node()["command"];
+  if (!cmd.IsDefined()) p.fail("command", "a launched program needs command: [path, args...]");
+  if (!cmd.IsSequence() || cmd.size() == 0) p.fail("command", "must be a non-empty list: [path, args...]");
+  for (const YAML::Node& a : cmd) {
+    if (!a.IsScalar()) p.fail("command", "every element must be a string");
+    rs.launch.command.push_back(a.Scalar());
+  }
+  (void)p.has("command");
+  rs.launch.cwd = p.string("cwd", "");
+  if (!rs.launch.cwd.empty() && rs.launch.cwd[0] != '/')
+    rs.launch.cwd = (std::filesystem::path(base_dir.empty() ? "." : base_dir) / rs.launch.cwd).string();
+  if (rs.launch.cwd.empty()) rs.launch.cwd = base_dir.empty() ? "." : base_dir;
+  if (auto env = p.optionalMap("env")) {
+    for (const auto& kv : env->node()) {
+      const std::string key = kv.first.Scalar();
+      if (key.empty() || key.find('=') != std::string::npos) env->fail(key, "not an environment variable name");
+      if (!kv.second.IsScalar()) env->fail(key, "expected a string value");
+      (void)env->has(key);
+      rs.launch.env.emplace_back(key, kv.second.Scalar());
+    }
+  }
+  rs.launch.stop_grace_s = p.number("stop_grace", 2.0, Range::closed(0, 60));
+  // Placeholders are checked now, not when the run starts.
+  std::map<std::string, std::string> names;
+  for (const char* k : {"team", "player", "number", "memory", "semaphore", "extension", "seed", "config"})
+    names[k] = "x";
+  try {
+    for (const std::string& a : rs.launch.command) ProgramProcess::fill(a, names);
+    ProgramProcess::fill(rs.launch.cwd, names);
+    for (const auto& [k, v] : rs.launch.env) ProgramProcess::fill(v, names);
+  } catch (const std::runtime_error& e) {
+    p.fail("command", e.what());
+  }
+  p.finish();
+}
+
+uint64_t programSeed(uint64_t seed, int index) { return seed * 1000003ULL + static_cast<uint64_t>(index); }
+
+agent::program::RobotSetup robotSetup(const Scenario& sc, int index) {
+  const RobotSpec& r = sc.robots[index];
+  agent::program::RobotSetup s;
+  s.team = r.team;
+  s.player = r.player;
+  s.seed = programSeed(sc.seed, index);
+  if (r.behaviour) s.start = agent::blackboard::FieldPose{r.x * 1000.0, r.y * 1000.0, r.theta};
+  s.behaviour = r.behaviour;
+  s.behaviour_yaml = r.behaviour_yaml;
+  s.actions = r.actions;
+  // Pushes only: a NONE step keeps the script's STAND (the body is pushed,
+  // the Motion module runs).
+  if (!r.behaviour && s.actions.empty() && !r.pushes.empty()) s.actions.push_back({});
+  s.posture = r.posture;
+  s.script = r.script;
+  return s;
+}
+
 void readActions(const YamlReader& robot, RobotSpec& rs) {
   for (const YamlReader& a : robot.list("actions")) readAction(a, rs);
   std::stable_sort(rs.pushes.begin(), rs.pushes.end(),
@@ -335,6 +359,8 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     sc.watchdog_s = top.number("watchdog", 5.0, Range::openClosed(0, limits::kMaxWallClock));
   }
   sc.attach_timeout_s = top.number("attach_timeout", 30.0, Range::openClosed(0, limits::kMaxWallClock));
+  sc.program_logs = top.string("program_logs", sc.program_logs);
+  if (sc.program_logs.empty()) top.fail("program_logs", "must name a folder");
 
   // noise: on/off, or a map of switches.
   if (top.has("noise")) {
@@ -447,22 +473,22 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     rs.x = r.number("x", 0.0, pos);
     rs.y = r.number("y", 0.0, pos);
     rs.theta = r.number("theta", 0.0, Range::closed(-limits::kMaxHeading, limits::kMaxHeading));
-    rs.posture = *agent::program::parsePosture(r.choice("posture", "stand", kPostureNames));
-    rs.program = r.choice("program", "builtin", {"builtin", "external"}) == "external"
-                     ? RobotSpec::Program::External
-                     : RobotSpec::Program::Builtin;
+    rs.posture = *agent::program::parsePosture(r.choice("posture", "stand", agent::program::postureNames()));
+    readProgram(r, rs, sc.base_dir);
     if (r.has("script")) {
-      if (rs.program == RobotSpec::Program::External)
-        r.fail("script", "an external robot runs its own program; a script needs program: builtin");
-      for (const YamlReader& s : r.list("script")) rs.script.push_back(readStep(s));
+      if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
+        r.fail("script", "an external robot runs its own program; a script needs program: builtin (or a "
+                         "launched program, which gets it in its {config} file)");
+      for (const YamlReader& s : r.list("script")) rs.script.push_back(agent::program::readScriptStep(s));
     }
     if (r.has("buttons"))
       for (const YamlReader& b : r.list("buttons")) rs.buttons.push_back(readButton(b));
     if (r.has("actions")) {
       readActions(r, rs);
-      if (!rs.actions.empty() && rs.program == RobotSpec::Program::External)
+      if (!rs.actions.empty() && rs.program == RobotSpec::Program::External && !rs.launch.launched())
         r.fail("actions", "an external robot runs its own program; body actions need program: builtin "
-                          "(pushes, clicks and presses are fine)");
+                          "or a launched program, which gets them in its {config} file (pushes, clicks and "
+                          "presses are fine)");
       if (!rs.actions.empty() && !rs.script.empty())
         r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
     }
@@ -470,9 +496,10 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
       r.fail("libagent", "the builtin robot program speaks the 2017 block; release " +
                              std::to_string(bridge::releaseYear(rs.release)) + " needs program: external");
     if (r.has("behaviour")) {
-      if (rs.program == RobotSpec::Program::External)
-        r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin");
-      rs.behaviour = readBehaviour(r);
+      if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
+        r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin (or a "
+                            "launched program, which gets it in its {config} file)");
+      rs.behaviour = agent::behaviour::readBehaviour(r, &rs.behaviour_yaml);
       if (rs.behaviour && !rs.actions.empty())
         r.fail("actions", std::string("a robot with behaviour ") + agent::behaviour::behaviourKindName(rs.behaviour->kind) +
                               " takes no body actions (pushes only); use behaviour: script");

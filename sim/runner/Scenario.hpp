@@ -8,6 +8,7 @@
 //                                  # {gyro, accel, angle, fsr, sonar, encoder: on/off}
 //   watchdog: 5                    # s of wall clock a robot thread may take, or off
 //   attach_timeout: 30             # s of wall clock to wait for external robots
+//   program_logs: simswift-logs    # folder of launched programs' logs (<tag>.log) and setups
 //   base_dir: /path/to/simswift    # optional; where relative model/field paths resolve first
 //   physics: {substeps: 2, solver: quick|exact, iterations: 20}  (defaults: WorldConfig)
 //   camera:                        # rendering is off unless asked (here or by CLI flags)
@@ -23,7 +24,7 @@
 //     - {team: 19, player: 1, x: -1.0, y: 0.0, theta: 0.0,  # m, m, rad (field frame)
 //        colour: blue,                 # side of the match (blue or red), see below
 //        names: simulation,            # libagent names: simulation (N = team x 11 + player) or bare
-//        posture: stand, program: builtin,
+//        posture: stand, program: builtin,   # or external, or {command: [...]} (ProgramProcess.hpp)
 //        script: [{t: 2.0, joint: HeadYaw, angle: 0.5, duration: 0.5}],
 //        buttons: [{t: 3.0, button: chest, duration: 0.1}],
 //        actions: [{t: 1.0, action: walk, forward: 300, left: 0, turn: 0},  # mm/s, rad/s
@@ -72,18 +73,23 @@
 #include "agent/motion/ActionScript.hpp"
 #include "agent/program/MotionGenerator.hpp"
 #include "agent/program/Postures.hpp"
+#include "agent/program/RobotSetup.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/bridge/LibagentBehaviour.hpp"
 #include "sim/bridge/Releases.hpp"
 #include "sim/network/TeamNetwork.hpp"
+#include "sim/runner/ProgramProcess.hpp"
 #include "sim/sensors/Buttons.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/FieldConfig.hpp"
 #include "sim/world/World.hpp"
 
-namespace simswift {
+namespace agent::config {
 class YamlReader;
+}
+namespace simswift {
+using agent::config::YamlReader;
 }
 
 namespace simswift::runner {
@@ -103,7 +109,11 @@ struct RobotSpec {
   bridge::Release release = bridge::Release::R2017;
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
   agent::program::Posture posture = agent::program::Posture::Stand;
+  // builtin: agent/'s program in this process; external: a program
+  // attached by name (started by hand, or by simswift when `launch` has a
+  // command: sim/runner/ProgramProcess.hpp).
   enum class Program { Builtin, External } program = Program::Builtin;
+  LaunchSpec launch;
   std::vector<agent::program::ScriptStep> script;
   // Body actions over time, run by the Motion module (agent/motion), e.g.
   //   actions: [{t: 1, action: walk, forward: 300, left: 0, turn: 0},
@@ -117,6 +127,7 @@ struct RobotSpec {
   // behaviour: the robot code's behaviour (agent/behaviour); empty = script
   // (the actions above).
   std::optional<agent::behaviour::BehaviourConfig> behaviour;
+  std::string behaviour_yaml;  // the same as flow YAML (a launched program's {config} file)
   struct Push { double t_s = 0, jx = 0, jy = 0; };  // s, N*s, N*s
   std::vector<Push> pushes;
   // Touch sensors pressed by the scenario (any program), e.g.
@@ -164,6 +175,7 @@ struct Scenario {
   NoiseSwitches noise;
   double watchdog_s = 5.0;        // wall-clock s per robot thread answer; 0 = off (watchdog: off)
   double attach_timeout_s = 30.0; // wall-clock s to wait for external robots
+  std::string program_logs = "simswift-logs";  // launched programs' logs (relative: to the working folder)
   // Physics defaults follow WorldConfig (QuickStep, 2 x 5 ms; World.cpp says why).
   int substeps = WorldConfig{}.substeps;
   std::string solver = WorldConfig{}.solver == WorldConfig::Solver::Quick ? "quick" : "exact";
@@ -197,6 +209,20 @@ struct Scenario {
 // A robot entry's `actions:` list into rs.actions and rs.pushes (also the
 // experiment files' script robots, sim/experiment).
 void readActions(const YamlReader& robot, RobotSpec& rs);
+
+// A robot entry's `program:` (builtin, external, or {command: [...], cwd,
+// env, stop_grace}) into rs.program and rs.launch; relative paths resolve
+// against base_dir (also the experiment files' robots).
+void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir);
+
+// The seed of robot `index`'s program (its filters' random source) in a
+// run with seed `seed`: one derivation for builtin and launched programs.
+uint64_t programSeed(uint64_t seed, int index);
+
+// What robot `index` of `sc` is set up with (agent/program/RobotSetup.hpp):
+// what a builtin program is composed from and what a launched program's
+// {config} file holds.
+agent::program::RobotSetup robotSetup(const Scenario& sc, int index);
 
 // Where relative model/field paths resolve after the scenario's folder:
 // $SIMSWIFT_DATA_DIR, <exe>/../share/simswift, <exe>/share/simswift (the

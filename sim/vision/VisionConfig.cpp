@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "sim/world/YamlReader.hpp"
+#include "sim/world/ConfigError.hpp"
 
 namespace simswift::vision {
 

@@ -31,8 +31,11 @@
 #include <array>
 #include <string>
 
-namespace simswift {
+namespace agent::config {
 class YamlReader;
+}
+namespace simswift {
+using agent::config::YamlReader;
 }
 
 namespace simswift::vision {

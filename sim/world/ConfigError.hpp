@@ -1,14 +1,17 @@
-// The error every configuration loader (field, scenario) throws for bad
-// input. Its message always names the file, the line and the key path, e.g.
-//   fields/x.yaml:12: field.ball.mass: must be > 0 (got -1)
+// The simulator reads its configuration files (field, scenario, experiment)
+// with the robot code's YAML reader and error type (agent/config): one
+// reader and one error for every file simswift or its robot program reads,
+// each error naming the file, the line and the key path.
 #pragma once
 
-#include <stdexcept>
+#include "agent/config/ConfigError.hpp"
+#include "agent/config/YamlReader.hpp"
 
 namespace simswift {
 
-struct ConfigError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using agent::config::ConfigError;
+using agent::config::kMaxConfigBytes;
+using agent::config::Range;
+using agent::config::YamlReader;
 
 }  // namespace simswift

@@ -15,7 +15,7 @@
 #include <cmath>
 
 #include "sim/world/FieldConfig.hpp"
-#include "sim/world/YamlReader.hpp"
+#include "sim/world/ConfigError.hpp"
 
 namespace simswift {
 

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "FindBallHarness.hpp"
-#include "sim/runner/BehaviourYaml.hpp"
+#include "agent/behaviour/BehaviourYaml.hpp"
 
 using simswift::ConfigError;
 using simswift::runner::Runner;
@@ -109,14 +109,14 @@ TEST(BehaviourScenario, ShippedFindBallScenariosLoad) {
 }
 
 TEST(BehaviourScenario, FromKindAndOverrideText) {
-  const auto c = simswift::runner::behaviourFromText("findball2016", "{search: {spin_at_point: off}}", "exp.yaml");
+  const auto c = agent::behaviour::behaviourFromText("findball2016", "{search: {spin_at_point: off}}", "exp.yaml");
   ASSERT_TRUE(c);
   EXPECT_EQ(c->kind, ab::BehaviourKind::FINDBALL_2016);
   EXPECT_FALSE(c->search.spin_at_point);
-  EXPECT_EQ(simswift::runner::behaviourFromText("findball2017", "", "exp.yaml")->kind, ab::BehaviourKind::FINDBALL_2017);
-  EXPECT_FALSE(simswift::runner::behaviourFromText("script", "", "exp.yaml"));
+  EXPECT_EQ(agent::behaviour::behaviourFromText("findball2017", "", "exp.yaml")->kind, ab::BehaviourKind::FINDBALL_2017);
+  EXPECT_FALSE(agent::behaviour::behaviourFromText("script", "", "exp.yaml"));
   try {
-    simswift::runner::behaviourFromText("striker", "{skills: {bogus: 1}}", "exp.yaml");
+    agent::behaviour::behaviourFromText("striker", "{skills: {bogus: 1}}", "exp.yaml");
     ADD_FAILURE() << "unknown key accepted";
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("bogus"), std::string::npos) << e.what();

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/world/FieldConfig.hpp"
-#include "sim/world/YamlReader.hpp"
+#include "sim/world/ConfigError.hpp"
 
 using namespace simswift;
 

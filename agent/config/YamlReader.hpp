@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/world/ConfigError.hpp"
+#include "agent/config/ConfigError.hpp"
 
-namespace simswift {
+namespace agent::config {
 
 // Allowed interval for a number; the bounds are checked and quoted in errors.
 struct Range {
@@ -113,4 +113,4 @@ class YamlReader {
   mutable std::vector<std::string> known_;  // keys asked for, in order
 };
 
-}  // namespace simswift
+}  // namespace agent::config

@@ -1,5 +1,5 @@
 // Typed YAML reading with file:line:key errors. See YamlReader.hpp.
-#include "sim/world/YamlReader.hpp"
+#include "agent/config/YamlReader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace simswift {
+namespace agent::config {
 
 namespace {
 
@@ -259,4 +259,4 @@ void YamlReader::finish() const {
   }
 }
 
-}  // namespace simswift
+}  // namespace agent::config

@@ -1,4 +1,5 @@
-// A robot's `behaviour:` in a scenario (agent/behaviour/BehaviourConfig.hpp):
+// A robot's `behaviour:` in a scenario or in the robot program's own config
+// file (agent/behaviour/BehaviourConfig.hpp):
 //
 //   behaviour: findball2017            # or findball2016, striker, script
 //   behaviour: {kind: findball2017,    # with overrides of any config field
@@ -16,19 +17,20 @@
 #include <optional>
 
 #include "agent/behaviour/BehaviourConfig.hpp"
-#include "sim/world/YamlReader.hpp"
+#include "agent/config/YamlReader.hpp"
 
-namespace simswift::runner {
+namespace agent::behaviour {
 
 // `behaviour` of robot map `robot` (which must have the key). Returns empty
-// for `script`.
-std::optional<agent::behaviour::BehaviourConfig> readBehaviour(const YamlReader& robot);
+// for `script`. `yaml` (if not null): the behaviour as flow YAML, kind
+// included, to write into another file (a robot program's config).
+std::optional<BehaviourConfig> readBehaviour(const config::YamlReader& robot, std::string* yaml = nullptr);
 
 // The same from a kind name and the overrides as YAML flow text (e.g.
 // "{strategy: {distributed: off}}"; "" = none), for callers holding them
 // apart (the experiment's robots). Errors name `source`. Empty for script.
-std::optional<agent::behaviour::BehaviourConfig> behaviourFromText(const std::string& kind,
-                                                                   const std::string& overrides,
-                                                                   const std::string& source);
+std::optional<BehaviourConfig> behaviourFromText(const std::string& kind,
+                                                const std::string& overrides, const std::string& source,
+                                                std::string* yaml = nullptr);
 
-}  // namespace simswift::runner
+}  // namespace agent::behaviour

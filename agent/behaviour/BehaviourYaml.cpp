@@ -1,10 +1,12 @@
-#include "sim/runner/BehaviourYaml.hpp"
+#include "agent/behaviour/BehaviourYaml.hpp"
 
 #include "agent/behaviour/SearchPayload.hpp"
 
-namespace simswift::runner {
+namespace agent::behaviour {
 
 namespace ab = agent::behaviour;
+using config::Range;
+using config::YamlReader;
 
 namespace {
 
@@ -115,8 +117,13 @@ const std::vector<std::string>& kindNames() {
 
 }  // namespace
 
-std::optional<ab::BehaviourConfig> readBehaviour(const YamlReader& robot) {
+std::optional<ab::BehaviourConfig> readBehaviour(const YamlReader& robot, std::string* yaml) {
   ab::BehaviourConfig c;
+  if (yaml) {
+    YAML::Emitter e;
+    e << YAML::Flow << robot.node()["behaviour"];
+    *yaml = e.c_str();
+  }
   std::string kind;
   std::optional<YamlReader> m;
   if (robot.node()["behaviour"].IsMap()) {
@@ -146,16 +153,16 @@ std::optional<ab::BehaviourConfig> readBehaviour(const YamlReader& robot) {
 }
 
 std::optional<ab::BehaviourConfig> behaviourFromText(const std::string& kind, const std::string& overrides,
-                                                     const std::string& source) {
+                                                     const std::string& source, std::string* yaml) {
   YAML::Node b = overrides.empty() ? YAML::Node(YAML::NodeType::Map) : YamlReader::parse(overrides, source);
   if (!b.IsMap()) YamlReader(b, source).fail("behaviour overrides must be a map");
   b["kind"] = kind;
   YAML::Node robot(YAML::NodeType::Map);
   robot["behaviour"] = b;
   const YamlReader r(robot, source);
-  auto c = readBehaviour(r);
+  auto c = readBehaviour(r, yaml);
   r.finish();
   return c;
 }
 
-}  // namespace simswift::runner
+}  // namespace agent::behaviour

@@ -1,0 +1,72 @@
+// How the reference robot program is set up: who it is, its random seed,
+// and what it does (a behaviour, timed body actions, or a posture with a
+// joint script). The one place the standard program is composed from it
+// (composeProgram), whether it runs in the simulator's process (`program:
+// builtin`) or as simswift-agent in its own (`program: {command: ...}`), so
+// both run the same modules with the same configuration.
+//
+// Its config file (simswift-agent --config FILE), every key optional:
+//
+//   team: 19                 # SPL team number
+//   player: 2
+//   seed: 1000003            # the filters' random source
+//   start: {x: -3.0, y: 1.5, theta: 0}   # m, m, rad (field frame): a known
+//                                        # start pose for localisation
+//   behaviour: findball2017  # or {kind: findball2017, <overrides>}
+//                            # (agent/behaviour/BehaviourYaml.hpp)
+//   actions: [...]           # timed body actions (agent/motion/ActionYaml.hpp)
+//   posture: stand           # stand, crouch, limp, zero: held when nothing else
+//   script: [{t: 1, joint: HeadYaw, angle: 0.5}]  # joints over time
+//
+// Errors name the file, the line and the key (agent/config/ConfigError.hpp).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "agent/behaviour/BehaviourConfig.hpp"
+#include "agent/blackboard/Localisation.hpp"
+#include "agent/config/YamlReader.hpp"
+#include "agent/motion/ActionScript.hpp"
+#include "agent/program/ModuleOrder.hpp"
+#include "agent/program/MotionGenerator.hpp"
+#include "agent/program/Postures.hpp"
+
+namespace agent::program {
+
+struct RobotSetup {
+  int team = 0, player = 1;
+  uint64_t seed = 1;
+  // Localisation's known start pose (mm, mm, rad; field frame); used with a
+  // behaviour, as a team placing its robots on a test field configures it.
+  std::optional<blackboard::FieldPose> start;
+  std::optional<behaviour::BehaviourConfig> behaviour;  // wins over actions and script
+  std::string behaviour_yaml;  // the behaviour as its file wrote it (flow YAML), to write it on
+  std::vector<motion::ActionStep> actions;
+  Posture posture = Posture::Stand;
+  std::vector<ScriptStep> script;
+};
+
+// The standard program (agent/program/ModuleOrder) for `s`: with a behaviour
+// the behaviour module plans with the walk's top speeds; with actions the
+// scripted behaviour runs them through the Motion module; otherwise Motion
+// is the scripted posture and joint steps. `motion` (may be null) replaces
+// the Motion module (a test's generator).
+ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<MotionGenerator> motion = nullptr);
+
+// The posture names the files use.
+const std::vector<std::string>& postureNames();
+// One `script:` entry: {t, joint, angle[, duration, stiffness]} or {t, posture}.
+ScriptStep readScriptStep(const config::YamlReader& r);
+
+// Reads the config file (format above). Throws config::ConfigError.
+RobotSetup readRobotSetup(const std::string& path);
+// Reads map `r` into `s` (keys absent keep s's values) and finishes it.
+void readRobotSetup(const config::YamlReader& r, RobotSetup& s);
+// The config file's text for `s` (read back by readRobotSetup to an equal
+// setup; the behaviour from behaviour_yaml).
+std::string robotSetupYaml(const RobotSetup& s);
+
+}  // namespace agent::program

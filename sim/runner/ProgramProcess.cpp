@@ -1,0 +1,209 @@
+#include "sim/runner/ProgramProcess.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <thread>
+
+namespace simswift::runner {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string describe(int status) {
+  if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status))
+    return "killed by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+  return "ended (wait status " + std::to_string(status) + ")";
+}
+
+}  // namespace
+
+std::string ProgramProcess::fill(const std::string& text, const std::map<std::string, std::string>& values) {
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    if (text[i] != '{') {
+      out += text[i++];
+      continue;
+    }
+    const size_t close = text.find('}', i);
+    if (close == std::string::npos) throw std::runtime_error("unclosed '{' in '" + text + "'");
+    const std::string name = text.substr(i + 1, close - i - 1);
+    const auto it = values.find(name);
+    if (it == values.end()) {
+      std::string known;
+      for (const auto& [k, v] : values) known += (known.empty() ? "{" : ", {") + k + "}";
+      throw std::runtime_error("unknown placeholder {" + name + "} in '" + text + "' (known: " + known + ")");
+    }
+    out += it->second;
+    i = close + 1;
+  }
+  return out;
+}
+
+std::string ProgramProcess::resolveCommand(const std::string& name, const std::string& base) {
+  if (name.find('/') != std::string::npos) {
+    if (name[0] == '/' || base.empty()) return name;
+    return (fs::path(base) / name).lexically_normal().string();
+  }
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec)
+    for (const fs::path& dir : {exe.parent_path(), exe.parent_path().parent_path()})
+      if (access((dir / name).c_str(), X_OK) == 0) return (dir / name).string();
+  return name;  // PATH
+}
+
+ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>& argv, const std::string& cwd,
+                               const std::vector<std::pair<std::string, std::string>>& env, std::string log_path,
+                               double stop_grace_s)
+    : robot_(std::move(robot)), log_path_(std::move(log_path)), stop_grace_s_(stop_grace_s) {
+  if (argv.empty()) throw std::runtime_error("robot " + robot_ + ": program: empty command");
+  std::error_code ec;
+  if (fs::path(log_path_).has_parent_path()) fs::create_directories(fs::path(log_path_).parent_path(), ec);
+  const int log = open(log_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (log < 0)
+    throw std::runtime_error("robot " + robot_ + ": cannot write the program's log " + log_path_ + ": " +
+                             std::strerror(errno));
+  int report[2];  // the exec's errno, if it fails (closed on a successful exec)
+  if (pipe2(report, O_CLOEXEC) != 0) {
+    close(log);
+    throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  }
+  // Everything the child needs, built before fork (no allocation after it).
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  std::vector<std::string> env_strings;
+  for (const auto& [k, v] : env) env_strings.push_back(k + "=" + v);
+  std::vector<char*> envp;
+  for (char** e = environ; *e; ++e) {
+    bool replaced = false;
+    for (const auto& [k, v] : env)
+      if (std::strncmp(*e, k.c_str(), k.size()) == 0 && (*e)[k.size()] == '=') replaced = true;
+    if (!replaced) envp.push_back(*e);
+  }
+  for (std::string& s : env_strings) envp.push_back(s.data());
+  envp.push_back(nullptr);
+  const pid_t parent = getpid();
+  pid_ = fork();
+  if (pid_ < 0) {
+    const int e = errno;
+    close(log), close(report[0]), close(report[1]);
+    throw std::runtime_error(std::string("fork: ") + std::strerror(e));
+  }
+  if (pid_ == 0) {
+    setpgid(0, 0);                     // its own group: stop() reaches its children
+    prctl(PR_SET_PDEATHSIG, SIGKILL);  // simswift killed: the program goes too
+    if (getppid() != parent) _exit(127);
+    signal(SIGINT, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
+    dup2(log, STDOUT_FILENO);
+    dup2(log, STDERR_FILENO);
+    const int devnull = open("/dev/null", O_RDONLY);
+    if (devnull >= 0) dup2(devnull, STDIN_FILENO);
+    int err = 0;
+    if (!cwd.empty() && chdir(cwd.c_str()) != 0) err = errno;
+    if (err == 0) {
+      execvpe(args[0], args.data(), envp.data());
+      err = errno;
+    }
+    ssize_t w = write(report[1], &err, sizeof err);
+    (void)w;
+    _exit(127);
+  }
+  close(log);
+  close(report[1]);
+  int err = 0;
+  ssize_t n;
+  do n = read(report[0], &err, sizeof err);
+  while (n < 0 && errno == EINTR);
+  close(report[0]);
+  if (n == static_cast<ssize_t>(sizeof err)) {
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    reaped_ = true;
+    throw std::runtime_error("robot " + robot_ + ": cannot start its program '" + argv[0] + "'" +
+                             (cwd.empty() ? "" : " in " + cwd) + ": " + std::strerror(err));
+  }
+}
+
+ProgramProcess::~ProgramProcess() { stop(); }
+
+std::optional<std::string> ProgramProcess::ended() {
+  if (how_ || reaped_) return how_;
+  int status = 0;
+  const pid_t r = waitpid(pid_, &status, WNOHANG);
+  if (r == pid_) {
+    reaped_ = true;
+    how_ = describe(status);
+  }
+  return how_;
+}
+
+std::string ProgramProcess::endedMessage() {
+  const std::optional<std::string> how = ended();
+  std::string m = "robot " + robot_ + ": its program (pid " + std::to_string(pid_) + ") " +
+                  (how ? *how : std::string("is still running")) + "; log " + log_path_;
+  const std::string last = tail(log_path_, 8);
+  if (!last.empty()) m += ", last lines:\n" + last;
+  return m;
+}
+
+void ProgramProcess::stop() {
+  if (pid_ <= 0 || reaped_) return;
+  using Clock = std::chrono::steady_clock;
+  kill(-pid_, SIGTERM);
+  kill(pid_, SIGTERM);
+  // Wall clock: only how long a program may take to exit, never simulation.
+  const auto deadline = Clock::now() + std::chrono::duration<double>(stop_grace_s_);
+  while (!ended() && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (!ended()) {
+    kill(-pid_, SIGKILL);
+    kill(pid_, SIGKILL);
+    int status = 0;
+    while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    reaped_ = true;
+    how_ = describe(status);
+  }
+  kill(-pid_, SIGKILL);  // anything it left in its group
+}
+
+std::string ProgramProcess::tail(const std::string& path, int lines) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const std::streamoff from = std::max<std::streamoff>(0, size - 4096);
+  in.seekg(from);
+  std::string text(static_cast<size_t>(size - from), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  size_t pos = text.size();
+  for (int k = 0; k < lines && pos != std::string::npos && pos > 0; ++k) pos = text.rfind('\n', pos - 1);
+  std::string out = pos == std::string::npos ? text : text.substr(pos + 1);
+  std::string indented;
+  size_t start = 0;
+  while (start <= out.size() && !out.empty()) {
+    const size_t nl = out.find('\n', start);
+    indented += "  | " + out.substr(start, nl == std::string::npos ? std::string::npos : nl - start) + "\n";
+    if (nl == std::string::npos) break;
+    start = nl + 1;
+  }
+  if (!indented.empty()) indented.pop_back();
+  return indented;
+}
+
+}  // namespace simswift::runner

@@ -1,0 +1,78 @@
+// A robot program simswift starts itself (`program: {command: [...]}`): its
+// process, started with the robot's names and setup filled into the command,
+// its output in a log file, watched while the run waits for it, and stopped
+// at the end (SIGTERM, then SIGKILL after stop_grace s), reaped.
+//
+//   program: {command: [simswift-agent, --config, "{config}"],   # argv
+//             cwd: DIR, env: {KEY: VALUE}, stop_grace: 2}
+//
+// Placeholders in the command, cwd and env values: {team}, {player},
+// {number} (libagent's N = team x 11 + player), {memory}, {semaphore} (the
+// robot's libagent object names), {extension} (simswift's extension object),
+// {seed} (the program's seed, as a builtin program gets it), {config} (a
+// file with the robot's setup as the builtin program gets it:
+// agent/program/RobotSetup.hpp). A relative command path, or a bare name
+// found beside the simswift executable (simswift-agent), resolves against
+// the scenario's folder or that folder; other bare names go through PATH.
+#pragma once
+
+#include <sys/types.h>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace simswift::runner {
+
+struct LaunchSpec {
+  std::vector<std::string> command;  // argv (placeholders allowed); empty = not launched
+  std::string cwd;                   // "" = the scenario's folder
+  std::vector<std::pair<std::string, std::string>> env;  // added to simswift's environment
+  double stop_grace_s = 2;           // s between SIGTERM and SIGKILL at the end
+  bool launched() const { return !command.empty(); }
+};
+
+class ProgramProcess {
+ public:
+  // Starts `argv` (placeholders already filled) in `cwd` with `env` added,
+  // stdout and stderr into `log_path` (created; its folder too). The child
+  // leads its own process group and is killed if simswift dies
+  // (PR_SET_PDEATHSIG). Throws std::runtime_error naming the program if the
+  // command cannot be started (not found, not executable: the exec error).
+  ProgramProcess(std::string robot, const std::vector<std::string>& argv, const std::string& cwd,
+                 const std::vector<std::pair<std::string, std::string>>& env, std::string log_path,
+                 double stop_grace_s);
+  ~ProgramProcess();  // stop()
+  ProgramProcess(const ProgramProcess&) = delete;
+  ProgramProcess& operator=(const ProgramProcess&) = delete;
+
+  pid_t pid() const { return pid_; }
+  const std::string& logPath() const { return log_path_; }
+  // Empty while it runs; once it has ended, how: "exited with status 3",
+  // "killed by signal 11 (Segmentation fault)". Non-blocking (reaps).
+  std::optional<std::string> ended();
+  // The run's error for a program that ended early: robot, how it ended,
+  // the log's path and its last lines.
+  std::string endedMessage();
+  // SIGTERM to its group, SIGKILL after the grace, reaped. Idempotent.
+  void stop();
+
+  // The log's last `lines` lines (at most 4 KiB read).
+  static std::string tail(const std::string& path, int lines);
+  // Replaces {name} by values[name]; an unknown {name} is an error naming it.
+  static std::string fill(const std::string& text, const std::map<std::string, std::string>& values);
+  // The executable for command[0]: a path with '/' resolves against `base`;
+  // a bare name is taken from beside this executable if there, else left to PATH.
+  static std::string resolveCommand(const std::string& name, const std::string& base);
+
+ private:
+  std::string robot_;
+  std::string log_path_;
+  double stop_grace_s_;
+  pid_t pid_ = -1;
+  bool reaped_ = false;
+  std::optional<std::string> how_;
+};
+
+}  // namespace simswift::runner
