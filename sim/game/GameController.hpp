@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "agent/libagent/GameState.hpp"
+#include "sim/game/GameControllerUdp.hpp"
 
 namespace simswift::game {
 
@@ -45,6 +46,9 @@ struct GameConfig {
   enum class Return { Previous, Sideline } on_unpenalise = Return::Previous;
   std::vector<StateChange> timeline;     // sorted by t_s
   std::vector<PenaltyEvent> penalties;   // sorted by t_s
+  // The SPL GameController's UDP packets besides the extension block
+  // (off by default; sim/game/GameControllerUdp.hpp).
+  GameUdpConfig udp;
 };
 
 struct GameEvent {

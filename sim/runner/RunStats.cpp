@@ -25,6 +25,13 @@ std::string RunStats::summary() const {
   if (nan_commands || clamped_angles || clamped_stiffness)
     s << " | nan " << nan_commands << " clamped " << clamped_angles << "+" << clamped_stiffness;
   if (skipped_cycles) s << " | skipped " << skipped_cycles;
+  if (gc_udp_sent || gc_udp_failed || !gc_returns.empty()) {
+    s << " | gc udp " << gc_udp_sent << " sent";
+    if (gc_udp_failed) s << " (" << gc_udp_failed << " failed)";
+    for (size_t i = 0; i < gc_returns.size(); ++i)
+      s << (i == 0 ? ", returns " : " ") << "t" << gc_returns[i].team << "p" << gc_returns[i].player << " "
+        << gc_returns[i].packets;
+  }
   s << " | hash " << hashHex(hash);
   return s.str();
 }

@@ -20,6 +20,16 @@ struct RunStats {
   int64_t clamped_stiffness = 0;
   int64_t skipped_cycles = 0;
   uint64_t hash = 0;         // World::stateHash() at the end
+  // The UDP GameController (game: {udp: on}): packets sent, and return
+  // packets heard per robot (team: SPL number); wall-clock dependent,
+  // reporting only.
+  int64_t gc_udp_sent = 0;
+  int64_t gc_udp_failed = 0;  // sends that failed
+  struct GcReturns {
+    int team = 0, player = 0;
+    int64_t packets = 0;
+  };
+  std::vector<GcReturns> gc_returns;
 
   // Where each robot ended (field frame: m, rad), in scenario order.
   struct RobotEnd {

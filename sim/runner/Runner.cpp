@@ -274,6 +274,13 @@ void Runner::buildTeamAndGame() {
   }
   game_ = std::make_unique<game::GameController>(scenario_.game, ids);
   placer_ = std::make_unique<game::PenaltyPlacer>(modelPosture(ap::postureAngles(ap::Posture::Stand)));
+  if (scenario_.game.udp.on) {
+    try {
+      gc_udp_ = std::make_unique<game::GameControllerUdp>(scenario_.game.udp);
+    } catch (const std::runtime_error& e) {
+      throw RunnerError(std::string(e.what()) + " (scenario " + scenario_.source + ")");
+    }
+  }
   teamAndGame(0);
 }
 
@@ -591,6 +598,11 @@ void Runner::teamAndGame(int64_t t_us) {
     r.sensors->reset(*world_);  // the robot was carried: no velocity spike in the IMU
   }
   for (auto& r : robots_) game_->fill(r->ext->game);
+  if (gc_udp_) {
+    agent::libagent::GameStateBlock b{};
+    game_->fill(b);
+    gc_udp_->update(t_us, b);
+  }
 }
 
 RunStats Runner::stats() const {
@@ -617,6 +629,12 @@ RunStats Runner::stats() const {
       s.clamped_angles += c.clamped_angles;
       s.clamped_stiffness += c.clamped_stiffness;
     }
+  }
+  if (gc_udp_) {
+    s.gc_udp_sent = gc_udp_->sent();
+    s.gc_udp_failed = gc_udp_->sendErrors();
+    for (const game::GameControllerUdp::Returns& c : gc_udp_->returns())
+      s.gc_returns.push_back({c.team, c.player, c.packets});
   }
   s.hash = world_ ? world_->stateHash() : 0;
   return s;

@@ -28,7 +28,10 @@
 //                         (inline: runs its Perception step, robot by robot)
 //  11. teamAndGame        team network and GameController: outboxes drained,
 //                         due packets delivered, game state advanced (robots
-//                         penalised to the sideline and back) and written
+//                         penalised to the sideline and back) and written;
+//                         with game: {udp: on} the SPL GameController packet
+//                         sent every 500 ms and robots' return packets
+//                         counted (never acted on: sim/game/GameControllerUdp)
 //  12. captureViews       FindBall view frames, if asked (drawing only)
 // Robot threads run only inside stages 6-7 and 10, and the runner reads
 // nothing of theirs until all have answered, so the outcome does not depend
@@ -66,6 +69,7 @@
 #include "agent/program/RobotProgram.hpp"
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/game/GameController.hpp"
+#include "sim/game/GameControllerUdp.hpp"
 #include "sim/game/Sideline.hpp"
 #include "sim/network/TeamNetwork.hpp"
 #include "sim/runner/FallDetector.hpp"
@@ -172,6 +176,8 @@ class Runner {
   agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext; }
   const network::TeamNetwork& teamNetwork() const { return *network_; }
   const game::GameController& gameController() const { return *game_; }
+  // The UDP GameController (null unless the scenario's game: has udp: on).
+  const game::GameControllerUdp* gameControllerUdp() const { return gc_udp_.get(); }
   // FindBall view frames (`--findball-view DIR`): every robot whose behaviour
   // publishes findball gets a PNG per 1/rate_hz s of simulated time, drawn
   // from its Blackboard between ticks; run() assembles the videos.
@@ -210,7 +216,7 @@ class Runner {
   void buildWorld();        // model, field, World, ball
   void buildHosts();        // per robot: World body, SensorSuite, BodyHost
   void buildPrograms();     // per builtin robot: its RobotProgram, started
-  void buildTeamAndGame();  // TeamNetwork, GameController, the t = 0 game state
+  void buildTeamAndGame();  // TeamNetwork, GameController (and its UDP sender), the t = 0 game state
   void startCameras();      // if the scenario renders
   void buildVision();       // the vision oracle
   void launchPrograms();    // per launched robot: its process, with its {config} file
@@ -249,6 +255,7 @@ class Runner {
   std::unique_ptr<network::TeamNetwork> network_;
   std::unique_ptr<game::GameController> game_;
   std::unique_ptr<game::PenaltyPlacer> placer_;
+  std::unique_ptr<game::GameControllerUdp> gc_udp_;
   std::vector<agent::libagent::TeamLink*> links_;  // by robot index, for the network
   // Tick stages (see the top of this file).
   void applyCommands();

@@ -191,6 +191,17 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
     e.finish();
     g.penalties.push_back(p);
   }
+  // udp: the SPL GameController's packets on the loopback network (ports
+  // and address mean nothing without it, so they are refused alone).
+  g.udp.on = r.boolean("udp", false);
+  for (const char* key : {"address", "port", "return_port"})
+    if (!g.udp.on && r.has(key)) r.fail(key, "needs udp: on");
+  g.udp.address = r.string("address", g.udp.address);
+  if (!game::isLoopbackAddress(g.udp.address))
+    r.fail("address", "must be an IPv4 address in 127.0.0.0/8 (the loopback network; got '" + g.udp.address + "')");
+  g.udp.port = r.integer("port", g.udp.port, Range::closed(1, 65535));
+  g.udp.return_port = r.integer("return_port", g.udp.return_port, Range::closed(0, 65535));
+  if (g.udp.return_port == g.udp.port) r.fail("return_port", "must differ from port");
   r.finish();
   return g;
 }

@@ -48,6 +48,8 @@
 //     timeline: [{t: 0, state: ready}, {t: 45, state: set}, {t: 50, state: playing, kickoff_team: 1}]
 //     penalties: [{t: 10, robot: 0, penalty: request_for_pickup, duration: 30}]  # robot: scenario index;
 //                                  # duration s (< 0: until {penalty: none}); penalised robots wait on the sideline
+//     udp: on                      # also send the SPL 2017 GameController packets (sim/game/GameControllerUdp.hpp)
+//     port: 3838                   # their UDP port; return_port: 3939 (0 = any free); address: 127.0.0.1 (loopback only)
 //
 // `team` is the SPL team number (0..255, as in the GameController). A match
 // has at most two teams, told apart by colour: a robot's `colour` (blue or
