@@ -100,10 +100,9 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, co
   try {
     playTrial(e, t, sc, hooks, res);
   } catch (const runner::ProgramError& err) {
-    // The trial failed, the batch goes on: the reason's first line, without
-    // the results file's separators.
-    std::string why = err.what();
-    why = why.substr(0, why.find('\n'));
+    // The trial failed, the batch goes on: the brief reason (no pid, no
+    // path: results stay a function of the file), without the separators.
+    std::string why = err.brief;
     for (char& c : why)
       if (c == ',' || c == '"') c = ';';
     TrialResult failed;

@@ -312,8 +312,10 @@ void Runner::waitForFirstAnswer(Robot& r) {
   if (r.process) {
     if (!waitRobot(r, scenario_.attach_timeout_s, wait))
       throw ProgramError("robot " + r.tag + ": its program (pid " + std::to_string(r.process->pid()) +
-                         ") did not answer on " + r.host->memoryName() + " within attach_timeout " +
-                         formatNumber("%g", scenario_.attach_timeout_s) + " s; log " + r.process->logPath());
+                             ") did not answer on " + r.host->memoryName() + " within attach_timeout " +
+                             formatNumber("%g", scenario_.attach_timeout_s) + " s; log " + r.process->logPath(),
+                         r.tag + ": program did not attach within " + formatNumber("%g", scenario_.attach_timeout_s) +
+                             " s");
     return;
   }
   if (!r.host->waitAnswer(0.5)) {
@@ -347,7 +349,8 @@ bool Runner::waitRobot(Robot& r, double timeout_s, const std::function<bool(doub
 }
 
 void Runner::checkProcess(Robot& r) {
-  if (r.process && r.process->ended()) throw ProgramError(r.process->endedMessage());
+  if (r.process && r.process->ended())
+    throw ProgramError(r.process->endedMessage(), r.tag + ": program " + *r.process->ended());
 }
 
 // Each launched robot's program: started with its names, seed and setup
@@ -388,7 +391,7 @@ void Runner::launchPrograms() {
       r.process = std::make_unique<ProgramProcess>(r.tag, argv, ProgramProcess::fill(r.spec.launch.cwd, values), env,
                                                    (logs / (r.tag + ".log")).string(), r.spec.launch.stop_grace_s);
     } catch (const std::runtime_error& e) {
-      throw ProgramError(e.what());
+      throw ProgramError(e.what(), r.tag + ": program could not be started");
     }
   }
 }

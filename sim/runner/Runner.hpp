@@ -100,7 +100,11 @@ struct RunnerError : std::runtime_error {
 // A launched robot program ended, crashed or could not be started: the
 // message names the robot, how it ended and its log's last lines.
 struct ProgramError : RunnerError {
-  using RunnerError::RunnerError;
+  ProgramError(const std::string& message, std::string brief_)
+      : RunnerError(message), brief(std::move(brief_)) {}
+  // The same in one line without pids or paths ("t19p2: program killed by
+  // signal 11 (Segmentation fault)"): what a results file may keep.
+  std::string brief;
 };
 
 struct RunOptions {

@@ -20,7 +20,7 @@
 //
 //   libagent<R>-client --team T --player P [--bare] --ticks N [--hold]
 //                      [--stand] [--sleep-at K MS] [--timeout S] [--print-fsr]
-//                      [--print-standing] [--stiffen-at K]
+//                      [--print-standing] [--stiffen-at K] [--crash-at K]
 //
 // --hold: no scripted move, only hold the first tick's angles. --stand:
 // hold the NAO's stand instead (knees 0.8, hips and ankles -0.4 rad).
@@ -30,7 +30,8 @@
 //
 // It answers N ticks and exits 0; with --timeout S it gives up (exit 3)
 // when no tick comes for S wall-clock seconds; --sleep-at K MS sleeps MS ms
-// before answering tick K (a program missing cycles).
+// before answering tick K (a program missing cycles); --crash-at K dies of
+// SIGSEGV instead of answering tick K (a crashing program).
 #ifndef LIBAGENT_RELEASE
 #define LIBAGENT_RELEASE 2017
 #endif
@@ -40,6 +41,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -124,7 +126,7 @@ float ramp(long k, long t0, long t1) {
 int main(int argc, char** argv) {
   int team = -1, player = -1;
   bool bare = LIBAGENT_RELEASE == 2016, print_fsr = false, hold_only = false, stand = false, print_standing = false;
-  long ticks = -1, sleep_at = -1, sleep_ms = 0, stiffen_at = -1;
+  long ticks = -1, sleep_at = -1, sleep_ms = 0, stiffen_at = -1, crash_at = -1;
   double timeout_s = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -145,6 +147,7 @@ int main(int argc, char** argv) {
     else if (a == "--stand") hold_only = stand = true;
     else if (a == "--print-standing") print_standing = true;
     else if (a == "--stiffen-at") stiffen_at = std::atol(next());
+    else if (a == "--crash-at") crash_at = std::atol(next());
     else usage(("unknown argument " + a).c_str());
   }
   if (ticks < 0 || (!bare && (team < 0 || player < 1))) usage("need --team, --player (or --bare) and --ticks");
@@ -201,6 +204,11 @@ int main(int argc, char** argv) {
     } else {
       while (sem_wait(sem) != 0 && errno == EINTR) {
       }
+    }
+    if (k == crash_at) {
+      std::fprintf(stderr, "%s: crashing at tick %ld (--crash-at)\n", kName.c_str(), k);
+      std::fflush(stderr);
+      std::raise(SIGSEGV);
     }
     block->sensors_read = block->sensors_latest;
     const SensorValues s = block->sensors[block->sensors_read];

@@ -1,0 +1,252 @@
+// Robot programs simswift launches itself (program: {command: [...]}):
+// placeholders, the {config} setup file (agent/program/RobotSetup.hpp), the
+// same state hash as the builtin program, a crash that ends the run at once
+// naming the robot, the signal and the log, and bad `program:` values
+// refused naming file, line and key.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "agent/behaviour/BehaviourYaml.hpp"
+#include "agent/program/RobotSetup.hpp"
+#include "sim/runner/ProgramProcess.hpp"
+#include "sim/runner/Runner.hpp"
+
+namespace ap = agent::program;
+namespace fs = std::filesystem;
+using simswift::ConfigError;
+using simswift::runner::ProgramError;
+using simswift::runner::ProgramProcess;
+using simswift::runner::RunOptions;
+using simswift::runner::Runner;
+using simswift::runner::Scenario;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+const std::string kBin = SIMSWIFT_BINARY_DIR;
+
+std::string tempDir(const std::string& tag) {
+  const fs::path d = fs::temp_directory_path() / ("simswift_launch_" + tag + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d.string();
+}
+
+RunOptions quiet() {
+  RunOptions o;
+  o.progress = false;
+  return o;
+}
+
+std::string readFile(const std::string& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Two findball2017 robots of an unusual team (no other test's names), 3 s.
+std::string twoSearchers(const std::string& program, const std::string& logs) {
+  std::ostringstream s;
+  s << "duration: 3\nseed: 4\nnoise: on\nball: {x: 4.0, y: -2.5}\nteam_comms: {loss: 0.05, delay_ms: 50}\n"
+    << "program_logs: " << logs << "\nrobots:\n";
+  for (const char* r : {"{team: 83, player: 2, x: -3.25, y: 3.0, theta: -1.5708, behaviour: findball2017",
+                        "{team: 83, player: 3, x: -2.0, y: -3.0, theta: 1.5708, behaviour: {kind: findball2017, "
+                        "strategy: {distributed: off}}"})
+    s << "  - " << r << program << "}\n";
+  return s.str();
+}
+
+}  // namespace
+
+TEST(ProgramProcess, PlaceholdersAreFilledAndAnUnknownOneIsNamed) {
+  const std::map<std::string, std::string> v = {{"team", "19"}, {"player", "2"}};
+  EXPECT_EQ(ProgramProcess::fill("--team={team} p{player}", v), "--team=19 p2");
+  try {
+    ProgramProcess::fill("{teem}", v);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown placeholder {teem}"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("{team}"), std::string::npos) << e.what();  // the known ones listed
+  }
+  EXPECT_EQ(ProgramProcess::resolveCommand("bin/x", "/s"), "/s/bin/x");
+  EXPECT_EQ(ProgramProcess::resolveCommand("/abs/x", "/s"), "/abs/x");
+  EXPECT_EQ(ProgramProcess::resolveCommand("sh", "/s"), "sh");  // PATH
+}
+
+TEST(ProgramProcess, AProgramThatCannotStartIsRefusedWithTheExecError) {
+  const std::string d = tempDir("exec");
+  try {
+    ProgramProcess p("t1p1", {d + "/no-such-program"}, d, {}, d + "/t1p1.log", 1);
+    FAIL() << "started";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("robot t1p1: cannot start its program"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("No such file"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ProgramProcess, EndedSaysHowAndStopEscalatesToSigkill) {
+  const std::string d = tempDir("ended");
+  ProgramProcess a("t1p1", {"sh", "-c", "echo one; echo two >&2; exit 3"}, d, {{"X", "1"}}, d + "/a.log", 1);
+  const auto t0 = Clock::now();
+  while (!a.ended() && Clock::now() - t0 < std::chrono::seconds(10)) usleep(1000);
+  EXPECT_EQ(a.ended().value_or(""), "exited with status 3");
+  EXPECT_NE(a.endedMessage().find("  | two"), std::string::npos) << a.endedMessage();
+  // A program that ignores SIGTERM is killed after its grace.
+  ProgramProcess b("t1p2", {"sh", "-c", "trap '' TERM; echo $X; while :; do sleep 0.01; done"}, d, {{"X", "seen"}},
+                   d + "/b.log", 0.2);
+  usleep(100000);
+  b.stop();
+  EXPECT_EQ(b.ended().value_or(""), "killed by signal 9 (Killed)");
+  EXPECT_NE(readFile(d + "/b.log").find("seen"), std::string::npos);  // env reached it
+}
+
+TEST(RobotSetup, TheConfigFileReadsBackToTheSameSetup) {
+  ap::RobotSetup s;
+  s.team = 19;
+  s.player = 3;
+  s.seed = 18446744073709551557ULL;  // beyond a double's exact range
+  s.start = agent::blackboard::FieldPose{-3250.0, 3000.0, -1.5708};
+  s.behaviour = agent::behaviour::behaviourFromText("findball2016", "{search: {spin_at_point: off}}", "t",
+                                                    &s.behaviour_yaml);
+  s.posture = ap::Posture::Crouch;
+  const std::string d = tempDir("setup");
+  std::ofstream(d + "/r.yaml") << ap::robotSetupYaml(s);
+  const ap::RobotSetup r = ap::readRobotSetup(d + "/r.yaml");
+  EXPECT_EQ(r.team, 19);
+  EXPECT_EQ(r.player, 3);
+  EXPECT_EQ(r.seed, s.seed);
+  ASSERT_TRUE(r.start);
+  EXPECT_EQ(r.start->x, -3250.0);
+  EXPECT_EQ(r.start->theta, -1.5708);
+  ASSERT_TRUE(r.behaviour);
+  EXPECT_EQ(r.behaviour->kind, agent::behaviour::BehaviourKind::FINDBALL_2016);
+  EXPECT_FALSE(r.behaviour->search.spin_at_point);
+  EXPECT_EQ(r.posture, ap::Posture::Crouch);
+  // Body actions and joint steps, floats bit for bit.
+  ap::RobotSetup a;
+  agent::motion::ActionStep w;
+  w.t = 0.1 + 0.2;
+  w.body.type = agent::blackboard::ActionType::WALK;
+  w.body.forward = 123.456789f;
+  w.body.turn = -0.3f;
+  w.has_head = true;
+  w.head.yaw = 0.7f;
+  a.actions = {w};
+  ap::ScriptStep st;
+  st.t_s = 1.5;
+  st.joint = 0;
+  st.angle = 0.123456f;
+  st.stiffness = 0.6f;
+  a.script = {st};
+  std::ofstream(d + "/a.yaml") << ap::robotSetupYaml(a);
+  const ap::RobotSetup b = ap::readRobotSetup(d + "/a.yaml");
+  ASSERT_EQ(b.actions.size(), 1u);
+  EXPECT_EQ(b.actions[0].t, w.t);
+  EXPECT_EQ(b.actions[0].body.type, w.body.type);
+  EXPECT_EQ(b.actions[0].body.forward, w.body.forward);
+  EXPECT_EQ(b.actions[0].body.turn, w.body.turn);
+  EXPECT_EQ(b.actions[0].head.yaw, w.head.yaw);
+  ASSERT_EQ(b.script.size(), 1u);
+  EXPECT_EQ(b.script[0].angle, st.angle);
+  EXPECT_EQ(b.script[0].stiffness, st.stiffness);
+}
+
+TEST(RobotSetup, BadConfigNamesFileLineAndKey) {
+  const std::string d = tempDir("badsetup");
+  std::ofstream(d + "/bad.yaml") << "team: 19\nplayer: 2\nseed: -4\n";
+  try {
+    ap::readRobotSetup(d + "/bad.yaml");
+    FAIL() << "accepted";
+  } catch (const agent::config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.yaml:3: seed"), std::string::npos) << e.what();
+  }
+  std::ofstream(d + "/bad2.yaml") << "team: 19\nbehaviour: {kind: findball2017, grid: {colums: 3}}\n";
+  EXPECT_THROW(ap::readRobotSetup(d + "/bad2.yaml"), agent::config::ConfigError);
+}
+
+// The lock-step makes the process boundary invisible: the same two searchers
+// (behaviour, team comms, noise) as builtin programs and as launched
+// simswift-agents given their setup in {config} end on the same state hash.
+TEST(LaunchedPrograms, SimswiftAgentGivesTheBuiltinProgramsHash) {
+  const std::string d = tempDir("hash");
+  uint64_t builtin = 0, launched = 0;
+  {
+    Runner r(Scenario::parse(twoSearchers("", d + "/logs_b"), d + "/b.yaml"));
+    builtin = r.run(quiet()).hash;
+  }
+  {
+    Runner r(Scenario::parse(
+        twoSearchers(", program: {command: [" + kBin + "/simswift-agent, --config, \"{config}\"]}", d + "/logs_l"),
+        d + "/l.yaml"));
+    const simswift::runner::RunStats st = r.run(quiet());
+    launched = st.hash;
+    ASSERT_EQ(r.programLogs().size(), 2u);
+    EXPECT_EQ(r.programLogs()[0], "t83p2: " + d + "/logs_l/t83p2.log");
+  }
+  EXPECT_EQ(builtin, launched);
+  EXPECT_NE(readFile(d + "/logs_l/t83p3.robot.yaml").find("distributed: off"), std::string::npos);
+  EXPECT_NE(readFile(d + "/logs_l/t83p2.log").find("attached to /libagent-memory915"), std::string::npos);
+}
+
+// A program that segfaults at 2 s of simulated time ends the run within a
+// slice of the runner's wait (50 ms; asserted < 3 s to allow a loaded
+// machine), naming the robot, the signal and the log's last lines.
+TEST(LaunchedPrograms, ACrashEndsTheRunAtOnceNamingSignalAndLog) {
+  const std::string d = tempDir("crash");
+  const std::string text = "duration: 10\nprogram_logs: " + d + "\nrobots:\n"
+                           "  - {team: 84, player: 1, program: {command: [" + kBin +
+                           "/libagent2017-client, --team, \"{team}\", --player, \"{player}\", --ticks, 1000, "
+                           "--stand, --crash-at, 200]}}\n";
+  {
+  Runner r(Scenario::parse(text, d + "/s.yaml"));
+  r.start();
+  Clock::time_point crashed;
+  try {
+    while (r.ticks() < 1000) {
+      r.tick();
+      if (r.ticks() == 199) crashed = Clock::now();
+    }
+    FAIL() << "the run did not end";
+  } catch (const ProgramError& e) {
+    const double s = std::chrono::duration<double>(Clock::now() - crashed).count();
+    RecordProperty("seconds_to_notice", std::to_string(s));
+    EXPECT_LT(s, 3.0);
+    EXPECT_EQ(r.ticks(), 200);  // the tick the program never answered
+    const std::string m = e.what();
+    EXPECT_NE(m.find("robot t84p1"), std::string::npos) << m;
+    EXPECT_NE(m.find("killed by signal 11 (Segmentation fault)"), std::string::npos) << m;
+    EXPECT_NE(m.find(d + "/t84p1.log"), std::string::npos) << m;
+    EXPECT_NE(m.find("crashing at tick 200"), std::string::npos) << m;  // the log's last lines
+  }
+  }
+  EXPECT_FALSE(fs::exists("/dev/shm/libagent-memory925"));  // 84 x 11 + 1: removed with the host
+}
+
+TEST(LaunchedPrograms, BadProgramValuesNameFileLineAndKey) {
+  auto refused = [](const std::string& robot, const std::string& what) {
+    try {
+      Scenario::parse("robots:\n  - " + robot + "\n", "s.yaml");
+      ADD_FAILURE() << "accepted: " << robot;
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  refused("{team: 1, player: 1, program: {cwd: /tmp}}", "s.yaml:2: robots[0].program.command: a launched program needs");
+  refused("{team: 1, player: 1, program: {command: []}}", "robots[0].program.command: must be a non-empty list");
+  refused("{team: 1, player: 1, program: {command: [x, \"{teem}\"]}}", "unknown placeholder {teem}");
+  refused("{team: 1, player: 1, program: {command: [x], stop_grace: -1}}", "robots[0].program.stop_grace");
+  refused("{team: 1, player: 1, program: {command: [x], shell: yes}}", "unknown key 'shell' in robots[0].program");
+  refused("{team: 1, player: 1, program: external, behaviour: findball2017}", "robots[0].behaviour");
+  // A launched program takes a behaviour: it reaches it in {config}.
+  EXPECT_NO_THROW(Scenario::parse("robots:\n  - {team: 1, player: 1, behaviour: findball2017, program: {command: "
+                                  "[simswift-agent, --config, \"{config}\"]}}\n",
+                                  "s.yaml"));
+}
