@@ -29,6 +29,9 @@
 //       thesis_table: "5.3"        # optional: the thesis table it repeats (report columns)
 //       behaviour: findball2016    # default for the robots below
 //       config: {...}              # default behaviour overrides (opaque)
+//       program: {command: [simswift-agent, --config, "{config}"]}   # optional, also
+//                                  # per robot: a program launched fresh for every
+//                                  # trial (sim/runner/ProgramProcess.hpp; default builtin)
 //       robots:                    # table 5.1: SPL team and player numbers, start poses
 //         - {team: 19, player: 2, x: -3.25, y: 3.0, theta: -1.5708}
 //         - {team: 19, player: 3, x: -2.0, y: -3.0, theta: 1.5708, behaviour: script,
