@@ -149,6 +149,7 @@ class Runner {
 
   const Scenario& scenario() const { return scenario_; }
   World& world() { return *world_; }
+  const World& world() const { return *world_; }
   int numRobots() const { return static_cast<int>(robots_.size()); }
   bridge::BodyHost& host(int i) { return *robots_[i]->host; }
   const sensors::SensorSuite& sensors(int i) const { return *robots_[i]->sensors; }
@@ -157,6 +158,10 @@ class Runner {
   // Blackboard between ticks (tests, benchmarks).
   agent::program::RobotProgram* program(int i) const { return robots_[i]->program.get(); }
   RunStats stats() const;  // so far
+  // Robot i's sensor values as published this tick (what its program read).
+  const agent::libagent::SensorValues& lastSensors(int i) const { return robots_[i]->values; }
+  // Robot i's fall bookkeeping (statistics only).
+  const FallDetector& robotFall(int i) const { return robots_[i]->fall; }
   // The vision oracle (after start()): what each robot was shown in the
   // last camera frame (the experiment's found rule reads its ball sightings).
   const vision::VisionOracle& visionOracle() const { return *vision_; }

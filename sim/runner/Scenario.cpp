@@ -1,5 +1,7 @@
 #include "sim/runner/Scenario.hpp"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -36,6 +38,16 @@ std::vector<std::string> dataDirs() {
   if (!ec) {
     dirs.push_back((exe.parent_path().parent_path() / "share" / "simswift").string());
     dirs.push_back((exe.parent_path() / "share" / "simswift").string());
+  }
+  // Beside the library holding this code when it is libsimswift.so
+  // (<prefix>/lib/libsimswift.so -> <prefix>/share/simswift), wherever the
+  // package was installed.
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&dataDirs), &info) && info.dli_fname) {
+    const std::filesystem::path lib = std::filesystem::absolute(info.dli_fname, ec);
+    if (!ec) dirs.push_back((lib.parent_path().parent_path() / "share" / "simswift").string());
+    if (!ec && lib.parent_path().filename() != "lib")  // lib/<multiarch>/libsimswift.so
+      dirs.push_back((lib.parent_path().parent_path().parent_path() / "share" / "simswift").string());
   }
   dirs.push_back(SIMSWIFT_INSTALL_DATADIR);
   return dirs;

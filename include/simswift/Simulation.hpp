@@ -1,0 +1,116 @@
+// simswift as a library: a simulation built once from a scenario, stepped
+// one 10 ms tick at a time, in the spirit of MuJoCo's mj_step. Each step()
+// runs the runner's tick stages in their one documented order (commands to
+// the servos, pushes, physics, sensors, every robot program's answer, ...:
+// sim/runner/Runner.hpp in the source tree), so a unit test here gets the
+// same physics, in lock-step, as `simswift run` and every other mode.
+//
+//   simswift::Simulation sim = simswift::Simulation::fromScenario("walk_one.yaml");
+//   sim.robot(0).setController([&](const simswift::SensorValues& s, simswift::JointValues& j) {
+//     myWalk.tick(s, j);   // the team's own Motion, called each tick on this thread
+//   });
+//   sim.run(5.0);
+//   EXPECT_GT(sim.robot(0).pose().x, 0.5);
+//
+// Robots without a controller run what their scenario says (the builtin
+// reference program, a launched program, ...). Errors: ConfigError (bad
+// scenario: file, line, key), std::logic_error (misuse, e.g. a controller
+// set after the first step), std::runtime_error (a run that fails).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "simswift/Types.hpp"
+
+namespace simswift::api {
+
+// A configuration error, split into where and what:
+//   file "walk.yaml", line 7, key "robots[1].team", what() the whole message.
+struct ConfigError : std::runtime_error {
+  ConfigError(const std::string& message, std::string file_, int line_, std::string key_)
+      : std::runtime_error(message), file(std::move(file_)), line(line_), key(std::move(key_)) {}
+  std::string file;
+  int line = 0;      // 0 if the message names none
+  std::string key;   // dotted key path ("" if none)
+};
+
+// Called once per tick on the simulator's thread with the sensors of this
+// tick; `joints` arrives holding the previous command and is sent as this
+// tick's (acting during the next tick, as on the NAO).
+using Controller = std::function<void(const SensorValues& sensors, JointValues& joints)>;
+
+class Simulation;
+
+// A handle to robot i of a Simulation (valid while it lives).
+class Robot {
+ public:
+  int index() const { return index_; }
+  // The sensors its program read this tick (the libagent block's slot).
+  SensorValues sensors() const;
+  // Before the first step: drive this robot from `c` instead of its
+  // scenario program.
+  void setController(Controller c);
+  // Hold these joint commands (a controller that repeats them); before the
+  // first step, or later for a robot already driven by setJoints.
+  void setJoints(const JointValues& joints);
+  Pose pose() const;         // ground truth, field frame
+  bool fallen() const;       // on the ground now (the runner's fall detector)
+  int falls() const;         // falls so far
+  void push(double jx, double jy);  // impulse N*s at the torso's centre of mass (field axes), now
+  void teleport(double x, double y, double theta);  // standing, at rest
+
+ private:
+  friend class Simulation;
+  Robot(Simulation* sim, int index) : sim_(sim), index_(index) {}
+  Simulation* sim_;
+  int index_;
+};
+
+class Simulation {
+ public:
+  // From a scenario file, or YAML text (`name` for errors; relative paths
+  // resolve against `base_dir`, default the working folder). Throws ConfigError.
+  static Simulation fromScenario(const std::string& path);
+  static Simulation fromYaml(const std::string& text, const std::string& name = "<yaml>",
+                             const std::string& base_dir = ".");
+  Simulation(Simulation&&) noexcept;
+  Simulation& operator=(Simulation&&) noexcept;
+  ~Simulation();
+
+  void step();  // one 10 ms tick (the first builds the world and starts the programs)
+  // Steps for `seconds` of simulated time, or until `until` (checked after
+  // each tick) returns true. Returns the simulated seconds stepped.
+  double run(double seconds, const std::function<bool(const Simulation&)>& until = {});
+
+  double time() const;     // s of simulated time
+  int64_t ticks() const;
+  int numRobots() const;
+  Robot robot(int i);      // throws std::out_of_range
+  BallState ball() const;
+  void placeBall(double x, double y);  // at rest on the carpet, m
+  uint64_t stateHash() const;          // the World's (the same as `simswift run --print-hash-every`)
+  double duration() const;             // the scenario's duration, s
+
+ private:
+  friend class Robot;
+  struct Impl;
+  explicit Simulation(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace simswift::api
+
+// The names a test writes (simswift::Simulation, simswift::SensorValues, ...).
+namespace simswift {
+using api::BallState;
+using api::Controller;
+using api::JointValues;
+using api::Pose;
+using api::Robot;
+using api::SensorValues;
+using api::Simulation;
+}  // namespace simswift

@@ -1,0 +1,166 @@
+// Python bindings of the public API (include/simswift/): `import simswift`.
+//
+//   sim = simswift.Simulation("scenarios/walk_one.yaml")
+//   sim.step(); sim.run(2.0)
+//   s = sim.robot(0).sensors          # named numpy arrays: fsr (8, kg),
+//   s.fsr.sum(), s.gyroscope, ...     # gyroscope, accelerometer, joint_angles, ...
+//   sim.robot(0).set_controller(lambda s, j: ...)   # j.angles / j.stiffnesses (numpy, in place)
+//   table = simswift.run_experiment("scenarios/findball_quick.yaml", jobs=2)
+//
+// Errors become Python exceptions: simswift.ConfigError (with .file, .line,
+// .key) for bad files, ValueError / IndexError / RuntimeError otherwise.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstring>
+
+#include "simswift/Experiment.hpp"
+#include "simswift/Simulation.hpp"
+
+namespace py = pybind11;
+namespace sa = simswift::api;
+
+namespace {
+
+py::array_t<float> copy(const float* v, int n) {
+  py::array_t<float> a(n);
+  std::memcpy(a.mutable_data(), v, sizeof(float) * static_cast<size_t>(n));
+  return a;
+}
+
+// The sensors of one tick as named arrays (copies; units as on the NAO).
+struct PySensors {
+  explicit PySensors(const sa::SensorValues& s) : raw(s) {}
+  sa::SensorValues raw;
+  py::array_t<float> jointAngles() const { return copy(raw.joints.angles, sa::kNumJoints); }
+  py::array_t<float> jointStiffnesses() const { return copy(raw.joints.stiffnesses, sa::kNumJoints); }
+  py::array_t<float> fsr() const {  // kg: left FL FR RL RR, right FL FR RL RR
+    const float v[8] = {raw.sensors[sa::LFsrFrontLeft], raw.sensors[sa::LFsrFrontRight],
+                        raw.sensors[sa::LFsrRearLeft],  raw.sensors[sa::LFsrRearRight],
+                        raw.sensors[sa::RFsrFrontLeft], raw.sensors[sa::RFsrFrontRight],
+                        raw.sensors[sa::RFsrRearLeft],  raw.sensors[sa::RFsrRearRight]};
+    return copy(v, 8);
+  }
+  py::array_t<float> gyroscope() const { return copy(&raw.sensors[sa::GyroscopeX], 3); }          // rad/s
+  py::array_t<float> accelerometer() const { return copy(&raw.sensors[sa::AccelerometerX], 3); }  // m/s^2
+  py::array_t<float> angle() const { return copy(&raw.sensors[sa::AngleX], 2); }                  // rad
+  py::array_t<float> sensors() const { return copy(raw.sensors, sa::kNumSensors); }
+  py::array_t<float> sonar() const { return copy(raw.sonar, sa::kNumSonars); }  // m
+};
+
+// A command a Python controller fills in place.
+struct PyJoints {
+  py::array_t<float> angles{sa::kNumJoints}, stiffnesses{sa::kNumJoints};
+};
+
+void translateConfigError(const sa::ConfigError& e, const py::object& type) {
+  py::object err = type(e.what());
+  err.attr("file") = e.file;
+  err.attr("line") = e.line;
+  err.attr("key") = e.key;
+  PyErr_SetObject(type.ptr(), err.ptr());
+}
+
+}  // namespace
+
+PYBIND11_MODULE(simswift, m) {
+  m.doc() = "simswift: NAO V5 robot-soccer simulation (ODE physics, libagent's interface at 10 ms)";
+  static py::exception<sa::ConfigError> config_error(m, "ConfigError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const sa::ConfigError& e) {
+      translateConfigError(e, config_error);
+    }
+  });
+
+  py::class_<PySensors>(m, "Sensors")
+      .def_property_readonly("joint_angles", &PySensors::jointAngles)
+      .def_property_readonly("joint_stiffnesses", &PySensors::jointStiffnesses)
+      .def_property_readonly("fsr", &PySensors::fsr)
+      .def_property_readonly("gyroscope", &PySensors::gyroscope)
+      .def_property_readonly("accelerometer", &PySensors::accelerometer)
+      .def_property_readonly("angle", &PySensors::angle)
+      .def_property_readonly("sensors", &PySensors::sensors)
+      .def_property_readonly("sonar", &PySensors::sonar);
+
+  py::class_<PyJoints>(m, "Joints")
+      .def_readonly("angles", &PyJoints::angles)
+      .def_readonly("stiffnesses", &PyJoints::stiffnesses);
+
+  py::class_<sa::Pose>(m, "Pose")
+      .def_readonly("x", &sa::Pose::x)
+      .def_readonly("y", &sa::Pose::y)
+      .def_readonly("z", &sa::Pose::z)
+      .def_readonly("theta", &sa::Pose::theta);
+
+  py::class_<sa::Robot>(m, "Robot")
+      .def_property_readonly("index", &sa::Robot::index)
+      .def_property_readonly("sensors", [](const sa::Robot& r) { return PySensors(r.sensors()); })
+      .def_property_readonly("pose", &sa::Robot::pose)
+      .def_property_readonly("fallen", &sa::Robot::fallen)
+      .def_property_readonly("falls", &sa::Robot::falls)
+      .def("set_joints",
+           [](sa::Robot& r, py::array_t<float, py::array::c_style | py::array::forcecast> angles,
+              py::array_t<float, py::array::c_style | py::array::forcecast> stiffnesses) {
+             if (angles.size() != sa::kNumJoints || stiffnesses.size() != sa::kNumJoints)
+               throw py::value_error("set_joints: angles and stiffnesses need 25 values each (libagent's joints)");
+             sa::JointValues j{};
+             std::memcpy(j.angles, angles.data(), sizeof j.angles);
+             std::memcpy(j.stiffnesses, stiffnesses.data(), sizeof j.stiffnesses);
+             r.setJoints(j);
+           },
+           py::arg("angles"), py::arg("stiffnesses"))
+      .def("set_controller",
+           [](sa::Robot& r, py::function f) {
+             auto joints = std::make_shared<PyJoints>();
+             r.setController([f, joints](const sa::SensorValues& s, sa::JointValues& j) {
+               py::gil_scoped_acquire gil;
+               std::memcpy(joints->angles.mutable_data(), j.angles, sizeof j.angles);
+               std::memcpy(joints->stiffnesses.mutable_data(), j.stiffnesses, sizeof j.stiffnesses);
+               f(PySensors(s), py::cast(joints.get(), py::return_value_policy::reference));
+               std::memcpy(j.angles, joints->angles.data(), sizeof j.angles);
+               std::memcpy(j.stiffnesses, joints->stiffnesses.data(), sizeof j.stiffnesses);
+             });
+           },
+           py::arg("controller"))
+      .def("push", &sa::Robot::push, py::arg("jx"), py::arg("jy"))
+      .def("teleport", &sa::Robot::teleport, py::arg("x"), py::arg("y"), py::arg("theta"));
+
+  py::class_<sa::Simulation>(m, "Simulation")
+      .def(py::init([](const std::string& path) { return sa::Simulation::fromScenario(path); }), py::arg("scenario"))
+      .def_static("from_yaml", &sa::Simulation::fromYaml, py::arg("text"), py::arg("name") = "<yaml>",
+                  py::arg("base_dir") = ".")
+      .def("step", &sa::Simulation::step)
+      .def("run", [](sa::Simulation& s, double seconds) { return s.run(seconds); }, py::arg("seconds"))
+      .def("robot", &sa::Simulation::robot, py::arg("index"), py::keep_alive<0, 1>())
+      .def_property_readonly("num_robots", &sa::Simulation::numRobots)
+      .def_property_readonly("time", &sa::Simulation::time)
+      .def_property_readonly("ticks", &sa::Simulation::ticks)
+      .def_property_readonly("state_hash", &sa::Simulation::stateHash)
+      .def_property_readonly("ball", [](const sa::Simulation& s) {
+        const sa::BallState b = s.ball();
+        return py::make_tuple(b.present, b.x, b.y, b.z);
+      })
+      .def("place_ball", &sa::Simulation::placeBall, py::arg("x"), py::arg("y"));
+
+  m.def(
+      "run_experiment",
+      [](const std::string& file, int jobs, const std::string& out) {
+        sa::ExperimentOptions o;
+        o.jobs = jobs;
+        o.out_dir = out;
+        const sa::ResultsTable t = sa::runExperiment(file, o);
+        py::list rows;
+        for (const auto& r : t.rows) {
+          py::dict d;
+          for (size_t i = 0; i < t.columns.size() && i < r.size(); ++i) d[py::str(t.columns[i])] = r[i];
+          rows.append(d);
+        }
+        return rows;
+      },
+      py::arg("file"), py::arg("jobs") = 0, py::arg("out") = "",
+      "Runs an experiment file (every trial in its own process); returns results.csv's rows as dicts.");
+}

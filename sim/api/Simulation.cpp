@@ -1,0 +1,219 @@
+// The public API (include/simswift/Simulation.hpp) over the Runner: one
+// Runner per Simulation, started at the first step; controllers are Motion
+// generators run inline on the simulator's thread, so a controller's robot
+// goes through the same libagent block, in the same tick stage, as every
+// other robot program (the same commands give the same state hash).
+#include "simswift/Simulation.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <regex>
+
+#include "agent/libagent/AgentShared.hpp"
+#include "agent/program/MotionGenerator.hpp"
+#include "sim/runner/Runner.hpp"
+#include "sim/runner/Scenario.hpp"
+
+namespace simswift::api {
+
+namespace al = agent::libagent;
+
+// The public types are libagent 2017's layout.
+static_assert(sizeof(JointValues) == sizeof(al::JointValues));
+static_assert(sizeof(SensorValues) == sizeof(al::SensorValues));
+static_assert(offsetof(SensorValues, sensors) == offsetof(al::SensorValues, sensors));
+static_assert(offsetof(SensorValues, sonar) == offsetof(al::SensorValues, sonar));
+static_assert(offsetof(JointValues, stiffnesses) == offsetof(al::JointValues, stiffnesses));
+static_assert(kNumJoints == al::kNumJoints && kNumSensors == al::kNumSensors && kNumSonars == al::kNumSonars);
+static_assert(RHand == al::Joints::RHand && LKneePitch == al::Joints::LKneePitch);
+static_assert(Sonar == al::Sensors::US && RFsrRearRight == al::Sensors::RFoot_FSR_RearRight &&
+              ChestButton == al::Sensors::ChestBoard_Button && BatteryCharge == al::Sensors::Battery_Charge);
+
+namespace {
+
+// The controller as the program's Motion step.
+class ControllerMotion : public agent::program::MotionGenerator {
+ public:
+  explicit ControllerMotion(Controller c) : c_(std::move(c)) {}
+  void tick(const al::SensorValues& sensors, int64_t, al::JointValues& out) override {
+    SensorValues s;
+    std::memcpy(&s, &sensors, sizeof s);
+    JointValues j;
+    std::memcpy(&j, &out, sizeof j);
+    c_(s, j);
+    std::memcpy(&out, &j, sizeof j);
+  }
+
+ private:
+  Controller c_;
+};
+
+}  // namespace
+
+// "file:line: key: message" (the ConfigError form) split up.
+ConfigError configError(const std::exception& e) {
+  const std::string m = e.what();
+  static const std::regex form(R"(^(.*?):(\d+): ([^: ][^:]*): )");
+  std::smatch g;
+  if (std::regex_search(m, g, form)) return ConfigError(m, g[1].str(), std::stoi(g[2].str()), g[3].str());
+  static const std::regex file_line(R"(^(.*?):(\d+): )");
+  if (std::regex_search(m, g, file_line)) return ConfigError(m, g[1].str(), std::stoi(g[2].str()), "");
+  return ConfigError(m, "", 0, "");
+}
+
+namespace {
+ConfigError apiError(const std::exception& e) { return configError(e); }
+}  // namespace
+
+struct Simulation::Impl {
+  explicit Impl(runner::Scenario sc) : runner(std::move(sc)) {}
+  runner::Runner runner;
+  std::vector<std::shared_ptr<JointValues>> held;  // setJoints' commands, by robot (null: none)
+  bool started = false;
+  void start() {
+    if (started) return;
+    // Controllers and every builtin program on this thread, right after the
+    // tick is posted (Runner::setThreading): no thread hand-over per tick.
+    runner.setThreading(agent::program::Threading::Inline);
+    runner.start();
+    started = true;
+  }
+};
+
+Simulation::Simulation(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {
+  impl_->held.resize(impl_->runner.scenario().robots.size());
+}
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
+Simulation::~Simulation() = default;
+
+Simulation Simulation::fromScenario(const std::string& path) {
+  try {
+    return Simulation(std::make_unique<Impl>(runner::Scenario::loadFile(path)));
+  } catch (const simswift::ConfigError& e) {
+    throw apiError(e);
+  }
+}
+
+Simulation Simulation::fromYaml(const std::string& text, const std::string& name, const std::string& base_dir) {
+  try {
+    runner::Scenario sc = runner::Scenario::parse(text, name);
+    if (!base_dir.empty()) sc.base_dir = base_dir;
+    return Simulation(std::make_unique<Impl>(std::move(sc)));
+  } catch (const simswift::ConfigError& e) {
+    throw apiError(e);
+  }
+}
+
+void Simulation::step() {
+  try {
+    impl_->start();
+  } catch (const simswift::ConfigError& e) {
+    throw apiError(e);
+  }
+  impl_->runner.tick();
+}
+
+double Simulation::run(double seconds, const std::function<bool(const Simulation&)>& until) {
+  const int64_t n = std::llround(seconds / agent::nao::kMotionTickSeconds);
+  int64_t k = 0;
+  for (; k < n; ++k) {
+    step();
+    if (until && until(*this)) {
+      ++k;
+      break;
+    }
+  }
+  return static_cast<double>(k) * agent::nao::kMotionTickSeconds;
+}
+
+double Simulation::time() const { return impl_->started ? impl_->runner.world().time() : 0.0; }
+int64_t Simulation::ticks() const { return impl_->runner.ticks(); }
+int Simulation::numRobots() const { return static_cast<int>(impl_->runner.scenario().robots.size()); }
+double Simulation::duration() const { return impl_->runner.scenario().duration; }
+
+Robot Simulation::robot(int i) {
+  if (i < 0 || i >= numRobots())
+    throw std::out_of_range("robot " + std::to_string(i) + ": the scenario has " + std::to_string(numRobots()));
+  return Robot(this, i);
+}
+
+BallState Simulation::ball() const {
+  BallState b;
+  if (!impl_->started || !impl_->runner.world().hasBall()) return b;
+  const Eigen::Vector3d p = impl_->runner.world().ballPosition(), v = impl_->runner.world().ballVelocity();
+  b = {true, p.x(), p.y(), p.z(), v.x(), v.y(), v.z()};
+  return b;
+}
+
+void Simulation::placeBall(double x, double y) {
+  impl_->start();
+  impl_->runner.world().placeBall(x, y);
+}
+
+uint64_t Simulation::stateHash() const { return impl_->started ? impl_->runner.world().stateHash() : 0; }
+
+SensorValues Robot::sensors() const {
+  SensorValues s;
+  std::memcpy(&s, &sim_->impl_->runner.lastSensors(index_), sizeof s);
+  return s;
+}
+
+void Robot::setController(Controller c) {
+  if (sim_->impl_->started)
+    throw std::logic_error("robot " + std::to_string(index_) + ": setController before the first step");
+  if (!c) throw std::invalid_argument("robot " + std::to_string(index_) + ": setController: empty controller");
+  if (sim_->impl_->runner.scenario().robots[index_].program != runner::RobotSpec::Program::Builtin)
+    throw std::logic_error("robot " + std::to_string(index_) +
+                           ": its scenario runs an external program; a controller needs program: builtin");
+  sim_->impl_->runner.setMotionGenerator(index_, std::make_unique<ControllerMotion>(std::move(c)));
+}
+
+void Robot::setJoints(const JointValues& joints) {
+  std::shared_ptr<JointValues>& held = sim_->impl_->held[index_];
+  if (held) {
+    *held = joints;
+    return;
+  }
+  if (sim_->impl_->started)
+    throw std::logic_error("robot " + std::to_string(index_) +
+                           ": setJoints before the first step (then any time), or setController");
+  held = std::make_shared<JointValues>(joints);
+  std::shared_ptr<JointValues> h = held;
+  setController([h](const SensorValues&, JointValues& j) {
+    std::memcpy(j.angles, h->angles, sizeof j.angles);
+    std::memcpy(j.stiffnesses, h->stiffnesses, sizeof j.stiffnesses);
+  });
+}
+
+Pose Robot::pose() const {
+  const runner::Runner& r = sim_->impl_->runner;
+  Pose p;
+  if (!sim_->impl_->started) {
+    const runner::RobotSpec& s = r.scenario().robots[index_];
+    p.x = s.x, p.y = s.y, p.theta = s.theta;
+    return p;
+  }
+  const RobotBody& body = r.world().robot(index_);
+  const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
+  const Eigen::Vector3d fwd = torso.linear().col(0);
+  p.x = torso.translation().x(), p.y = torso.translation().y(), p.z = torso.translation().z();
+  p.theta = std::atan2(fwd.y(), fwd.x());
+  return p;
+}
+
+bool Robot::fallen() const { return sim_->impl_->runner.robotFall(index_).fallen; }
+int Robot::falls() const { return sim_->impl_->runner.robotFall(index_).falls; }
+
+void Robot::push(double jx, double jy) {
+  sim_->impl_->start();
+  sim_->impl_->runner.world().applyImpulse(index_, Eigen::Vector3d(jx, jy, 0));
+}
+
+void Robot::teleport(double x, double y, double theta) {
+  sim_->impl_->start();
+  sim_->impl_->runner.placeRobot(index_, x, y, theta);
+}
+
+}  // namespace simswift::api

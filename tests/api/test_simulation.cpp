@@ -1,0 +1,139 @@
+// The public API (include/simswift/Simulation.hpp) as a team's test uses
+// it: only public headers, linked against libsimswift.so. Physics facts,
+// the same hash for a controller and an external program sending the same
+// commands, and errors that carry file, line and key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "simswift/Simulation.hpp"
+
+namespace {
+
+const std::string kBin = SIMSWIFT_BINARY_DIR;
+
+// NAO V5 (H25) mass: 5.305 kg (Aldebaran's NAO V5 datasheet); the FSRs
+// report kg, so a standing robot's eight sum to it.
+constexpr double kNaoMassKg = 5.305;
+
+double fsrSum(const simswift::SensorValues& s) {
+  double sum = 0;
+  for (int f = simswift::api::LFsrFrontLeft; f <= simswift::api::LFsrRearRight; ++f) sum += s.sensors[f];
+  for (int f = simswift::api::RFsrFrontLeft; f <= simswift::api::RFsrRearRight; ++f) sum += s.sensors[f];
+  return sum;
+}
+
+// The libagent test client's Motion (tests/libagent_client, default mode):
+// hold the first tick's angles at stiffness 1, then turn the head 0.5 rad
+// over ticks 50..100 and bend the knees over 100..200, back over 250..350.
+struct ClientMotion {
+  long k = 0;
+  simswift::JointValues hold{};
+  static float ramp(long k, long t0, long t1) {
+    if (k <= t0) return 0.0f;
+    if (k >= t1) return 1.0f;
+    return static_cast<float>(k - t0) / static_cast<float>(t1 - t0);
+  }
+  void operator()(const simswift::SensorValues& s, simswift::JointValues& cmd) {
+    using namespace simswift::api;
+    if (++k == 1) {
+      hold = s.joints;
+      for (float& st : hold.stiffnesses) st = 1.0f;
+    }
+    cmd = hold;
+    cmd.angles[HeadYaw] = hold.angles[HeadYaw] + 0.5f * ramp(k, 50, 100);
+    const float d = 0.2f * (ramp(k, 100, 200) - ramp(k, 250, 350));
+    for (int hip : {LHipPitch, RHipPitch}) cmd.angles[hip] = hold.angles[hip] - d;
+    for (int knee : {LKneePitch, RKneePitch}) cmd.angles[knee] = hold.angles[knee] + 2.0f * d;
+    for (int ankle : {LAnklePitch, RAnklePitch}) cmd.angles[ankle] = hold.angles[ankle] - d;
+  }
+};
+
+std::string oneRobot(const std::string& program) {
+  return "duration: 4\nseed: 9\nnoise: on\nprogram_logs: " + kBin +
+         "/api_test_logs\nrobots:\n  - {team: 86, player: 1, x: 0.0, y: 1.0" + program + "}\n";
+}
+
+}  // namespace
+
+TEST(Simulation, AStandingRobotsFsrsSumToItsMass) {
+  simswift::Simulation sim = simswift::Simulation::fromYaml(oneRobot(""), "stand.yaml", SIMSWIFT_SOURCE_DIR);
+  EXPECT_EQ(sim.numRobots(), 1);
+  sim.run(1.0);
+  EXPECT_EQ(sim.ticks(), 100);
+  EXPECT_NEAR(sim.time(), 1.0, 1e-9);
+  double mean = 0;
+  for (int k = 0; k < 50; ++k) {
+    sim.step();
+    mean += fsrSum(sim.robot(0).sensors()) / 50;
+  }
+  EXPECT_NEAR(mean, kNaoMassKg, 0.05 * kNaoMassKg);
+  EXPECT_FALSE(sim.robot(0).fallen());
+  EXPECT_NEAR(sim.robot(0).pose().y, 1.0, 0.02);
+  EXPECT_GT(sim.robot(0).pose().z, 0.25);  // torso origin of a standing NAO, m
+  ASSERT_TRUE(sim.ball().present);
+  EXPECT_NEAR(sim.ball().x, 0.0, 1e-6);  // the centre spot
+}
+
+// The controller runs on the simulator's thread through the same libagent
+// block and tick stage as an external program's Motion: the same commands
+// (the test client's) give the same state hash.
+TEST(Simulation, AControllerAndAnExternalProgramSendingTheSameCommandsGiveTheSameHash) {
+  simswift::Simulation a = simswift::Simulation::fromYaml(oneRobot(""), "a.yaml", SIMSWIFT_SOURCE_DIR);
+  a.robot(0).setController(ClientMotion{});
+  a.run(4.0);
+  simswift::Simulation b = simswift::Simulation::fromYaml(
+      oneRobot(", program: {command: [" + kBin +
+               "/libagent2017-client, --team, \"{team}\", --player, \"{player}\", --ticks, 400]}"),
+      "b.yaml", SIMSWIFT_SOURCE_DIR);
+  b.run(4.0);
+  EXPECT_EQ(a.stateHash(), b.stateHash());
+  EXPECT_NE(a.stateHash(), 0u);
+  // The commands acted: the head turned.
+  EXPECT_NEAR(a.robot(0).sensors().joints.angles[simswift::api::HeadYaw], 0.5, 0.05);
+}
+
+TEST(Simulation, SetJointsHoldsACommandAndPushesAndTeleportsAct) {
+  simswift::Simulation sim = simswift::Simulation::fromYaml(oneRobot(""), "j.yaml", SIMSWIFT_SOURCE_DIR);
+  simswift::JointValues j{};
+  for (float& st : j.stiffnesses) st = 1.0f;
+  for (int hip : {simswift::api::LHipPitch, simswift::api::RHipPitch}) j.angles[hip] = -0.4f;
+  for (int knee : {simswift::api::LKneePitch, simswift::api::RKneePitch}) j.angles[knee] = 0.8f;
+  for (int ankle : {simswift::api::LAnklePitch, simswift::api::RAnklePitch}) j.angles[ankle] = -0.4f;
+  sim.robot(0).setJoints(j);
+  sim.run(1.0);
+  EXPECT_NEAR(sim.robot(0).sensors().joints.angles[simswift::api::LKneePitch], 0.8, 0.05);
+  j.angles[simswift::api::HeadYaw] = -0.6f;  // after start: the held command changes
+  sim.robot(0).setJoints(j);
+  sim.run(1.0);
+  EXPECT_NEAR(sim.robot(0).sensors().joints.angles[simswift::api::HeadYaw], -0.6, 0.05);
+  sim.robot(0).push(6.0, 0.0);  // N*s: well above the ~3.5 N*s that topples a standing NAO
+  sim.run(3.0);
+  EXPECT_TRUE(sim.robot(0).fallen());
+  EXPECT_EQ(sim.robot(0).falls(), 1);
+  sim.robot(0).teleport(-2.0, 0.5, 1.0);
+  sim.step();
+  EXPECT_NEAR(sim.robot(0).pose().x, -2.0, 0.05);
+  EXPECT_NEAR(sim.robot(0).pose().theta, 1.0, 0.05);
+  EXPECT_THROW(sim.robot(0).setController([](const simswift::SensorValues&, simswift::JointValues&) {}),
+               std::logic_error);
+  EXPECT_THROW(sim.robot(1), std::out_of_range);
+}
+
+TEST(Simulation, BadScenariosThrowWithFileLineAndKey) {
+  try {
+    simswift::Simulation::fromYaml("duration: 4\nrobots:\n  - {team: 300, player: 1}\n", "bad.yaml");
+    FAIL() << "accepted";
+  } catch (const simswift::api::ConfigError& e) {
+    EXPECT_EQ(e.file, "bad.yaml");
+    EXPECT_EQ(e.line, 3);
+    EXPECT_EQ(e.key, "robots[0].team");
+  }
+  try {
+    simswift::Simulation::fromScenario("/no/such/scenario.yaml");
+    FAIL() << "accepted";
+  } catch (const simswift::api::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("/no/such/scenario.yaml"), std::string::npos) << e.what();
+  }
+}
