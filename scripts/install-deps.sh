@@ -7,6 +7,7 @@ pkgs=(build-essential cmake pkg-config git
       libgtest-dev libbenchmark-dev ffmpeg gdb
       gnuplot-nox parallel
       python3-dev python3-pybind11 python3-pytest python3-numpy   # Python bindings (python/)
+      libboost-math-dev   # the report's statistics (sim/experiment/Statistics.cpp)
       clang libclang-rt-14-dev)   # libFuzzer targets (README "Tests, sanitizers and fuzzing")
 missing=()
 for p in "${pkgs[@]}"; do

@@ -418,6 +418,7 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
     }
     s << "\n\n";
   }
+  s << statisticsSection(e, results);
   return s.str();
 }
 

@@ -43,6 +43,9 @@ std::vector<std::pair<int, int>> summaryGroups(int rows);  // [first, last) row 
 // The whole report's deterministic part (everything but the wall clock).
 // `results` sorted by trial, one per trial.
 std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& results);
+// Its statistics section (ReportStatistics.cpp): 95 % intervals per cell and
+// setup, Fisher and Mann-Whitney tests between setups, in words.
+std::string statisticsSection(const Experiment& e, const std::vector<TrialResult>& results);
 
 // The wall clock of a batch invocation (runBatch), for the timing part.
 struct RunWall {

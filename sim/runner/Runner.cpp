@@ -1,11 +1,10 @@
 #include "sim/runner/Runner.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
-
-#include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <thread>
 

@@ -1,6 +1,7 @@
 // The lock-step runner: one World, one BodyHost + SensorSuite per robot, and
 // the robot programs' threads (builtin: in this process; external: another
-// process attached by name). Each 10 ms tick runs these stages, in this
+// process attached by name, started by hand or launched by the runner:
+// ProgramProcess.hpp). Each 10 ms tick runs these stages, in this
 // order (Runner::tick; this is the one place the order is written down):
 //   1. applyCommands      every robot's command latched last tick goes to its
 //                         servos (and sonar mode): a command written during

@@ -1,0 +1,43 @@
+// The report's statistics: 95 % intervals for a find rate (Wilson score)
+// and for a mean find time (percentile bootstrap over trials, seeded), and
+// two-sided tests of a difference between two components on the same
+// positions: Fisher's exact test (find rates, a 2 x 2 table) and the
+// Mann-Whitney U test (find times). Distributions from Boost.Math.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace simswift::experiment::stats {
+
+struct Interval {
+  double lo = 0, hi = 0;
+};
+
+// Wilson score interval for k successes in n trials (n = 0: [0, 1]).
+Interval wilson(int k, int n, double confidence = 0.95);
+
+// Percentile bootstrap interval of the mean of xs: `resamples` resamples
+// with replacement drawn from a generator seeded with `seed` (the same seed
+// gives the same interval). Empty xs: [0, 0]; one value: [x, x].
+Interval bootstrapMean(const std::vector<double>& xs, uint64_t seed, int resamples = 2000,
+                       double confidence = 0.95);
+
+// Two-sided Fisher's exact test of the 2 x 2 table {{a, b}, {c, d}}
+// (rows: components, columns: found / not found): the probability, under
+// the hypergeometric null with the margins fixed, of a table at most as
+// likely as this one.
+double fisherExact(int a, int b, int c, int d);
+
+// Two-sided Mann-Whitney U test of x against y. Exact (the U distribution
+// by counting) when there are no ties and both samples have at most 30
+// values; otherwise the normal approximation with tie and continuity
+// corrections. u = U of x (pairs with x > y, ties counting 1/2).
+struct MannWhitney {
+  double u = 0;
+  double p = 1;
+  bool exact = false;
+};
+MannWhitney mannWhitney(const std::vector<double>& x, const std::vector<double>& y);
+
+}  // namespace simswift::experiment::stats
