@@ -208,6 +208,7 @@ int main(int argc, char** argv) {
     if (k == crash_at) {
       std::fprintf(stderr, "%s: crashing at tick %ld (--crash-at)\n", kName.c_str(), k);
       std::fflush(stderr);
+      std::signal(SIGSEGV, SIG_DFL);  // not a sanitizer's handler: die of the signal itself
       std::raise(SIGSEGV);
     }
     block->sensors_read = block->sensors_latest;
