@@ -52,5 +52,16 @@ inline RobotNames bareNames() { return namesWithSuffix(""); }
 inline std::string robotTag(int team, int player) {
   return "t" + std::to_string(team) + "p" + std::to_string(player);
 }
+// The inverse: "t19p2" -> 19, 2 (false for anything else).
+inline bool parseRobotTag(const std::string& tag, int* team, int* player) {
+  size_t p = tag.find('p');
+  if (tag.size() < 4 || tag[0] != 't' || p == std::string::npos || p == 1 || p + 1 == tag.size()) return false;
+  for (size_t i = 1; i < tag.size(); ++i)
+    if (i != p && (tag[i] < '0' || tag[i] > '9')) return false;
+  if (p - 1 > 3 || tag.size() - p - 1 > 3) return false;  // at most 3 digits each
+  *team = std::stoi(tag.substr(1, p - 1));
+  *player = std::stoi(tag.substr(p + 1));
+  return true;
+}
 
 }  // namespace agent::libagent

@@ -19,10 +19,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "agent/libagent/SharedNames.hpp"
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/experiment/Figures.hpp"
 #include "sim/experiment/PrivateShm.hpp"
 #include "sim/experiment/Report.hpp"
+#include "sim/experiment/Statistics.hpp"
 #include "sim/experiment/Trial.hpp"
 
 namespace simswift::experiment {
@@ -458,7 +460,7 @@ void assemble(const Experiment& e, const std::string& dir, std::string* notes, c
     if (!rtf.empty())
       s << "Trials " << results.size() << "; simulated " << fixed(sim, 1) << " s in " << fixed(wall, 1)
         << " s of worker time; real-time factor min " << fixed(rtf.front(), 2) << ", median "
-        << fixed(rtf[rtf.size() / 2], 2) << ", max " << fixed(rtf.back(), 2) << ".\n\n";
+        << fixed(stats::median(rtf), 2) << ", max " << fixed(rtf.back(), 2) << ".\n\n";
     s << "| Trial | Setup | Position | Simulated s | Wall s | Real-time factor |\n|---:|---|---:|---:|---:|---:|\n";
     for (const TrialResult& r : results)
       s << "| " << r.trial << " | " << r.setup << " | " << r.position << " | " << fixed(r.sim_s, 2) << " | "
@@ -473,7 +475,7 @@ void assemble(const Experiment& e, const std::string& dir, std::string* notes, c
   std::vector<std::vector<RouteSamples>> routes(e.setups.size());
   for (size_t s = 0; s < e.setups.size(); ++s)
     for (const ExperimentRobot& r : e.setups[s].robots)
-      routes[s].push_back({"t" + std::to_string(r.team) + "p" + std::to_string(r.player), {}});
+      routes[s].push_back({agent::libagent::robotTag(r.team, r.player), {}});
   {
     std::istringstream in(tracks);
     std::string line;

@@ -6,6 +6,8 @@
 #include <set>
 #include <sstream>
 
+#include "agent/libagent/SharedNames.hpp"
+#include "sim/experiment/Statistics.hpp"
 #include "sim/experiment/ThesisTables.hpp"
 
 namespace simswift::experiment {
@@ -179,12 +181,6 @@ std::string besideTable(const ThesisTable& t, const std::vector<PositionStats>& 
   return s.str();
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
 }  // namespace
 
@@ -217,7 +213,7 @@ std::string wallClockSection(const Experiment& e, const std::vector<TrialResult>
       return;
     }
     s << "| " << label << " | " << rtf.size() << " | " << fixed(sim, 1) << " | " << fixed(wall, 1) << " | "
-      << f2(*std::min_element(rtf.begin(), rtf.end())) << " | " << f2(median(rtf)) << " | "
+      << f2(*std::min_element(rtf.begin(), rtf.end())) << " | " << f2(stats::median(rtf)) << " | "
       << f2(*std::max_element(rtf.begin(), rtf.end())) << " |\n";
   };
   for (const Setup& st : e.setups) row("`" + st.name + "`", st.name);
@@ -298,7 +294,7 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
         dist[k] += r.robots[k].distance_m;
         falls[k] += r.robots[k].falls;
         moves[k] += r.robots[k].sideline_moves;
-        if (r.found && r.finder == "t" + std::to_string(r.robots[k].team) + "p" + std::to_string(r.robots[k].player))
+        if (r.found && r.finder == agent::libagent::robotTag(r.robots[k].team, r.robots[k].player))
           ++finds[k];
       }
     }

@@ -17,6 +17,13 @@ double zFor(double confidence) {
 
 }  // namespace
 
+double median(std::vector<double> xs) {
+  if (xs.empty()) return 0;
+  std::sort(xs.begin(), xs.end());
+  const size_t n = xs.size();
+  return n % 2 ? xs[n / 2] : (xs[n / 2 - 1] + xs[n / 2]) / 2;
+}
+
 Interval wilson(int k, int n, double confidence) {
   if (n <= 0) return {0.0, 1.0};
   const double z = zFor(confidence), p = static_cast<double>(k) / n, z2 = z * z;

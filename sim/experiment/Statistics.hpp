@@ -10,6 +10,9 @@
 
 namespace simswift::experiment::stats {
 
+// The median (the mean of the two middle values for an even count; 0 if empty).
+double median(std::vector<double> xs);
+
 struct Interval {
   double lo = 0, hi = 0;
 };

@@ -18,7 +18,6 @@ std::string fixed(double v, int decimals) {
 
 namespace {
 
-std::string tag(int team, int player) { return "t" + std::to_string(team) + "p" + std::to_string(player); }
 
 // Torso pose (field frame): x, y m, heading rad.
 struct Pose2 {
@@ -187,7 +186,7 @@ void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& 
     if (finder >= 0) {
       res.found = true;
       res.seconds = clock(tick);
-      res.finder = tag(setup.robots[finder].team, setup.robots[finder].player);
+      res.finder = agent::libagent::robotTag(setup.robots[finder].team, setup.robots[finder].player);
       break;
     }
   }
@@ -217,7 +216,7 @@ std::string csvRow(const TrialResult& r, int robots) {
   for (int k = 0; k < robots; ++k) {
     if (k < static_cast<int>(r.robots.size())) {
       const RobotOutcome& o = r.robots[k];
-      s << ',' << tag(o.team, o.player) << ',' << fixed(o.distance_m, 3) << ',' << o.falls << ','
+      s << ',' << agent::libagent::robotTag(o.team, o.player) << ',' << fixed(o.distance_m, 3) << ',' << o.falls << ','
         << o.sideline_moves;
     } else {
       s << ",,,,";
@@ -246,7 +245,7 @@ TrialResult parseCsvRow(const std::string& line) {
     for (size_t k = 10; k + 3 < f.size(); k += 4) {
       if (f[k].empty()) continue;
       RobotOutcome o;
-      if (std::sscanf(f[k].c_str(), "t%dp%d", &o.team, &o.player) != 2) throw std::runtime_error("player " + f[k]);
+      if (!agent::libagent::parseRobotTag(f[k], &o.team, &o.player)) throw std::runtime_error("player " + f[k]);
       o.distance_m = std::stod(f[k + 1]);
       o.falls = std::stoi(f[k + 2]);
       o.sideline_moves = std::stoi(f[k + 3]);
@@ -264,7 +263,7 @@ std::string tracksRows(const TrialResult& r, const Experiment& e) {
   std::ostringstream s;
   for (const TrackSample& p : r.tracks) {
     const RobotOutcome& o = r.robots[p.robot];
-    s << r.trial << ',' << r.setup << ',' << tag(o.team, o.player) << ',' << fixed(p.t, 2) << ',' << fixed(p.x, 3)
+    s << r.trial << ',' << r.setup << ',' << agent::libagent::robotTag(o.team, o.player) << ',' << fixed(p.t, 2) << ',' << fixed(p.x, 3)
       << ',' << fixed(p.y, 3) << ',' << fixed(p.theta, 3) << '\n';
   }
   return s.str();
