@@ -149,12 +149,9 @@ int main(int argc, char** argv) {
       r.tick();
       if (i < 500 || i % 10 != 0) continue;
       const auto est = r.program(0)->board().localisation.read();
-      const auto& body = r.world().robot(0);
-      const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
-      const Eigen::Vector3d fwd = torso.linear().col(0);
-      const double e = std::hypot(est.pose.x - 1000 * torso.translation().x(),
-                                  est.pose.y - 1000 * torso.translation().y());
-      const double dh = std::atan2(fwd.y(), fwd.x()) - est.pose.theta;
+      const auto t = r.world().robot(0).torsoPose();
+      const double e = std::hypot(est.pose.x - 1000 * t.x, est.pose.y - 1000 * t.y);
+      const double dh = t.heading - est.pose.theta;
       pos.push_back(e);
       mine.push_back(e);
       head.push_back(std::fabs(std::atan2(std::sin(dh), std::cos(dh))));

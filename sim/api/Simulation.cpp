@@ -195,11 +195,8 @@ Pose Robot::pose() const {
     p.x = s.x, p.y = s.y, p.theta = s.theta;
     return p;
   }
-  const RobotBody& body = r.world().robot(index_);
-  const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
-  const Eigen::Vector3d fwd = torso.linear().col(0);
-  p.x = torso.translation().x(), p.y = torso.translation().y(), p.z = torso.translation().z();
-  p.theta = std::atan2(fwd.y(), fwd.x());
+  const RobotBody::TorsoPose t = r.world().robot(index_).torsoPose();
+  p.x = t.x, p.y = t.y, p.z = t.z, p.theta = t.heading;
   return p;
 }
 

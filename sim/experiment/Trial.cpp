@@ -24,10 +24,8 @@ struct Pose2 {
   double x, y, theta, z;
 };
 Pose2 torsoPose(const World& w, int i) {
-  const RobotBody& body = w.robot(i);
-  const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
-  const Eigen::Vector3d fwd = torso.linear().col(0);
-  return {torso.translation().x(), torso.translation().y(), std::atan2(fwd.y(), fwd.x()), torso.translation().z()};
+  const RobotBody::TorsoPose t = w.robot(i).torsoPose();
+  return {t.x, t.y, t.heading, t.z};
 }
 
 // Where a robot down too long goes: its nearest touch line at its x (kept

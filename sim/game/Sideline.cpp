@@ -18,10 +18,8 @@ PlanarPose sidelinePose(const FieldConfig& field, int team, double y, int slot) 
 }
 
 PlanarPose robotPose(const World& world, int robot) {
-  const RobotBody& body = world.robot(robot);
-  const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
-  const Eigen::Vector3d fwd = torso.linear().col(0);
-  return {torso.translation().x(), torso.translation().y(), std::atan2(fwd.y(), fwd.x())};
+  const RobotBody::TorsoPose t = world.robot(robot).torsoPose();
+  return {t.x, t.y, t.heading};
 }
 
 PlanarPose PenaltyPlacer::penalise(World& world, int robot, int team) {

@@ -300,6 +300,12 @@ Eigen::Isometry3d RobotBody::linkPose(int link) const {
   return t;
 }
 
+RobotBody::TorsoPose RobotBody::torsoPose() const {
+  const Eigen::Isometry3d torso = linkPose(model_->rootLink());
+  const Eigen::Vector3d fwd = torso.linear().col(0);
+  return {torso.translation().x(), torso.translation().y(), torso.translation().z(), std::atan2(fwd.y(), fwd.x())};
+}
+
 Eigen::Vector3d RobotBody::linkLinearVelocity(int link, const Eigen::Vector3d& point_in_link) const {
   const Eigen::Vector3d p = linkPose(link) * point_in_link;
   dVector3 v;

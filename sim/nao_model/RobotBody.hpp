@@ -84,6 +84,13 @@ class RobotBody {
   dBodyID body(int link) const { return bodies_[link]; }
   dBodyID torsoBody() const { return bodies_[model_->rootLink()]; }
   Eigen::Isometry3d linkPose(int link) const;            // link frame in world
+  // The torso's origin (m) and the heading of its x axis (rad, atan2 of its
+  // projection on the ground), field frame: where a robot "is".
+  struct TorsoPose {
+    double x = 0, y = 0, z = 0;
+    double heading = 0;
+  };
+  TorsoPose torsoPose() const;
   Eigen::Vector3d linkLinearVelocity(int link, const Eigen::Vector3d& point_in_link) const;
   Eigen::Vector3d linkAngularVelocity(int link) const;   // world frame
   const std::vector<dGeomID>& geoms() const { return geoms_; }

@@ -514,8 +514,7 @@ void Runner::latchActuators() {
 
 void Runner::updateFalls() {
   for (size_t i = 0; i < robots_.size(); ++i) {
-    const RobotBody& body = world_->robot(static_cast<int>(i));
-    robots_[i]->fall.update(body.linkPose(body.model().rootLink()).translation().z());  // torso origin height, m
+    robots_[i]->fall.update(world_->robot(static_cast<int>(i)).torsoPose().z);  // torso origin height, m
   }
 }
 
@@ -617,12 +616,9 @@ RunStats Runner::stats() const {
   for (size_t i = 0; i < robots_.size(); ++i) {
     s.falls += robots_[i]->fall.falls;
     if (world_ && static_cast<int>(i) < world_->numRobots() && i < scenario_.robots.size()) {
-      const RobotBody& body = world_->robot(static_cast<int>(i));
-      const Eigen::Isometry3d torso = body.linkPose(body.model().rootLink());
-      const Eigen::Vector3d fwd = torso.linear().col(0);  // torso x axis in the field frame
-      s.robots.push_back({scenario_.robots[i].team, scenario_.robots[i].player, torso.translation().x(),
-                          torso.translation().y(), std::atan2(fwd.y(), fwd.x()), robots_[i]->fall.falls,
-                          robots_[i]->fall.fallen});
+      const RobotBody::TorsoPose t = world_->robot(static_cast<int>(i)).torsoPose();
+      s.robots.push_back({scenario_.robots[i].team, scenario_.robots[i].player, t.x, t.y, t.heading,
+                          robots_[i]->fall.falls, robots_[i]->fall.fallen});
     }
     if (robots_[i]->host) s.skipped_cycles += robots_[i]->host->skippedCycles();
     if (world_ && static_cast<int>(i) < world_->numRobots()) {
