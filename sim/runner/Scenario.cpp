@@ -41,11 +41,12 @@ std::vector<std::string> dataDirs() {
   }
   // Beside the library holding this code when it is libsimswift.so
   // (<prefix>/lib/libsimswift.so -> <prefix>/share/simswift), wherever the
-  // package was installed.
+  // package was installed; build/libsimswift.so -> build/share/simswift.
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&dataDirs), &info) && info.dli_fname) {
     const std::filesystem::path lib = std::filesystem::absolute(info.dli_fname, ec);
     if (!ec) dirs.push_back((lib.parent_path().parent_path() / "share" / "simswift").string());
+    if (!ec) dirs.push_back((lib.parent_path() / "share" / "simswift").string());
     if (!ec && lib.parent_path().filename() != "lib")  // lib/<multiarch>/libsimswift.so
       dirs.push_back((lib.parent_path().parent_path().parent_path() / "share" / "simswift").string());
   }
