@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
     std::printf("simswift 0.1\n");
     return 0;
   }
-  if (cmd == "experiment")  // the behaviours of agent/behaviour (issue 12) in the trials
+  if (cmd == "experiment")  // the behaviours of agent/behaviour in the trials
     return simswift::experiment::experimentMain(argc - 1, argv + 1, simswift::experiment::behaviourHooks());
   if (cmd == "clean") return cleanMain(argc, argv);
   if (cmd != "run") usageError("unknown command '" + cmd + "'");

@@ -1,4 +1,4 @@
-// Camera rendering throughput (issue 4):
+// Camera rendering throughput:
 //  - frames per second of one NAO camera (render + YUYV conversion) at
 //    640x480 and 1280x960, on one core (LP_NUM_THREADS=1, see Renderer.hpp);
 //  - real-time factor of one robot stepping physics at 100 Hz and rendering

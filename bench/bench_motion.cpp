@@ -1,4 +1,4 @@
-// Motion benchmark (issues 3, 10): achieved / commanded speed of the walk at
+// Motion benchmark: achieved / commanded speed of the walk at
 // 25, 50, 75 and 100 % of each limit (walk gains at 1.0: no calibration;
 // mean of seeds 1-3, spread printed), heading drift of a combined forward +
 // sideways walk, the joints' hinge-anchor separation and the stance feet's

@@ -1,4 +1,4 @@
-// Perception benchmark (issues 11, 24): the real-time factor of 1, 3 and 10
+// Perception benchmark: the real-time factor of 1, 3 and 10
 // robots walking with the whole robot program (Motion; Perception at 30 Hz
 // with the vision adapter, localisation, ball tracker, team modules), wall
 // clock and CPU time of this process, and the localisation error (mean,

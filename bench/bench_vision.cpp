@@ -1,4 +1,4 @@
-// Vision oracle cost (issue 11):
+// Vision oracle cost:
 //  - microseconds of oracle work per 30 Hz camera frame for 3 robots (both
 //    cameras each), default detector model, in a game-like scene (robots
 //    facing each other across the centre circle, ball between them);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Search for the front get-up's keyframes in simswift (issue 10).
+"""Search for the front get-up's keyframes in simswift (tuned for the NAO motor model).
 
 How the front get-up in agent/motion/Generators.cpp (getupFrontFrames) was
 retuned for the faithful motors (torque falling linearly with speed, gear

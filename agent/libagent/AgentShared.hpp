@@ -2,7 +2,7 @@
 // body it drives (a real NAO through libagent, or simswift).
 //
 // AgentData is, byte for byte, the block of the public rUNSWift 2017 release
-// (facts.md section 2): four uint8_t triple-buffer indices; three slots each
+// (rUNSWift 2017 release, robot/libagent): four uint8_t triple-buffer indices; three slots each
 // of sensors, button presses, joint commands, LEDs, sonar mode, stiffen
 // request and say-text; the `standing` flag. sizeof = 3284 on x86-64 and
 // i386; tests/agent/test_libagent_layout.cpp pins every offset. Nothing is

@@ -1,4 +1,4 @@
-// Names of the libagent joint and sensor slots, in slot order (facts.md
+// Names of the libagent joint and sensor slots, in slot order (rUNSWift 2017 release, robot/libagent
 // section 2). Kept beside AgentShared.hpp so the robot code and the simulator
 // spell them identically.
 #include "agent/libagent/AgentShared.hpp"

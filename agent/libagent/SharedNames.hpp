@@ -3,7 +3,7 @@
 // On a NAO there is one robot per machine: libagent opens the bare names
 // /libagent-memory and /libagent-semaphore. rUNSWift's simulation build
 // appends N = SPL team number x 11 + player number, with no separator
-// (facts.md section 2): team 19, player 1 -> /libagent-memory210 and
+// (rUNSWift 2017 release, robot/libagent): team 19, player 1 -> /libagent-memory210 and
 // /libagent-semaphore210. simswift uses that rule by default and the bare
 // names for a single robot on request.
 //

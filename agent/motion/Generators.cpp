@@ -171,7 +171,7 @@ void KeyframeGenerator::tick(double dt, libagent::JointValues& out, bool with_he
 // pi/2 down along the body, > pi/2 behind it.
 std::vector<Keyframe> getupFrontFrames(const WalkConfig& cfg) {
   // Tuned in simswift for the NAO's motors (torque falling linearly with
-  // speed, gear efficiency 0.8; issue 10) by scripts/tune-getup-front.py, an
+  // speed, gear efficiency 0.8) by scripts/tune-getup-front.py, an
   // evolution strategy over the frames after the arms are overhead, scored
   // on pushed-over trials with noise seeds 500-505 (the test uses 100-109).
   // The previous sequence swept the arms from overhead down under the

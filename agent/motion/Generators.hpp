@@ -91,7 +91,7 @@ struct KickConfig {
   // front face (15 mm sole box) up to the ball's centre height: the ball
   // leaves nearly flat (0.2 m/s upward, against 0.45 m/s at 45 mm).
   double lift = 55.0;
-  double wind_back = 75.0;     // mm behind the hip at full power (issue 10: 55 mm fell short on the NAO motors)
+  double wind_back = 75.0;     // mm behind the hip at full power (55 mm fell short with the NAO's motor model)
   double reach = 120.0;        // mm ahead of the hip at the strike
   double strike_time_fast = 0.065;  // s at power 1 (the joints' speed limits stretch it: contact ~0.13 s in)
   double strike_time_slow = 0.25;   // s at power 0

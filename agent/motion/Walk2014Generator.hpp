@@ -1,4 +1,4 @@
-// A Walk2014-style omnidirectional walk (facts.md section 3), written for
+// A Walk2014-style omnidirectional walk (rUNSWift's Walk2014 (B. Hengst, 2014 release and report)), written for
 // simswift. Open-loop foot trajectories through closed-form leg IK, with
 // support-foot switching from the FSRs and gyro feedback on the ankles.
 //

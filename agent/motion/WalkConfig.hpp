@@ -1,5 +1,5 @@
 // Every parameter of the Walk2014-style walk in one typed struct, with units.
-// Defaults follow facts.md section 3 except where a comment says otherwise.
+// Defaults follow rUNSWift's Walk2014 (B. Hengst, 2014 release and report) except where a comment says otherwise.
 // Units: mm, mm/s, rad, rad/s, s, kg (FSRs, as the NAO reports them).
 #pragma once
 
@@ -27,7 +27,7 @@ struct WalkConfig {
 
   // --- Heights (hip joint above the sole, mm)
   double walk_hip_height = 210.0;
-  // facts.md gives 248 mm for Walk2014's stand, which is a straight leg here
+  // rUNSWift's Walk2014 gives 248 mm for its stand, which is a straight leg here
   // (248.09 mm); 230 mm keeps the knees bent so the servos can absorb.
   double stand_hip_height = 230.0;
   double start_time = 0.5;  // s to sink from stand to walk height (and to rise)
@@ -80,7 +80,7 @@ struct WalkConfig {
 
   // --- Calibration: what a team measures on its own robot (step length
   // achieved / commanded, per axis). No simulator compensation here: with
-  // the body model of issue 10 the walk reaches its command uncalibrated, so
+  // the current body model (motors, sole contacts, joint projection) the walk reaches its command uncalibrated, so
   // every entry is 1.0 (bench_motion prints achieved / commanded). A team
   // would set one factor per axis from its robot's measurements; keep any
   // such factor within 10 % of 1 (beyond that the walk itself is wrong).

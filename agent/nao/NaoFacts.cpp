@@ -5,7 +5,7 @@ namespace agent::nao {
 namespace {
 // Degrees as published (float: the command type).
 constexpr float kDegF = static_cast<float>(kDeg);
-// Speeds by motor type (rad/s), facts.md section 1.
+// Speeds by motor type (rad/s), Aldebaran's NAO V5 (H25) documentation.
 constexpr float kFast = 8.268f, kMid = 7.194f, kLeg = 6.402f, kHip = 4.162f;
 }  // namespace
 

@@ -3,7 +3,7 @@
 // The one home of these numbers: agent/ uses them for kinematics, the walk
 // and the camera matrix; sim/ includes this header for the same facts (the
 // simulator may include agent/ headers, never the reverse). The figures are
-// the published Aldebaran ones restated in facts.md section 1;
+// the published Aldebaran ones restated in Aldebaran's NAO V5 (H25) documentation;
 // tests/nao_model/test_nao_facts.cpp holds them against models/nao_v5.urdf.
 //
 // Units: mm, rad, rad/s. Frames: x forward, y left, z up (NAO convention).
@@ -54,7 +54,7 @@ constexpr double kCameraRateHz = kCameraFramesPerSecond;  // Hz
 
 // ---------------------------------------------------------------- timing
 // The DCM's cycle: sensors in, joint commands out, and the Motion thread's
-// tick (facts.md section 2). The one home of the 10 ms tick for robot code
+// tick (rUNSWift 2017 release, robot/libagent). The one home of the 10 ms tick for robot code
 // and simulator alike.
 constexpr int64_t kMotionTickUs = 10000;                        // us (100 Hz)
 constexpr double kMotionTickSeconds = kMotionTickUs * 1e-6;     // s

@@ -23,14 +23,14 @@ struct Intrinsics {
   double cx = 0, cy = 0;          // principal point, px (continuous coordinates)
 
   // The NAO camera at the given resolution: 60.9 x 47.6 deg field of view
-  // (facts.md section 1), principal point at the image centre.
+  // (Aldebaran's NAO V5 (H25) documentation), principal point at the image centre.
   // fx = (w/2)/tan(hfov/2) ~ 544.2 px at 640 wide; fy from the vertical FOV.
   static Intrinsics nao(int width = 640, int height = 480);
   // A free camera with the given horizontal FOV (rad) and square pixels.
   static Intrinsics fromHorizontalFov(int width, int height, double hfov);
 };
 
-// Fixed camera mounting on the head, facts.md section 1: offsets (m) from
+// Fixed camera mounting on the head, Aldebaran's NAO V5 (H25) documentation: offsets (m) from
 // the frame of the link the HeadPitch joint moves, and the downward pitch.
 struct NaoCameraMount {
   Eigen::Vector3d offset;  // m, in the head frame

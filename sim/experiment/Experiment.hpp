@@ -59,7 +59,7 @@
 
 namespace simswift::experiment {
 
-// Behaviours an experiment may name (issue 12's scenario `behaviour:`).
+// Behaviours an experiment may name (a scenario's `behaviour:`).
 // Whether this build can run one is the BehaviourFactory's call (TrialHooks).
 enum class Behaviour { FindBall2016, FindBall2017, Striker, Script };
 const char* behaviourName(Behaviour b);

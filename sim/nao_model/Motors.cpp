@@ -9,7 +9,7 @@ namespace {
 
 constexpr double kRpmToRadS = 2.0 * 3.14159265358979323846 / 60.0;
 
-// facts.md section 1: no-load speed, stall / nominal torque (mN*m).
+// Aldebaran's NAO V5 (H25) documentation: no-load speed, stall / nominal torque (mN*m).
 constexpr MotorType kReMax24{"RE-Max 24", 8000.0, 0.0595, 0.0123};
 constexpr MotorType kReMax17{"RE-Max 17", 11900.0, 0.0151, 0.00384};
 
@@ -28,7 +28,7 @@ double JointMotor::stallTorque() const { return motor.stall_torque * reduction; 
 double JointMotor::nominalTorque() const { return motor.nominal_torque * reduction; }
 
 std::optional<JointMotor> naoJointMotor(const std::string& name) {
-  // Type A / type B gearboxes per joint, facts.md section 1.
+  // Type A / type B gearboxes per joint, Aldebaran's NAO V5 (H25) documentation.
   for (const char* j : {"HipYawPitch", "HipRoll", "AnkleRoll"})
     if (endsWith(name, j)) return JointMotor{kReMax24, 201.3};
   for (const char* j : {"HipPitch", "KneePitch", "AnklePitch"})

@@ -1,5 +1,5 @@
 // The NAO V5's joint motors: the one home for motor types, reductions and
-// the electrical figures the motor model needs (facts.md section 1, from
+// the electrical figures the motor model needs (Aldebaran's NAO V5 (H25) documentation, from
 // Aldebaran's hardware documentation; V4 and V5 share them).
 //
 // Joint-side figures follow from the motor and the reduction N:

@@ -4,7 +4,7 @@
 // pressed when something other than the carpet (another robot, a post, the
 // ball) pushes on the foot ahead of SensorConfig::bumper_min_x (m, ankle
 // frame); the halves split at the sole's mid-line, y = +-5.62 mm (the sole
-// spans 38.78 mm inside and 50.02 mm outside the ankle; facts.md).
+// spans 38.78 mm inside and 50.02 mm outside the ankle; Aldebaran's NAO V5 (H25) documentation).
 // The chest button and the three head pads have no physical model: the
 // scenario presses them through SensorSuite::setButton.
 #pragma once

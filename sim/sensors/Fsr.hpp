@@ -1,5 +1,5 @@
 // Foot force-sensitive resistors: 4 per foot, placed as on the NAO V5
-// (facts.md section 1), each saturating at 25 N. Pure logic: the caller
+// (Aldebaran's NAO V5 (H25) documentation), each saturating at 25 N. Pure logic: the caller
 // supplies contact points and normal forces in the foot (ankle) frame.
 //
 // Model: each contact's normal force is shared among the four sensors with

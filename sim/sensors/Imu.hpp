@@ -33,7 +33,7 @@
 
 namespace simswift::sensors {
 
-// IMU sensor points in the torso frame (facts.md), m.
+// IMU sensor points in the torso frame (Aldebaran's NAO V5 (H25) documentation), m.
 inline Eigen::Vector3d accelerometerPoint() { return {-0.008, 0.00606, 0.027}; }
 inline Eigen::Vector3d gyroscopePoint() { return {-0.008, 0.006, 0.029}; }
 

@@ -94,7 +94,7 @@ struct VisionConfig {
   BallModel ball_model = BallModel::Detector;
   double thesis_ball_half_angle_deg = 30;  // Thesis2017: either side of the camera's heading
   bool noise = true;                 // false: exact, no misses, no false positives
-  double hfov_deg = 60.9;            // each camera (facts.md section 1)
+  double hfov_deg = 60.9;            // each camera (Aldebaran's NAO V5 (H25) documentation)
   double vfov_deg = 47.6;
   double camera_offset_mm = 5;       // table 3.1: camera position error, uniform +-, once per robot
   double lying_tilt_deg = 45;        // torso z axis from vertical: lying, sees nothing

@@ -109,7 +109,7 @@ Eigen::Vector2d GroundFrame::toRobot(const Eigen::Vector2d& p) const {
 }
 
 CameraMount cameraMount(int camera) {
-  // facts.md section 1: mm from the HeadPitch frame, degrees down.
+  // Aldebaran's NAO V5 (H25) documentation: mm from the HeadPitch frame, degrees down.
   if (camera == 0) return {Eigen::Vector3d(0.05871, 0, 0.06364), 1.2 * kDeg};
   if (camera == 1) return {Eigen::Vector3d(0.05071, 0, 0.01774), 39.7 * kDeg};
   throw std::invalid_argument("vision: camera must be 0 (top) or 1 (bottom)");

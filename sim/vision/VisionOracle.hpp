@@ -12,7 +12,7 @@
 // Nothing here changes the World, so the state hash does not depend on it.
 //
 // Per camera, in this fixed order:
-//  1. Camera pose = head link pose (HeadPitch child) x mounting (facts.md
+//  1. Camera pose = head link pose (HeadPitch child) x mounting (rUNSWift 2017 release, robot/libagent
 //     section 1), plus the per-robot camera position error (table 3.1).
 //  2. Candidates, each tested for: inside the image rectangle (60.9 x 47.6
 //     deg), distance from the feet within [min, max], no robot (other than
@@ -61,7 +61,7 @@ struct SeenObject {
   int source = -1;  // index of the true object: robot index, post, mark, corner, line; -1 for the ball or a phantom
 };
 
-// Fixed camera mounting on the head (facts.md section 1): the same figures as
+// Fixed camera mounting on the head (Aldebaran's NAO V5 (H25) documentation): the same figures as
 // sim/camera/CameraModel.cpp, which the vision library cannot link (it needs
 // OSMesa); tests/vision checks that the two agree.
 struct CameraMount {

@@ -26,7 +26,7 @@
 // a 3 m/s ball to 1.5 cm per step, below the 2 cm net and 10 cm posts.
 // Exact remains selectable (WorldConfig::solver) for reference runs.
 //
-// ERP 0.8 (issue 10), measured with bench_motion's 20 s walk at 300 mm/s
+// ERP 0.8, measured with bench_motion's 20 s walk at 300 mm/s
 // (seed 5; sole patch on; walk gains 1.0): largest hinge-anchor separation
 // over the walk / median per tick, mean stance slip, CPU-time real-time
 // factor (the 2-substep QuickStep baseline measured 65-67x the same way):

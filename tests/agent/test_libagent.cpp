@@ -154,7 +154,7 @@ TEST(AgentConnection, WaitTickReturnsFalseOnShutdown) {
 }
 
 TEST(LibagentNames, SimulationRuleAndBareNames) {
-  // N = SPL team number x 11 + player, no separator (facts.md section 2).
+  // N = SPL team number x 11 + player, no separator (rUNSWift 2017 release, robot/libagent).
   const al::RobotNames n = al::simulationNames(19, 1);
   EXPECT_EQ(n.memory, "/libagent-memory210");
   EXPECT_EQ(n.semaphore, "/libagent-semaphore210");

@@ -1,5 +1,5 @@
 // AgentData is rUNSWift 2017's block byte for byte: the size and every
-// field's offset as in facts.md section 2 (checked there by compiling the
+// field's offset as in rUNSWift 2017 release, robot/libagent (checked there by compiling the
 // public release's declaration). If this fails, a team's unchanged robot
 // program reads the wrong bytes.
 #include <gtest/gtest.h>
@@ -67,7 +67,7 @@ TEST(LibagentLayout, SlotTypesMatchTheRelease) {
   EXPECT_EQ(al::kSayTextLength, 35);
 }
 
-// The slot orders the release uses (facts.md): a few landmarks.
+// The slot orders the release uses (rUNSWift 2017 release, robot/libagent): a few landmarks.
 TEST(LibagentLayout, JointAndSensorOrder) {
   namespace J = al::Joints;
   namespace S = al::Sensors;

@@ -1,4 +1,4 @@
-// Localisation in physics (issue 11's test list), noise on: a robot walks a
+// Localisation in physics, noise on: a robot walks a
 // circle (200 mm/s forward, 0.2 rad/s turn: 1 m radius) through its own
 // half past the penalty area, goal and centre circle, with the robot code's
 // own odometry and the vision oracle's detector model (noise, misses, range).
@@ -18,7 +18,7 @@
 //   frame (after the first second, outside the 3 s after the teleport) is the
 //   estimate nearer the mirrored pose (-x, -y, theta + pi) than the true one.
 //
-// Seeds 401-403 (tests). The filter's parameters date from issue 11
+// Seeds 401-403 (tests). The filter's parameters date from the vision oracle's introduction
 // (synthetic seeds 1001-1020); this test was developed on seeds 1-5.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The pinhole model and the NAO camera mounting (facts.md section 1).
+// The pinhole model and the NAO camera mounting (Aldebaran's NAO V5 (H25) documentation).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +9,7 @@ using namespace simswift::camera;
 
 TEST(CameraModel, NaoIntrinsicsMatchThePublishedFieldOfView) {
   const Intrinsics k = Intrinsics::nao(640, 480);
-  EXPECT_NEAR(k.fx, 544.0, 1.0);  // facts.md: "about 544 px" at 640x480
+  EXPECT_NEAR(k.fx, 544.0, 1.0);  // about 544 px at 640x480 (60.9 deg horizontal field of view, Aldebaran's NAO V5 (H25) documentation)
   EXPECT_NEAR(k.fy, 544.0, 1.0);
   EXPECT_DOUBLE_EQ(k.cx, 320.0);
   EXPECT_DOUBLE_EQ(k.cy, 240.0);

@@ -175,7 +175,7 @@ TEST(ExperimentFile, CommandExitsWithTwoBeforeAnyTrial) {
 }
 
 // The shipped thesis experiments load (their behaviours are refused until
-// issue 12 lands); the script one passes --check.
+// the behaviours land); the script one passes --check.
 TEST(ExperimentFile, ShippedExperiments) {
   const std::string src = SIMSWIFT_SOURCE_DIR;
   const Experiment full = Experiment::loadFile(src + "/scenarios/thesis_findball.yaml");

@@ -204,7 +204,7 @@ TEST(NaoModel, PoseIsometry) {
 }
 
 // The URDF's speed and effort limits are the motor table's joint-side
-// no-load speed and stall torque (sim/nao_model/Motors.hpp, facts.md 1).
+// no-load speed and stall torque (sim/nao_model/Motors.hpp, Aldebaran's NAO V5 (H25) documentation).
 TEST(NaoModel, UrdfLimitsAgreeWithTheMotorTable) {
   const simswift::NaoModel m = simswift::NaoModel::loadUrdf(kUrdfPath);
   int with_motor = 0;

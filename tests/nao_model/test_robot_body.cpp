@@ -286,7 +286,7 @@ TEST(RobotBody, LHipYawPitchDrivesBothHips) {
   EXPECT_LT(worst, 1 * kDeg);
 }
 
-// facts.md section 7: QuickStep (20 iterations) at 5 ms blows the bare NAO
+// Measured with ODE 0.16: QuickStep (20 iterations) at 5 ms blows the bare NAO
 // up; with the default inertia floor (ServoConfig::min_link_inertia) it
 // stands. Probe on this model: floor 0 blows up at 5 and 10 ms; 5e-4 kg*m^2
 // stands at both (torso sags 3 mm at 5 ms, 11 mm at 10 ms).

@@ -182,7 +182,7 @@ TEST(Servo, JointUnderKnownLoadSlowsAlongTheTorqueSpeedLine) {
   }
 }
 
-// The defaults are the NAO's motor (issue 10): the torque-speed line on,
+// The defaults are the NAO's motor: the torque-speed line on,
 // gear efficiency 0.8, a 10 ms position loop.
 TEST(Servo, DefaultsAreTheFaithfulMotor) {
   const ServoConfig cfg;

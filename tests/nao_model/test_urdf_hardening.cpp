@@ -1,7 +1,7 @@
 // The URDF loader refuses absurd or nonsensical input with "file:line: what",
 // before anything reaches ODE. Each case here is an input that crashed the
 // simulator (ODE assertion, stack overflow) or was accepted silently before
-// issue 14; the line asserted is the line of the offending element.
+// bad input is refused with file and line; the line asserted is the line of the offending element.
 #include <gtest/gtest.h>
 
 #include <chrono>

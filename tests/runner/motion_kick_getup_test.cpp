@@ -1,4 +1,4 @@
-// Kick and get-ups in physics (issue 3), through the libagent block only.
+// Kick and get-ups in physics through the libagent block only.
 // Seeded, noise on. Units: m, s, rad (field frame).
 #include <gtest/gtest.h>
 
@@ -53,7 +53,7 @@ void kickTrials(Foot foot, uint64_t first_seed) {
   std::printf("[motion] kick %s, seeds %llu-%llu: %d / 20 reach 2.5 m; min %.2f, median %.2f, max %.2f m; %d falls\n",
               foot == Foot::RIGHT ? "right" : "left", static_cast<unsigned long long>(first_seed),
               static_cast<unsigned long long>(first_seed + 19), far, d.front(), d[10], d.back(), fell);
-  EXPECT_GE(far, 18);  // issue 10
+  EXPECT_GE(far, 18);  // >= 18 of 20 kicks reach 2.5 m
   EXPECT_EQ(fell, 0);
 }
 
@@ -96,7 +96,7 @@ TEST(MotionPhysics, AnkleCommandedToItsStopStaysThere) {
 // within 10 s in at least 9 of 10.
 void getupTrials(bool forwards) {
   int standing = 0;
-  double separation = 0;  // m: the hinge anchors, fall and get-up included (issue 10: < 0.5 mm)
+  double separation = 0;  // m: the hinge anchors, fall and get-up included (goal: < 0.5 mm)
   for (int trial = 0; trial < 10; ++trial) {
     MotionHarness h(100 + trial + (forwards ? 0 : 50));
     h.request(ActionType::STAND);

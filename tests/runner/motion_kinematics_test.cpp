@@ -66,7 +66,7 @@ TEST(MotionKinematics, ForwardKinematicsMatchesTheSimulatedModel) {
   }
 }
 
-// The clipper's limit table (agent/motion, from facts.md) agrees with the
+// The clipper's limit table (agent/motion, from Aldebaran's NAO V5 (H25) documentation) agrees with the
 // simulated model's joint limits and speeds, so clipped commands are never
 // clamped again by the servo.
 TEST(MotionKinematics, ClipperLimitsMatchTheModel) {

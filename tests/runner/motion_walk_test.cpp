@@ -1,4 +1,4 @@
-// Motion in physics (issue 3): the MotionModule drives the simulated NAO
+// Motion in physics: the MotionModule drives the simulated NAO
 // through the libagent block only; the test plays Behaviour through the
 // Blackboard. Seeded, noise on. Achieved figures are printed.
 // Units: m / rad in the field frame, mm/s and rad/s for commands.
@@ -229,7 +229,7 @@ TEST(MotionPhysics, WalkSlowForwardAndCombined) {
     // 0.1-1.0; on the physics before the hinge-stop change tuning seeds 60-79
     // reached 5.9 end-to-start with slopes under 1.8). Both are held to the
     // issue's 0.005 rad/s here.
-    // TODO(issue 10): a smaller in-cycle yaw swing would make the
+    // TODO: a smaller in-cycle yaw swing would make the
     // end-to-start figure as steady as the slope on every seed.
     EXPECT_LT(std::fabs(slope), 0.005) << "seed " << seed;
     EXPECT_LT(std::fabs(turned / 10), 0.005) << "seed " << seed;

@@ -25,7 +25,7 @@ namespace {
 // (the failure prints the new value) or
 //   build/simswift run <kScenario saved as a file> --quiet
 // and paste the hash here, saying in the commit why physics changed.
-constexpr uint64_t kPinnedHash = 0x82de75c896e3f2d8ull;  // issue 10: sole anchors, joint projection, stops 0.01 rad outside the limits, walk heading hold
+constexpr uint64_t kPinnedHash = 0x82de75c896e3f2d8ull;  // since: sole anchors, joint projection, stops 0.01 rad outside the limits, walk heading hold
 
 const char* kScenario =
     "duration: 3\n"

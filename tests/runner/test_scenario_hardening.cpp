@@ -1,5 +1,5 @@
 // Scenario files: nonsense refused before the first tick, with file, line
-// and key (issue 14's list: overlapping robots, off-carpet or in-post
+// and key (the list: overlapping robots, off-carpet or in-post
 // placement, absurd theta, walk speeds, durations and seeds, directories).
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@ using namespace simswift::sensors;
 namespace {
 double sum(const std::array<double, 4>& f) { return f[0] + f[1] + f[2] + f[3]; }
 // Sole centre (m, left ankle frame): 110 mm ahead / 50 behind, 50.02 mm
-// outside / 38.78 inside (facts.md).
+// outside / 38.78 inside (Aldebaran's NAO V5 (H25) documentation).
 const Eigen::Vector2d kLeftSoleCentre(0.030, 0.00562);
 }  // namespace
 

@@ -1,6 +1,6 @@
 // The World refuses absurd values before they reach ODE, and its blow-up
 // detector resets a body before ODE's integrator can abort on it (the
-// dxNormalize4 assertion ended the process before issue 14). Pushes are
+// dxNormalize4 assertion ended the process before the hardening). Pushes are
 // impulses (N*s) and change the robot's momentum by exactly that much.
 #include <gtest/gtest.h>
 
