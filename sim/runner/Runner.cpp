@@ -201,13 +201,10 @@ void Runner::buildHosts() {
     robots_.resize(scenario_.robots.size());
     for (auto& r : robots_) r = std::make_unique<Robot>();
   }
-  // Objects a killed run left for robots not in this run; this run's own
-  // robots take theirs over (a waiting program may hold them open).
-  std::vector<std::string> ours;
-  for (const RobotSpec& spec : scenario_.robots)
-    if (spec.program == RobotSpec::Program::External)
-      ours.push_back(bridge::releaseNames(spec.release, spec.team, spec.player, spec.bare_names).memory);
-  if (!ours.empty()) bridge::removeStaleObjects(ours);
+  // Objects a killed run left: this run's robots take theirs over (a
+  // waiting program may hold them open); other robots' are left to
+  // `simswift clean`, so a run never removes objects it does not use (two
+  // runs starting at once would race on them).
   for (size_t i = 0; i < scenario_.robots.size(); ++i) {
     Robot& r = *robots_[i];
     r.spec = scenario_.robots[i];
