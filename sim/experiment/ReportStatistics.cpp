@@ -21,6 +21,11 @@ std::string pValue(double p) { return p < 0.001 ? "< 0.001" : fixed(p, 3); }
 struct Cell {
   int found = 0, tests = 0;
   std::vector<double> times;  // s, of the finds
+  double meanTime() const {
+    double m = 0;
+    for (double t : times) m += t / static_cast<double>(times.size());
+    return m;
+  }
 };
 
 Cell cell(const std::vector<TrialResult>& results, const std::string& setup, int position) {
@@ -62,33 +67,22 @@ std::string statisticsSection(const Experiment& e, const std::vector<TrialResult
     const std::string& name = e.setups[si].name;
     s << "### `" << name << "`\n\n| Position | Found | Find rate (95 % CI) | Mean find s (95 % CI) |\n"
       << "|---|---:|---:|---:|\n";
-    for (const BallPosition& b : e.balls) {
-      const Cell c = cell(results, name, b.number);
+    // One row: a position (0: all of them).
+    auto row = [&](int position, const std::string& label) {
+      const Cell c = cell(results, name, position);
       const stats::Interval r = stats::wilson(c.found, c.tests);
-      s << "| " << b.number << " | " << c.found << "/" << c.tests << " | "
+      s << "| " << label << " | " << c.found << "/" << c.tests << " | "
         << (c.tests ? pct(static_cast<double>(c.found) / c.tests) + " % " + interval(r, 0, 100.0, " %") : "-")
         << " | ";
       if (c.times.empty()) {
         s << "- |\n";
-      } else {
-        double mean = 0;
-        for (double t : c.times) mean += t / static_cast<double>(c.times.size());
-        s << fixed(mean, 2) << " " << interval(stats::bootstrapMean(c.times, cellSeed(e, si, b.number)), 2)
-          << " |\n";
+        return;
       }
-    }
-    const Cell all = cell(results, name, 0);
-    const stats::Interval r = stats::wilson(all.found, all.tests);
-    s << "| all | " << all.found << "/" << all.tests << " | "
-      << (all.tests ? pct(static_cast<double>(all.found) / all.tests) + " % " + interval(r, 0, 100.0, " %") : "-")
-      << " | ";
-    if (all.times.empty()) {
-      s << "- |\n\n";
-    } else {
-      double mean = 0;
-      for (double t : all.times) mean += t / static_cast<double>(all.times.size());
-      s << fixed(mean, 2) << " " << interval(stats::bootstrapMean(all.times, cellSeed(e, si, 0)), 2) << " |\n\n";
-    }
+      s << fixed(c.meanTime(), 2) << " " << interval(stats::bootstrapMean(c.times, cellSeed(e, si, position)), 2) << " |\n";
+    };
+    for (const BallPosition& b : e.balls) row(b.number, std::to_string(b.number));
+    row(0, "all");
+    s << "\n";
   }
 
   // Every pair of setups, position by position and pooled.
@@ -106,9 +100,7 @@ std::string statisticsSection(const Experiment& e, const std::vector<TrialResult
         const double pf = stats::fisherExact(ca.found, ca.tests - ca.found, cb.found, cb.tests - cb.found);
         s << "| " << label << " | " << ca.found << "/" << ca.tests << " | " << cb.found << "/" << cb.tests << " | "
           << pValue(pf) << " | ";
-        double ma = 0, mb = 0;
-        for (double t : ca.times) ma += t / static_cast<double>(ca.times.size());
-        for (double t : cb.times) mb += t / static_cast<double>(cb.times.size());
+        const double ma = ca.meanTime(), mb = cb.meanTime();
         s << (ca.times.empty() ? "-" : fixed(ma, 2)) << " | " << (cb.times.empty() ? "-" : fixed(mb, 2)) << " | ";
         double pm = 1;
         if (!ca.times.empty() && !cb.times.empty()) {
