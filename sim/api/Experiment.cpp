@@ -5,13 +5,12 @@
 #include <regex>
 #include <sstream>
 
+#include "sim/api/ConfigErrors.hpp"
 #include "sim/experiment/Batch.hpp"
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "simswift/Simulation.hpp"
 
 namespace simswift::api {
-
-ConfigError configError(const std::exception& e);  // Simulation.cpp
 
 namespace {
 

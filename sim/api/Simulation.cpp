@@ -14,6 +14,7 @@
 #include "agent/program/MotionGenerator.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/Scenario.hpp"
+#include "sim/api/ConfigErrors.hpp"
 
 namespace simswift::api {
 
@@ -26,9 +27,12 @@ static_assert(offsetof(SensorValues, sensors) == offsetof(al::SensorValues, sens
 static_assert(offsetof(SensorValues, sonar) == offsetof(al::SensorValues, sonar));
 static_assert(offsetof(JointValues, stiffnesses) == offsetof(al::JointValues, stiffnesses));
 static_assert(kNumJoints == al::kNumJoints && kNumSensors == al::kNumSensors && kNumSonars == al::kNumSonars);
-static_assert(RHand == al::Joints::RHand && LKneePitch == al::Joints::LKneePitch);
-static_assert(Sonar == al::Sensors::US && RFsrRearRight == al::Sensors::RFoot_FSR_RearRight &&
-              ChestButton == al::Sensors::ChestBoard_Button && BatteryCharge == al::Sensors::Battery_Charge);
+// The index enums count the same slots (compared as ints: distinct enums).
+constexpr bool sameIndex(int a, int b) { return a == b; }
+static_assert(sameIndex(RHand, al::Joints::RHand) && sameIndex(LKneePitch, al::Joints::LKneePitch));
+static_assert(sameIndex(Sonar, al::Sensors::US) && sameIndex(RFsrRearRight, al::Sensors::RFoot_FSR_RearRight) &&
+              sameIndex(ChestButton, al::Sensors::ChestBoard_Button) &&
+              sameIndex(BatteryCharge, al::Sensors::Battery_Charge));
 
 namespace {
 
@@ -51,7 +55,6 @@ class ControllerMotion : public agent::program::MotionGenerator {
 
 }  // namespace
 
-// "file:line: key: message" (the ConfigError form) split up.
 ConfigError configError(const std::exception& e) {
   const std::string m = e.what();
   static const std::regex form(R"(^(.*?):(\d+): ([^: ][^:]*): )");
@@ -61,10 +64,6 @@ ConfigError configError(const std::exception& e) {
   if (std::regex_search(m, g, file_line)) return ConfigError(m, g[1].str(), std::stoi(g[2].str()), "");
   return ConfigError(m, "", 0, "");
 }
-
-namespace {
-ConfigError apiError(const std::exception& e) { return configError(e); }
-}  // namespace
 
 struct Simulation::Impl {
   explicit Impl(runner::Scenario sc) : runner(std::move(sc)) {}
@@ -92,7 +91,7 @@ Simulation Simulation::fromScenario(const std::string& path) {
   try {
     return Simulation(std::make_unique<Impl>(runner::Scenario::loadFile(path)));
   } catch (const simswift::ConfigError& e) {
-    throw apiError(e);
+    throw configError(e);
   }
 }
 
@@ -102,7 +101,7 @@ Simulation Simulation::fromYaml(const std::string& text, const std::string& name
     if (!base_dir.empty()) sc.base_dir = base_dir;
     return Simulation(std::make_unique<Impl>(std::move(sc)));
   } catch (const simswift::ConfigError& e) {
-    throw apiError(e);
+    throw configError(e);
   }
 }
 
@@ -110,7 +109,7 @@ void Simulation::step() {
   try {
     impl_->start();
   } catch (const simswift::ConfigError& e) {
-    throw apiError(e);
+    throw configError(e);
   }
   impl_->runner.tick();
 }

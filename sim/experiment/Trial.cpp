@@ -71,28 +71,30 @@ std::vector<std::string> splitCsv(const std::string& line) {
 namespace {
 void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& sc, const TrialHooks& hooks,
                TrialResult& res);
+
+// What a trial's row says before it runs: which trial, and its robots with
+// nothing walked, fallen or moved yet.
+TrialResult trialHeader(const Experiment& e, const TrialSpec& t) {
+  const Setup& setup = e.setups[t.setup];
+  TrialResult res;
+  res.trial = t.index;
+  res.setup = setup.name;
+  res.position = e.balls[t.ball].number;
+  res.repeat = t.repeat;
+  res.seed = t.seed;
+  for (const ExperimentRobot& r : setup.robots) res.robots.push_back(RobotOutcome{r.team, r.player});
+  return res;
+}
 }  // namespace
 
 TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs) {
   using Clock = std::chrono::steady_clock;
   const auto wall0 = Clock::now();  // timing only
   const TrialSpec t = trialSpec(e, index);
-  const Setup& setup = e.setups[t.setup];
   runner::Scenario sc = trialScenario(e, t);
   hooks.behaviours->configure(e, t, sc);
 
-  TrialResult res;
-  res.trial = index;
-  res.setup = setup.name;
-  res.position = e.balls[t.ball].number;
-  res.repeat = t.repeat;
-  res.seed = t.seed;
-  const int n = static_cast<int>(setup.robots.size());
-  res.robots.resize(n);
-  for (int i = 0; i < n; ++i) {
-    res.robots[i].team = setup.robots[i].team;
-    res.robots[i].player = setup.robots[i].player;
-  }
+  TrialResult res = trialHeader(e, t);
   if (!program_logs.empty()) sc.program_logs = program_logs;
   try {
     playTrial(e, t, sc, hooks, res);
@@ -102,16 +104,8 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, co
     std::string why = err.brief;
     for (char& c : why)
       if (c == ',' || c == '"') c = ';';
-    TrialResult failed;
-    failed.trial = res.trial;
-    failed.setup = res.setup;
-    failed.position = res.position;
-    failed.repeat = res.repeat;
-    failed.seed = res.seed;
-    failed.robots = res.robots;
-    for (RobotOutcome& o : failed.robots) o = RobotOutcome{o.team, o.player};
-    failed.failed = why;
-    res = failed;
+    res = trialHeader(e, t);  // nothing of the partial run is kept
+    res.failed = why;
     std::fprintf(stderr, "trial %d failed: %s\n", index, err.what());
   }
   res.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
