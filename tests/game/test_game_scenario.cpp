@@ -82,7 +82,7 @@ TEST(GameScenario, ErrorsNameFileLineAndField) {
 namespace {
 // Robot code for the run below: each Perception frame reads the game state,
 // drains the inbox and sends at 5 Hz, through the extension objects only.
-struct TeamPerception : agent::program::PerceptionStep {
+struct TeamPerception : agent::framework::PerceptionStep {
   Runner* runner;
   int index, team, player;
   ac::TeamSender sender;

@@ -571,7 +571,7 @@ TEST_F(OneRobot, NothingSeenWhileLying) {
 struct ProbeCounts {
   std::atomic<int> frames{0}, with_ball{0}, bad{0};
 };
-struct BallProbe : agent::program::PerceptionStep {
+struct BallProbe : agent::framework::PerceptionStep {
   explicit BallProbe(std::shared_ptr<ProbeCounts> c) : counts(std::move(c)) {}
   std::shared_ptr<ProbeCounts> counts;
   void step(const al::CameraFrame& f) override {
@@ -611,7 +611,7 @@ namespace {
 
 // Every observation a Perception thread received, in order (kept in a
 // shared vector: the recorder itself ends with the robot program).
-struct Recorder : agent::program::PerceptionStep {
+struct Recorder : agent::framework::PerceptionStep {
   explicit Recorder(std::shared_ptr<std::vector<al::Observation>> s) : seen(std::move(s)) {}
   std::shared_ptr<std::vector<al::Observation>> seen;
   void step(const al::CameraFrame& f) override {
