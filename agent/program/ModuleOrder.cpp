@@ -1,6 +1,7 @@
 #include "agent/program/ModuleOrder.hpp"
 
 #include "agent/comms/TeamTransport.hpp"
+#include "agent/random/SplitMix64.hpp"
 
 namespace agent::program {
 
@@ -21,7 +22,7 @@ void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const liba
                                                          cfg.extensions ? &cfg.extensions->game : nullptr));
   s.add(T::Perception, std::make_unique<perception::VisionAdapterModule>(cfg.vision));
   localisation::LocalisationModuleConfig lc = cfg.localisation;
-  lc.filter.seed = lc.filter.seed * 0x9e3779b97f4a7c15ULL + cfg.seed;  // per robot, from the scenario
+  lc.filter.seed = lc.filter.seed * random::kGoldenGamma + cfg.seed;  // per robot, from the scenario
   s.add(T::Perception, std::make_unique<localisation::LocalisationModule>(lc));
   s.add(T::Perception, std::make_unique<perception::BallTrackerModule>(cfg.ball));
   s.add(T::Perception, std::make_unique<TeamReceiveModule>(cfg.team, cfg.player, link));

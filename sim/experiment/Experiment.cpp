@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "agent/random/SplitMix64.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 
@@ -35,13 +36,6 @@ std::string flow(const YAML::Node& n) {
   YAML::Emitter e;
   e << YAML::Flow << n;
   return e.c_str();
-}
-
-uint64_t splitmix64(uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
 }
 
 Behaviour parseBehaviour(const std::string& s) {
@@ -274,7 +268,7 @@ TrialSpec trialSpec(const Experiment& e, int index) {
   t.ball = (index % per_setup) / e.trials_per_position;
   t.repeat = index % e.trials_per_position;
   // Stateless: a pure function of (experiment seed, trial index).
-  t.seed = splitmix64(splitmix64(e.seed) ^ static_cast<uint64_t>(index)) % 2147483647ull;
+  t.seed = agent::random::splitmix64(agent::random::splitmix64(e.seed) ^ static_cast<uint64_t>(index)) % 2147483647ull;
   return t;
 }
 

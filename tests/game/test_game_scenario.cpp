@@ -9,6 +9,7 @@
 #include "agent/comms/TeamReceiver.hpp"
 #include "agent/comms/TeamSender.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 using simswift::ConfigError;
 using simswift::runner::Runner;
@@ -18,12 +19,7 @@ namespace al = agent::libagent;
 
 namespace {
 std::string errorOf(const std::string& yaml) {
-  try {
-    Scenario::parse(yaml, "s.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return simswift::testing::configError([&] { Scenario::parse(yaml, "s.yaml"); });
 }
 const char* kRobots = "robots:\n  - {team: 0, player: 2}\n  - {team: 0, player: 3, x: 1}\n";
 }  // namespace

@@ -20,6 +20,7 @@
 #include "sim/world/ConfigError.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
 #include "sim/camera/CameraModel.hpp"
+#include "tests/support/ConfigErrors.hpp"
 #endif
 
 namespace {
@@ -105,13 +106,9 @@ TEST(VisionConfig, ScenarioBlockIsReadAndCheckedWithFileLineAndKey) {
   EXPECT_FALSE(runner::Scenario::parse("vision: off\nrobots:\n  - {team: 0, player: 1}\n", "v.yaml").vision.enabled);
   EXPECT_TRUE(runner::Scenario::parse("robots:\n  - {team: 0, player: 1}\n", "v.yaml").vision.enabled);
 
-  auto error = [](const std::string& yaml) -> std::string {
-    try {
-      runner::Scenario::parse(yaml + "robots:\n  - {team: 0, player: 1}\n", "bad.yaml");
-    } catch (const ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+  auto error = [](const std::string& yaml) {
+    return simswift::testing::configError(
+        [&] { runner::Scenario::parse(yaml + "robots:\n  - {team: 0, player: 1}\n", "bad.yaml"); });
   };
   EXPECT_NE(error("vision:\n  ball:\n    max_distance_mm: -5\n").find("bad.yaml:3: vision.ball.max_distance_mm"),
             std::string::npos);
