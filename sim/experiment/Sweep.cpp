@@ -118,9 +118,13 @@ std::vector<SweepAxis> readSweep(const YamlReader& top) {
     cells = std::min<long long>(cells * static_cast<long long>(a.values.size()), kMaxSweepCells + 1LL);
     dims += (dims.empty() ? "" : " x ") + std::to_string(a.values.size());
   }
-  if (cells > kMaxSweepCells)
-    top.fail("sweep", "more than " + std::to_string(kMaxSweepCells) + " cells (" + dims +
-                          " value combinations); sweep fewer values or split the file");
+  if (cells > kMaxSweepCells) {
+    int line = 1;  // of the sweep: key (its map's mark is the line below)
+    for (const auto& kv : top.node())
+      if (kv.first.IsScalar() && kv.first.Scalar() == "sweep" && !kv.first.Mark().is_null()) line = kv.first.Mark().line + 1;
+    throw ConfigError(file + ":" + std::to_string(line) + ": sweep: more than " + std::to_string(kMaxSweepCells) + " cells (" + dims +
+                      " value combinations); sweep fewer values or split the file");
+  }
   return axes;
 }
 
