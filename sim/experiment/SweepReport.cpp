@@ -79,8 +79,8 @@ std::string sweepSection(const Experiment& e, const std::vector<CellRow>& rows) 
     s << ")";
   }
   s << ", each set into the experiment above. Each cell runs all " << per_cell
-    << " trials (setups x ball positions x trials per position): cell c holds trials c x " << per_cell << " to c x "
-    << per_cell << " + " << per_cell - 1 << " (results.csv names each trial's cell and values). Every cell draws "
+    << " trials (setups x ball positions x trials per position): cell c holds trials " << per_cell << "c to "
+    << per_cell << "c + " << per_cell - 1 << " (results.csv names each trial's cell and values). Every cell draws "
     << "the same trial seeds, so cells differ by their settings, not by their draws";
   if (per_cell <= 30) {
     s << "; the seeds, in trial order within a cell:";
