@@ -315,7 +315,9 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
       throw blameCell(source_name, e.sweep_line, e.sweep, c, err.what());
     }
   }
-  if (e.numTrials() > 1000000) top.fail("sweep", "more than 10^6 trials (cells x trials per cell)");
+  if (e.numTrials() > 1000000)
+    throw ConfigError(source_name + ":" + std::to_string(e.sweep_line) + ": sweep: " + std::to_string(e.numTrials()) +
+                      " trials (cells x trials per cell) is more than 10^6");
   return e;
 }
 

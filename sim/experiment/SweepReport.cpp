@@ -91,7 +91,7 @@ std::string sweepSection(const Experiment& e, const std::vector<CellRow>& rows) 
   s << ".\n\n"
     << "Per cell and setup, over all ball positions: find rate with its Wilson 95 % interval, mean find time over "
        "the finds with a percentile bootstrap 95 % interval (2000 resamples, seeded per row: cells.csv has the "
-       "seeds). The tables above pool every cell.\n\n| Cell |";
+       "seeds). The report's other tables pool every cell.\n\n| Cell |";
   std::string rule = "|---:|";
   for (const SweepAxis& a : e.sweep) {
     s << " `" << a.path << "` |";

@@ -279,6 +279,11 @@ TEST(Sweep, BadSweepsAreRefusedAtTheirLine) {
   expectError(kTiny + "sweep:\n  vision.ball: [{}]\n  vision.ball.p_near: [1]\n", "bad.yaml:18: sweep.vision.ball.p_near",
               "overlaps sweep path vision.ball");
   expectError(kTiny + "sweep:\n  found.sees: [on]\n", "bad.yaml:17: sweep.found.sees", "unknown path");
+  // 2 x 10000 trials per cell x 60 cells: more than 10^6 trials.
+  std::string sixty = "[0";
+  for (int i = 1; i < 60; ++i) sixty += ", " + std::to_string(i);
+  expectError(exptest::tinyExperiment(10000) + "sweep:\n  team_comms.delay_ms: " + sixty + "]\n", "bad.yaml:16: sweep",
+              "1200000 trials (cells x trials per cell) is more than 10^6");
   // 11 x 11 x 11 = 1331 cells.
   const std::string eleven = "[0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1]";
   expectError(kTiny + "sweep:\n  team_comms.loss: " + eleven + "\n  vision.ball.p_near: " + eleven +
