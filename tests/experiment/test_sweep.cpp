@@ -21,6 +21,7 @@
 using namespace simswift;
 using namespace simswift::experiment;
 using exptest::readAll;
+using exptest::runInto;
 
 namespace {
 
@@ -34,16 +35,6 @@ const std::string kTwoByTwo = kTiny +
                               "sweep:\n"
                               "  vision.ball.p_near: [0, 1]\n"
                               "  team_comms.loss: [0, 0.5]\n";
-
-BatchOutcome runInto(const Experiment& e, const std::string& dir, int jobs, int shard = 1, int shards = 1) {
-  BatchOptions o;
-  o.out_dir = dir;
-  o.jobs = jobs;
-  o.shard = shard;
-  o.shards = shards;
-  o.progress = BatchOptions::Progress::None;
-  return runBatch(e, defaultHooks(), o);
-}
 
 std::vector<std::string> lines(const std::string& s) {
   std::vector<std::string> out;
