@@ -18,9 +18,9 @@
 #include "sim/runner/Runner.hpp"
 #include "sim/vision/VisionOracle.hpp"
 #include "sim/world/ConfigError.hpp"
+#include "tests/support/ConfigErrors.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
 #include "sim/camera/CameraModel.hpp"
-#include "tests/support/ConfigErrors.hpp"
 #endif
 
 namespace {
