@@ -1,16 +1,19 @@
-// Seconds to accept or refuse pathological inputs of 1, 3 and 10 MB, per
-// loader: the URDF (NaoModel), the field, a scenario and an experiment. The
-// speed issue asks for any input up to 10 MB to be accepted or refused in
-// under a second; a loader that is not linear in its input shows up here
-// (a 3 MB URDF with a NUL byte near its end once took 33 s).
+// Seconds to accept or refuse pathological inputs of 1, 3 and 10 MB (and
+// 0.25 MB, the YAML loaders' size limit), per loader: the URDF (NaoModel),
+// the field, a scenario and an experiment. The speed issue asks for any
+// input up to 10 MB to be accepted or refused in under a second; a loader
+// that is not linear in its input shows up here (a 3 MB URDF with a NUL
+// byte near its end once took 33 s).
 //
 // Each input is generated from the shipped file, written to a temporary
 // folder and loaded through the same file loader the simswift program uses.
 //
-// Usage: bench_inputs [FILTER] [--sizes 1,3,10]
+// Usage: bench_inputs [FILTER] [--sizes 0.25,1,3,10]
 //   FILTER: only cases whose name contains it (e.g. "urdf", "many_lines");
 //   --sizes: input sizes in MB (MiB; fractions allowed, e.g. 0.25 to see
-//   how a case scales).
+//   how a case scales);
+//   --keep DIR: write the inputs into DIR and keep them (to replay one
+//   with the simswift program).
 // Figures are printed and appended to the results file (see
 // bench/BenchResults.hpp) as inputs.<loader>.<case>_<size>mb.seconds.
 #include <chrono>
@@ -233,6 +236,19 @@ std::string experimentBigSweep(size_t size) {
   return s;
 }
 
+// The shipped sweep with a great many one-value axes (one cell): every
+// pair of paths is checked for overlap.
+std::string experimentManyAxes(size_t size) {
+  std::string s = experimentSeed();
+  s.erase(s.find("  team_comms.loss:"));
+  for (int k = 0;; ++k) {
+    const std::string axis = "  setups.2017.config.k" + std::to_string(k) + ": [1]\n";
+    if (s.size() + axis.size() > size) break;
+    s += axis;
+  }
+  return s;
+}
+
 // ---- running ------------------------------------------------------------
 
 struct Case {
@@ -267,6 +283,7 @@ std::vector<Case> cases() {
     c.push_back({y.loader, "huge_list", y.huge_list});
   }
   c.push_back({"experiment", "big_sweep", experimentBigSweep});
+  c.push_back({"experiment", "many_axes", experimentManyAxes});
   return c;
 }
 
@@ -292,8 +309,14 @@ void load(const std::string& loader, const std::string& path, std::string* what)
 
 int main(int argc, char** argv) {
   std::string filter;
-  std::vector<double> sizes_mb = {1, 3, 10};
+  // 0.25 MB: the YAML loaders' size limit (the largest YAML input accepted).
+  std::vector<double> sizes_mb = {0.25, 1, 3, 10};
+  std::string keep;
   for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--keep") == 0 && i + 1 < argc) {
+      keep = argv[++i];
+      continue;
+    }
     if (std::strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
       sizes_mb.clear();
       std::istringstream in(argv[++i]);
@@ -309,7 +332,8 @@ int main(int argc, char** argv) {
     std::perror("mkdtemp");
     return 1;
   }
-  const std::string dir = tmpl;
+  const std::string dir = keep.empty() ? std::string(tmpl) : keep;
+  if (!keep.empty()) std::filesystem::create_directories(keep);
   std::printf("simswift input benchmark: seconds to accept or refuse each input (file loaders, one core)\n");
   double worst = 0;
   std::string worst_name;
@@ -319,8 +343,9 @@ int main(int argc, char** argv) {
       std::snprintf(label, sizeof label, "_%gmb", mb);
       const std::string name = "inputs." + c.loader + "." + c.name + label;
       if (!filter.empty() && name.find(filter) == std::string::npos) continue;
-      const size_t size = static_cast<size_t>(mb * (1 << 20));  // MiB: 1 MB is the YAML loaders' limit exactly
-      const std::string path = dir + "/" + c.loader + "_" + c.name + (c.loader == "urdf" ? ".urdf" : ".yaml");
+      const size_t size = static_cast<size_t>(mb * (1 << 20));  // MiB
+      const std::string path =
+          dir + "/" + c.loader + "_" + c.name + (keep.empty() ? "" : label) + (c.loader == "urdf" ? ".urdf" : ".yaml");
       {
         std::ofstream out(path, std::ios::binary);
         const std::string text = c.make(size);
@@ -336,10 +361,10 @@ int main(int argc, char** argv) {
         worst = s;
         worst_name = name;
       }
-      std::filesystem::remove(path);
+      if (keep.empty()) std::filesystem::remove(path);
     }
   }
-  std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(tmpl);
   std::printf("slowest: %s %.3f s (target: every input under 1 s)\n", worst_name.c_str(), worst);
   return 0;
 }
