@@ -185,7 +185,10 @@ void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& 
   const runner::RunStats stats = run.stats();
   run.shutdown();
   res.resets = stats.blowups;
-  for (int i = 0; i < n && i < static_cast<int>(stats.robots.size()); ++i) res.robots[i].falls = stats.robots[i].falls;
+  for (int i = 0; i < n && i < static_cast<int>(stats.robots.size()); ++i) {
+    res.robots[i].falls = stats.robots[i].falls;
+    res.robots[i].contact_falls = stats.robots[i].contact_falls;
+  }
   res.sim_s = stats.sim_s;
 }
 
@@ -195,7 +198,7 @@ std::string csvHeader(int robots) {
   std::string h = "trial,setup,position,repeat,seed,found,seconds,finder,resets,failed";
   for (int k = 1; k <= robots; ++k) {
     const std::string r = "robot" + std::to_string(k) + "_";
-    h += "," + r + "player," + r + "distance_m," + r + "falls," + r + "sideline_moves";
+    h += "," + r + "player," + r + "distance_m," + r + "falls," + r + "contact_falls," + r + "sideline_moves";
   }
   return h + "\n";
 }
@@ -209,9 +212,9 @@ std::string csvRow(const TrialResult& r, int robots) {
     if (k < static_cast<int>(r.robots.size())) {
       const RobotOutcome& o = r.robots[k];
       s << ',' << agent::libagent::robotTag(o.team, o.player) << ',' << fixed(o.distance_m, 3) << ',' << o.falls << ','
-        << o.sideline_moves;
+        << o.contact_falls << ',' << o.sideline_moves;
     } else {
-      s << ",,,,";
+      s << ",,,,,";
     }
   }
   s << '\n';
@@ -220,7 +223,7 @@ std::string csvRow(const TrialResult& r, int robots) {
 
 TrialResult parseCsvRow(const std::string& line) {
   const std::vector<std::string> f = splitCsv(line);
-  if (f.size() < 10 || (f.size() - 10) % 4 != 0)
+  if (f.size() < 10 || (f.size() - 10) % 5 != 0)
     throw std::runtime_error("bad results row (" + std::to_string(f.size()) + " fields): " + line);
   TrialResult r;
   try {
@@ -234,13 +237,14 @@ TrialResult parseCsvRow(const std::string& line) {
     r.finder = f[7];
     r.resets = std::stoi(f[8]);
     r.failed = f[9];
-    for (size_t k = 10; k + 3 < f.size(); k += 4) {
+    for (size_t k = 10; k + 4 < f.size(); k += 5) {
       if (f[k].empty()) continue;
       RobotOutcome o;
       if (!agent::libagent::parseRobotTag(f[k], &o.team, &o.player)) throw std::runtime_error("player " + f[k]);
       o.distance_m = std::stod(f[k + 1]);
       o.falls = std::stoi(f[k + 2]);
-      o.sideline_moves = std::stoi(f[k + 3]);
+      o.contact_falls = std::stoi(f[k + 3]);
+      o.sideline_moves = std::stoi(f[k + 4]);
       r.robots.push_back(o);
     }
   } catch (const std::exception& ex) {

@@ -34,6 +34,7 @@ struct RobotOutcome {
   int team = 0, player = 0;   // SPL numbers
   double distance_m = 0;      // walked (track samples, teleports excluded)
   int falls = 0;              // Runner's fall count
+  int contact_falls = 0;      // of falls, those right after touching another robot (runner::FallDetector)
   int sideline_moves = 0;
 };
 

@@ -183,3 +183,35 @@ TEST(Runner, ExternalProcessAttachesByNameAndMovesAJoint) {
   EXPECT_NEAR(modelJoint(r, 0, "LKneePitch"), 0.8, 0.1);
   EXPECT_EQ(st.falls, 0);
 }
+
+// Fall attribution (FallDetector::contact_falls): a robot pushed over on its
+// own counts a fall and no contact fall; a robot pushed into a standing
+// teammate 0.35 m ahead counts its fall as one after a robot contact, and so
+// does the teammate if it is knocked over too. Impulse 3 N*s (about 0.6 m/s
+// for the whole 5.3 kg robot): the push test_batch.cpp uses to topple one.
+TEST(Runner, FallsAfterTouchingAnotherRobotAreAttributed) {
+  const std::string stand_push =
+      ", actions: [{t: 0, action: stand}, {t: 0.5, push: {x: 3.0, y: 0.0}}]}\n";
+  {
+    Scenario s = Scenario::parse("duration: 3.0\nrobots:\n  - {team: 0, player: 1, x: -1.0, y: 0.0, theta: 0.0" +
+                                     stand_push,
+                                 "alone.yaml");
+    Runner r(s);
+    const RunStats st = r.run(quiet());
+    ASSERT_EQ(st.robots.size(), 1u);
+    EXPECT_EQ(st.robots[0].falls, 1);
+    EXPECT_EQ(st.robots[0].contact_falls, 0);
+  }
+  {
+    Scenario s = Scenario::parse("duration: 3.0\nrobots:\n  - {team: 0, player: 1, x: -1.0, y: 0.0, theta: 0.0" +
+                                     stand_push +
+                                     "  - {team: 0, player: 2, x: -0.65, y: 0.0, theta: 3.1416, actions: [{t: 0, action: stand}]}\n",
+                                 "pair.yaml");
+    Runner r(s);
+    const RunStats st = r.run(quiet());
+    ASSERT_EQ(st.robots.size(), 2u);
+    EXPECT_EQ(st.robots[0].falls, 1);
+    EXPECT_EQ(st.robots[0].contact_falls, 1);
+    EXPECT_EQ(st.robots[1].contact_falls, st.robots[1].falls);  // any fall of the one hit follows the contact
+  }
+}
