@@ -22,7 +22,7 @@
 
 #include "BenchResults.hpp"
 #include "agent/blackboard/Blackboard.hpp"
-#include "agent/motion/MotionModule.hpp"
+#include "agent/motion/RequestedMotion.hpp"
 #include "sim/runner/HeadingDrift.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/StanceSlip.hpp"
@@ -32,20 +32,22 @@ namespace {
 using agent::blackboard::ActionType;
 
 struct Rig {
-  agent::blackboard::Blackboard board;
+  agent::motion::RequestedMotion* motion = nullptr;
   simswift::runner::Runner runner;
   int torso;
   explicit Rig(uint64_t seed, double x = 0.0)  // x: start on the field (m)
       : runner(simswift::runner::Scenario::parse(
             "seed: " + std::to_string(seed) + "\nnoise: on\nrobots:\n  - {team: 0, player: 1, x: " + std::to_string(x) + ", y: 0}\n",
             "bench_motion")) {
-    runner.setMotionGenerator(0, std::make_unique<agent::motion::MotionModule>(board));
+    auto m = std::make_unique<agent::motion::RequestedMotion>();
+    motion = m.get();
+    runner.setMotionGenerator(0, std::move(m));
     runner.setThreading(agent::program::Threading::Inline);  // as the experiment runs programs
     runner.start();
     torso = runner.world().robot(0).model().rootLink();
   }
   void walk(double f, double l, double t) {
-    board.motion_request.update([&](agent::blackboard::MotionRequest& r) {
+    motion->request([&](agent::blackboard::MotionRequest& r) {
       r.body.type = ActionType::WALK;
       r.body.forward = static_cast<float>(f);
       r.body.left = static_cast<float>(l);

@@ -10,7 +10,7 @@ function(simswift_library name dir)
     set(srcs ${stub})
   endif()
   add_library(simswift_${name} STATIC ${srcs})
-  target_include_directories(simswift_${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_include_directories(simswift_${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>)
   add_library(simswift::${name} ALIAS simswift_${name})
 endfunction()
 

@@ -22,19 +22,8 @@ stamp "Release build"
 (cd build && ctest --output-on-failure -j"$jobs" --timeout 900)
 stamp "Release suite"
 
-# The installed package as a team uses it: install into a temporary prefix,
-# compile every installed header on its own, then configure, build and run
-# examples/walk_test against the package (find_package(simswift 0.2)).
-prefix="$(mktemp -d)"
-trap 'rm -rf "$prefix"' EXIT
-cmake --install build --prefix "$prefix" >/dev/null
-for h in "$prefix"/include/simswift/*.hpp; do
-  echo "#include \"simswift/$(basename "$h")\"" | g++ -std=c++17 -fsyntax-only -Wall -I"$prefix/include" -x c++ - \
-    || { echo "installed header $h does not compile on its own" >&2; exit 1; }
-done
-cmake -S examples/walk_test -B "$prefix/example-build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
-cmake --build "$prefix/example-build" -j"$jobs"
-(cd "$prefix/example-build" && LD_LIBRARY_PATH="$prefix/lib" ctest --output-on-failure --no-tests=error -j"$jobs")
+# The installed package as a team uses it (headers, examples/walk_test).
+scripts/test-package.sh build "$jobs"
 stamp "installed package: headers and examples/walk_test"
 
 [ "${SIMSWIFT_SKIP_SANITIZERS:-0}" = 1 ] && exit 0

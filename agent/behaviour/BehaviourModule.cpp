@@ -7,13 +7,14 @@
 
 namespace agent::behaviour {
 
-BehaviourInputs inputsFrom(const blackboard::Blackboard& board, const BehaviourModuleConfig& c) {
+BehaviourInputs BehaviourModule::inputsFrom(const In& board) const {
+  const BehaviourModuleConfig& c = c_;
   BehaviourInputs in;
-  const blackboard::FrameInfo frame = board.frame.read();
-  const blackboard::LocalisationEstimate loc = board.localisation.read();
-  const blackboard::BallEstimate ball = board.ball.read();
-  const blackboard::GameInfo game = board.game.read();
-  const blackboard::MotionState motion = board.motion.read();
+  const blackboard::FrameInfo& frame = board.get<blackboard::FrameInfo>();
+  const blackboard::LocalisationEstimate& loc = board.get<blackboard::LocalisationEstimate>();
+  const blackboard::BallEstimate& ball = board.get<blackboard::BallEstimate>();
+  const blackboard::GameInfo& game = board.get<blackboard::GameInfo>();
+  const blackboard::MotionState& motion = board.get<blackboard::MotionState>();
   in.time = frame.time;
   in.player = c.player;
   in.walk = c.walk;
@@ -39,7 +40,7 @@ BehaviourInputs inputsFrom(const blackboard::Blackboard& board, const BehaviourM
   in.game.state = game.known ? static_cast<GameState>(static_cast<int>(game.state)) : GameState::PLAYING;
   in.game.penalised = game.known && game.penalised;
 
-  const blackboard::TeamInfo team = board.team.read();
+  const blackboard::TeamInfo& team = board.get<blackboard::TeamInfo>();
   for (int p = 1; p <= blackboard::kMaxTeammates; ++p) {
     const blackboard::TeammateReport& r = team.mates[p];
     if (!r.valid || p == c.player) continue;
@@ -55,10 +56,10 @@ BehaviourInputs inputsFrom(const blackboard::Blackboard& board, const BehaviourM
   return in;
 }
 
-void BehaviourModule::run(blackboard::Blackboard& board) {
-  const BehaviourInputs in = inputsFrom(board, c_);
+void BehaviourModule::update(const In& board, Out& written) {
+  const BehaviourInputs in = inputsFrom(board);
   BehaviourOutput out = behaviour_.tick(in);
-  board.motion_request.write(out.request);
+  written.get<blackboard::MotionRequest>() = out.request;
 
   blackboard::FindBallInfo fb;
   fb.active = true;
@@ -98,7 +99,7 @@ void BehaviourModule::run(blackboard::Blackboard& board) {
   fb.pose_theta = in.self.pose.theta;
   for (const Teammate& t : in.teammates) fb.teammates.push_back(findBallTeammate(t));
   if (out.payload) fb.payload = out.payload->toBytes();
-  board.findball.write(fb);
+  written.get<blackboard::FindBallInfo>() = fb;
 }
 
 blackboard::FindBallTeammate findBallTeammate(const Teammate& t) {

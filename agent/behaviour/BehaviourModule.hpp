@@ -14,7 +14,7 @@
 #include "agent/behaviour/Behaviour.hpp"
 #include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/behaviour/BehaviourInputs.hpp"
-#include "agent/program/Module.hpp"
+#include "agent/framework/Module.hpp"
 
 namespace agent::behaviour {
 
@@ -24,30 +24,26 @@ struct BehaviourModuleConfig {
   int team = 0, player = 2;
 };
 
-// The Blackboard's view of the world as behaviour inputs. Teammates come
-// from team receive's reports (those heard within `teammate_timeout` s are
-// kept with their age; this robot excluded), their free data decoded as a
-// SearchPayload (malformed: no search data). Exposed for tests.
-BehaviourInputs inputsFrom(const blackboard::Blackboard& board, const BehaviourModuleConfig& c);
 // A teammate as the Blackboard's findball section records it (the one
 // conversion: the module writes it, the FindBall view draws from it).
 blackboard::FindBallTeammate findBallTeammate(const Teammate& t);
 
-class BehaviourModule : public program::Module {
+class BehaviourModule
+    : public framework::ModuleOf<framework::Reads<blackboard::FrameInfo, blackboard::LocalisationEstimate,
+                                                  blackboard::BallEstimate, blackboard::TeamInfo,
+                                                  blackboard::GameInfo, blackboard::MotionState>,
+                                 framework::Writes<blackboard::MotionRequest, blackboard::FindBallInfo>> {
  public:
   explicit BehaviourModule(const BehaviourModuleConfig& c) : c_(c), behaviour_(c.behaviour) {}
   const char* name() const override { return "behaviour"; }
-  std::vector<program::SectionId> reads() const override {
-    using S = program::SectionId;
-    return {S::Frame, S::Localisation, S::Ball, S::Team, S::GameState, S::Motion};
-  }
-  std::vector<program::SectionId> writes() const override {
-    return {program::SectionId::BehaviourRequest, program::SectionId::FindBall};
-  }
-  void run(blackboard::Blackboard& board) override;
   const Behaviour& behaviour() const { return behaviour_; }
 
  private:
+  void update(const In& in, Out& out) override;
+  // The Blackboard's view of the world as behaviour inputs. Teammates come
+  // from team receive's reports (this robot excluded), their free data
+  // decoded as a SearchPayload (malformed: no search data).
+  BehaviourInputs inputsFrom(const In& board) const;
   BehaviourModuleConfig c_;
   Behaviour behaviour_;
   bool was_uniform_ = true;

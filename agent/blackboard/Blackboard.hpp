@@ -3,30 +3,33 @@
 //
 // It is split into sections, one per producing module. Each section is a
 // plain value struct guarded by its own mutex (Section<T>); readers take a
-// copy, writers replace or update the value under the lock, so a thread
-// never sees half of another thread's write and never holds a lock while it
-// computes. Sections are small (well under a kilobyte) so copying is cheap
-// compared with the 10 ms Motion tick.
+// copy, writers replace the value under the lock, so a thread never sees
+// half of another thread's write and never holds a lock while it computes.
+// Most sections are a few hundred bytes; the largest, frame (FrameInfo: the
+// camera frame's observations, ~4.2 KB) and findball (the search grids), are
+// copied once per 33 ms camera frame.
 //
-// Who reads and writes what is declared by the modules themselves
-// (agent/program/Module.hpp: reads() / writes() by SectionId) and checked
-// at start-up; the order per thread is in agent/program/ModuleOrder.cpp.
-// Sections (SectionId in parentheses):
-//   sensors         (Sensors)          program, every Motion tick
-//   frame           (Frame)            program, every camera frame (30 Hz)
-//   touch           (Touch)            touch module
-//   vision          (Vision)           vision adapter
-//   localisation    (Localisation)     localisation
-//   ball            (Ball)             ball tracker
-//   team            (Team)             team receive
-//   game            (GameState)        game state reader
-//   motion_request  (BehaviourRequest) behaviour (or a scenario's action script)
-//   findball        (FindBall)         behaviour (agent/behaviour/BehaviourModule)
-//   motion          (Motion)           motion
-//   actuators       (Actuators)        motion (the effector sends them)
+// Who reads and writes what is declared by the modules' types
+// (agent/framework/Module.hpp) and checked at start-up
+// (agent/framework/ModuleSchedule.hpp); the order per thread is in
+// agent/program/ModuleOrder.cpp. Sections, by field (writer -> readers):
+//   sensors         program, every Motion tick -> motion
+//   frame           program, every camera frame -> every Perception module
+//   vision          vision adapter -> localisation, ball tracker
+//   localisation    localisation -> ball tracker, behaviour, team send
+//   ball            ball tracker -> behaviour, team send
+//   team            team receive -> ball tracker (previous frame), behaviour
+//   game            game state -> localisation, behaviour, action script
+//   motion_request  behaviour or a scenario's action script -> motion
+//   findball        behaviour -> team send, the simulator's FindBall view
+//   motion          motion -> vision adapter, localisation, ball tracker, behaviour, team send
+//   actuators       motion -> effector
 //
 // Units: distances mm, speeds mm/s, angles rad, angular speeds rad/s.
-// Frame: robot-relative (x forward, y left, z up), as on the NAO.
+// Frames: sensors, vision and the motion request are robot-relative (x
+// forward, y left, z up, as on the NAO); localisation, ball (x, y), team and
+// findball are in the field frame (x toward the opponent goal, origin at the
+// centre); each struct says which.
 #pragma once
 
 #include <cstdint>
@@ -40,7 +43,6 @@
 #include "agent/blackboard/Localisation.hpp"
 #include "agent/blackboard/Odometry.hpp"
 #include "agent/blackboard/Team.hpp"
-#include "agent/blackboard/Touch.hpp"
 #include "agent/blackboard/Vision.hpp"
 #include "agent/libagent/AgentShared.hpp"
 
@@ -153,19 +155,19 @@ struct ActuatorRequest {
   int64_t tick = 0;
 };
 
+// The sections, in the order of the list at the top of this file.
 struct Blackboard {
-  Section<SensorFrame> sensors;              // program (Motion tick) -> all
-  Section<FrameInfo> frame;                  // program (camera frame) -> Perception
-  Section<TouchState> touch;                 // touch -> behaviour
-  Section<VisionMeasurements> vision;        // vision adapter -> localisation, ball, behaviour
-  Section<LocalisationEstimate> localisation;  // localisation -> ball, behaviour, team send
-  Section<BallEstimate> ball;                // ball tracker -> behaviour, team send
-  Section<TeamInfo> team;                    // team receive -> ball, behaviour
-  Section<GameInfo> game;                    // game state -> localisation, behaviour
-  Section<MotionRequest> motion_request;     // Behaviour -> Motion
-  Section<FindBallInfo> findball;            // Behaviour -> team send, views
-  Section<MotionState> motion;               // Motion -> all
-  Section<ActuatorRequest> actuators;        // Motion -> effector
+  Section<SensorFrame> sensors;
+  Section<FrameInfo> frame;
+  Section<VisionMeasurements> vision;
+  Section<LocalisationEstimate> localisation;
+  Section<BallEstimate> ball;
+  Section<TeamInfo> team;
+  Section<GameInfo> game;
+  Section<MotionRequest> motion_request;
+  Section<FindBallInfo> findball;
+  Section<MotionState> motion;
+  Section<ActuatorRequest> actuators;
 };
 
 inline const char* actionName(ActionType t) {

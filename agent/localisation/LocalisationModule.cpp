@@ -4,10 +4,10 @@
 
 namespace agent::localisation {
 
-void LocalisationModule::run(blackboard::Blackboard& board) {
-  const blackboard::FrameInfo frame = board.frame.read();
-  const blackboard::MotionState motion = board.motion.read();
-  const blackboard::GameInfo game = board.game.read();
+void LocalisationModule::update(const In& in, Out& out) {
+  const blackboard::FrameInfo& frame = in.get<blackboard::FrameInfo>();
+  const blackboard::MotionState& motion = in.get<blackboard::MotionState>();
+  const blackboard::GameInfo& game = in.get<blackboard::GameInfo>();
   double f = 0, l = 0, t = 0;
   if (!started_) {
     // Robots walk in from the sideline at the start of a game; a game that
@@ -30,9 +30,9 @@ void LocalisationModule::run(blackboard::Blackboard& board) {
   if (was_penalised_ && !game.penalised && has_played_) filter_.reset(InitialPose::PenaltyReturn);
   was_penalised_ = game.penalised;
   if (game.state == blackboard::GameStateId::PLAYING && !game.penalised) has_played_ = true;
-  filter_.update(f, l, t, board.vision.read(), frame.time,
+  filter_.update(f, l, t, in.get<blackboard::VisionMeasurements>(), frame.time,
                  game.penalised || perception::postureIsDown(motion.posture));
-  board.localisation.write(filter_.estimate());
+  out.get<blackboard::LocalisationEstimate>() = filter_.estimate();
 }
 
 }  // namespace agent::localisation

@@ -13,7 +13,7 @@
 #include <optional>
 
 #include "agent/localisation/Localiser.hpp"
-#include "agent/program/Module.hpp"
+#include "agent/framework/Module.hpp"
 
 namespace agent::localisation {
 
@@ -22,19 +22,17 @@ struct LocalisationModuleConfig {
   std::optional<blackboard::FieldPose> known_start;  // mm, rad; field frame
 };
 
-class LocalisationModule : public program::Module {
+class LocalisationModule
+    : public framework::ModuleOf<framework::Reads<blackboard::FrameInfo, blackboard::VisionMeasurements,
+                                                  blackboard::MotionState, blackboard::GameInfo>,
+                                 framework::Writes<blackboard::LocalisationEstimate>> {
  public:
   explicit LocalisationModule(const LocalisationModuleConfig& cfg = {}) : cfg_(cfg), filter_(cfg.filter) {}
   const char* name() const override { return "localisation"; }
-  std::vector<program::SectionId> reads() const override {
-    using S = program::SectionId;
-    return {S::Frame, S::Vision, S::Motion, S::GameState};
-  }
-  std::vector<program::SectionId> writes() const override { return {program::SectionId::Localisation}; }
-  void run(blackboard::Blackboard& board) override;
   const Localiser& filter() const { return filter_; }
 
  private:
+  void update(const In& in, Out& out) override;
   LocalisationModuleConfig cfg_;
   Localiser filter_;
   bool started_ = false;

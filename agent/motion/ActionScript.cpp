@@ -11,35 +11,33 @@ ScriptedBehaviour::ScriptedBehaviour(std::vector<ActionStep> steps) : steps_(std
                    [](const ActionStep& a, const ActionStep& b) { return a.t < b.t; });
 }
 
-void ScriptedBehaviour::run(blackboard::Blackboard& board) { runAt(board.frame.read().time, board); }
-
-void ScriptedBehaviour::request(blackboard::Blackboard& board, const blackboard::BodyCommand& body,
+void ScriptedBehaviour::request(blackboard::MotionRequest& r, const blackboard::BodyCommand& body,
                                 const blackboard::HeadCommand* head) {
-  board.motion_request.update([&](blackboard::MotionRequest& r) {
-    r.body = body;
-    if (head) r.head = *head;
-    ++r.sequence;  // a new request (a repeated kick kicks again)
-  });
+  r.body = body;
+  if (head) r.head = *head;
+  ++r.sequence;  // a new request (a repeated kick kicks again)
 }
 
-void ScriptedBehaviour::runAt(double t, blackboard::Blackboard& board) {
+void ScriptedBehaviour::update(const In& in, Out& out) {
   using blackboard::GameStateId;
-  const blackboard::GameInfo game = board.game.read();
+  const double t = in.get<blackboard::FrameInfo>().time;
+  const blackboard::GameInfo& game = in.get<blackboard::GameInfo>();
+  blackboard::MotionRequest& req = out.get<blackboard::MotionRequest>();
   const bool hold = game.known && (game.penalised || game.state == GameStateId::INITIAL ||
                                    game.state == GameStateId::SET || game.state == GameStateId::FINISHED);
   blackboard::BodyCommand stand;
   stand.type = blackboard::ActionType::STAND;
   if (!started_) {
     current_ = stand;
-    request(board, stand, nullptr);
+    request(req, stand, nullptr);
     started_ = true;
   }
   while (next_ < steps_.size() && steps_[next_].t <= t + 1e-9) {
     const ActionStep& s = steps_[next_++];
     if (s.body.type != blackboard::ActionType::NONE) current_ = s.body;
-    if (!hold) request(board, s.body, s.has_head ? &s.head : nullptr);
+    if (!hold) request(req, s.body, s.has_head ? &s.head : nullptr);
   }
-  if (hold != held_) request(board, hold ? stand : current_, nullptr);
+  if (hold != held_) request(req, hold ? stand : current_, nullptr);
   held_ = hold;
 }
 

@@ -1,6 +1,6 @@
 // Scripted behaviour for scenarios and tests: a timed list of body actions
 // (walk at forward/left/turn, stand, kick, ...) written to the Blackboard's
-// behaviour request as simulated time passes. It is a Behaviour module in
+// motion request as simulated time passes. It is a Behaviour module in
 // the Perception thread (30 Hz, frame time), so a scripted robot and a
 // behaving robot reach Motion by the same path. Like any behaviour it obeys
 // the game: while the robot is penalised, or the game is INITIAL, SET or
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "agent/blackboard/Blackboard.hpp"
-#include "agent/program/Module.hpp"
+#include "agent/framework/Module.hpp"
 
 namespace agent::motion {
 
@@ -24,24 +24,21 @@ struct ActionStep {
   blackboard::HeadCommand head;
 };
 
-// frame (time) -> behaviour request.
-class ScriptedBehaviour : public program::Module {
+// frame (time) + game -> motion request.
+class ScriptedBehaviour
+    : public framework::ModuleOf<framework::Reads<blackboard::FrameInfo, blackboard::GameInfo>,
+                                 framework::Writes<blackboard::MotionRequest>> {
  public:
   // Steps are sorted by time here; each applies at the first frame at or
   // after its t. Until the first: STAND.
   explicit ScriptedBehaviour(std::vector<ActionStep> steps);
 
   const char* name() const override { return "behaviour (action script)"; }
-  std::vector<program::SectionId> reads() const override {
-    return {program::SectionId::Frame, program::SectionId::GameState};
-  }
-  std::vector<program::SectionId> writes() const override { return {program::SectionId::BehaviourRequest}; }
-  void run(blackboard::Blackboard& board) override;
-  // The same at `time_s` (tests and tools).
-  void runAt(double time_s, blackboard::Blackboard& board);
 
  private:
-  void request(blackboard::Blackboard& board, const blackboard::BodyCommand& body, const blackboard::HeadCommand* head);
+  void update(const In& in, Out& out) override;
+  static void request(blackboard::MotionRequest& r, const blackboard::BodyCommand& body,
+                      const blackboard::HeadCommand* head);
   blackboard::BodyCommand current_;  // the script's action now (STAND before the first)
   bool held_ = false;                // standing for the game (penalty, INITIAL/SET/FINISHED)
   std::vector<ActionStep> steps_;

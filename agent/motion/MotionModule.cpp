@@ -10,8 +10,8 @@ namespace S = libagent::Sensors;
 using blackboard::ActionType;
 using blackboard::BodyState;
 
-MotionModule::MotionModule(blackboard::Blackboard& board, const MotionConfig& cfg)
-    : board_(board), cfg_(cfg), walk_(cfg.walk), kick_(cfg.walk, cfg.kick) {
+MotionModule::MotionModule(const MotionConfig& cfg)
+    : cfg_(cfg), walk_(cfg.walk), kick_(cfg.walk, cfg.kick) {
   body_.type = ActionType::STAND;
 }
 
@@ -33,7 +33,7 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
   last_time_ = time_s;
   ++ticks_;
 
-  const blackboard::MotionRequest req = board_.motion_request.read();
+  const blackboard::MotionRequest& req = request_;
   if (req.body.type != ActionType::NONE) body_ = req.body;
   const ActionType want = body_.type;
 
@@ -267,7 +267,7 @@ void MotionModule::publish(const blackboard::MotionRequest& req, double time_s, 
   st.request_sequence = req.sequence;
   st.tick = ticks_;
   st.time = time_s;
-  board_.motion.write(st);
+  state_ = st;
 }
 
 }  // namespace agent::motion

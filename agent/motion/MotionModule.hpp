@@ -1,10 +1,11 @@
-// The Motion thread's tick. Every 10 ms: read the latest MotionRequest from
-// the Blackboard and the sensors, detect falls, run the generator the
+// The Motion thread's tick. Every 10 ms: take the Behaviour's latest
+// MotionRequest and the sensors, detect falls, run the generator the
 // request (or the fall state) selects, clip to the joint limits and per-tick
 // speeds, and publish odometry, posture, support foot and the active action.
 //
-// It plugs into the robot program as its MotionGenerator, so it sees the body
-// only through libagent SensorValues / JointValues.
+// It sees the body only through libagent SensorValues / JointValues; the
+// robot program runs it as its Motion thread's module (agent/program's
+// MotionThreadModule: motion request in, motion state out).
 //
 // Units: angles rad, distances mm, times s.
 #pragma once
@@ -15,7 +16,7 @@
 #include "agent/motion/Generators.hpp"
 #include "agent/motion/JointLimits.hpp"
 #include "agent/motion/Walk2014Generator.hpp"
-#include "agent/program/MotionGenerator.hpp"
+#include "agent/framework/MotionGenerator.hpp"
 
 namespace agent::motion {
 
@@ -38,11 +39,17 @@ struct MotionConfig {
   std::vector<Keyframe> getup_front, getup_back;
 };
 
-class MotionModule : public agent::program::MotionGenerator {
+class MotionModule : public framework::MotionGenerator {
  public:
-  explicit MotionModule(blackboard::Blackboard& board, const MotionConfig& cfg = MotionConfig());
+  explicit MotionModule(const MotionConfig& cfg = MotionConfig());
 
-  // program::MotionGenerator: one tick at sim_time_us; `out` is the command.
+  // The Behaviour's request, followed from the next tick on (a NONE body
+  // keeps the current body command).
+  void setRequest(const blackboard::MotionRequest& r) { request_ = r; }
+  // What the body is doing after the last tick (odometry, posture, ...).
+  const blackboard::MotionState& state() const { return state_; }
+
+  // framework::MotionGenerator: one tick at sim_time_us; `out` is the command.
   void tick(const libagent::SensorValues& sensors, int64_t sim_time_us, libagent::JointValues& out) override;
 
   // Same, by time in s, for tests and tools.
@@ -58,8 +65,9 @@ class MotionModule : public agent::program::MotionGenerator {
   void startTransitionToStand(const libagent::JointValues& from);
   void publish(const blackboard::MotionRequest& req, double time_s, bool stepping);
 
-  blackboard::Blackboard& board_;
   MotionConfig cfg_;
+  blackboard::MotionRequest request_;
+  blackboard::MotionState state_;
   Walk2014Generator walk_;
   KickGenerator kick_;
   KeyframeGenerator keyframes_;

@@ -20,21 +20,21 @@ void odometryStep(const blackboard::Odometry& from, const blackboard::Odometry& 
   *turn = to.theta - from.theta;
 }
 
-void VisionAdapterModule::run(blackboard::Blackboard& board) {
-  const blackboard::FrameInfo frame = board.frame.read();
-  const bool down = postureIsDown(board.motion.read().posture);
-  board.vision.write(adaptVision(frame, down, cfg_));
+void VisionAdapterModule::update(const In& in, Out& out) {
+  const bool down = postureIsDown(in.get<blackboard::MotionState>().posture);
+  out.get<blackboard::VisionMeasurements>() = adaptVision(in.get<blackboard::FrameInfo>(), down, cfg_);
 }
 
-void BallTrackerModule::run(blackboard::Blackboard& board) {
-  const blackboard::FrameInfo frame = board.frame.read();
-  const blackboard::Odometry odo = board.motion.read().odometry;
+void BallTrackerModule::update(const In& in, Out& out) {
+  const blackboard::FrameInfo& frame = in.get<blackboard::FrameInfo>();
+  const blackboard::Odometry& odo = in.get<blackboard::MotionState>().odometry;
   double f = 0, l = 0, t = 0;
   if (have_odometry_) odometryStep(last_, odo, &f, &l, &t);
   last_ = odo;
   have_odometry_ = true;
-  tracker_.update(frame.time, f, l, t, board.vision.read(), board.localisation.read(), board.team.read());
-  board.ball.write(tracker_.estimate());
+  tracker_.update(frame.time, f, l, t, in.get<blackboard::VisionMeasurements>(),
+                  in.get<blackboard::LocalisationEstimate>(), in.get<blackboard::TeamInfo>());
+  out.get<blackboard::BallEstimate>() = tracker_.estimate();
 }
 
 }  // namespace agent::perception

@@ -3,7 +3,7 @@
 
 #include "agent/perception/BallTracker.hpp"
 #include "agent/perception/VisionAdapter.hpp"
-#include "agent/program/Module.hpp"
+#include "agent/framework/Module.hpp"
 
 namespace agent::perception {
 
@@ -11,36 +11,32 @@ namespace agent::perception {
 bool postureIsDown(blackboard::BodyState p);
 
 // frame + motion (posture) -> vision.
-class VisionAdapterModule : public program::Module {
+class VisionAdapterModule
+    : public framework::ModuleOf<framework::Reads<blackboard::FrameInfo, blackboard::MotionState>,
+                                 framework::Writes<blackboard::VisionMeasurements>> {
  public:
   explicit VisionAdapterModule(const VisionAdapterConfig& cfg = {}) : cfg_(cfg) {}
   const char* name() const override { return "vision adapter"; }
-  std::vector<program::SectionId> reads() const override {
-    return {program::SectionId::Frame, program::SectionId::Motion};
-  }
-  std::vector<program::SectionId> writes() const override { return {program::SectionId::Vision}; }
-  void run(blackboard::Blackboard& board) override;
 
  private:
+  void update(const In& in, Out& out) override;
   VisionAdapterConfig cfg_;
 };
 
 // frame + vision + localisation + motion (odometry), team (previous frame) -> ball.
-class BallTrackerModule : public program::Module {
+class BallTrackerModule
+    : public framework::ModuleOf<framework::Reads<blackboard::FrameInfo, blackboard::VisionMeasurements,
+                                                  blackboard::LocalisationEstimate, blackboard::MotionState>,
+                                 framework::Writes<blackboard::BallEstimate>,
+                                 framework::UsesPrevious<blackboard::TeamInfo>> {
  public:
   explicit BallTrackerModule(const BallTrackerConfig& cfg = {}) : tracker_(cfg) {}
   const char* name() const override { return "ball tracker"; }
-  std::vector<program::SectionId> reads() const override {
-    using S = program::SectionId;
-    return {S::Frame, S::Vision, S::Localisation, S::Motion};
-  }
-  std::vector<program::SectionId> writes() const override { return {program::SectionId::Ball}; }
-  // The team ball comes from the reports team receive stored last frame.
-  std::vector<program::SectionId> usesPrevious() const override { return {program::SectionId::Team}; }
-  void run(blackboard::Blackboard& board) override;
   const BallTracker& tracker() const { return tracker_; }
 
  private:
+  // The team ball comes from the reports team receive stored last frame.
+  void update(const In& in, Out& out) override;
   BallTracker tracker_;
   bool have_odometry_ = false;
   blackboard::Odometry last_;

@@ -1,42 +1,42 @@
 #include "agent/program/ModuleOrder.hpp"
 
 #include "agent/comms/TeamTransport.hpp"
+#include "agent/random/SplitMix64.hpp"
 
 namespace agent::program {
 
-void buildSchedule(ProgramConfig& cfg, blackboard::Blackboard& board, EffectorModule::Sink effector,
-                   ModuleSchedule& s) {
-  using T = ThreadId;
+void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const libagent::CameraImages* images,
+                   framework::ModuleSchedule& s) {
+  using T = framework::ThreadId;
+  using framework::SectionId;
   s.providedByProgram(T::Motion, SectionId::Sensors);
   s.providedByProgram(T::Perception, SectionId::Frame);
+  s.readByProgram(SectionId::FindBall);  // the simulator's FindBall view
 
   // Perception.
-  if (cfg.perception_step) s.add(T::Perception, std::make_unique<PerceptionStepModule>(std::move(cfg.perception_step)));
+  if (cfg.perception_step)
+    s.add(T::Perception, std::make_unique<PerceptionStepModule>(std::move(cfg.perception_step), images));
   std::shared_ptr<comms::TeamTransport> link;
   if (cfg.extensions) link = std::make_shared<comms::TeamLinkTransport>(&cfg.extensions->team);
   s.add(T::Perception, std::make_unique<GameStateModule>(cfg.team, cfg.player,
                                                          cfg.extensions ? &cfg.extensions->game : nullptr));
   s.add(T::Perception, std::make_unique<perception::VisionAdapterModule>(cfg.vision));
   localisation::LocalisationModuleConfig lc = cfg.localisation;
-  lc.filter.seed = lc.filter.seed * 0x9e3779b97f4a7c15ULL + cfg.seed;  // per robot, from the scenario
+  lc.filter.seed = lc.filter.seed * random::kGoldenGamma + cfg.seed;  // per robot, from the scenario
   s.add(T::Perception, std::make_unique<localisation::LocalisationModule>(lc));
   s.add(T::Perception, std::make_unique<perception::BallTrackerModule>(cfg.ball));
   s.add(T::Perception, std::make_unique<TeamReceiveModule>(cfg.team, cfg.player, link));
-  bool findball = false;  // the behaviour publishes findball: team send carries its payload
-  if (cfg.behaviour) {
-    for (SectionId w : cfg.behaviour->writes()) findball = findball || w == SectionId::FindBall;
+  if (cfg.behaviour)
     s.add(T::Perception, std::move(cfg.behaviour));
-  } else if (!cfg.actions.empty()) {
+  else if (!cfg.actions.empty())
     s.add(T::Perception, std::make_unique<motion::ScriptedBehaviour>(std::move(cfg.actions)));
-  }
-  s.add(T::Perception, std::make_unique<TeamSendModule>(cfg.team, cfg.player, link, findball));
+  s.add(T::Perception, std::make_unique<TeamSendModule>(cfg.team, cfg.player, link));
 
   // Motion.
-  s.add(T::Motion, std::make_unique<TouchModule>());
   if (cfg.motion_generator)
     s.add(T::Motion, std::make_unique<GeneratorModule>(std::move(cfg.motion_generator)));
   else
-    s.add(T::Motion, std::make_unique<MotionThreadModule>(board, cfg.motion));
+    s.add(T::Motion, std::make_unique<MotionThreadModule>(cfg.motion));
   s.add(T::Motion, std::make_unique<EffectorModule>(std::move(effector)));
 }
 

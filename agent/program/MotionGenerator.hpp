@@ -1,31 +1,19 @@
-// The Motion thread's replaceable step. Once per 10 ms tick the robot program
-// hands a generator the latest sensors and the simulated time and sends the
-// joint command it fills (angles rad, stiffnesses 0..1 or -1 limp). The walk
-// (agent/motion/) plugs in here as another generator.
+// The robot program's own motion generators (agent/framework/MotionGenerator.hpp):
+// a held posture and a joint script.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "agent/framework/MotionGenerator.hpp"
 #include "agent/libagent/AgentShared.hpp"
-#include "agent/libagent/CameraImages.hpp"
-#include "agent/libagent/CameraShared.hpp"
 #include "agent/program/Postures.hpp"
 
 namespace agent::program {
 
-class MotionGenerator {
- public:
-  virtual ~MotionGenerator() = default;
-  // `out` arrives holding the previous command (the posture it started from
-  // on the first tick); fill angles and stiffnesses.
-  virtual void tick(const agent::libagent::SensorValues& sensors, int64_t sim_time_us,
-                    agent::libagent::JointValues& out) = 0;
-};
-
 // Holds one posture.
-class PoseGenerator : public MotionGenerator {
+class PoseGenerator : public framework::MotionGenerator {
  public:
   explicit PoseGenerator(Posture p) : cmd_(postureCommand(p)) {}
   explicit PoseGenerator(const agent::libagent::JointValues& cmd) : cmd_(cmd) {}
@@ -57,7 +45,7 @@ struct ScriptStep {
 // A torso pitching forward (GyroscopeY > 0) then pushes the toes down, which
 // resists the pitch. It is what makes a standing robot's physics depend on
 // its sensors (and so on the noise seed), as on a real robot.
-class ScriptedMotion : public MotionGenerator {
+class ScriptedMotion : public framework::MotionGenerator {
  public:
   ScriptedMotion(Posture start, std::vector<ScriptStep> steps = {});
   void tick(const agent::libagent::SensorValues& sensors, int64_t sim_time_us,
@@ -72,23 +60,6 @@ class ScriptedMotion : public MotionGenerator {
   std::vector<ScriptStep> steps_;
   std::vector<Ramp> ramps_;
   size_t next_ = 0;
-};
-
-// An extra Perception step for tests and tools (e.g. reading the rendered
-// images): run first in the Perception thread with each camera frame.
-class PerceptionStep {
- public:
-  virtual ~PerceptionStep() = default;
-  virtual void step(const agent::libagent::CameraFrame& frame) { ++frames_; }
-  int64_t frames() const { return frames_; }
-  // The rendered images (null unless the simulator renders); hold the frame
-  // passed to step() when frame.images_valid is 1. Set by RobotProgram.
-  void setImages(const agent::libagent::CameraImages* images) { images_ = images; }
-  const agent::libagent::CameraImages* images() const { return images_; }
-
- protected:
-  int64_t frames_ = 0;
-  const agent::libagent::CameraImages* images_ = nullptr;
 };
 
 }  // namespace agent::program

@@ -18,12 +18,12 @@ void nameThisThread(const std::string& name) {
   pthread_setname_np(pthread_self(), name.substr(0, 15).c_str());
 }
 
-struct NullGenerator : MotionGenerator {
+struct NullGenerator : framework::MotionGenerator {
   void tick(const SensorValues&, int64_t, JointValues&) override {}
 };
 
-ProgramConfig shorthand(int team, int player, std::unique_ptr<MotionGenerator> motion,
-                        std::unique_ptr<PerceptionStep> perception) {
+ProgramConfig shorthand(int team, int player, std::unique_ptr<framework::MotionGenerator> motion,
+                        std::unique_ptr<framework::PerceptionStep> perception) {
   ProgramConfig c;
   c.team = team;
   c.player = player;
@@ -39,24 +39,21 @@ RobotProgram::RobotProgram(agent::libagent::AgentConnection connection, ProgramC
     : conn_(std::move(connection)), tag_(agent::libagent::robotTag(cfg.team, cfg.player)), cfg_(std::move(cfg)) {}
 
 RobotProgram::RobotProgram(agent::libagent::AgentConnection connection, int team, int player,
-                           std::unique_ptr<MotionGenerator> motion, std::unique_ptr<PerceptionStep> perception)
+                           std::unique_ptr<framework::MotionGenerator> motion,
+                           std::unique_ptr<framework::PerceptionStep> perception)
     : RobotProgram(std::move(connection), shorthand(team, player, std::move(motion), std::move(perception))) {}
 
 RobotProgram::~RobotProgram() { join(); }
 
-void RobotProgram::setMotion(std::unique_ptr<MotionGenerator> motion) {
+void RobotProgram::setMotion(std::unique_ptr<framework::MotionGenerator> motion) {
   if (motion_thread_.joinable()) throw std::logic_error("RobotProgram::setMotion after start");
   cfg_.motion_generator = std::move(motion);
 }
 
 void RobotProgram::start(Threading threading) {
-  buildSchedule(cfg_, board_, [this](const blackboard::ActuatorRequest& a) { pending_ = a.joints; }, schedule_);
+  buildSchedule(cfg_, [this](const blackboard::ActuatorRequest& a) { pending_ = a.joints; }, conn_.images(),
+                schedule_);
   schedule_.check();  // throws ModuleError before any thread starts
-  for (const auto& m : schedule_.modules(ThreadId::Perception))
-    if (auto* p = dynamic_cast<PerceptionStepModule*>(m.get())) {
-      p->step().setImages(conn_.images());
-      step_module_ = p;
-    }
   // Perception runs at every frame whether or not images are rendered.
   with_perception_ = conn_.hasCamera();
   threading_ = threading;
@@ -128,8 +125,8 @@ void RobotProgram::motionStep() {
   s.sim_time_us = conn_.simTimeUs();
   s.time = static_cast<double>(s.sim_time_us) * 1e-6;
   board_.sensors.write(s);
-  if (cfg_.step_hook) cfg_.step_hook(ThreadId::Motion);
-  schedule_.run(ThreadId::Motion, board_);  // touch -> motion -> effector
+  if (cfg_.step_hook) cfg_.step_hook(framework::ThreadId::Motion);
+  schedule_.run(framework::ThreadId::Motion, board_);  // motion -> effector
   conn_.writeActuators(pending_);
   motion_ticks_.fetch_add(1);
   if (after_tick_) after_tick_(s.values, s.sim_time_us);
@@ -160,9 +157,8 @@ void RobotProgram::perceptionStep() {
   std::copy(cf.observations, cf.observations + f.num_observations, f.observations);
   f.images_valid = cf.images_valid != 0;
   board_.frame.write(f);
-  if (step_module_) step_module_->setFrame(&cf);
-  if (cfg_.step_hook) cfg_.step_hook(ThreadId::Perception);
-  schedule_.run(ThreadId::Perception, board_);
+  if (cfg_.step_hook) cfg_.step_hook(framework::ThreadId::Perception);
+  schedule_.run(framework::ThreadId::Perception, board_);
   perception_frames_.fetch_add(1);
   conn_.perceptionDone();
 }

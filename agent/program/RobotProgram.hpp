@@ -34,8 +34,7 @@
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/libagent/AgentConnection.hpp"
 #include "agent/program/ModuleOrder.hpp"
-#include "agent/program/MotionGenerator.hpp"
-#include "agent/program/Module.hpp"
+#include "agent/framework/ModuleSchedule.hpp"
 
 namespace agent::program {
 
@@ -48,13 +47,14 @@ class RobotProgram {
   // Shorthand: a MotionGenerator for Motion, no behaviour, an optional
   // PerceptionStep run first in the Perception thread.
   RobotProgram(agent::libagent::AgentConnection connection, int team, int player,
-               std::unique_ptr<MotionGenerator> motion, std::unique_ptr<PerceptionStep> perception = nullptr);
+               std::unique_ptr<framework::MotionGenerator> motion,
+               std::unique_ptr<framework::PerceptionStep> perception = nullptr);
   ~RobotProgram();  // joins (call the body side's shutdown first)
   RobotProgram(const RobotProgram&) = delete;
   RobotProgram& operator=(const RobotProgram&) = delete;
 
   // Replace the Motion step by a generator (before start()).
-  void setMotion(std::unique_ptr<MotionGenerator> motion);
+  void setMotion(std::unique_ptr<framework::MotionGenerator> motion);
   // Checks and orders the modules, announces the program to the body side,
   // then starts the threads (Named) or waits for the simulator's calls
   // (Inline). Throws ModuleError (nothing announced or started) if a module
@@ -88,7 +88,7 @@ class RobotProgram {
 
   // The program's Blackboard (read it between lock-step cycles, e.g. in tests).
   blackboard::Blackboard& board() { return board_; }
-  const ModuleSchedule& schedule() const { return schedule_; }
+  const framework::ModuleSchedule& schedule() const { return schedule_; }
 
  private:
   void motionLoop();
@@ -102,8 +102,7 @@ class RobotProgram {
   std::string tag_;
   ProgramConfig cfg_;
   blackboard::Blackboard board_;
-  ModuleSchedule schedule_;
-  PerceptionStepModule* step_module_ = nullptr;
+  framework::ModuleSchedule schedule_;
   agent::libagent::JointValues pending_{};  // the effector's command, sent after the Motion modules
   std::function<void(const agent::libagent::SensorValues&, int64_t)> after_tick_;
   Threading threading_ = Threading::Named;

@@ -28,7 +28,7 @@ constexpr double kMaxPosition = 50;     // m
 
 }  // namespace
 
-ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<MotionGenerator> motion) {
+ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::MotionGenerator> motion) {
   ProgramConfig pc;
   pc.team = s.team;
   pc.player = s.player;

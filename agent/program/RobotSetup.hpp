@@ -54,7 +54,7 @@ struct RobotSetup {
 // scripted behaviour runs them through the Motion module; otherwise Motion
 // is the scripted posture and joint steps. `motion` (may be null) replaces
 // the Motion module (a test's generator).
-ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<MotionGenerator> motion = nullptr);
+ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::MotionGenerator> motion = nullptr);
 
 // The posture names the files use.
 const std::vector<std::string>& postureNames();

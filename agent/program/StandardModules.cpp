@@ -9,34 +9,18 @@ namespace agent::program {
 
 namespace S = libagent::Sensors;
 
-void TouchModule::run(blackboard::Blackboard& board) {
-  const blackboard::SensorFrame s = board.sensors.read();
-  const float* v = s.values.sensors;
-  blackboard::TouchState t;
-  t.chest = v[S::ChestBoard_Button] > 0.5f;
-  t.head_front = v[S::Head_Touch_Front] > 0.5f;
-  t.head_middle = v[S::Head_Touch_Middle] > 0.5f;
-  t.head_rear = v[S::Head_Touch_Rear] > 0.5f;
-  t.left_bumper = v[S::LFoot_Bumper_Left] > 0.5f || v[S::LFoot_Bumper_Right] > 0.5f;
-  t.right_bumper = v[S::RFoot_Bumper_Left] > 0.5f || v[S::RFoot_Bumper_Right] > 0.5f;
-  if (chest_down_ && !t.chest) ++presses_;  // a press ends when the button comes up
-  chest_down_ = t.chest;
-  t.chest_presses = presses_;
-  t.time = s.time;
-  board.touch.write(t);
+void MotionThreadModule::update(const In& in, Out& out) {
+  const blackboard::SensorFrame& s = in.get<blackboard::SensorFrame>();
+  motion_.setRequest(in.get<blackboard::MotionRequest>());
+  motion_.tick(s.values, s.sim_time_us, cmd_);
+  out.get<blackboard::MotionState>() = motion_.state();
+  blackboard::ActuatorRequest& a = out.get<blackboard::ActuatorRequest>();
+  a.joints = cmd_;
+  ++a.tick;
 }
 
-void MotionThreadModule::run(blackboard::Blackboard& board) {
-  const blackboard::SensorFrame s = board.sensors.read();
-  motion_.tick(s.values, s.sim_time_us, cmd_);  // publishes the Motion section itself
-  board.actuators.update([&](blackboard::ActuatorRequest& a) {
-    a.joints = cmd_;
-    ++a.tick;
-  });
-}
-
-void GeneratorModule::run(blackboard::Blackboard& board) {
-  const blackboard::SensorFrame s = board.sensors.read();
+void GeneratorModule::update(const In& in, Out& out) {
+  const blackboard::SensorFrame& s = in.get<blackboard::SensorFrame>();
   if (first_) {
     // Start from the measured angles, so a generator that only touches some
     // joints leaves the others where they are.
@@ -48,17 +32,25 @@ void GeneratorModule::run(blackboard::Blackboard& board) {
   }
   if (gen_) gen_->tick(s.values, s.sim_time_us, cmd_);
   ++ticks_;
-  board.motion.update([&](blackboard::MotionState& m) {
-    m.tick = ticks_;
-    m.time = s.time;
-  });
-  board.actuators.update([&](blackboard::ActuatorRequest& a) {
-    a.joints = cmd_;
-    a.tick = ticks_;
-  });
+  blackboard::MotionState& m = out.get<blackboard::MotionState>();
+  m.tick = ticks_;
+  m.time = s.time;
+  blackboard::ActuatorRequest& a = out.get<blackboard::ActuatorRequest>();
+  a.joints = cmd_;
+  a.tick = ticks_;
 }
 
-void GameStateModule::run(blackboard::Blackboard& board) {
+void PerceptionStepModule::update(const In& in, Out&) {
+  const blackboard::FrameInfo& f = in.get<blackboard::FrameInfo>();
+  frame_.sim_time_us = f.sim_time_us;
+  frame_.frame_index = f.frame_index;
+  frame_.num_observations = f.num_observations;
+  std::copy(f.observations, f.observations + f.num_observations, frame_.observations);
+  frame_.images_valid = f.images_valid ? 1 : 0;
+  step_->step(frame_);
+}
+
+void GameStateModule::update(const In&, Out& out) {
   if (block_) {
     const comms::GameState g = reader_.read(block_);
     blackboard::GameInfo next = info_;
@@ -72,12 +64,12 @@ void GameStateModule::run(blackboard::Blackboard& board) {
     if (next.state != info_.state || next.penalised != info_.penalised || next.known != info_.known) ++next.changes;
     info_ = next;
   }
-  board.game.write(info_);
+  out.get<blackboard::GameInfo>() = info_;
 }
 
-void TeamReceiveModule::run(blackboard::Blackboard& board) {
+void TeamReceiveModule::update(const In& in, Out& out) {
   if (transport_) {
-    const int64_t now_us = board.frame.read().sim_time_us;
+    const int64_t now_us = in.get<blackboard::FrameInfo>().sim_time_us;
     receiver_.update(*transport_, now_us);
     for (int p = 1; p <= comms::kSplMaxPlayers && p <= blackboard::kMaxTeammates; ++p) {
       const comms::TeammateState& t = receiver_.teammate(p);
@@ -103,15 +95,15 @@ void TeamReceiveModule::run(blackboard::Blackboard& board) {
     info_.received = receiver_.stats().received;
     info_.malformed = receiver_.stats().malformed;
   }
-  board.team.write(info_);
+  out.get<blackboard::TeamInfo>() = info_;
 }
 
-void TeamSendModule::run(blackboard::Blackboard& board) {
+void TeamSendModule::update(const In& in, Out&) {
   if (!transport_ || player_ < 1 || player_ > comms::kSplMaxPlayers) return;
-  const blackboard::LocalisationEstimate loc = board.localisation.read();
-  const blackboard::BallEstimate ball = board.ball.read();
+  const blackboard::LocalisationEstimate& loc = in.get<blackboard::LocalisationEstimate>();
+  const blackboard::BallEstimate& ball = in.get<blackboard::BallEstimate>();
   comms::SplMessage m;
-  m.fallen = perception::postureIsDown(board.motion.read().posture);
+  m.fallen = perception::postureIsDown(in.get<blackboard::MotionState>().posture);
   m.pose_x = static_cast<float>(loc.pose.x);
   m.pose_y = static_cast<float>(loc.pose.y);
   m.pose_theta = static_cast<float>(loc.pose.theta);
@@ -124,15 +116,14 @@ void TeamSendModule::run(blackboard::Blackboard& board) {
     m.ball_vel_y = static_cast<float>(ball.rr_vy);
   }
   m.position_confidence = static_cast<int8_t>(std::lround(100 * std::clamp(loc.confidence, 0.0, 1.0)));
-  if (with_findball_) {  // the behaviour's search state in the free data area
-    const blackboard::FindBallInfo fb = board.findball.read();
-    if (fb.payload.size() <= comms::kSplDataSize) m.data = fb.payload;
-    if (fb.has_point) {
-      m.walking_to_x = static_cast<float>(fb.point_x);
-      m.walking_to_y = static_cast<float>(fb.point_y);
-    }
+  // The behaviour's search state (if it publishes one) in the free data area.
+  const blackboard::FindBallInfo& fb = in.get<blackboard::FindBallInfo>();
+  if (fb.payload.size() <= comms::kSplDataSize) m.data = fb.payload;
+  if (fb.has_point) {
+    m.walking_to_x = static_cast<float>(fb.point_x);
+    m.walking_to_y = static_cast<float>(fb.point_y);
   }
-  sender_.maybeSend(*transport_, board.frame.read().sim_time_us, m);
+  sender_.maybeSend(*transport_, in.get<blackboard::FrameInfo>().sim_time_us, m);
 }
 
 }  // namespace agent::program

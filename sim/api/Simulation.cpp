@@ -37,7 +37,7 @@ static_assert(sameIndex(Sonar, al::Sensors::US) && sameIndex(RFsrRearRight, al::
 namespace {
 
 // The controller as the program's Motion step.
-class ControllerMotion : public agent::program::MotionGenerator {
+class ControllerMotion : public agent::framework::MotionGenerator {
  public:
   explicit ControllerMotion(Controller c) : c_(std::move(c)) {}
   void tick(const al::SensorValues& sensors, int64_t, al::JointValues& out) override {

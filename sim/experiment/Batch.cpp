@@ -25,6 +25,7 @@
 #include "sim/experiment/PrivateShm.hpp"
 #include "sim/experiment/Report.hpp"
 #include "sim/experiment/Statistics.hpp"
+#include "sim/experiment/SweepReport.hpp"
 #include "sim/experiment/Trial.hpp"
 
 namespace simswift::experiment {
@@ -134,8 +135,9 @@ struct Progress {
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     const double eta = elapsed / ran * (total - done);
     char what[200];
-    std::snprintf(what, sizeof what, "trial %d (%s, pos %d, #%d): %s | %.1fx real time per core", r.trial, r.setup.c_str(),
-                  r.position, r.repeat + 1,
+    const std::string cell = r.cell >= 0 ? "cell " + std::to_string(r.cell) + ", " : "";
+    std::snprintf(what, sizeof what, "trial %d (%s%s, pos %d, #%d): %s | %.1fx real time per core", r.trial, cell.c_str(),
+                  r.setup.c_str(), r.position, r.repeat + 1,
                   r.found ? ("found in " + fixed(r.seconds, 2) + " s by " + r.finder).c_str() : "not found",
                   r.realTimeFactor());
     if (bar) {
@@ -313,7 +315,7 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
     running.erase(it);
     wall.peak_trial_mb = std::max(wall.peak_trial_mb, static_cast<double>(usage.ru_maxrss) / 1024.0);  // KiB -> MB
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && trialDone(opt.out_dir, t)) {
-      TrialResult r = parseCsvRow(readFile(trialFile(opt.out_dir, t, ".csv")));
+      TrialResult r = parseCsvRow(readFile(trialFile(opt.out_dir, t, ".csv")), static_cast<int>(e.sweep.size()));
       std::sscanf(readFile(trialFile(opt.out_dir, t, ".timing.csv")).c_str(), "%*d,%lf,%lf", &r.sim_s, &r.wall_s);
       pr.trial(e, r, jobs);
       ++out.ran;
@@ -414,12 +416,12 @@ BatchOutcome mergeRuns(const std::vector<std::string>& dirs, const std::string& 
 void assemble(const Experiment& e, const std::string& dir, std::string* notes, const RunWall* run) {
   const int robots = e.maxRobots();
   std::vector<TrialResult> results;
-  std::string csv = csvHeader(robots), tracks = tracksHeader(), timing = timingHeader();
+  std::string csv = csvHeader(robots, e.sweep), tracks = tracksHeader(), timing = timingHeader();
   for (int t = 0; t < e.numTrials(); ++t) {
     if (!trialDone(dir, t)) throw BatchError("trial " + std::to_string(t) + " missing in " + dir);
     TrialResult r;
     try {
-      r = parseCsvRow(readFile(trialFile(dir, t, ".csv")));
+      r = parseCsvRow(readFile(trialFile(dir, t, ".csv")), static_cast<int>(e.sweep.size()));
     } catch (const std::runtime_error& ex) {
       throw BatchError(trialFile(dir, t, ".csv") + ": " + ex.what());
     }
@@ -496,6 +498,15 @@ void assemble(const Experiment& e, const std::string& dir, std::string* notes, c
     drawRoutes(e, static_cast<int>(s), routes[s], dir + "/figures/routes_" + e.setups[s].name + ".png");
     std::string msg;
     if (!plotFindTimes(e, static_cast<int>(s), results, dir + "/figures", &msg) && notes) *notes += msg + "\n";
+  }
+  if (e.swept()) {
+    // One row per cell and setup (cells.csv), one figure per swept path.
+    const std::vector<CellRow> rows = cellRows(e, results);
+    writeAtomic(dir + "/cells.csv", cellsCsv(e, rows));
+    for (size_t k = 0; k < e.sweep.size(); ++k) {
+      std::string msg;
+      if (!plotSweep(e, rows, static_cast<int>(k), dir + "/figures", &msg) && notes) *notes += msg + "\n";
+    }
   }
 }
 

@@ -18,7 +18,8 @@ const char* kExperimentUsage =
     "Runs a find-ball experiment (scenarios/thesis_findball.yaml, ...): every setup x ball\n"
     "position x trial, each trial in its own process, and writes into DIR (default\n"
     "results/<name>): results.csv, tracks.csv, report.md (the thesis's tables 5.3-5.12),\n"
-    "figures/*.png, timing.md. Run the same command again to continue an interrupted run.\n"
+    "figures/*.png, timing.md; with a sweep: in the file also cells.csv (one row per cell).\n"
+    "Run the same command again to continue an interrupted run.\n"
     "\n"
     "  --out DIR          results folder\n"
     "  --jobs N           worker processes (default: the number of cores)\n"
@@ -114,8 +115,9 @@ int experimentMain(int argc, char** argv, const TrialHooks& hooks) {
     const Experiment e = Experiment::loadFile(positional[0]);
     checkBehaviours(e, hooks);
     if (check) {
-      std::printf("%s: ok: %d trials (%zu setups x %zu positions x %d)\n", positional[0].c_str(), e.numTrials(),
-                  e.setups.size(), e.balls.size(), e.trials_per_position);
+      const std::string cells = e.swept() ? std::to_string(e.numCells()) + " cells x " : "";
+      std::printf("%s: ok: %d trials (%s%zu setups x %zu positions x %d)\n", positional[0].c_str(), e.numTrials(),
+                  cells.c_str(), e.setups.size(), e.balls.size(), e.trials_per_position);
       return 0;
     }
     opt.out_dir = !out.empty() ? out
@@ -123,8 +125,8 @@ int experimentMain(int argc, char** argv, const TrialHooks& hooks) {
                                     : "results/" + e.name + "-shard" + std::to_string(opt.shard) + "of" +
                                           std::to_string(opt.shards);
     if (single >= 0) {
-      const TrialResult r = parseCsvRow(runSingleTrial(e, hooks, single, opt.out_dir));
-      std::printf("%s%s", csvHeader(e.maxRobots()).c_str(), csvRow(r, e.maxRobots()).c_str());
+      const TrialResult r = parseCsvRow(runSingleTrial(e, hooks, single, opt.out_dir), static_cast<int>(e.sweep.size()));
+      std::printf("%s%s", csvHeader(e.maxRobots(), e.sweep).c_str(), csvRow(r, e.maxRobots()).c_str());
       return 0;
     }
     const BatchOutcome o = runBatch(e, hooks, opt);

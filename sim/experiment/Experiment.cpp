@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "agent/random/SplitMix64.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 
@@ -35,13 +36,6 @@ std::string flow(const YAML::Node& n) {
   YAML::Emitter e;
   e << YAML::Flow << n;
   return e.c_str();
-}
-
-uint64_t splitmix64(uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
 }
 
 Behaviour parseBehaviour(const std::string& s) {
@@ -79,8 +73,11 @@ Experiment Experiment::loadFile(const std::string& path) {
   return parse(text.str(), path);
 }
 
-Experiment Experiment::parse(const std::string& text, const std::string& source_name) {
-  const YAML::Node root = YamlReader::parse(text, source_name);
+namespace {
+
+// The experiment of one tree: the file's own, or a fresh parse of it with
+// swept values set in (Sweep.hpp). Never looks at sweep: beyond its name.
+Experiment parseTree(const YAML::Node& root, const std::string& text, const std::string& source_name) {
   if (!root.IsMap()) throw ConfigError(source_name + ":1: an experiment file is a map (name:, seed:, balls:, ...)");
   YamlReader top(root, source_name);
   Experiment e;
@@ -94,7 +91,9 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
   e.base.base_dir = top.string("base_dir", std::filesystem::path(source_name).parent_path().string());
   e.base.model_path = top.string("model", "models/nao_v5.urdf");
   e.base.field_path = top.string("field", "fields/spl_2017.yaml");
-  e.base.noise.on = top.boolean("noise", true);
+  runner::readNoise(top, e.base.noise);  // the scenario's noise: (on/off or a map)
+  runner::readPhysics(top, e.base);
+  (void)top.has("sweep");  // Experiment::parse's
   try {
     e.field = FieldConfig::loadYaml(e.base.fieldFile());
   } catch (const ConfigError& err) {
@@ -261,20 +260,73 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
     e.setups.push_back(std::move(setup));
   }
   if (e.setups.empty()) top.fail("setups", "an experiment needs at least one setup");
+  // The scenario's team_comms: and game: blocks, by its readers. The trial
+  // owns the game's start (penalised at the start poses, then PLAYING).
+  if (auto t = top.optionalMap("team_comms")) e.base.team_comms = runner::readTeamComms(*t);
+  if (auto g = top.optionalMap("game")) {
+    for (const char* key : {"state", "timeline", "penalties", "on_unpenalise", "udp", "address", "port", "return_port"})
+      if (g->has(key))
+        g->fail(key, "set by each trial (penalised at the start poses, then PLAYING; no GameController packets "
+                     "from parallel trials): an experiment's game: takes kickoff_team, half_duration, first_half");
+    e.base.game = runner::readGame(*g, e.maxRobots());
+  }
   top.finish();
   if (e.numTrials() > 1000000) top.fail("trials_per_position", "more than 10^6 trials");
+  return e;
+}
+
+}  // namespace
+
+Experiment Experiment::parse(const std::string& text, const std::string& source_name) {
+  const YAML::Node root = YamlReader::parse(text, source_name);
+  Experiment e = parseTree(root, text, source_name);
+  if (!root["sweep"]) return e;
+  const YamlReader top(root, source_name);
+  e.sweep = readSweep(top);
+  for (const auto& kv : root)
+    if (kv.first.IsScalar() && kv.first.Scalar() == "sweep")
+      e.sweep_line = kv.first.Mark().is_null() ? 1 : kv.first.Mark().line + 1;
+  // Each value alone on the base, so an error names the value's line; then
+  // every cell (values that are fine alone may clash together).
+  for (SweepAxis& a : e.sweep)
+    for (size_t v = 0; v < a.values.size(); ++v) {
+      YAML::Node tree = YamlReader::parse(text, source_name);
+      applySweepValue(tree, a, static_cast<int>(v), source_name);
+      try {
+        a.values[v].alone = std::make_shared<const Experiment>(parseTree(tree, text, source_name));
+      } catch (const ConfigError& err) {
+        throw blameValue(source_name, a, static_cast<int>(v), err.what());
+      }
+    }
+  const int n = sweepCells(e.sweep);
+  for (int c = 0; c < n; ++c) {
+    YAML::Node tree = YamlReader::parse(text, source_name);
+    const std::vector<int> choice = sweepChoice(e.sweep, c);
+    for (size_t k = 0; k < e.sweep.size(); ++k) applySweepValue(tree, e.sweep[k], choice[k], source_name);
+    try {
+      e.cells.push_back(std::make_shared<const Experiment>(parseTree(tree, text, source_name)));
+    } catch (const ConfigError& err) {
+      throw blameCell(source_name, e.sweep_line, e.sweep, c, err.what());
+    }
+  }
+  if (e.numTrials() > 1000000)
+    throw ConfigError(source_name + ":" + std::to_string(e.sweep_line) + ": sweep: " + std::to_string(e.numTrials()) +
+                      " trials (cells x trials per cell) is more than 10^6");
   return e;
 }
 
 TrialSpec trialSpec(const Experiment& e, int index) {
   TrialSpec t;
   t.index = index;
+  t.cell = index / e.trialsPerCell();
+  const int within = index % e.trialsPerCell();  // = index without a sweep
   const int per_setup = static_cast<int>(e.balls.size()) * e.trials_per_position;
-  t.setup = index / per_setup;
-  t.ball = (index % per_setup) / e.trials_per_position;
-  t.repeat = index % e.trials_per_position;
-  // Stateless: a pure function of (experiment seed, trial index).
-  t.seed = splitmix64(splitmix64(e.seed) ^ static_cast<uint64_t>(index)) % 2147483647ull;
+  t.setup = within / per_setup;
+  t.ball = (within % per_setup) / e.trials_per_position;
+  t.repeat = within % e.trials_per_position;
+  // Stateless: a pure function of (experiment seed, trial index), the same
+  // in every cell (common random numbers: cells differ by their settings only).
+  t.seed = agent::random::splitmix64(agent::random::splitmix64(e.seed) ^ static_cast<uint64_t>(within)) % 2147483647ull;
   return t;
 }
 
@@ -282,7 +334,8 @@ runner::TeamColour teamColour(const Setup& s, int spl_team) {
   return s.robots.empty() || s.robots.front().team == spl_team ? runner::TeamColour::Blue : runner::TeamColour::Red;
 }
 
-runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t) {
+runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
+  const Experiment& e = top.cell(t.cell);
   runner::Scenario sc = e.base;
   sc.source = e.source + " (trial " + std::to_string(t.index) + ")";
   sc.seed = t.seed;
@@ -311,6 +364,9 @@ runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t) {
   using game::GameConfig;
   GameConfig& g = sc.game;
   g = GameConfig{};
+  g.kickoff_team = e.base.game.kickoff_team;  // the experiment's game: (defaults without one)
+  g.half_duration_s = e.base.game.half_duration_s;
+  g.first_half = e.base.game.first_half;
   g.initial_state = agent::libagent::GameStateValue::Initial;
   g.on_unpenalise = GameConfig::Return::Sideline;  // stays where it stands
   const double play_s = static_cast<double>(playTick(e)) * kTickSeconds;

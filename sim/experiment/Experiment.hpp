@@ -18,10 +18,17 @@
 //   fallen: {sideline_after: 30}   # s down (not got up) before the robot is moved
 //                                  # to the sideline, as the thesis did
 //   tracks: {every: 0.5}           # s between robot track samples
-//   noise: on                      # sensor noise (the scenario's noise: switch)
+//   noise: on                      # sensor noise (the scenario's noise: switch or map)
 //   vision: {ball: {max_distance_mm: 2500}}   # detector model and noise: the
 //                                  # scenario's vision: block (sim/vision/VisionConfig.hpp),
 //                                  # read by its reader, given to every trial
+//   team_comms: {loss: 0.1}        # the scenario's blocks, read by its readers
+//   physics: {substeps: 2}         # (sim/runner/Scenario.hpp), given to every trial;
+//   game: {half_duration: 600}     # game: only kickoff_team, half_duration, first_half
+//                                  # (each trial sets the rest: penalised, then PLAYING)
+//   sweep:                         # optional: values by dotted path (Sweep.hpp); every
+//     team_comms.loss: [0, 0.3]    # combination is a cell that runs every trial above
+//     setups.2017.config.search.spin_at_point: [on, off]
 //   balls:                         # table 5.2 (m, field frame)
 //     - {position: 1, x: 2.25, y: 0.0, note: Right middle}
 //   setups:                        # each runs every ball position x trials_per_position
@@ -44,15 +51,18 @@
 // the game goes to PLAYING and every robot is unpenalised at once. Find
 // times and the time limit count from that moment.
 //
-// Trials are numbered setup-major: trial = (setup * positions + position) *
-// trials_per_position + repeat. Every error is a ConfigError naming file,
-// line and field.
+// Trials are numbered cell-major, then setup-major: trial = cell *
+// trialsPerCell() + (setup * positions + position) * trials_per_position +
+// repeat (one cell without a sweep). Every error is a ConfigError naming
+// file, line and field.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "sim/experiment/Sweep.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/FieldConfig.hpp"
@@ -135,19 +145,32 @@ struct Experiment {
                              // parsed into base.vision
   std::vector<BallPosition> balls;
   std::vector<Setup> setups;
+  // sweep: its paths and values, and one experiment per cell (the base with
+  // the cell's values applied, validated). Both empty without a sweep.
+  std::vector<SweepAxis> sweep;
+  int sweep_line = 0;  // of the sweep: key
+  std::vector<std::shared_ptr<const Experiment>> cells;
 
-  int numTrials() const {
+  bool swept() const { return !cells.empty(); }
+  int numCells() const { return cells.empty() ? 1 : static_cast<int>(cells.size()); }
+  // Cell c's experiment (this one without a sweep).
+  const Experiment& cell(int c) const { return cells.empty() ? *this : *cells[c]; }
+  int trialsPerCell() const {
     return static_cast<int>(setups.size() * balls.size()) * trials_per_position;
   }
+  int numTrials() const { return numCells() * trialsPerCell(); }
   int maxRobots() const;
 
   static Experiment loadFile(const std::string& path);
   static Experiment parse(const std::string& text, const std::string& source_name);
 };
 
-// Which setup, ball position and repeat a trial index is, and its seed.
+// Which cell, setup, ball position and repeat a trial index is, and its
+// seed. The seed depends on the index within the cell only: every cell
+// draws the same noise (a difference between cells is the swept setting's).
 struct TrialSpec {
   int index = 0;
+  int cell = 0;        // index into Experiment::cells (0 without a sweep)
   int setup = 0;       // index into Experiment::setups
   int ball = 0;        // index into Experiment::balls
   int repeat = 0;      // 0..trials_per_position-1
@@ -155,7 +178,7 @@ struct TrialSpec {
 };
 TrialSpec trialSpec(const Experiment& e, int index);
 
-// The scenario of one trial without behaviours: robots standing at their
+// The scenario of one trial (of its cell's experiment) without behaviours: robots standing at their
 // start poses, ball placed, seed set, the game (penalised in INITIAL, then
 // PLAYING and unpenalised at playTicks), duration = start + time limit.
 // The BehaviourFactory then fills in each robot's behaviour.

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include <spawn.h>
@@ -29,6 +31,36 @@ struct Rgb {
 const Rgb kColours[] = {{0.90, 0.10, 0.10}, {0.15, 0.35, 0.95}, {1.00, 0.85, 0.10}, {0.75, 0.20, 0.85},
                         {0.00, 0.85, 0.85}, {1.00, 0.55, 0.00}};
 Rgb colour(size_t i) { return kColours[i % (sizeof kColours / sizeof kColours[0])]; }
+
+// Runs gnuplot on DIR/<name>.gp in DIR (relative names: the script is the
+// same whatever the results folder is called). False with *message if
+// gnuplot is missing or fails.
+bool runGnuplot(const std::string& dir, const std::string& name, const std::string& what, std::string* message) {
+  const std::string base = dir + "/" + name;
+  const std::string gp = base + ".gp", gp_name = name + ".gp";
+  pid_t pid;
+  char* argv[] = {const_cast<char*>("gnuplot"), const_cast<char*>(gp_name.c_str()), nullptr};
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addchdir_np(&fa, dir.c_str());
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, (name + ".gnuplot.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int rc = posix_spawnp(&pid, "gnuplot", &fa, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) {
+    *message = "gnuplot not found: " + what + " skipped (install gnuplot-nox; data in " + base + ".dat)";
+    return false;
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    *message = "gnuplot failed on " + gp + " (see " + base + ".gnuplot.log)";
+    return false;
+  }
+  unlink((base + ".gnuplot.log").c_str());
+  return true;
+}
 
 }  // namespace
 
@@ -202,29 +234,127 @@ bool plotFindTimes(const Experiment& e, int setup, const std::vector<TrialResult
       g << "\n";
     }
   }
-  const std::string gp = base + ".gp", gp_name = name + ".gp";
-  pid_t pid;
-  char* argv[] = {const_cast<char*>("gnuplot"), const_cast<char*>(gp_name.c_str()), nullptr};
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addchdir_np(&fa, dir.c_str());
-  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, (name + ".gnuplot.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  const int rc = posix_spawnp(&pid, "gnuplot", &fa, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) {
-    *message = "gnuplot not found: find-time box plots skipped (install gnuplot-nox; data in " + base + ".dat)";
-    return false;
+  return runGnuplot(dir, name, "find-time box plots", message);
+}
+
+namespace {
+
+// A gnuplot single-quoted string ('' is a quote).
+std::string gpString(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+  return q + "'";
+}
+
+}  // namespace
+
+bool plotSweep(const Experiment& e, const std::vector<CellRow>& rows, int axis, const std::string& dir,
+               std::string* message) {
+  const SweepAxis& a = e.sweep[axis];
+  const std::string png = sweepFigureName(a);
+  const std::string name = png.substr(0, png.size() - 4);
+  const int n = static_cast<int>(a.values.size());
+  // x: the values themselves when all are numbers, else 1..n with the values as tics.
+  std::vector<double> x;
+  bool numeric = true;
+  for (const SweepValue& v : a.values) {
+    char* end = nullptr;
+    const double d = std::strtod(v.label.c_str(), &end);
+    numeric = numeric && !v.label.empty() && *end == '\0' && std::isfinite(d);
+    x.push_back(d);
   }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  if (!numeric)
+    for (int i = 0; i < n; ++i) x[i] = i + 1;
+  const double lo = *std::min_element(x.begin(), x.end()), hi = *std::max_element(x.begin(), x.end());
+  const double span = hi > lo ? hi - lo : 1.0;
+
+  // Series: one setup with one combination of the other paths' values, in
+  // the order the cells table lists them.
+  struct Series {
+    int setup = 0;
+    std::vector<int> others;                     // value index per axis, -1 at `axis`
+    std::vector<const CellRow*> at;              // per value of `axis`
+  };
+  std::vector<Series> series;
+  for (const CellRow& r : rows) {
+    std::vector<int> choice = sweepChoice(e.sweep, r.cell);
+    const int v = choice[axis];
+    choice[axis] = -1;
+    auto it = std::find_if(series.begin(), series.end(),
+                           [&](const Series& s) { return s.setup == r.setup && s.others == choice; });
+    if (it == series.end()) {
+      series.push_back({r.setup, choice, std::vector<const CellRow*>(n, nullptr)});
+      it = series.end() - 1;
+    }
+    it->at[v] = &r;
   }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    *message = "gnuplot failed on " + gp + " (see " + base + ".gnuplot.log)";
-    return false;
+  auto title = [&](const Series& s) {
+    std::string t = "setup " + e.setups[s.setup].name;
+    for (size_t k = 0; k < e.sweep.size(); ++k)
+      if (s.others[k] >= 0) t += ", " + e.sweep[k].path + "=" + e.sweep[k].values[s.others[k]].label;
+    return t;
+  };
+
+  const std::string base = dir + "/" + name;
+  // One block per series (gnuplot's `index`): x (nudged per series so the
+  // intervals do not hide each other), rate % and its interval, mean s and
+  // its interval (NaN without finds: no point).
+  std::vector<bool> any_rate(series.size(), false), any_time(series.size(), false);
+  {
+    std::ofstream d(base + ".dat");
+    d << "# sweep of " << a.path << ": x rate_pct rate_lo rate_hi mean_s mean_lo mean_hi\n";
+    for (size_t i = 0; i < series.size(); ++i) {
+      const double nudge = (static_cast<double>(i) - (static_cast<double>(series.size()) - 1) / 2) * 0.012 * span;
+      d << "# " << title(series[i]) << "\n";
+      for (int v = 0; v < n; ++v) {
+        const CellRow* r = series[i].at[v];
+        d << fixed(x[v] + nudge, 6);
+        if (r && r->tests) {
+          d << " " << fixed(100.0 * r->found / r->tests, 3) << " " << fixed(100 * r->rate.lo, 3) << " "
+            << fixed(100 * r->rate.hi, 3);
+          any_rate[i] = true;
+        } else {
+          d << " NaN NaN NaN";
+        }
+        if (r && !r->times.empty()) {
+          d << " " << fixed(r->mean_s, 3) << " " << fixed(r->mean_ci.lo, 3) << " " << fixed(r->mean_ci.hi, 3) << "\n";
+          any_time[i] = true;
+        } else {
+          d << " NaN NaN NaN\n";
+        }
+      }
+      d << "\n\n";
+    }
   }
-  unlink((base + ".gnuplot.log").c_str());
-  return true;
+  {
+    std::ofstream g(base + ".gp");
+    g << "set terminal pngcairo noenhanced size 1200,500 font 'sans,10'\n"
+      << "set output " << gpString(png) << "\n"
+      << "set multiplot layout 1,2 title " << gpString("sweep of " + a.path + " (95 % intervals: Wilson for the rate, "
+                                                      "bootstrap for the mean; limit " + fixed(e.time_limit, 0) + " s)")
+      << "\nset xlabel " << gpString(a.path) << "\n"
+      << "set xrange [" << fixed(lo - 0.1 * span, 6) << ":" << fixed(hi + 0.1 * span, 6) << "]\n"
+      << "set grid\nset key below\nset bars small\n";
+    if (!numeric) {
+      g << "set xtics (";
+      for (int v = 0; v < n; ++v) g << (v ? ", " : "") << gpString(a.values[v].label) << " " << v + 1;
+      g << ")\n";
+    }
+    auto panel = [&](const std::string& ylabel, const std::string& yrange, int col, const std::vector<bool>& any) {
+      g << "set ylabel " << gpString(ylabel) << "\nset yrange " << yrange << "\n";
+      std::ostringstream p;
+      for (size_t i = 0; i < series.size(); ++i)
+        if (any[i])
+          p << (p.str().empty() ? "plot" : ",") << " " << gpString(name + ".dat") << " index " << i << " using 1:"
+            << col << ":" << col + 1 << ":" << col + 2 << " with yerrorlines lc " << i + 1 << " pt 7 title "
+            << gpString(title(series[i]));
+      g << (p.str().empty() ? "plot 1/0 notitle" : p.str()) << "\n";
+    };
+    panel("find rate (%)", "[0:105]", 2, any_rate);
+    panel("mean find time over the finds (s, simulated)", "[0:" + fixed(e.time_limit * 1.05, 0) + "]", 5, any_time);
+    g << "unset multiplot\n";
+  }
+  return runGnuplot(dir, name, "sweep plots", message);
 }
 
 }  // namespace simswift::experiment

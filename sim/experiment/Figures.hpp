@@ -4,6 +4,10 @@
 //    and 5.3), with the start poses and the ball positions. Drawn with Cairo.
 //  - findtime_<setup>.png: find-time box plots per ball position, drawn by
 //    gnuplot (pngcairo) from a data file and script left beside the PNG.
+//  - sweep_<path>.png (swept experiments): find rate and mean find time
+//    against each value of one swept path, with their 95 % intervals (the
+//    cells table, SweepReport.hpp); one line per setup and combination of
+//    the other swept values. Also gnuplot, also with .dat and .gp beside.
 #pragma once
 
 #include <string>
@@ -11,6 +15,7 @@
 #include <vector>
 
 #include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/SweepReport.hpp"
 #include "sim/experiment/Trial.hpp"
 
 namespace simswift::experiment {
@@ -27,5 +32,10 @@ void drawRoutes(const Experiment& e, int setup, const std::vector<RouteSamples>&
 // false with *message if gnuplot is missing or fails (the run goes on).
 bool plotFindTimes(const Experiment& e, int setup, const std::vector<TrialResult>& results, const std::string& dir,
                    std::string* message);
+
+// Writes DIR/sweep_<path>.dat and .gp for swept path `axis` (an index into
+// e.sweep) and runs gnuplot on them; false with *message as plotFindTimes.
+bool plotSweep(const Experiment& e, const std::vector<CellRow>& rows, int axis, const std::string& dir,
+               std::string* message);
 
 }  // namespace simswift::experiment

@@ -8,6 +8,7 @@
 
 #include "agent/libagent/SharedNames.hpp"
 #include "sim/experiment/Statistics.hpp"
+#include "sim/experiment/SweepReport.hpp"
 #include "sim/experiment/ThesisTables.hpp"
 
 namespace simswift::experiment {
@@ -235,7 +236,8 @@ std::string wallClockSection(const Experiment& e, const std::vector<TrialResult>
 std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& results) {
   std::ostringstream s;
   s << "# Find-ball experiment `" << e.name << "`\n\n"
-    << e.numTrials() << " trials: " << e.setups.size() << " setup(s) x " << e.balls.size() << " ball position(s) x "
+    << e.numTrials() << " trials: " << (e.swept() ? std::to_string(e.numCells()) + " sweep cells x " : "")
+    << e.setups.size() << " setup(s) x " << e.balls.size() << " ball position(s) x "
     << e.trials_per_position << " trial(s). Time limit " << fixed(e.time_limit, 1) << " s; found = a robot within "
     << fixed(e.found.distance * 1000, 0) << " mm of the ball (inclusive)"
     << (e.found.sees ? " whose vision (the detector model its perception gets) reports the ball in the latest "
@@ -264,6 +266,8 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
                                 << r.failed << "\n";
     s << "\n";
   }
+
+  if (e.swept()) s << sweepSection(e, cellRows(e, results));
 
   s << "Ball positions (table 5.2):";
   for (const BallPosition& b : e.balls)

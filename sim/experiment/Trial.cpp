@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/experiment/Csv.hpp"
 
 namespace simswift::experiment {
 
@@ -51,20 +52,6 @@ void sidelineSpot(const Experiment& e, const World& w, int i, double* x, double*
   }
 }
 
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char c : line) {
-    if (c == ',') {
-      out.push_back(cur);
-      cur.clear();
-    } else if (c != '\n' && c != '\r') {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
-  return out;
-}
 
 }  // namespace
 
@@ -78,6 +65,11 @@ TrialResult trialHeader(const Experiment& e, const TrialSpec& t) {
   const Setup& setup = e.setups[t.setup];
   TrialResult res;
   res.trial = t.index;
+  if (e.swept()) {
+    res.cell = t.cell;
+    const std::vector<int> choice = sweepChoice(e.sweep, t.cell);
+    for (size_t k = 0; k < e.sweep.size(); ++k) res.cell_values.push_back(e.sweep[k].values[choice[k]].label);
+  }
   res.setup = setup.name;
   res.position = e.balls[t.ball].number;
   res.repeat = t.repeat;
@@ -91,13 +83,14 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, co
   using Clock = std::chrono::steady_clock;
   const auto wall0 = Clock::now();  // timing only
   const TrialSpec t = trialSpec(e, index);
+  const Experiment& cell = e.cell(t.cell);  // the base with the cell's swept values
   runner::Scenario sc = trialScenario(e, t);
-  hooks.behaviours->configure(e, t, sc);
+  hooks.behaviours->configure(cell, t, sc);
 
   TrialResult res = trialHeader(e, t);
   if (!program_logs.empty()) sc.program_logs = program_logs;
   try {
-    playTrial(e, t, sc, hooks, res);
+    playTrial(cell, t, sc, hooks, res);
   } catch (const runner::ProgramError& err) {
     // The trial failed, the batch goes on: the brief reason (no pid, no
     // path: results stay a function of the file), without the separators.
@@ -194,8 +187,11 @@ void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& 
 
 }  // namespace
 
-std::string csvHeader(int robots) {
-  std::string h = "trial,setup,position,repeat,seed,found,seconds,finder,resets,failed";
+std::string csvHeader(int robots, const std::vector<SweepAxis>& sweep) {
+  std::string h = "trial";
+  if (!sweep.empty()) h += ",cell";
+  for (const SweepAxis& a : sweep) h += "," + csvField(a.path);
+  h += ",setup,position,repeat,seed,found,seconds,finder,resets,failed";
   for (int k = 1; k <= robots; ++k) {
     const std::string r = "robot" + std::to_string(k) + "_";
     h += "," + r + "player," + r + "distance_m," + r + "falls," + r + "contact_falls," + r + "sideline_moves";
@@ -205,7 +201,12 @@ std::string csvHeader(int robots) {
 
 std::string csvRow(const TrialResult& r, int robots) {
   std::ostringstream s;
-  s << r.trial << ',' << r.setup << ',' << r.position << ',' << r.repeat << ',' << r.seed << ','
+  s << r.trial << ',';
+  if (r.cell >= 0) {
+    s << r.cell << ',';
+    for (const std::string& v : r.cell_values) s << csvField(v) << ',';
+  }
+  s << r.setup << ',' << r.position << ',' << r.repeat << ',' << r.seed << ','
     << (r.found ? 1 : 0) << ',' << (r.found ? fixed(r.seconds, 2) : "") << ',' << r.finder << ',' << r.resets << ','
     << r.failed;
   for (int k = 0; k < robots; ++k) {
@@ -221,11 +222,23 @@ std::string csvRow(const TrialResult& r, int robots) {
   return s.str();
 }
 
-TrialResult parseCsvRow(const std::string& line) {
-  const std::vector<std::string> f = splitCsv(line);
+TrialResult parseCsvRow(const std::string& line, int swept_paths) {
+  std::vector<std::string> f = splitCsv(line);
+  TrialResult r;
+  if (swept_paths > 0) {
+    // trial, cell, the cell's values, then the unswept row's fields.
+    if (f.size() < static_cast<size_t>(swept_paths) + 2)
+      throw std::runtime_error("bad results row (" + std::to_string(f.size()) + " fields): " + line);
+    try {
+      r.cell = std::stoi(f[1]);
+    } catch (const std::exception& ex) {
+      throw std::runtime_error(std::string("bad results row: cell: ") + ex.what() + ": " + line);
+    }
+    r.cell_values.assign(f.begin() + 2, f.begin() + 2 + swept_paths);
+    f.erase(f.begin() + 1, f.begin() + 2 + swept_paths);
+  }
   if (f.size() < 10 || (f.size() - 10) % 5 != 0)
     throw std::runtime_error("bad results row (" + std::to_string(f.size()) + " fields): " + line);
-  TrialResult r;
   try {
     r.trial = std::stoi(f[0]);
     r.setup = f[1];

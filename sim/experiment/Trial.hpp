@@ -46,6 +46,10 @@ struct TrackSample {
 
 struct TrialResult {
   int trial = 0;
+  // With a sweep: the trial's cell and its values, as the sweep lists them
+  // (results.csv columns after `trial`); -1 without one (no such columns).
+  int cell = -1;
+  std::vector<std::string> cell_values;
   std::string setup;
   int position = 0;           // ball position number (table 5.2)
   int repeat = 0;
@@ -69,11 +73,13 @@ struct TrialResult {
 // the experiment's default); if one fails the result says so in `failed`.
 TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs = "");
 
-// results.csv: header for up to `robots` robots, one row per trial.
-std::string csvHeader(int robots);
+// results.csv: header for up to `robots` robots, one row per trial. With a
+// sweep, `cell` and one column per swept path follow `trial`.
+std::string csvHeader(int robots, const std::vector<SweepAxis>& sweep = {});
 std::string csvRow(const TrialResult& r, int robots);  // with '\n'
-// Parses a csvRow back (tracks and timing stay empty). Throws std::runtime_error.
-TrialResult parseCsvRow(const std::string& line);
+// Parses a csvRow back (tracks and timing stay empty); `swept_paths`: the
+// sweep's path count (0 without one). Throws std::runtime_error.
+TrialResult parseCsvRow(const std::string& line, int swept_paths = 0);
 // tracks.csv
 std::string tracksHeader();
 std::string tracksRows(const TrialResult& r, const Experiment& e);

@@ -41,8 +41,29 @@ TrialHooks defaultHooks() {
 }
 
 void checkBehaviours(const Experiment& e, const TrialHooks& hooks) {
-  for (const Setup& s : e.setups)
-    for (const ExperimentRobot& r : s.robots) hooks.behaviours->check(e, r);
+  auto check = [&](const Experiment& x) {
+    for (const Setup& s : x.setups)
+      for (const ExperimentRobot& r : s.robots) hooks.behaviours->check(x, r);
+  };
+  check(e);
+  if (!e.swept()) return;
+  // Swept behaviour overrides are validated by the behaviour's reader here:
+  // each value alone (an error names its line), then every cell.
+  for (const SweepAxis& a : e.sweep)
+    for (size_t v = 0; v < a.values.size(); ++v) {
+      try {
+        if (a.values[v].alone) check(*a.values[v].alone);
+      } catch (const ConfigError& err) {
+        throw blameValue(e.source, a, static_cast<int>(v), err.what());
+      }
+    }
+  for (int c = 0; c < e.numCells(); ++c) {
+    try {
+      check(e.cell(c));
+    } catch (const ConfigError& err) {
+      throw blameCell(e.source, e.sweep_line, e.sweep, c, err.what());
+    }
+  }
 }
 
 }  // namespace simswift::experiment

@@ -50,15 +50,15 @@ Runner::Robot& Runner::overrideSlot(int robot, const char* what) {
   return *robots_[robot];
 }
 
-void Runner::setMotionGenerator(int robot, std::unique_ptr<ap::MotionGenerator> motion) {
+void Runner::setMotionGenerator(int robot, std::unique_ptr<agent::framework::MotionGenerator> motion) {
   overrideSlot(robot, "setMotionGenerator").motion_override = std::move(motion);
 }
 
-void Runner::setPerceptionStep(int robot, std::unique_ptr<ap::PerceptionStep> perception) {
+void Runner::setPerceptionStep(int robot, std::unique_ptr<agent::framework::PerceptionStep> perception) {
   overrideSlot(robot, "setPerceptionStep").perception_override = std::move(perception);
 }
 
-void Runner::setStepHook(int robot, std::function<void(ap::ThreadId)> hook) {
+void Runner::setStepHook(int robot, std::function<void(agent::framework::ThreadId)> hook) {
   overrideSlot(robot, "setStepHook").step_hook = std::move(hook);
 }
 

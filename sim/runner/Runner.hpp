@@ -125,12 +125,12 @@ class Runner {
 
   // Before start(): replace a builtin robot's Motion step (robot index in
   // scenario order), e.g. a test's motion generator.
-  void setMotionGenerator(int robot, std::unique_ptr<agent::program::MotionGenerator> motion);
+  void setMotionGenerator(int robot, std::unique_ptr<agent::framework::MotionGenerator> motion);
   // Before start(): replace a builtin robot's Perception step.
-  void setPerceptionStep(int robot, std::unique_ptr<agent::program::PerceptionStep> perception);
+  void setPerceptionStep(int robot, std::unique_ptr<agent::framework::PerceptionStep> perception);
   // Before start(): a hook each of a builtin robot's threads calls before
   // every step (ProgramConfig::step_hook; tests jitter thread timing with it).
-  void setStepHook(int robot, std::function<void(agent::program::ThreadId)> hook);
+  void setStepHook(int robot, std::function<void(agent::framework::ThreadId)> hook);
 
   // Before start(): builtin programs on named threads (default) or inline
   // on the runner's thread (see the top of this file).
@@ -206,9 +206,9 @@ class Runner {
     std::string tag;
     std::unique_ptr<bridge::BodyHost> host;
     std::unique_ptr<sensors::SensorSuite> sensors;
-    std::unique_ptr<agent::program::MotionGenerator> motion_override;
-    std::unique_ptr<agent::program::PerceptionStep> perception_override;
-    std::function<void(agent::program::ThreadId)> step_hook;
+    std::unique_ptr<agent::framework::MotionGenerator> motion_override;
+    std::unique_ptr<agent::framework::PerceptionStep> perception_override;
+    std::function<void(agent::framework::ThreadId)> step_hook;
     // Camera images (set up by the host when rendering).
     agent::libagent::CameraImages* images = nullptr;
     std::unique_ptr<agent::program::RobotProgram> program;  // builtin only

@@ -147,6 +147,18 @@ RobotSpec::ButtonPress readButton(const YamlReader& r) {
   return b;
 }
 
+// libagent: {start: stiff | limp, release: 2016 | 2017 | 2018}
+void readLibagent(const YamlReader& r, RobotSpec& rs) {
+  rs.start = r.choice("start", "stiff", {"stiff", "limp"}) == "limp" ? bridge::StartMode::Limp : bridge::StartMode::Stiff;
+  const int year = r.integer("release", 2017, Range::closed(0, 1000000));
+  if (!bridge::parseRelease(year, &rs.release))
+    r.fail("release", "expected one of 2016, 2017, 2018 (the rUNSWift releases for the NAO V5; got " +
+                          std::to_string(year) + ")");
+  r.finish();
+}
+
+}  // namespace
+
 // team_comms: {loss, delay_ms, budget}
 network::TeamNetworkConfig readTeamComms(const YamlReader& r) {
   network::TeamNetworkConfig c;
@@ -219,17 +231,33 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
   return g;
 }
 
-// libagent: {start: stiff | limp, release: 2016 | 2017 | 2018}
-void readLibagent(const YamlReader& r, RobotSpec& rs) {
-  rs.start = r.choice("start", "stiff", {"stiff", "limp"}) == "limp" ? bridge::StartMode::Limp : bridge::StartMode::Stiff;
-  const int year = r.integer("release", 2017, Range::closed(0, 1000000));
-  if (!bridge::parseRelease(year, &rs.release))
-    r.fail("release", "expected one of 2016, 2017, 2018 (the rUNSWift releases for the NAO V5; got " +
-                          std::to_string(year) + ")");
-  r.finish();
+// noise: on/off, or a map of switches.
+void readNoise(const YamlReader& top, NoiseSwitches& noise) {
+  if (!top.has("noise")) return;
+  if (top.node()["noise"].IsMap()) {
+    YamlReader n = top.map("noise");
+    noise.on = n.boolean("enabled", true);
+    noise.gyro = n.boolean("gyro", true);
+    noise.accel = n.boolean("accel", true);
+    noise.angle = n.boolean("angle", true);
+    noise.fsr = n.boolean("fsr", true);
+    noise.sonar = n.boolean("sonar", true);
+    noise.encoder = n.boolean("encoder", true);
+    n.finish();
+  } else {
+    noise.on = top.boolean("noise");
+  }
 }
 
-}  // namespace
+// physics: {substeps, solver, iterations}
+void readPhysics(const YamlReader& top, Scenario& sc) {
+  if (auto p = top.optionalMap("physics")) {
+    sc.substeps = p->integer("substeps", sc.substeps, Range::closed(1, 100));
+    sc.solver = p->choice("solver", sc.solver, {"exact", "quick"});
+    sc.quick_iterations = p->integer("iterations", sc.quick_iterations, Range::closed(1, 1000));
+    p->finish();
+  }
+}
 
 void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir) {
   rs.program = RobotSpec::Program::Builtin;
@@ -375,29 +403,8 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
   sc.program_logs = top.string("program_logs", sc.program_logs);
   if (sc.program_logs.empty()) top.fail("program_logs", "must name a folder");
 
-  // noise: on/off, or a map of switches.
-  if (top.has("noise")) {
-    if (root["noise"].IsMap()) {
-      YamlReader n = top.map("noise");
-      sc.noise.on = n.boolean("enabled", true);
-      sc.noise.gyro = n.boolean("gyro", true);
-      sc.noise.accel = n.boolean("accel", true);
-      sc.noise.angle = n.boolean("angle", true);
-      sc.noise.fsr = n.boolean("fsr", true);
-      sc.noise.sonar = n.boolean("sonar", true);
-      sc.noise.encoder = n.boolean("encoder", true);
-      n.finish();
-    } else {
-      sc.noise.on = top.boolean("noise");
-    }
-  }
-
-  if (auto p = top.optionalMap("physics")) {
-    sc.substeps = p->integer("substeps", sc.substeps, Range::closed(1, 100));
-    sc.solver = p->choice("solver", sc.solver, {"exact", "quick"});
-    sc.quick_iterations = p->integer("iterations", sc.quick_iterations, Range::closed(1, 1000));
-    p->finish();
-  }
+  readNoise(top, sc.noise);
+  readPhysics(top, sc);
   std::optional<YamlReader> overview_reader;  // for errors about overview.robot
   if (auto c = top.optionalMap("camera")) {
     sc.camera.enabled = c->boolean("enabled", false);

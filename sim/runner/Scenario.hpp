@@ -215,6 +215,16 @@ void readActions(const YamlReader& robot, RobotSpec& rs);
 // against base_dir (also the experiment files' robots).
 void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir);
 
+// The scenario's settings blocks, one reader each (also the experiment
+// files' base settings and their sweeps, sim/experiment): `noise:` (on/off
+// or a map of switches; absent: unchanged), `physics:` (absent: unchanged),
+// `team_comms:` and `game:` (a map each; num_robots: the robots a penalty
+// may name).
+void readNoise(const YamlReader& top, NoiseSwitches& noise);
+void readPhysics(const YamlReader& top, Scenario& sc);
+network::TeamNetworkConfig readTeamComms(const YamlReader& r);
+game::GameConfig readGame(const YamlReader& r, int num_robots);
+
 // The seed of robot `index`'s program (its filters' random source) in a
 // run with seed `seed`: one derivation for builtin and launched programs.
 uint64_t programSeed(uint64_t seed, int index);

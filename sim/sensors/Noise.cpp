@@ -2,21 +2,16 @@
 
 #include <cmath>
 
-namespace simswift::sensors {
+#include "agent/random/SplitMix64.hpp"
 
-uint64_t mix64(uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
+namespace simswift::sensors {
 
 uint64_t streamSeed(uint64_t seed, int robot, StreamId id) {
   // Chained mixing, not a plain XOR of the inputs, so (robot 1, sensor 2)
   // and (robot 2, sensor 1) do not collide.
-  uint64_t h = mix64(seed);
-  h = mix64(h ^ static_cast<uint64_t>(static_cast<uint32_t>(robot)));
-  h = mix64(h ^ (static_cast<uint64_t>(id) << 32));
+  uint64_t h = agent::random::splitmix64(seed);
+  h = agent::random::splitmix64(h ^ static_cast<uint64_t>(static_cast<uint32_t>(robot)));
+  h = agent::random::splitmix64(h ^ (static_cast<uint64_t>(id) << 32));
   return h;
 }
 

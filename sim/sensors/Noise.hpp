@@ -26,10 +26,6 @@ enum class StreamId : uint32_t {
   JointEncoders = 8,
 };
 
-// SplitMix64 finaliser: a bijective 64-bit mixer, so distinct inputs give
-// well-spread, distinct seeds.
-uint64_t mix64(uint64_t x);
-
 // Seed of one stream, a pure function of its three inputs.
 uint64_t streamSeed(uint64_t seed, int robot, StreamId id);
 

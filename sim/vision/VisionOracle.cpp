@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "agent/random/SplitMix64.hpp"
 #include "sim/sensors/Noise.hpp"
 
 namespace simswift::vision {
@@ -21,7 +22,7 @@ constexpr int kCircleSamples = 32;
 constexpr auto kVisionStream = static_cast<sensors::StreamId>(0x5649u);       // per (robot, camera, frame)
 constexpr auto kVisionCalibStream = static_cast<sensors::StreamId>(0x5643u);  // once per robot
 
-// A counter-based random sequence: draw k is mix64(key, k). Seeding is free,
+// A counter-based random sequence: draw k is splitmix64(key, k). Seeding is free,
 // so every object gets its own sequence and its draws do not depend on how
 // many other objects were seen before it.
 class Draws {
@@ -35,7 +36,7 @@ class Draws {
   }
 
  private:
-  uint64_t next() { return sensors::mix64(key_ ^ sensors::mix64(++n_)); }
+  uint64_t next() { return agent::random::splitmix64(key_ ^ agent::random::splitmix64(++n_)); }
   uint64_t key_;
   uint64_t n_ = 0;
 };
@@ -329,10 +330,10 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
     off.y() = (2 * c.uniform() - 1) * config_.camera_offset_mm * 1e-3;
   }
   uint64_t frame_key = sensors::streamSeed(seed_, robot, kVisionStream);
-  frame_key = sensors::mix64(frame_key ^ (static_cast<uint64_t>(camera) + 1));
-  frame_key = sensors::mix64(frame_key ^ static_cast<uint64_t>(frame));
+  frame_key = agent::random::splitmix64(frame_key ^ (static_cast<uint64_t>(camera) + 1));
+  frame_key = agent::random::splitmix64(frame_key ^ static_cast<uint64_t>(frame));
   auto drawsFor = [&](Feature f, uint64_t index) {
-    return Draws(sensors::mix64(frame_key ^ sensors::mix64((static_cast<uint64_t>(f) << 40) ^ index)));
+    return Draws(agent::random::splitmix64(frame_key ^ agent::random::splitmix64((static_cast<uint64_t>(f) << 40) ^ index)));
   };
 
   // Robot-relative (m) point with distance and bearing noise. `height` is

@@ -5,6 +5,7 @@
 
 #include "FindBallHarness.hpp"
 #include "agent/behaviour/BehaviourYaml.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 using simswift::ConfigError;
 using simswift::runner::Runner;
@@ -16,12 +17,7 @@ std::string robot(const std::string& extra) {
   return "robots:\n  - {team: 19, player: 2, x: -3, y: 3, " + extra + "}\n";
 }
 std::string errorOf(const std::string& text) {
-  try {
-    Scenario::parse(text, "b.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return simswift::testing::configError([&] { Scenario::parse(text, "b.yaml"); });
 }
 }  // namespace
 

@@ -12,6 +12,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "sim/experiment/Batch.hpp"
+#include "sim/experiment/TrialHooks.hpp"
+
 namespace exptest {
 
 inline std::string readAll(const std::string& p) {
@@ -39,6 +42,18 @@ inline std::string freshDir(const std::string& tag) {
   const std::string cmd = "rm -rf '" + d + "' && mkdir -p '" + d + "'";
   if (std::system(cmd.c_str()) != 0) ADD_FAILURE() << "cannot create " << d;
   return d;
+}
+
+// Runs `e` into `dir` with the default hooks, quietly (shard k of n).
+inline simswift::experiment::BatchOutcome runInto(const simswift::experiment::Experiment& e, const std::string& dir,
+                                                  int jobs, int shard = 1, int shards = 1) {
+  simswift::experiment::BatchOptions o;
+  o.out_dir = dir;
+  o.jobs = jobs;
+  o.shard = shard;
+  o.shards = shards;
+  o.progress = simswift::experiment::BatchOptions::Progress::None;
+  return simswift::experiment::runBatch(e, simswift::experiment::defaultHooks(), o);
 }
 
 inline std::string simswiftBinary() { return std::string(SIMSWIFT_BINARY_DIR) + "/simswift"; }

@@ -24,18 +24,9 @@
 using namespace simswift;
 using namespace simswift::experiment;
 using exptest::readAll;
+using exptest::runInto;
 
 namespace {
-
-BatchOutcome runInto(const Experiment& e, const std::string& dir, int jobs, int shard = 1, int shards = 1) {
-  BatchOptions o;
-  o.out_dir = dir;
-  o.jobs = jobs;
-  o.shard = shard;
-  o.shards = shards;
-  o.progress = BatchOptions::Progress::None;
-  return runBatch(e, defaultHooks(), o);
-}
 
 // Everything but the wall clock (timing.*, report.md's last section) is
 // byte-identical.

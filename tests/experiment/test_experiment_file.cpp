@@ -11,6 +11,7 @@
 #include "sim/experiment/ThesisTables.hpp"
 #include "sim/experiment/TrialHooks.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 using namespace simswift;
 using namespace simswift::experiment;
@@ -42,12 +43,7 @@ std::string replaced(std::string s, const std::string& from, const std::string& 
 
 // The ConfigError's message for `text`, or "" if it loads.
 std::string errorOf(const std::string& text) {
-  try {
-    Experiment::parse(text, "bad.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return simswift::testing::configError([&] { Experiment::parse(text, "bad.yaml"); });
 }
 
 void expectError(const std::string& text, const std::string& where, const std::string& what) {

@@ -17,6 +17,7 @@
 #include "sim/game/GameControlPacket.hpp"
 #include "sim/game/GameControllerUdp.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 using simswift::ConfigError;
 using simswift::runner::Runner;
@@ -64,12 +65,7 @@ void sendTo(int port, const void* bytes, size_t size) {
 }
 
 std::string errorOf(const std::string& yaml) {
-  try {
-    Scenario::parse(yaml, "s.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return simswift::testing::configError([&] { Scenario::parse(yaml, "s.yaml"); });
 }
 
 uint16_t le16(const unsigned char* p) { return static_cast<uint16_t>(p[0] | (p[1] << 8)); }

@@ -9,6 +9,7 @@
 #include "agent/comms/TeamReceiver.hpp"
 #include "agent/comms/TeamSender.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 using simswift::ConfigError;
 using simswift::runner::Runner;
@@ -18,12 +19,7 @@ namespace al = agent::libagent;
 
 namespace {
 std::string errorOf(const std::string& yaml) {
-  try {
-    Scenario::parse(yaml, "s.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return simswift::testing::configError([&] { Scenario::parse(yaml, "s.yaml"); });
 }
 const char* kRobots = "robots:\n  - {team: 0, player: 2}\n  - {team: 0, player: 3, x: 1}\n";
 }  // namespace
@@ -82,7 +78,7 @@ TEST(GameScenario, ErrorsNameFileLineAndField) {
 namespace {
 // Robot code for the run below: each Perception frame reads the game state,
 // drains the inbox and sends at 5 Hz, through the extension objects only.
-struct TeamPerception : agent::program::PerceptionStep {
+struct TeamPerception : agent::framework::PerceptionStep {
   Runner* runner;
   int index, team, player;
   ac::TeamSender sender;

@@ -1,6 +1,6 @@
 // Shared harness for the Motion physics tests: one robot in the lock-step
 // runner with the MotionModule as its Motion thread; the test plays
-// Behaviour by writing the Blackboard's MotionRequest between ticks.
+// Behaviour by setting the motion request between ticks (RequestedMotion).
 // Units: m and rad in the field frame (world), mm in the robot frame (odometry).
 #pragma once
 
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "agent/blackboard/Blackboard.hpp"
-#include "agent/motion/MotionModule.hpp"
+#include "agent/motion/RequestedMotion.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace motion_test {
@@ -22,9 +22,9 @@ inline bool downOrGettingUp(agent::blackboard::BodyState p) {
 
 // Forwards to the MotionModule and checks every command it sends against the
 // joint limits and the per-tick speed limit (the clipper's promise).
-class CheckedMotion : public agent::program::MotionGenerator {
+class CheckedMotion : public agent::framework::MotionGenerator {
  public:
-  explicit CheckedMotion(std::unique_ptr<agent::motion::MotionModule> m) : m_(std::move(m)) {}
+  explicit CheckedMotion(std::unique_ptr<agent::motion::RequestedMotion> m) : m_(std::move(m)) {}
   void tick(const agent::libagent::SensorValues& s, int64_t t_us, agent::libagent::JointValues& out) override {
     m_->tick(s, t_us, out);
     last_command = out;
@@ -40,13 +40,13 @@ class CheckedMotion : public agent::program::MotionGenerator {
     have_prev_ = true;
     ++ticks;
   }
-  agent::motion::MotionModule& module() { return *m_; }
+  agent::motion::RequestedMotion& motion() { return *m_; }
   int64_t limit_violations = 0, speed_violations = 0, ticks = 0;
   agent::libagent::JointValues last_command{};
   agent::libagent::SensorValues last_sensed{};
 
  private:
-  std::unique_ptr<agent::motion::MotionModule> m_;
+  std::unique_ptr<agent::motion::RequestedMotion> m_;
   float prev_[agent::libagent::kNumJoints] = {};
   bool have_prev_ = false;
 };
@@ -62,7 +62,7 @@ class MotionHarness {
                          const std::string& extra_yaml = "",
                          const agent::motion::MotionConfig& cfg = agent::motion::MotionConfig())
       : runner_(makeScenario(seed, x, y, theta, extra_yaml)) {
-    auto m = std::make_unique<agent::motion::MotionModule>(board_, cfg);
+    auto m = std::make_unique<agent::motion::RequestedMotion>(cfg);
     motion_ = m.get();
     auto c = std::make_unique<CheckedMotion>(std::move(m));
     checked_ = c.get();
@@ -81,7 +81,7 @@ class MotionHarness {
   }
 
   void request(agent::blackboard::ActionType type, double forward = 0, double left = 0, double turn = 0) {
-    board_.motion_request.update([&](agent::blackboard::MotionRequest& r) {
+    motion_->request([&](agent::blackboard::MotionRequest& r) {
       r.body.type = type;
       r.body.forward = static_cast<float>(forward);
       r.body.left = static_cast<float>(left);
@@ -90,7 +90,7 @@ class MotionHarness {
     });
   }
   void kick(agent::blackboard::Foot foot, double power, double direction = 0) {
-    board_.motion_request.update([&](agent::blackboard::MotionRequest& r) {
+    motion_->request([&](agent::blackboard::MotionRequest& r) {
       r.body.type = agent::blackboard::ActionType::KICK;
       r.body.foot = foot;
       r.body.kick_power = static_cast<float>(power);
@@ -120,15 +120,13 @@ class MotionHarness {
     return runner_.world().robot(0).linkPose(runner_.world().robot(0).model().rootLink()).translation().z();
   }
 
-  agent::blackboard::MotionState state() const { return board_.motion.read(); }
-  agent::motion::MotionModule& motion() { return *motion_; }
+  agent::blackboard::MotionState state() const { return motion_->state(); }
+  agent::motion::MotionModule& motion() { return motion_->module(); }
   simswift::runner::Runner& runner() { return runner_; }
-  agent::blackboard::Blackboard& board() { return board_; }
 
  private:
-  agent::blackboard::Blackboard board_;
   simswift::runner::Runner runner_;
-  agent::motion::MotionModule* motion_ = nullptr;
+  agent::motion::RequestedMotion* motion_ = nullptr;
   CheckedMotion* checked_ = nullptr;
 
  public:

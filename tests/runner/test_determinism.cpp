@@ -11,7 +11,7 @@
 
 #include <memory>
 
-#include "agent/program/Module.hpp"
+#include "agent/framework/ModuleSchedule.hpp"
 #include "sim/runner/Runner.hpp"
 
 using namespace simswift::runner;
@@ -65,8 +65,8 @@ uint64_t runHash(bool jitter, uint64_t jitter_seed,
     for (int i = 0; i < static_cast<int>(runner.scenario().robots.size()); ++i) {
       auto motion = std::make_shared<Jitter>(jitter_seed * 10 + i, 300);
       auto perception = std::make_shared<Jitter>(jitter_seed * 100 + i, 2000);
-      runner.setStepHook(i, [motion, perception](agent::program::ThreadId t) {
-        (t == agent::program::ThreadId::Motion ? motion : perception)->sleep();
+      runner.setStepHook(i, [motion, perception](agent::framework::ThreadId t) {
+        (t == agent::framework::ThreadId::Motion ? motion : perception)->sleep();
       });
     }
   }

@@ -86,7 +86,7 @@ TEST(Runner, LimpRobotFallsOnceAndIsCounted) {
 
 namespace {
 // A Motion step that stops answering at t >= 0.3 s until released.
-struct HangingMotion : ap::MotionGenerator {
+struct HangingMotion : agent::framework::MotionGenerator {
   std::atomic<bool>* release;
   explicit HangingMotion(std::atomic<bool>* r) : release(r) {}
   void tick(const al::SensorValues&, int64_t t_us, al::JointValues& out) override {
@@ -122,7 +122,7 @@ TEST(Runner, WatchdogNamesTheRobotAndThreadInsteadOfHanging) {
 
 namespace {
 // A Motion step that throws at t >= 0.3 s.
-struct ThrowingMotion : ap::MotionGenerator {
+struct ThrowingMotion : agent::framework::MotionGenerator {
   void tick(const al::SensorValues&, int64_t t_us, al::JointValues& out) override {
     out = ap::postureCommand(ap::Posture::Stand);
     if (t_us >= 300000) throw std::runtime_error("walk engine exploded");

@@ -16,7 +16,7 @@ using simswift::runner::Scenario;
 namespace {
 
 // Stands, and records the simulated times (us) at which a button read pressed.
-class RecordingMotion : public ap::MotionGenerator {
+class RecordingMotion : public agent::framework::MotionGenerator {
  public:
   RecordingMotion(std::vector<int64_t>* chest, std::vector<int64_t>* head) : chest_(chest), head_(head) {}
   void tick(const al::SensorValues& s, int64_t t_us, al::JointValues& out) override {

@@ -38,7 +38,7 @@ int countFiles(const std::string& dir, const std::string& prefix, const std::str
 }
 
 // Records what the Perception thread saw of the images, frame by frame.
-struct ImageProbe : agent::program::PerceptionStep {
+struct ImageProbe : agent::framework::PerceptionStep {
   std::atomic<int> valid_frames{0}, nonempty_frames{0}, frames_seen{0};
   std::atomic<int64_t> last_index{-1};
   void step(const al::CameraFrame& frame) override {

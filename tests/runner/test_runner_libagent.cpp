@@ -126,7 +126,7 @@ float ramp(long k, long t0, long t1) {
   if (k >= t1) return 1.0f;
   return static_cast<float>(k - t0) / static_cast<float>(t1 - t0);
 }
-struct SameMoves : ap::MotionGenerator {
+struct SameMoves : agent::framework::MotionGenerator {
   al::JointValues hold{};
   void tick(const al::SensorValues& s, int64_t t_us, al::JointValues& out) override {
     namespace J = al::Joints;

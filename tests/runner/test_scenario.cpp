@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/runner/Scenario.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 using simswift::ConfigError;
 using simswift::runner::RobotSpec;
@@ -9,12 +10,7 @@ using simswift::runner::Scenario;
 
 namespace {
 std::string errorOf(const std::string& yaml) {
-  try {
-    Scenario::parse(yaml, "scenario.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "<no error>";
+  return simswift::testing::configError([&] { Scenario::parse(yaml, "scenario.yaml"); });
 }
 }  // namespace
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/runner/Scenario.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 using simswift::ConfigError;
 using simswift::FieldConfig;
@@ -14,13 +15,8 @@ namespace {
 const char* kOneRobot = "robots:\n  - {team: 0, player: 1, x: -1, y: 0}\n";
 
 std::string errorOf(const std::string& yaml) {
-  try {
-    const Scenario sc = Scenario::parse(yaml, "s.yaml");
-    sc.checkAgainstField(FieldConfig::spl2017());
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return simswift::testing::configError(
+      [&] { Scenario::parse(yaml, "s.yaml").checkAgainstField(FieldConfig::spl2017()); });
 }
 
 void expectRefused(const std::string& yaml, const std::string& prefix) {

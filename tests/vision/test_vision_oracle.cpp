@@ -18,6 +18,7 @@
 #include "sim/runner/Runner.hpp"
 #include "sim/vision/VisionOracle.hpp"
 #include "sim/world/ConfigError.hpp"
+#include "tests/support/ConfigErrors.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
 #include "sim/camera/CameraModel.hpp"
 #endif
@@ -105,13 +106,9 @@ TEST(VisionConfig, ScenarioBlockIsReadAndCheckedWithFileLineAndKey) {
   EXPECT_FALSE(runner::Scenario::parse("vision: off\nrobots:\n  - {team: 0, player: 1}\n", "v.yaml").vision.enabled);
   EXPECT_TRUE(runner::Scenario::parse("robots:\n  - {team: 0, player: 1}\n", "v.yaml").vision.enabled);
 
-  auto error = [](const std::string& yaml) -> std::string {
-    try {
-      runner::Scenario::parse(yaml + "robots:\n  - {team: 0, player: 1}\n", "bad.yaml");
-    } catch (const ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+  auto error = [](const std::string& yaml) {
+    return simswift::testing::configError(
+        [&] { runner::Scenario::parse(yaml + "robots:\n  - {team: 0, player: 1}\n", "bad.yaml"); });
   };
   EXPECT_NE(error("vision:\n  ball:\n    max_distance_mm: -5\n").find("bad.yaml:3: vision.ball.max_distance_mm"),
             std::string::npos);
@@ -571,7 +568,7 @@ TEST_F(OneRobot, NothingSeenWhileLying) {
 struct ProbeCounts {
   std::atomic<int> frames{0}, with_ball{0}, bad{0};
 };
-struct BallProbe : agent::program::PerceptionStep {
+struct BallProbe : agent::framework::PerceptionStep {
   explicit BallProbe(std::shared_ptr<ProbeCounts> c) : counts(std::move(c)) {}
   std::shared_ptr<ProbeCounts> counts;
   void step(const al::CameraFrame& f) override {
@@ -611,7 +608,7 @@ namespace {
 
 // Every observation a Perception thread received, in order (kept in a
 // shared vector: the recorder itself ends with the robot program).
-struct Recorder : agent::program::PerceptionStep {
+struct Recorder : agent::framework::PerceptionStep {
   explicit Recorder(std::shared_ptr<std::vector<al::Observation>> s) : seen(std::move(s)) {}
   std::shared_ptr<std::vector<al::Observation>> seen;
   void step(const al::CameraFrame& f) override {

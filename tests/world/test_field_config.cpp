@@ -3,6 +3,7 @@
 
 #include "sim/world/FieldConfig.hpp"
 #include "sim/world/ConfigError.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 using namespace simswift;
 
@@ -10,13 +11,9 @@ namespace {
 
 // Returns the ConfigError message parseYaml throws (fails the test if none).
 std::string errorOf(const std::string& yaml) {
-  try {
-    FieldConfig::parseYaml(yaml, "test.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no ConfigError for:\n" << yaml;
-  return "";
+  const std::string e = simswift::testing::configError([&] { FieldConfig::parseYaml(yaml, "test.yaml"); });
+  if (e.empty()) ADD_FAILURE() << "no ConfigError for:\n" << yaml;
+  return e;
 }
 
 }  // namespace

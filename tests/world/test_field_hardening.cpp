@@ -7,6 +7,7 @@
 
 #include "sim/world/FieldConfig.hpp"
 #include "sim/world/World.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 using simswift::ConfigError;
 using simswift::FieldConfig;
@@ -14,12 +15,7 @@ using simswift::FieldConfig;
 namespace {
 
 std::string errorOf(const std::string& yaml) {
-  try {
-    FieldConfig::parseYaml(yaml, "f.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return simswift::testing::configError([&] { FieldConfig::parseYaml(yaml, "f.yaml"); });
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "agent/blackboard/Blackboard.hpp"
+#include "agent/framework/ModuleSchedule.hpp"
 #include "agent/localisation/LocalisationModule.hpp"
 
 namespace bb = agent::blackboard;
@@ -17,7 +18,9 @@ namespace al = agent::localisation;
 namespace {
 struct Game {
   bb::Blackboard board;
-  al::LocalisationModule module;
+  agent::framework::ModuleSchedule schedule;  // the module alone: the test writes its inputs
+  al::LocalisationModule& module = static_cast<al::LocalisationModule&>(
+      schedule.add(agent::framework::ThreadId::Perception, std::make_unique<al::LocalisationModule>()));
   int64_t frame = 0;
   // One frame with no observations in the given game state.
   void step(bb::GameStateId state, bool penalised) {
@@ -32,7 +35,7 @@ struct Game {
     g.state = state;
     g.penalised = penalised;
     board.game.write(g);
-    module.run(board);
+    schedule.run(agent::framework::ThreadId::Perception, board);
   }
   // Fraction of particles within 600 mm (3 sigma) of the penalty return x.
   double nearPenaltyReturn() const {

@@ -11,7 +11,7 @@
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/localisation/FieldModel.hpp"
 #include "agent/localisation/Localiser.hpp"
-#include "agent/localisation/Random.hpp"
+#include "agent/random/Random.hpp"
 
 namespace loc_test {
 
@@ -102,10 +102,10 @@ class SyntheticRobot {
     return v;
   }
 
-  al::Random& rng() { return rng_; }
+  agent::random::Random& rng() { return rng_; }
 
  private:
-  al::Random rng_;
+  agent::random::Random rng_;
   bb::FieldPose truth_;
   DetectorSpec det_;
   al::FieldModel field_;

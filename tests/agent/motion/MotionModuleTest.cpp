@@ -177,13 +177,12 @@ TEST(Kick, ArmsSwingAgainstTheLegAndNoJointIsSentToItsStop) {
 }
 
 TEST(MotionModule, WalksPublishesOdometryAndStaysWithinLimits) {
-  bb::Blackboard board;
-  MotionModule motion(board);
+  MotionModule motion;
   bb::MotionRequest req;
   req.body.type = bb::ActionType::WALK;
   req.body.forward = 250;
   req.sequence = 1;
-  board.motion_request.write(req);
+  motion.setRequest(req);
   agent::libagent::JointValues cmd{};
   agent::libagent::SensorValues s = standingSensors(cmd);
   float prev[agent::libagent::kNumJoints];
@@ -202,7 +201,7 @@ TEST(MotionModule, WalksPublishesOdometryAndStaysWithinLimits) {
       s.sensors[S::RFoot_FSR_FrontLeft + i] = on_left ? 0.05f : 1.0f;
     }
   }
-  const bb::MotionState st = board.motion.read();
+  const bb::MotionState st = motion.state();
   EXPECT_EQ(st.posture, bb::BodyState::WALKING);
   EXPECT_TRUE(st.walk_stepping);
   EXPECT_GT(st.odometry.forward, 500);  // mm over ~4.5 s of stepping
@@ -211,11 +210,10 @@ TEST(MotionModule, WalksPublishesOdometryAndStaysWithinLimits) {
 }
 
 TEST(MotionModule, FallGoesLimpThenGetsUpFromTheRightSide) {
-  bb::Blackboard board;
-  MotionModule motion(board);
+  MotionModule motion;
   bb::MotionRequest req;
   req.body.type = bb::ActionType::STAND;
-  board.motion_request.write(req);
+  motion.setRequest(req);
   agent::libagent::JointValues cmd{};
   agent::libagent::SensorValues s = standingSensors(cmd);
   for (int t = 0; t < 50; ++t) motion.tickSeconds(s, t * 0.01, cmd);
@@ -224,7 +222,7 @@ TEST(MotionModule, FallGoesLimpThenGetsUpFromTheRightSide) {
   s.sensors[S::InertialSensor_GyrY] = 3.0f;
   motion.tickSeconds(s, 0.5, cmd);
   EXPECT_EQ(motion.mode(), MotionModule::Mode::Falling);
-  EXPECT_EQ(board.motion.read().posture, bb::BodyState::FALLING);
+  EXPECT_EQ(motion.state().posture, bb::BodyState::FALLING);
   for (int i = 0; i < agent::libagent::kNumJoints; ++i) EXPECT_LE(cmd.stiffnesses[i], 0.0f);
   // Lying face down and still: the front get-up starts.
   s.sensors[S::InertialSensor_AngleY] = 1.5f;
@@ -232,40 +230,38 @@ TEST(MotionModule, FallGoesLimpThenGetsUpFromTheRightSide) {
   double t = 0.51;
   for (int i = 0; i < 40; ++i, t += 0.01) motion.tickSeconds(s, t, cmd);
   EXPECT_EQ(motion.mode(), MotionModule::Mode::Getup);
-  EXPECT_EQ(board.motion.read().active, bb::ActionType::GETUP_FRONT);
+  EXPECT_EQ(motion.state().active, bb::ActionType::GETUP_FRONT);
   // Pretend it worked: upright again at the end of the sequence.
   s.sensors[S::InertialSensor_AngleY] = 0.0f;
   for (int i = 0; i < 800 && motion.mode() == MotionModule::Mode::Getup; ++i, t += 0.01)
     motion.tickSeconds(s, t, cmd);
   EXPECT_EQ(motion.mode(), MotionModule::Mode::Walk);
-  EXPECT_EQ(board.motion.read().posture, bb::BodyState::STANDING);
+  EXPECT_EQ(motion.state().posture, bb::BodyState::STANDING);
   EXPECT_EQ(motion.getupAttempts(), 1);
 }
 
 TEST(MotionModule, BackFallChoosesBackGetupAndDeadIsLimp) {
-  bb::Blackboard board;
-  MotionModule motion(board);
+  MotionModule motion;
   agent::libagent::JointValues cmd{};
   agent::libagent::SensorValues s = standingSensors(cmd);
   s.sensors[S::InertialSensor_AngleY] = -1.5f;
   double t = 0;
   for (int i = 0; i < 60; ++i, t += 0.01) motion.tickSeconds(s, t, cmd);
-  EXPECT_EQ(board.motion.read().active, bb::ActionType::GETUP_BACK);
+  EXPECT_EQ(motion.state().active, bb::ActionType::GETUP_BACK);
   bb::MotionRequest req;
   req.body.type = bb::ActionType::DEAD;
-  board.motion_request.write(req);
+  motion.setRequest(req);
   motion.tickSeconds(s, t, cmd);
   for (int i = 0; i < agent::libagent::kNumJoints; ++i) EXPECT_EQ(cmd.stiffnesses[i], -1.0f);
 }
 
 TEST(MotionModule, KickRequestRunsTheKickOnce) {
-  bb::Blackboard board;
-  MotionModule motion(board);
+  MotionModule motion;
   bb::MotionRequest req;
   req.body.type = bb::ActionType::KICK;
   req.body.foot = bb::Foot::LEFT;
   req.sequence = 7;
-  board.motion_request.write(req);
+  motion.setRequest(req);
   agent::libagent::JointValues cmd{};
   agent::libagent::SensorValues s = standingSensors(cmd);
   bool kicked = false;
@@ -275,7 +271,7 @@ TEST(MotionModule, KickRequestRunsTheKickOnce) {
     s.joints = cmd;
     if (motion.mode() == MotionModule::Mode::Kick) {
       kicked = true;
-      EXPECT_EQ(board.motion.read().support_foot, bb::Foot::RIGHT);
+      EXPECT_EQ(motion.state().support_foot, bb::Foot::RIGHT);
     }
   }
   EXPECT_TRUE(kicked);
@@ -287,13 +283,12 @@ TEST(MotionModule, KickRequestRunsTheKickOnce) {
 // up by the torso) for more than 0.5 s is asked to stop.
 TEST(MotionModule, PickedUpInKgStopsWalkingFullWeightDoesNot) {
   for (const float per_sensor : {0.66f, 0.3f}) {  // kg each of 8: 5.3 kg, 2.4 kg
-    bb::Blackboard board;
-    MotionModule motion(board);
+    MotionModule motion;
     bb::MotionRequest req;
     req.body.type = bb::ActionType::WALK;
     req.body.forward = 200;
     req.sequence = 1;
-    board.motion_request.write(req);
+    motion.setRequest(req);
     agent::libagent::JointValues cmd{};
     agent::libagent::SensorValues s = standingSensors(cmd);
     bool stepped = false;

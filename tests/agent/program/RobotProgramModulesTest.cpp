@@ -69,15 +69,15 @@ TEST(RobotProgramModules, MotionWithoutABehaviourFailsStartUpNamingBoth) {
   try {
     program.start();
     FAIL() << "start() accepted a module reading an unprovided section";
-  } catch (const ap::ModuleError& e) {
+  } catch (const agent::framework::ModuleError& e) {
     const std::string m = e.what();
     EXPECT_NE(m.find("'motion'"), std::string::npos) << m;
-    EXPECT_NE(m.find("'behaviour request'"), std::string::npos) << m;
+    EXPECT_NE(m.find("'motion_request'"), std::string::npos) << m;
   }
   EXPECT_EQ(body.ext->client_pid.load(), 0);  // nothing announced
 }
 
-TEST(RobotProgramModules, ActionsReachMotionThroughTheBehaviourRequestAtFrameTime) {
+TEST(RobotProgramModules, ActionsReachMotionThroughTheMotionRequestAtFrameTime) {
   Body body;
   ap::ProgramConfig cfg;
   cfg.team = 1;
@@ -95,7 +95,7 @@ TEST(RobotProgramModules, ActionsReachMotionThroughTheBehaviourRequestAtFrameTim
                   "behaviour (action script) -> team send"),
               std::string::npos)
         << program.schedule().describe();
-    EXPECT_NE(program.schedule().describe().find("Motion: touch -> motion -> effector"), std::string::npos);
+    EXPECT_NE(program.schedule().describe().find("Motion: motion -> effector"), std::string::npos);
     // 10 ms ticks; a frame whenever floor(t * 30) advances (as the runner does).
     int64_t last_frame = -1;
     for (int k = 1; k <= 10; ++k) {

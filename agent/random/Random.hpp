@@ -6,16 +6,17 @@
 #include <cmath>
 #include <cstdint>
 
-namespace agent::localisation {
+#include "agent/random/SplitMix64.hpp"
+
+namespace agent::random {
 
 class Random {
  public:
   explicit Random(uint64_t seed = 1) : state_(seed) {}
   uint64_t next() {
-    uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
+    const uint64_t z = splitmix64(state_);
+    state_ += kGoldenGamma;
+    return z;
   }
   // Uniform in [0, 1).
   double uniform() { return static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0); }
@@ -32,4 +33,4 @@ class Random {
   uint64_t state_;
 };
 
-}  // namespace agent::localisation
+}  // namespace agent::random

@@ -1,24 +1,23 @@
-#include "agent/program/Module.hpp"
+#include "agent/framework/ModuleSchedule.hpp"
 
 #include <algorithm>
 #include <sstream>
 
-namespace agent::program {
+namespace agent::framework {
 
 const char* sectionName(SectionId s) {
   switch (s) {
     case SectionId::Sensors: return "sensors";
     case SectionId::Frame: return "frame";
-    case SectionId::Touch: return "touch";
     case SectionId::Vision: return "vision";
     case SectionId::Localisation: return "localisation";
     case SectionId::Ball: return "ball";
     case SectionId::Team: return "team";
-    case SectionId::GameState: return "game state";
-    case SectionId::BehaviourRequest: return "behaviour request";
+    case SectionId::Game: return "game";
+    case SectionId::MotionRequest: return "motion_request";
+    case SectionId::FindBall: return "findball";
     case SectionId::Motion: return "motion";
     case SectionId::Actuators: return "actuators";
-    case SectionId::FindBall: return "findball";
     default: return "?";
   }
 }
@@ -35,17 +34,24 @@ void ModuleSchedule::providedByProgram(ThreadId thread, SectionId s) {
   program_[static_cast<int>(thread)].push_back(s);
 }
 
+void ModuleSchedule::readByProgram(SectionId s) { program_reads_.push_back(s); }
+
 namespace {
 bool has(const std::vector<SectionId>& v, SectionId s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+std::string where(const Module& m, int thread) {
+  return std::string("module '") + m.name() + "' (" + threadName(static_cast<ThreadId>(thread)) + " thread)";
+}
 }  // namespace
 
 void ModuleSchedule::check() const {
-  // Who writes each section: "<thread> <module>" (or the program).
-  std::string writer[static_cast<int>(SectionId::NUM_SECTIONS)];
+  // Who writes each section: "module '...'" (or the program); who reads it.
+  std::string writer[kNumSections];
+  bool read[kNumSections] = {};
+  for (SectionId s : program_reads_) read[static_cast<int>(s)] = true;
   for (int t = 0; t < 2; ++t) {
-    for (SectionId s : program_[t]) writer[static_cast<int>(s)] = std::string("the robot program (") +
-                                                                   threadName(static_cast<ThreadId>(t)) + ")";
-    for (const auto& m : threads_[t])
+    for (SectionId s : program_[t])
+      writer[static_cast<int>(s)] = std::string("the robot program (") + threadName(static_cast<ThreadId>(t)) + ")";
+    for (const auto& m : threads_[t]) {
       for (SectionId s : m->writes()) {
         std::string& w = writer[static_cast<int>(s)];
         if (!w.empty())
@@ -53,19 +59,20 @@ void ModuleSchedule::check() const {
                             "', which " + w + " already writes: one provider per section");
         w = std::string("module '") + m->name() + "'";
       }
+      for (const auto& list : {m->reads(), m->optionalReads(), m->usesPrevious()})
+        for (SectionId s : list) read[static_cast<int>(s)] = true;
+    }
   }
   for (int t = 0; t < 2; ++t) {
     const auto& list = threads_[t];
     for (size_t i = 0; i < list.size(); ++i) {
       for (SectionId s : list[i]->usesPrevious())
         if (writer[static_cast<int>(s)].empty())
-          throw ModuleError(std::string("module '") + list[i]->name() + "' (" + threadName(static_cast<ThreadId>(t)) +
-                            " thread) uses section '" + sectionName(s) +
+          throw ModuleError(where(*list[i], t) + " uses section '" + sectionName(s) +
                             "', which no module provides: add a module that writes it, or remove the use");
       for (SectionId s : list[i]->reads()) {
         if (writer[static_cast<int>(s)].empty())
-          throw ModuleError(std::string("module '") + list[i]->name() + "' (" + threadName(static_cast<ThreadId>(t)) +
-                            " thread) reads section '" + sectionName(s) +
+          throw ModuleError(where(*list[i], t) + " reads section '" + sectionName(s) +
                             "', which no module provides: add a module that writes it, or remove the read");
         // Provided later in the same thread only: the read would see the
         // previous cycle's value (or nothing on the first cycle).
@@ -76,6 +83,10 @@ void ModuleSchedule::check() const {
                               threadName(static_cast<ThreadId>(t)) + " thread): order '" + list[j]->name() +
                               "' first");
       }
+      for (SectionId s : list[i]->writes())
+        if (!read[static_cast<int>(s)])
+          throw ModuleError(where(*list[i], t) + " writes section '" + sectionName(s) +
+                            "', which nothing reads: remove the module or the write, or add its reader");
     }
   }
 }
@@ -105,4 +116,4 @@ std::string ModuleSchedule::describe() const {
   return s.str();
 }
 
-}  // namespace agent::program
+}  // namespace agent::framework

@@ -1,0 +1,144 @@
+// The robot code's modules and their contracts (B-Human's MODULE(...
+// REQUIRES / USES / PROVIDES) is the model). A module declares by type which
+// Blackboard sections it reads and which it writes:
+//
+//   class BallTrackerModule
+//       : public framework::ModuleOf<Reads<FrameInfo, VisionMeasurements>,
+//                                    Writes<BallEstimate>, UsesPrevious<TeamInfo>> {
+//     void update(const In& in, Out& out) override {
+//       const FrameInfo& f = in.get<FrameInfo>();    // const: a declared read
+//       out.get<BallEstimate>() = ...;                // mutable: a declared write
+//     }
+//   };
+//
+// and receives only const copies of what it reads and the values it writes:
+// reading an undeclared section does not compile (In::get has no overload
+// for it), nor does writing one. Reads<..., IfProvided<T>> reads T when some module
+// writes it and its default value otherwise. The declared lists are what the
+// schedule (agent/framework/ModuleSchedule.hpp) checks at start-up.
+#pragma once
+
+#include <stdexcept>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+#include "agent/framework/Sections.hpp"
+
+namespace agent::framework {
+
+enum class ThreadId : int { Perception = 0, Motion = 1 };
+const char* threadName(ThreadId t);
+
+struct ModuleError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The untyped face the schedule sees. Modules derive from ModuleOf (below).
+class Module {
+ public:
+  virtual ~Module() = default;
+  virtual const char* name() const = 0;
+  virtual std::vector<SectionId> reads() const = 0;
+  virtual std::vector<SectionId> optionalReads() const = 0;
+  virtual std::vector<SectionId> writes() const = 0;
+  // Sections read as they were at the end of the previous cycle (B-Human's
+  // USES): may be provided later in the same thread; must still be provided.
+  virtual std::vector<SectionId> usesPrevious() const = 0;
+
+ private:
+  friend class ModuleSchedule;
+  // One cycle of the module's thread (a Motion tick or a camera frame).
+  virtual void run(blackboard::Blackboard& board) = 0;
+};
+
+template <class... T>
+struct Reads {};
+template <class... T>
+struct Writes {};
+template <class... T>
+struct UsesPrevious {};
+template <class T>
+struct IfProvided {};  // inside Reads<>: an optional read
+
+namespace detail {
+template <class T>
+struct Unwrap {
+  using type = T;
+  static constexpr bool optional = false;
+};
+template <class T>
+struct Unwrap<IfProvided<T>> {
+  using type = T;
+  static constexpr bool optional = true;
+};
+template <class S, class... T>
+constexpr bool kDeclared = (std::is_same_v<S, T> || ...);
+}  // namespace detail
+
+// What a module reads: copies taken from the Blackboard before it runs.
+template <class... T>
+class Inputs {
+ public:
+  explicit Inputs(blackboard::Blackboard& b) : values_(SectionOf<T>::of(b).read()...) {}
+  // Only for a section in the module's Reads<> or UsesPrevious<>.
+  template <class S, class = std::enable_if_t<detail::kDeclared<S, T...>>>
+  const S& get() const {
+    return std::get<S>(values_);
+  }
+
+ private:
+  std::tuple<T...> values_;
+};
+
+// What a module writes: starts as the section's current value (the module
+// is its only writer), published to the Blackboard after it runs.
+template <class... T>
+class Outputs {
+ public:
+  explicit Outputs(blackboard::Blackboard& b) : values_(SectionOf<T>::of(b).read()...) {}
+  // Only for a section in the module's Writes<>.
+  template <class S, class = std::enable_if_t<detail::kDeclared<S, T...>>>
+  S& get() {
+    return std::get<S>(values_);
+  }
+  void publish(blackboard::Blackboard& b) const { (SectionOf<T>::of(b).write(std::get<T>(values_)), ...); }
+
+ private:
+  std::tuple<T...> values_;
+};
+
+template <class R, class W, class U = UsesPrevious<>>
+class ModuleOf;
+
+template <class... R, class... W, class... U>
+class ModuleOf<Reads<R...>, Writes<W...>, UsesPrevious<U...>> : public Module {
+ public:
+  using In = Inputs<typename detail::Unwrap<R>::type..., U...>;
+  using Out = Outputs<W...>;
+
+  std::vector<SectionId> reads() const final { return idsWhere(false); }
+  std::vector<SectionId> optionalReads() const final { return idsWhere(true); }
+  std::vector<SectionId> writes() const final { return {SectionOf<W>::id...}; }
+  std::vector<SectionId> usesPrevious() const final { return {SectionOf<U>::id...}; }
+
+ protected:
+  virtual void update(const In& in, Out& out) = 0;
+
+ private:
+  void run(blackboard::Blackboard& board) final {
+    const In in(board);
+    Out out(board);
+    update(in, out);
+    out.publish(board);
+  }
+  static std::vector<SectionId> idsWhere(bool optional) {
+    std::vector<SectionId> ids;
+    ((detail::Unwrap<R>::optional == optional ? ids.push_back(SectionOf<typename detail::Unwrap<R>::type>::id)
+                                              : void()),
+     ...);
+    return ids;
+  }
+};
+
+}  // namespace agent::framework

@@ -1,0 +1,23 @@
+// The Motion thread's replaceable step. Once per 10 ms tick the robot program
+// hands a generator the latest sensors and the simulated time and sends the
+// joint command it fills (angles rad, stiffnesses 0..1 or -1 limp). The
+// Motion module (agent/motion/MotionModule) is one; the program's held
+// postures and joint scripts (agent/program/MotionGenerator.hpp) are others.
+#pragma once
+
+#include <cstdint>
+
+#include "agent/libagent/AgentShared.hpp"
+
+namespace agent::framework {
+
+class MotionGenerator {
+ public:
+  virtual ~MotionGenerator() = default;
+  // `out` arrives holding the previous command (the posture it started from
+  // on the first tick); fill angles and stiffnesses.
+  virtual void tick(const agent::libagent::SensorValues& sensors, int64_t sim_time_us,
+                    agent::libagent::JointValues& out) = 0;
+};
+
+}  // namespace agent::framework
