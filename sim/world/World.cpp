@@ -84,7 +84,7 @@
 //    their soles stay put. Box2D's position pass, for hinges.
 // Same bench walk (seed 5, 20 s at 300 mm/s); instructions counted with
 // callgrind for the whole bench run (the CPU clock is too noisy on a shared
-// machine; the walking RTF is measured quietly in the README):
+// machine; the walking RTF is measured quietly in docs/benchmarks.md):
 //
 //   setting                                  peak / median   slip mean/max  instructions
 //   before (W 1.7, no anchors, no projection): 1.08 / 0.35 mm  2.67 / 3.93 mm  4.13 G
