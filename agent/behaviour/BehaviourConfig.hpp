@@ -103,11 +103,20 @@ enum class Search2016Head : int32_t {
   // 1.1), 0 deg beyond; yaw speed 0.25 and pitch speed 0.2 of the head's
   // maximum.
   BALL_ESTIMATE = 0,
-  SCAN,  // the HeadScan sweep while walking (SkillConfig's scan_*)
+  // The HeadScan sweep while walking (SkillConfig's scan_*). The default:
+  // the 2016 FindBall was a behaviour of its own and may have overridden the
+  // head skill (its code is not public); the thesis describes its search
+  // by what is visible round each point and along the routes (2.3.2,
+  // figures 2.10-2.12), which a head fixed on a never-seen ball's estimate
+  // (the field centre) does not see: with BALL_ESTIMATE the thesis's
+  // simulated experiment finds 10 of 100 balls (seed 2017 file, 2026-11-25;
+  // docs/experiment.md), against 80/100 in the thesis's simulation and 20/25
+  // on its real NAOs. A coarse inconsistency, not a fit: no number is tuned.
+  SCAN,
 };
 struct Search2016Config {
   Search2016Style style = Search2016Style::ERA;
-  Search2016Head head = Search2016Head::BALL_ESTIMATE;
+  Search2016Head head = Search2016Head::SCAN;
   // mm: in era style, within this of a point the next one is the target.
   // rUNSWift 2016 release, skills/WalkToPointV2.py: 400 mm is where its walk
   // leaves travel (FarAway) for the final approach (Nearby); passing a point

@@ -83,11 +83,31 @@ TEST(FindBall2016Era, WalksThroughThePointsWithoutStopping) {
   EXPECT_GT(old_stands, 30);  // the scans at its points (2.5 s each at 30 Hz)
 }
 
-// The era's head skill with the ball lost looks at the ball estimate: the
-// field centre when never seen. Yaw within 1e-3 rad of the bearing, far
-// pitch (0) beyond 880 mm, the head skill's yaw speed.
-TEST(FindBall2016Era, HeadLooksAtTheBallEstimate) {
+// By default (head: scan) the head sweeps while the robot walks its route:
+// over 3 s (30 Hz ticks) the commanded yaw reaches both sides, at least
+// 0.5 rad each way (the sweep's limit is +-1.04 rad at 1.68 rad/s).
+TEST(FindBall2016Era, HeadSweepsByDefault) {
   const BehaviourConfig c = config(BehaviourKind::FINDBALL_2016);
+  Behaviour b(c);
+  BehaviourInputs in;
+  in.self.pose = {-3000, 2000, 0.3};
+  double lo = 0, hi = 0;
+  for (int k = 0; k < 90; ++k) {
+    in.time = k / 30.0;
+    const BehaviourOutput o = b.tick(in);
+    lo = std::min<double>(lo, o.request.head.yaw);
+    hi = std::max<double>(hi, o.request.head.yaw);
+  }
+  EXPECT_LT(lo, -0.5);
+  EXPECT_GT(hi, 0.5);
+}
+
+// head: ball_estimate, the era's head skill with the ball lost, looks at the
+// ball estimate: the field centre when never seen. Yaw within 1e-3 rad of the
+// bearing, far pitch (0) beyond 880 mm, the head skill's yaw speed.
+TEST(FindBall2016Era, HeadLooksAtTheBallEstimate) {
+  BehaviourConfig c = config(BehaviourKind::FINDBALL_2016);
+  c.search2016.head = Search2016Head::BALL_ESTIMATE;
   Behaviour b(c);
   BehaviourInputs in;
   in.time = 0;
