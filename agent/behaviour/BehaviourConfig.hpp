@@ -89,8 +89,8 @@ struct SearchBehaviourConfig {
 // only). The 2016 FindBall itself was never released.
 enum class Search2016Style : int32_t {
   // As the era's robots did: walk through the points without stopping
-  // (switch to the next point within pass_distance), the head doing what
-  // the era's default head skill did. The default.
+  // (switch to the next point within pass_distance), the head as `head`
+  // below says. The default.
   ERA = 0,
   // At every point: stop, head scan, spin, as the 2017 behaviour does at
   // its points (SearchBehaviourConfig's flags; the earlier simswift variant).
