@@ -1,6 +1,6 @@
 // Real-time factor of N standing robots, physics and sensors only (no robot
 // code): World::step() plus every robot's SensorSuite::update() per 10 ms
-// tick, on one core. Issue 2 asks for >= 30x / 10x / 3x for 1 / 3 / 10
+// tick, on one core. The targets are >= 30x / 10x / 3x for 1 / 3 / 10
 // robots (aim 100x / 30x / 10x).
 //
 // Usage: bench_world [SIM_SECONDS=20] ; figures are printed and appended to

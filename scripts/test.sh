@@ -6,7 +6,7 @@
 #                minus the heavy physics statistics (ASAN_EXCLUDE below)
 #   build-tsan/  ThreadSanitizer: the robot program (agent), bridge and runner tests,
 #                same exclusions (the runner/robot hand-overs are ordered by
-#                atomics TSan sees, README "Tests, sanitizers and fuzzing")
+#                atomics TSan sees, docs/testing.md)
 # Any sanitizer report fails the test that produced it. Timings go to stderr.
 #   SIMSWIFT_SKIP_SANITIZERS=1 bash scripts/test.sh   # Release suite only
 set -euo pipefail

@@ -61,6 +61,14 @@ struct StrategyConfig {
   double teammate_timeout = 2.0;  // s
   // Within this distance of the centre the turn to face it is not counted.
   double face_distance = 300.0;  // mm
+  // One searcher per segment (thesis 4.2.2.2 gives the reason: robots heading
+  // to one place "may collide with each other, possibly causing robots to
+  // fall over"). A segment a teammate has chosen is left to it (utility 0
+  // here) if the teammate is nearer its centre than this robot (ties: the
+  // lower player number keeps it); the division by visitors stays for the
+  // rest. Both robots judge with the same rule from the same packets, so the
+  // farther one yields. false: the thesis's formula alone.
+  bool exclusive_segments = true;
 };
 
 // The FindBall behaviours (2017 thesis 4.2.3 and 2016 thesis 2.3.2).
@@ -77,6 +85,53 @@ struct SearchBehaviourConfig {
                                   {3000, 0},   {2000, -2000}, {0, -1000},  {-2000, -2000}};
 };
 
+// The 2016 FindBall's manner (thesis 2.3.2 gives the points and their order
+// only). The 2016 FindBall itself was never released.
+enum class Search2016Style : int32_t {
+  // As the era's robots did: walk through the points without stopping
+  // (switch to the next point within pass_distance), the head as `head`
+  // below says. The default.
+  ERA = 0,
+  // At every point: stop, head scan, spin, as the 2017 behaviour does at
+  // its points (SearchBehaviourConfig's flags; the earlier simswift variant).
+  STOP_SCAN_SPIN,
+};
+enum class Search2016Head : int32_t {
+  // rUNSWift 2016 release, skills/HeadSkill.py (the default head skill): with
+  // the ball lost the head yaws toward the ball estimate (atan2 of its
+  // neck-relative position), pitch 17 deg within 800 mm (hysteresis 0.9 /
+  // 1.1), 0 deg beyond; yaw speed 0.25 and pitch speed 0.2 of the head's
+  // maximum.
+  BALL_ESTIMATE = 0,
+  // The HeadScan sweep while walking (SkillConfig's scan_*). The default:
+  // the 2016 FindBall was a behaviour of its own and may have overridden the
+  // head skill (its code is not public); the thesis describes its search
+  // by what is visible round each point and along the routes (2.3.2,
+  // figures 2.10-2.12), which a head fixed on a never-seen ball's estimate
+  // (the field centre) does not see: with BALL_ESTIMATE the thesis's
+  // simulated experiment finds 10 of 100 balls (seed 2017 file, 2026-11-25;
+  // docs/experiment.md), against 80/100 in the thesis's simulation and 20/25
+  // on its real NAOs. A coarse inconsistency, not a fit: no number is tuned.
+  SCAN,
+};
+struct Search2016Config {
+  Search2016Style style = Search2016Style::ERA;
+  Search2016Head head = Search2016Head::SCAN;
+  // mm: in era style, within this of a point the next one is the target.
+  // rUNSWift 2016 release, skills/WalkToPointV2.py: 400 mm is where its walk
+  // leaves travel (FarAway) for the final approach (Nearby); passing a point
+  // needs no final approach.
+  double pass_distance = 400.0;
+  // The era's head skill (HeadSkill.py above), rad and rad/s. Its speeds are
+  // fractions of the head's top speed, about 3.85 deg per 10 ms motion cycle
+  // (6.72 rad/s): 0.25 -> 1.68 rad/s yaw, 0.2 -> 1.34 rad/s pitch.
+  double head_near_pitch = 0.2967;     // rad (17 deg), ball estimate nearer than head_near_distance
+  double head_far_pitch = 0.0;         // rad
+  double head_near_distance = 800.0;   // mm (switch at 0.9x / 1.1x)
+  double head_yaw_speed = 1.68;        // rad/s
+  double head_pitch_speed = 1.34;      // rad/s
+};
+
 // Skills.
 struct SkillConfig {
   // WalkTo
@@ -89,9 +144,38 @@ struct SkillConfig {
   double avoid_distance = 600.0;      // mm: obstacles further (surface to surface) are ignored
   double avoid_gain = 60000.0;        // mm^2/s: repulsion = gain * (1/d - 1/avoid_distance)
   double obstacle_timeout = 2.0;      // s: teammates heard longer ago are not avoided
-  // HeadScan
-  double scan_yaw = 1.0;           // rad, sweep between -scan_yaw and +scan_yaw
-  double scan_speed = 1.0;         // rad/s (HeadYaw can do 8.27 rad/s; slower keeps images sharp)
+  // Keep-out round teammates (as heard: team packets, 5 Hz, their own
+  // localisation): within keep_out_distance (mm, centre to centre) of a
+  // teammate the part of the walk command that closes on it is removed, so
+  // two robots never walk into each other whatever their targets. A target
+  // a nearer teammate is standing on counts as reached within
+  // blocked_arrive_distance (mm) (the robot searches from beside it).
+  // rUNSWift 2016 release, skills/WalkToPointV2.py avoided the robots it
+  // knew of (a potential field, 800 mm reach); this keeps that and adds
+  // the hard limit.
+  double keep_out_distance = 550.0;   // mm: two 150 mm radii plus 250 mm for localisation error
+  double blocked_arrive_distance = 900.0;  // mm
+  // HeadScan. The stop at a 2017 search point (thesis 4.2.3: "scans the
+  // robot head ... Failing to find the ball, ... spins the robot around";
+  // neither how far nor how fast is said, and the code is not public):
+  //  - scan_yaw: the sweep takes the camera's edge to +-90 deg, the robot's
+  //    front half: pi/2 - camera_hfov/2 = 1.04 rad.
+  //  - scan_speed: 1.68 rad/s, the speed the era's head skill moved the head
+  //    at with the ball lost (rUNSWift 2016 and 2018 releases,
+  //    skills/HeadSkill.py: 0.25 of the head's 6.72 rad/s). One sweep
+  //    4 x 1.04 / 1.68 = 2.5 s; a ball stays in view for 1.06 / 1.68 = 0.63 s,
+  //    19 frames at 30 Hz.
+  //  - spin_speed: the era's walk turn limit, 0.8 rad/s (rUNSWift 2016
+  //    release, Walk2014Generator); its behaviours' travel-time estimate
+  //    assumed 60 deg/s (1.05 rad/s, util/FieldGeometry.py), above what the
+  //    walk could do, so the walk's limit it is.
+  //  - spin_angle: turn until every direction has been in view: after the
+  //    scan the front +-(scan_yaw + hfov/2) has been seen, so the turn (head
+  //    ahead) must reach 2 pi - scan_yaw - camera_hfov = 4.18 rad (240 deg);
+  //    2.5 s of scan plus 5.2 s of turn. spin_angle <= 0 means that value;
+  //    2 pi is a whole turn (the earlier simswift choice).
+  double scan_yaw = 1.04;          // rad, sweep between -scan_yaw and +scan_yaw
+  double scan_speed = 1.68;        // rad/s (HeadYaw can do 8.27 rad/s)
   double scan_pitch = 0.05;        // rad, + = down
   double head_yaw_limit = 2.0;     // rad, kept inside HeadYaw's +-2.0857
   double head_speed_limit = 8.0;   // rad/s, inside HeadYaw's 8.27 rad/s
@@ -106,8 +190,9 @@ struct SkillConfig {
   double look_max_pitch = 0.45;    // rad
   double look_yaw_speed = 3.0;     // rad/s
   double look_pitch_speed = 2.0;   // rad/s
-  // Spin
+  // Spin (see HeadScan above for the choice)
   double spin_speed = 0.8;         // rad/s (clamped to the walk's max_turn)
+  double spin_angle = 0.0;         // rad of turn; <= 0: 2 pi - scan_yaw - camera_hfov
   // ApproachBall / Kick
   double approach_distance = 180.0;   // mm, robot centre to ball centre when lined up
   double approach_tolerance = 60.0;   // mm
@@ -148,6 +233,7 @@ struct BehaviourConfig {
   DistributionConfig distribution;
   StrategyConfig strategy;
   SearchBehaviourConfig search;
+  Search2016Config search2016;
   SkillConfig skills;
 };
 

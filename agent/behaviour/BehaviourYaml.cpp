@@ -51,6 +51,7 @@ void readStrategy(const YamlReader& r, ab::StrategyConfig& s) {
   num(r, "min_travel_time", s.min_travel_time, Range::positive());
   num(r, "teammate_timeout", s.teammate_timeout, Range::positive());
   num(r, "face_distance", s.face_distance, Range::nonNegative());
+  flag(r, "exclusive_segments", s.exclusive_segments);
   r.finish();
 }
 
@@ -72,6 +73,22 @@ void readSearch(const YamlReader& r, ab::SearchBehaviourConfig& s) {
   r.finish();
 }
 
+void readSearch2016(const YamlReader& r, ab::Search2016Config& s) {
+  const std::string style = r.choice("style", s.style == ab::Search2016Style::ERA ? "era" : "stop_scan_spin",
+                                     {"era", "stop_scan_spin"});
+  s.style = style == "era" ? ab::Search2016Style::ERA : ab::Search2016Style::STOP_SCAN_SPIN;
+  const std::string head = r.choice("head", s.head == ab::Search2016Head::BALL_ESTIMATE ? "ball_estimate" : "scan",
+                                    {"ball_estimate", "scan"});
+  s.head = head == "ball_estimate" ? ab::Search2016Head::BALL_ESTIMATE : ab::Search2016Head::SCAN;
+  num(r, "pass_distance", s.pass_distance, Range::closed(10, 5000));
+  num(r, "head_near_pitch", s.head_near_pitch, Range::closed(-0.67, 0.51));
+  num(r, "head_far_pitch", s.head_far_pitch, Range::closed(-0.67, 0.51));
+  num(r, "head_near_distance", s.head_near_distance, Range::nonNegative());
+  num(r, "head_yaw_speed", s.head_yaw_speed, Range::closed(0.01, 8.27));
+  num(r, "head_pitch_speed", s.head_pitch_speed, Range::closed(0.01, 8.27));
+  r.finish();
+}
+
 void readSkills(const YamlReader& r, ab::SkillConfig& k) {
   num(r, "walk_gain", k.walk_gain, Range::positive());
   num(r, "turn_gain", k.turn_gain, Range::positive());
@@ -82,6 +99,8 @@ void readSkills(const YamlReader& r, ab::SkillConfig& k) {
   num(r, "avoid_distance", k.avoid_distance, Range::nonNegative());
   num(r, "avoid_gain", k.avoid_gain, Range::nonNegative());
   num(r, "obstacle_timeout", k.obstacle_timeout, Range::nonNegative());
+  num(r, "keep_out_distance", k.keep_out_distance, Range::closed(0, 3000));
+  num(r, "blocked_arrive_distance", k.blocked_arrive_distance, Range::closed(0, 5000));
   num(r, "scan_yaw", k.scan_yaw, Range::closed(0, 2.0857));
   num(r, "scan_speed", k.scan_speed, Range::closed(0.01, 8.27));
   num(r, "scan_pitch", k.scan_pitch, Range::closed(-0.67, 0.51));
@@ -96,6 +115,7 @@ void readSkills(const YamlReader& r, ab::SkillConfig& k) {
   num(r, "look_yaw_speed", k.look_yaw_speed, Range::closed(0.01, 8.27));
   num(r, "look_pitch_speed", k.look_pitch_speed, Range::closed(0.01, 8.27));
   num(r, "spin_speed", k.spin_speed, Range::closed(0.01, 5));
+  num(r, "spin_angle", k.spin_angle, Range::closed(0, 20));
   num(r, "approach_distance", k.approach_distance, Range::closed(50, 2000));
   num(r, "approach_tolerance", k.approach_tolerance, Range::closed(1, 1000));
   num(r, "kick_angle_tolerance", k.kick_angle_tolerance, Range::closed(0.01, 3.15));
@@ -146,6 +166,7 @@ std::optional<ab::BehaviourConfig> readBehaviour(const YamlReader& robot, std::s
     if (auto s = m->optionalMap("distribution")) readDistribution(*s, c.distribution);
     if (auto s = m->optionalMap("strategy")) readStrategy(*s, c.strategy);
     if (auto s = m->optionalMap("search")) readSearch(*s, c.search);
+    if (auto s = m->optionalMap("search2016")) readSearch2016(*s, c.search2016);
     if (auto s = m->optionalMap("skills")) readSkills(*s, c.skills);
     m->finish();
   }

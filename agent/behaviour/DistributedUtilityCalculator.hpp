@@ -11,6 +11,14 @@
 // segment each add only 1/k of new information, so the divisor here is the
 // number of robots that would be there if this robot went too: V_j + 1. With
 // two teammates heading to segment 5 its utility is divided by 3.
+//
+// With StrategyConfig::exclusive_segments (the default) a segment a teammate
+// has chosen and has the better claim to (nearer its centre; ties: the
+// lower player number) is worth 0 to this robot: no two teammates are sent
+// to one segment (and so to one search point). The thesis's own argument
+// for the division (robots heading to one place collide and fall) is the
+// reason; the division alone still let two robots pick one segment in the
+// same tick, or stay on it when its utility dwarfed the rest.
 #pragma once
 
 #include <memory>
@@ -29,6 +37,8 @@ class DistributedUtilityCalculator : public UtilityCalculator {
   // V_j: teammates heard within teammate_timeout, not penalised, whose
   // packet names `segment` (on the same grid) as their chosen segment.
   int visitors(const PositionalDistribution& d, int segment, const BehaviourInputs& in) const;
+  // A teammate counted by visitors() has the better claim to `segment`.
+  bool claimedByTeammate(const PositionalDistribution& d, int segment, const BehaviourInputs& in) const;
 
  private:
   std::unique_ptr<UtilityCalculator> local_;

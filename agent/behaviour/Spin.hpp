@@ -1,6 +1,6 @@
-// Spin skill: one full turn on the spot (2 pi rad of heading, counted from
-// the localisation heading), head straight ahead and slightly down so the
-// camera sweeps the whole circle.
+// Spin skill: a turn on the spot of angle() rad of heading (counted from the
+// localisation heading; SkillConfig::spin_angle, by default what completes
+// the circle a head scan began), head straight ahead and slightly down.
 #pragma once
 
 #include "agent/behaviour/BehaviourConfig.hpp"
@@ -23,6 +23,7 @@ class Spin {
   };
   Output tick(const BehaviourInputs& in);
   double turned() const { return turned_; }  // rad so far
+  double angle() const;                      // rad to turn in all
 
  private:
   SkillConfig s_;

@@ -58,12 +58,53 @@ Point2 WalkTo::repulsion(const BehaviourInputs& in, Point2 target) const {
   return rep;
 }
 
+namespace {
+// Teammates the walk keeps clear of: heard recently, not penalised (a
+// penalised robot is off the field).
+template <typename F>
+void forEachNearTeammate(const BehaviourInputs& in, const SkillConfig& s, F f) {
+  for (const Teammate& t : in.teammates)
+    if (!t.penalised && t.time_since_heard <= s.obstacle_timeout) f(position(t.pose));
+}
+}  // namespace
+
+bool WalkTo::blocked(const BehaviourInputs& in, Point2 target) const {
+  const Point2 me = position(in.self.pose);
+  const double mine = distance(me, target);
+  if (mine > s_.blocked_arrive_distance) return false;
+  bool b = false;
+  forEachNearTeammate(in, s_, [&](Point2 t) {
+    if (distance(t, target) < mine && distance(t, me) <= s_.keep_out_distance + 100.0) b = true;
+  });
+  return b;
+}
+
+Point2 WalkTo::keepOut(const BehaviourInputs& in, Point2 v) const {
+  const Point2 me = position(in.self.pose);
+  forEachNearTeammate(in, s_, [&](Point2 t) {
+    const double dx = t.x - me.x, dy = t.y - me.y;
+    const double d = std::hypot(dx, dy);
+    if (d < 1e-6 || d > s_.keep_out_distance) return;
+    const double ux = dx / d, uy = dy / d;
+    const double closing = v.x * ux + v.y * uy;  // mm/s toward the teammate
+    if (closing <= 0) return;
+    v.x -= closing * ux;
+    v.y -= closing * uy;
+  });
+  return v;
+}
+
 WalkToResult WalkTo::tick(const BehaviourInputs& in, Point2 target, std::optional<double> heading,
                           double arrive_distance) const {
   const Pose2& me = in.self.pose;
   const double dist = distance(position(me), target);
   const double final_err = heading ? wrapAngle(*heading - me.theta) : 0.0;
   WalkToResult r;
+  if (!heading && blocked(in, target)) {  // a teammate stands on it: search from here
+    r.arrived = true;
+    r.body.type = ActionType::STAND;
+    return r;
+  }
   if (dist <= arrive_distance && std::abs(final_err) <= s_.final_angle_tolerance) {
     r.arrived = true;
     r.body.type = ActionType::STAND;
@@ -76,6 +117,7 @@ WalkToResult WalkTo::tick(const BehaviourInputs& in, Point2 target, std::optiona
   const Point2 rep = repulsion(in, target);
   v.x += rep.x;
   v.y += rep.y;
+  v = keepOut(in, v);
 
   double want_heading = heading ? *heading : me.theta;
   bool travelling = dist > s_.face_target_distance;

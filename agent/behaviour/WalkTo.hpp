@@ -1,5 +1,7 @@
 // WalkTo skill: walk to a field point (optionally ending at a heading),
 // steering round teammates and goal posts with a repulsive potential field.
+// A hard keep-out round teammates removes any command that would close on
+// one (SkillConfig::keep_out_distance).
 // Far from the target the robot faces its direction of travel (the walk is
 // fastest forward); near it, it side-steps and turns to the final heading.
 // Every command is inside the walk's limits: (forward/F)^2 + (left/L)^2 <= 1
@@ -28,6 +30,13 @@ class WalkTo {
                     double arrive_distance) const;
   // Repulsion from teammates and posts at the robot's position, field frame, mm/s.
   Point2 repulsion(const BehaviourInputs& in, Point2 target) const;
+  // Field-frame velocity v (mm/s) without its parts closing on a teammate
+  // nearer than keep_out_distance (centre to centre).
+  Point2 keepOut(const BehaviourInputs& in, Point2 v) const;
+  // A teammate nearer the target than this robot stands within reach
+  // (keep_out_distance + 100 mm) and the target within
+  // blocked_arrive_distance: tick() reports arrival (no final heading asked).
+  bool blocked(const BehaviourInputs& in, Point2 target) const;
   // Scale (forward, left) into the walk's ellipse; clamp turn.
   static blackboard::BodyCommand clampToWalk(blackboard::BodyCommand b, const WalkLimits& w);
 

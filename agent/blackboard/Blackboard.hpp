@@ -20,6 +20,9 @@
 //   ball            ball tracker -> behaviour, team send
 //   team            team receive -> ball tracker (previous frame), behaviour
 //   game            game state -> localisation, behaviour, action script
+//   game_controller program (the game-state device), every camera frame -> game state
+//   team_inbox      program (the team transport), every camera frame -> team receive
+//   team_outbox     team send -> program (puts it on the team transport)
 //   motion_request  behaviour or a scenario's action script -> motion
 //   findball        behaviour -> team send, the simulator's FindBall view
 //   motion          motion -> vision adapter, localisation, ball tracker, behaviour, team send
@@ -37,6 +40,7 @@
 #include <mutex>
 
 #include "agent/blackboard/Ball.hpp"
+#include "agent/blackboard/Extensions.hpp"
 #include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/blackboard/FrameInfo.hpp"
 #include "agent/blackboard/GameInfo.hpp"
@@ -164,6 +168,9 @@ struct Blackboard {
   Section<BallEstimate> ball;
   Section<TeamInfo> team;
   Section<GameInfo> game;
+  Section<GameControllerData> game_controller;
+  Section<TeamInbox> team_inbox;
+  Section<TeamOutbox> team_outbox;
   Section<MotionRequest> motion_request;
   Section<FindBallInfo> findball;
   Section<MotionState> motion;

@@ -10,21 +10,24 @@ TeamSender::TeamSender(int team, int player, double rate_hz)
   if (!(rate_hz > 0)) throw std::invalid_argument("TeamSender: rate_hz must be > 0");
 }
 
-bool TeamSender::maybeSend(TeamTransport& transport, int64_t now_us, const SplMessage& content) {
-  if (!due(now_us)) return false;
+std::vector<uint8_t> TeamSender::nextPacket(int64_t now_us, const SplMessage& content) {
+  if (!due(now_us)) return {};
   SplMessage m = content;
   m.team = team_;
   m.player = player_;
-  // Counted as sent attempt either way: the next try waits a period, as a
-  // UDP send that failed would not be retried at once either.
+  // An attempt either way: the next try waits a period, as a UDP send that
+  // failed would not be retried at once either.
   last_sent_us_ = now_us;
   tried_ = true;
-  if (!transport.send(serialise(m))) {
-    ++failed_;
-    return false;
-  }
-  ++sent_;
-  return true;
+  return serialise(m);
+}
+
+bool TeamSender::maybeSend(TeamTransport& transport, int64_t now_us, const SplMessage& content) {
+  const std::vector<uint8_t> bytes = nextPacket(now_us, content);
+  if (bytes.empty()) return false;
+  const bool accepted = transport.send(bytes);
+  recordSend(accepted);
+  return accepted;
 }
 
 }  // namespace agent::comms

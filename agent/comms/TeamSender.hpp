@@ -18,6 +18,12 @@ class TeamSender {
   // True if the time has come (now_us - last send >= the period): then
   // serialises `content` with our team/player numbers and sends it.
   bool maybeSend(TeamTransport& transport, int64_t now_us, const SplMessage& content);
+  // The same in two halves, for a caller that sends later (the robot
+  // program puts the team outbox on its transport after the Perception
+  // modules): the bytes to send if the time has come (empty otherwise; the
+  // period restarts either way), then whether the transport took them.
+  std::vector<uint8_t> nextPacket(int64_t now_us, const SplMessage& content);
+  void recordSend(bool accepted) { ++(accepted ? sent_ : failed_); }
   bool due(int64_t now_us) const { return !tried_ || now_us - last_sent_us_ >= period_us_; }
 
   int64_t sent() const { return sent_; }

@@ -8,14 +8,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "agent/blackboard/Extensions.hpp"
 #include "agent/libagent/TeamLink.hpp"
 
 namespace agent::comms {
 
-struct ReceivedPacket {
-  std::vector<uint8_t> bytes;
-  int64_t time_us = 0;  // arrival time (simulated); 0 if the transport does not know
-};
+// Bytes and arrival time: the representation the team inbox section holds.
+using ReceivedPacket = blackboard::ReceivedTeamPacket;
 
 class TeamTransport {
  public:

@@ -14,6 +14,9 @@ const char* sectionName(SectionId s) {
     case SectionId::Ball: return "ball";
     case SectionId::Team: return "team";
     case SectionId::Game: return "game";
+    case SectionId::GameController: return "game_controller";
+    case SectionId::TeamInbox: return "team_inbox";
+    case SectionId::TeamOutbox: return "team_outbox";
     case SectionId::MotionRequest: return "motion_request";
     case SectionId::FindBall: return "findball";
     case SectionId::Motion: return "motion";

@@ -17,6 +17,9 @@ enum class SectionId : int {
   Ball,
   Team,
   Game,
+  GameController,
+  TeamInbox,
+  TeamOutbox,
   MotionRequest,
   FindBall,
   Motion,
@@ -42,6 +45,9 @@ SIMSWIFT_SECTION(LocalisationEstimate, Localisation, localisation)
 SIMSWIFT_SECTION(BallEstimate, Ball, ball)
 SIMSWIFT_SECTION(TeamInfo, Team, team)
 SIMSWIFT_SECTION(GameInfo, Game, game)
+SIMSWIFT_SECTION(GameControllerData, GameController, game_controller)
+SIMSWIFT_SECTION(TeamInbox, TeamInbox, team_inbox)
+SIMSWIFT_SECTION(TeamOutbox, TeamOutbox, team_outbox)
 SIMSWIFT_SECTION(MotionRequest, MotionRequest, motion_request)
 SIMSWIFT_SECTION(FindBallInfo, FindBall, findball)
 SIMSWIFT_SECTION(MotionState, Motion, motion)

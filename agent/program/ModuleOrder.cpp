@@ -1,6 +1,5 @@
 #include "agent/program/ModuleOrder.hpp"
 
-#include "agent/comms/TeamTransport.hpp"
 #include "agent/random/SplitMix64.hpp"
 
 namespace agent::program {
@@ -11,26 +10,26 @@ void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const liba
   using framework::SectionId;
   s.providedByProgram(T::Motion, SectionId::Sensors);
   s.providedByProgram(T::Perception, SectionId::Frame);
-  s.readByProgram(SectionId::FindBall);  // the simulator's FindBall view
+  s.providedByProgram(T::Perception, SectionId::GameController);
+  s.providedByProgram(T::Perception, SectionId::TeamInbox);
+  s.readByProgram(SectionId::FindBall);    // the simulator's FindBall view
+  s.readByProgram(SectionId::TeamOutbox);  // the program puts it on the team transport
 
   // Perception.
   if (cfg.perception_step)
     s.add(T::Perception, std::make_unique<PerceptionStepModule>(std::move(cfg.perception_step), images));
-  std::shared_ptr<comms::TeamTransport> link;
-  if (cfg.extensions) link = std::make_shared<comms::TeamLinkTransport>(&cfg.extensions->team);
-  s.add(T::Perception, std::make_unique<GameStateModule>(cfg.team, cfg.player,
-                                                         cfg.extensions ? &cfg.extensions->game : nullptr));
+  s.add(T::Perception, std::make_unique<GameStateModule>(cfg.team, cfg.player));
   s.add(T::Perception, std::make_unique<perception::VisionAdapterModule>(cfg.vision));
   localisation::LocalisationModuleConfig lc = cfg.localisation;
   lc.filter.seed = lc.filter.seed * random::kGoldenGamma + cfg.seed;  // per robot, from the scenario
   s.add(T::Perception, std::make_unique<localisation::LocalisationModule>(lc));
   s.add(T::Perception, std::make_unique<perception::BallTrackerModule>(cfg.ball));
-  s.add(T::Perception, std::make_unique<TeamReceiveModule>(cfg.team, cfg.player, link));
+  s.add(T::Perception, std::make_unique<TeamReceiveModule>(cfg.team, cfg.player));
   if (cfg.behaviour)
     s.add(T::Perception, std::move(cfg.behaviour));
   else if (!cfg.actions.empty())
     s.add(T::Perception, std::make_unique<motion::ScriptedBehaviour>(std::move(cfg.actions)));
-  s.add(T::Perception, std::make_unique<TeamSendModule>(cfg.team, cfg.player, link));
+  s.add(T::Perception, std::make_unique<TeamSendModule>(cfg.team, cfg.player));
 
   // Motion.
   if (cfg.motion_generator)

@@ -7,8 +7,9 @@
 //     motion -> effector
 //
 // The robot program itself provides `sensors` (before the Motion modules)
-// and `frame` (before the Perception modules), and reads `findball` (the
-// simulator's FindBall view draws it). The bracketed modules are optional:
+// and `frame`, `game_controller` and `team_inbox` (from its devices, before
+// the Perception modules), and reads `team_outbox` (onto its team
+// transport) and `findball` (the simulator's FindBall view draws it). The bracketed modules are optional:
 // a PerceptionStep given by a test or tool, and a behaviour (the scenario's
 // action script or one of agent/behaviour's). Without a behaviour nothing
 // writes the motion request, so Motion must then be a generator (a held
@@ -45,8 +46,8 @@ struct ProgramConfig {
   localisation::LocalisationModuleConfig localisation;
   perception::BallTrackerConfig ball;
   perception::VisionAdapterConfig vision;
-  // The simulator's extension objects (game state, team link); null: no
-  // game (unknown, PLAYING) and no teammates.
+  // The simulator's extension objects (game state, team link), the program's
+  // devices; null: no game (unknown, PLAYING) and no teammates.
   libagent::SimExtensions* extensions = nullptr;
   // Called by each thread before every step (Motion tick, Perception frame),
   // from that thread. For tests (seeded sleeps that scramble thread timing);

@@ -54,6 +54,7 @@ void RobotProgram::start(Threading threading) {
   buildSchedule(cfg_, [this](const blackboard::ActuatorRequest& a) { pending_ = a.joints; }, conn_.images(),
                 schedule_);
   schedule_.check();  // throws ModuleError before any thread starts
+  if (cfg_.extensions) team_link_ = std::make_unique<comms::TeamLinkTransport>(&cfg_.extensions->team);
   // Perception runs at every frame whether or not images are rendered.
   with_perception_ = conn_.hasCamera();
   threading_ = threading;
@@ -157,8 +158,20 @@ void RobotProgram::perceptionStep() {
   std::copy(cf.observations, cf.observations + f.num_observations, f.observations);
   f.images_valid = cf.images_valid != 0;
   board_.frame.write(f);
+  // The devices in (the simulator writes neither while a frame is processed).
+  blackboard::GameControllerData gc;
+  gc.present = cfg_.extensions != nullptr;
+  if (gc.present) gc.block = cfg_.extensions->game;
+  board_.game_controller.write(gc);
+  blackboard::TeamInbox inbox;
+  inbox.connected = team_link_ != nullptr;
+  if (team_link_) inbox.packets = team_link_->receive();
+  board_.team_inbox.write(inbox);
   if (cfg_.step_hook) cfg_.step_hook(framework::ThreadId::Perception);
   schedule_.run(framework::ThreadId::Perception, board_);
+  // A packet the transport refuses (outbox full) is lost, as a UDP send's.
+  if (team_link_)
+    for (const std::vector<uint8_t>& packet : board_.team_outbox.read().packets) team_link_->send(packet);
   perception_frames_.fetch_add(1);
   conn_.perceptionDone();
 }

@@ -2,12 +2,14 @@
 // Blackboard, and the modules each thread runs (ordered in ModuleOrder.cpp).
 //
 //   Motion     (thread "t<T>p<P>-motion"):  loop { waitTick; readSensors ->
-//              sensors section; touch -> motion -> effector; writeActuators
+//              sensors section; motion -> effector; writeActuators
 //              (sets actuators_latest: the answer the body side waits for) }
 //   Perception (thread "t<T>p<P>-percept"): loop { wait frame_ready; frame
-//              (+ the sensors of the tick just done) -> frame section;
-//              game state -> vision adapter -> localisation -> ball tracker
-//              -> team receive -> behaviour -> team send; post perception_done }
+//              (+ the sensors of the tick just done) -> frame section, the
+//              game-state block -> game_controller, arrived team packets ->
+//              team_inbox; game state -> vision adapter -> localisation ->
+//              ball tracker -> team receive -> behaviour -> team send;
+//              team_outbox -> the team transport; post perception_done }
 //
 // Two ways to run the same steps (the same order, the same results: the
 // same state hash, tested):
@@ -32,6 +34,7 @@
 #include <thread>
 
 #include "agent/blackboard/Blackboard.hpp"
+#include "agent/comms/TeamTransport.hpp"
 #include "agent/libagent/AgentConnection.hpp"
 #include "agent/program/ModuleOrder.hpp"
 #include "agent/framework/ModuleSchedule.hpp"
@@ -103,6 +106,8 @@ class RobotProgram {
   ProgramConfig cfg_;
   blackboard::Blackboard board_;
   framework::ModuleSchedule schedule_;
+  // The team transport over the extension object's team link (null: none).
+  std::unique_ptr<comms::TeamTransport> team_link_;
   agent::libagent::JointValues pending_{};  // the effector's command, sent after the Motion modules
   std::function<void(const agent::libagent::SensorValues&, int64_t)> after_tick_;
   Threading threading_ = Threading::Named;

@@ -50,9 +50,10 @@ void PerceptionStepModule::update(const In& in, Out&) {
   step_->step(frame_);
 }
 
-void GameStateModule::update(const In&, Out& out) {
-  if (block_) {
-    const comms::GameState g = reader_.read(block_);
+void GameStateModule::update(const In& in, Out& out) {
+  const blackboard::GameControllerData& gc = in.get<blackboard::GameControllerData>();
+  if (gc.present) {
+    const comms::GameState g = reader_.read(&gc.block);
     blackboard::GameInfo next = info_;
     next.known = g.valid;
     if (g.valid) {
@@ -68,9 +69,10 @@ void GameStateModule::update(const In&, Out& out) {
 }
 
 void TeamReceiveModule::update(const In& in, Out& out) {
-  if (transport_) {
+  const blackboard::TeamInbox& inbox = in.get<blackboard::TeamInbox>();
+  if (inbox.connected) {
     const int64_t now_us = in.get<blackboard::FrameInfo>().sim_time_us;
-    receiver_.update(*transport_, now_us);
+    receiver_.receive(inbox.packets, now_us);
     for (int p = 1; p <= comms::kSplMaxPlayers && p <= blackboard::kMaxTeammates; ++p) {
       const comms::TeammateState& t = receiver_.teammate(p);
       blackboard::TeammateReport& r = info_.mates[p];
@@ -98,8 +100,10 @@ void TeamReceiveModule::update(const In& in, Out& out) {
   out.get<blackboard::TeamInfo>() = info_;
 }
 
-void TeamSendModule::update(const In& in, Out&) {
-  if (!transport_ || player_ < 1 || player_ > comms::kSplMaxPlayers) return;
+void TeamSendModule::update(const In& in, Out& out) {
+  std::vector<std::vector<uint8_t>>& outbox = out.get<blackboard::TeamOutbox>().packets;
+  outbox.clear();
+  if (player_ < 1 || player_ > comms::kSplMaxPlayers) return;
   const blackboard::LocalisationEstimate& loc = in.get<blackboard::LocalisationEstimate>();
   const blackboard::BallEstimate& ball = in.get<blackboard::BallEstimate>();
   comms::SplMessage m;
@@ -123,7 +127,8 @@ void TeamSendModule::update(const In& in, Out&) {
     m.walking_to_x = static_cast<float>(fb.point_x);
     m.walking_to_y = static_cast<float>(fb.point_y);
   }
-  sender_.maybeSend(*transport_, in.get<blackboard::FrameInfo>().sim_time_us, m);
+  std::vector<uint8_t> packet = sender_.nextPacket(in.get<blackboard::FrameInfo>().sim_time_us, m);
+  if (!packet.empty()) outbox.push_back(std::move(packet));
 }
 
 }  // namespace agent::program

@@ -9,7 +9,6 @@
 #include "agent/comms/GameStateReader.hpp"
 #include "agent/comms/TeamReceiver.hpp"
 #include "agent/comms/TeamSender.hpp"
-#include "agent/comms/TeamTransport.hpp"
 #include "agent/libagent/GameState.hpp"
 #include "agent/motion/MotionModule.hpp"
 #include "agent/program/MotionGenerator.hpp"
@@ -86,13 +85,12 @@ class PerceptionStepModule : public ModuleOf<Reads<bb::FrameInfo>, Writes<>> {
   libagent::CameraFrame frame_{};
 };
 
-// -> game state, from the game-state extension object (GameStateReader).
-// Without one (null: a program attached by name, a bench tool) the game is
+// game controller data -> game state (GameStateReader). Without a
+// game-state device (a program attached by name, a bench tool) the game is
 // unknown (known = false: a test field, always PLAYING).
-class GameStateModule : public ModuleOf<Reads<bb::FrameInfo>, Writes<bb::GameInfo>> {
+class GameStateModule : public ModuleOf<Reads<bb::FrameInfo, bb::GameControllerData>, Writes<bb::GameInfo>> {
  public:
-  GameStateModule(int team, int player, const libagent::GameStateBlock* block)
-      : reader_(team, player), block_(block) {
+  GameStateModule(int team, int player) : reader_(team, player) {
     info_.team_number = team;
     info_.player_number = player;
   }
@@ -101,17 +99,15 @@ class GameStateModule : public ModuleOf<Reads<bb::FrameInfo>, Writes<bb::GameInf
  private:
   void update(const In& in, Out& out) override;
   comms::GameStateReader reader_;
-  const libagent::GameStateBlock* block_;
   blackboard::GameInfo info_;
 };
 
-// -> team: teammates' SPL standard messages through the transport
-// (TeamReceiver parses them; malformed ones are counted and dropped), as
-// field-frame reports. Without a transport nothing arrives.
-class TeamReceiveModule : public ModuleOf<Reads<bb::FrameInfo>, Writes<bb::TeamInfo>> {
+// team inbox -> team: teammates' SPL standard messages (TeamReceiver parses
+// them; malformed ones are counted and dropped), as field-frame reports.
+// Without a team transport nothing arrives.
+class TeamReceiveModule : public ModuleOf<Reads<bb::FrameInfo, bb::TeamInbox>, Writes<bb::TeamInfo>> {
  public:
-  TeamReceiveModule(int team, int player, std::shared_ptr<comms::TeamTransport> transport)
-      : receiver_(team, player), transport_(std::move(transport)) {
+  TeamReceiveModule(int team, int player) : receiver_(team, player) {
     info_.team_number = team;
     info_.player_number = player;
   }
@@ -120,28 +116,25 @@ class TeamReceiveModule : public ModuleOf<Reads<bb::FrameInfo>, Writes<bb::TeamI
  private:
   void update(const In& in, Out& out) override;
   comms::TeamReceiver receiver_;
-  std::shared_ptr<comms::TeamTransport> transport_;
   blackboard::TeamInfo info_;
 };
 
-// localisation + ball + motion (fallen) [+ findball] -> teammates: our SPL
-// standard message at 5 Hz (TeamSender) through the transport. With a
-// behaviour that publishes findball, its SearchPayload bytes go into the
-// message's free data area and its search point into walkingTo (without
-// one the section keeps its default: no data, no point).
+// localisation + ball + motion (fallen) [+ findball] -> team outbox: our
+// SPL standard message at 5 Hz (TeamSender), which the robot program puts
+// on its team transport. With a behaviour that publishes findball, its
+// SearchPayload bytes go into the message's free data area and its search
+// point into walkingTo (without one the section keeps its default: no
+// data, no point).
 class TeamSendModule : public ModuleOf<Reads<bb::FrameInfo, bb::LocalisationEstimate, bb::BallEstimate, bb::MotionState,
                                              IfProvided<bb::FindBallInfo>>,
-                                       Writes<>> {
+                                       Writes<bb::TeamOutbox>> {
  public:
-  TeamSendModule(int team, int player, std::shared_ptr<comms::TeamTransport> transport)
-      : sender_(team, player), transport_(std::move(transport)), player_(player) {}
+  TeamSendModule(int team, int player) : sender_(team, player), player_(player) {}
   const char* name() const override { return "team send"; }
-  const comms::TeamSender& sender() const { return sender_; }
 
  private:
   void update(const In& in, Out& out) override;
   comms::TeamSender sender_;
-  std::shared_ptr<comms::TeamTransport> transport_;
   int player_;
 };
 

@@ -8,22 +8,10 @@
 #include "sim/api/ConfigErrors.hpp"
 #include "sim/experiment/Batch.hpp"
 #include "sim/experiment/BehaviourHooks.hpp"
+#include "sim/experiment/Csv.hpp"
 #include "simswift/Simulation.hpp"
 
 namespace simswift::api {
-
-namespace {
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out(1);
-  for (char c : line) {
-    if (c == ',') out.emplace_back();
-    else if (c != '\r') out.back() += c;
-  }
-  return out;
-}
-
-}  // namespace
 
 ResultsTable runExperiment(const std::string& file, const ExperimentOptions& options) {
   namespace ex = simswift::experiment;
@@ -44,9 +32,9 @@ ResultsTable runExperiment(const std::string& file, const ExperimentOptions& opt
   t.out_dir = opt.out_dir;
   std::ifstream in(opt.out_dir + "/results.csv");
   std::string line;
-  if (std::getline(in, line)) t.columns = split(line);
+  if (std::getline(in, line)) t.columns = ex::splitCsv(line);
   while (std::getline(in, line))
-    if (!line.empty()) t.rows.push_back(split(line));
+    if (!line.empty()) t.rows.push_back(ex::splitCsv(line));
   return t;
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "agent/nao/NaoFacts.hpp"
 #include "agent/random/SplitMix64.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
@@ -214,7 +215,7 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
       rob.x = r.number("x");
       rob.y = r.number("y");
       rob.theta = r.number("theta", Range::closed(-2 * M_PI, 2 * M_PI));
-      onCarpet(r, rob.x, rob.y, 0.15, "the robot");
+      onCarpet(r, rob.x, rob.y, agent::nao::kFootprintRadius / 1000, "the robot");  // m
       if (r.has("behaviour")) {
         rob.behaviour = parseBehaviour(r.choice("behaviour", "script", kBehaviours));
         rob.behaviour_where = where(r, "behaviour");

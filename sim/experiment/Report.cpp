@@ -302,7 +302,8 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
     std::vector<double> times;
     int tests = 0, resets = 0;
     std::vector<double> dist(setup.robots.size(), 0);
-    std::vector<int> falls(setup.robots.size(), 0), moves(setup.robots.size(), 0), finds(setup.robots.size(), 0);
+    std::vector<int> falls(setup.robots.size(), 0), contact_falls(setup.robots.size(), 0),
+        moves(setup.robots.size(), 0), finds(setup.robots.size(), 0);
     for (const TrialResult& r : results) {
       if (r.setup != setup.name) continue;
       ++tests;
@@ -311,6 +312,7 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
       for (size_t k = 0; k < r.robots.size() && k < setup.robots.size(); ++k) {
         dist[k] += r.robots[k].distance_m;
         falls[k] += r.robots[k].falls;
+        contact_falls[k] += r.robots[k].contact_falls;
         moves[k] += r.robots[k].sideline_moves;
         if (r.found && r.finder == agent::libagent::robotTag(r.robots[k].team, r.robots[k].player))
           ++finds[k];
@@ -321,10 +323,12 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
       << fixed(all.tests ? 100.0 * all.found / all.tests : 0, 1) << " %); over the " << all.found
       << " finds: mean " << f2(all.avg_s) << " s, standard deviation " << f2(all.sd_s) << " s. World resets: "
       << resets << ".\n\n"
-      << "| Robot | Finds | Mean walked (m/trial) | Falls | Sideline moves |\n|---|---:|---:|---:|---:|\n";
+      << "| Robot | Finds | Mean walked (m/trial) | Falls | of which after robot contact | Sideline moves |\n"
+      << "|---|---:|---:|---:|---:|---:|\n";
     for (size_t k = 0; k < setup.robots.size(); ++k)
       s << "| t" << setup.robots[k].team << "p" << setup.robots[k].player << " | " << finds[k] << " | "
-        << fixed(tests ? dist[k] / tests : 0, 2) << " | " << falls[k] << " | " << moves[k] << " |\n";
+        << fixed(tests ? dist[k] / tests : 0, 2) << " | " << falls[k] << " | " << contact_falls[k] << " | " << moves[k]
+        << " |\n";
     s << "\nFigures: [routes](figures/routes_" << setup.name << ".png) (as the thesis's figures 5.2 and 5.3), "
       << "[find times](figures/findtime_" << setup.name << ".png) (box plot per position).\n\n";
   }

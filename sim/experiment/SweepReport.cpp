@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "sim/experiment/Csv.hpp"
+
 namespace simswift::experiment {
 
 namespace {

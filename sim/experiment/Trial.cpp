@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/experiment/Csv.hpp"
 
 namespace simswift::experiment {
 
@@ -51,34 +52,6 @@ void sidelineSpot(const Experiment& e, const World& w, int i, double* x, double*
   }
 }
 
-// Fields of one CSV line; a quoted field may hold commas and "" quotes.
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  bool quoted = false;
-  for (size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cur += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cur += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      out.push_back(cur);
-      cur.clear();
-    } else if (c != '\n' && c != '\r') {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
-  return out;
-}
 
 }  // namespace
 
@@ -205,18 +178,14 @@ void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& 
   const runner::RunStats stats = run.stats();
   run.shutdown();
   res.resets = stats.blowups;
-  for (int i = 0; i < n && i < static_cast<int>(stats.robots.size()); ++i) res.robots[i].falls = stats.robots[i].falls;
+  for (int i = 0; i < n && i < static_cast<int>(stats.robots.size()); ++i) {
+    res.robots[i].falls = stats.robots[i].falls;
+    res.robots[i].contact_falls = stats.robots[i].contact_falls;
+  }
   res.sim_s = stats.sim_s;
 }
 
 }  // namespace
-
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
 
 std::string csvHeader(int robots, const std::vector<SweepAxis>& sweep) {
   std::string h = "trial";
@@ -225,7 +194,7 @@ std::string csvHeader(int robots, const std::vector<SweepAxis>& sweep) {
   h += ",setup,position,repeat,seed,found,seconds,finder,resets,failed";
   for (int k = 1; k <= robots; ++k) {
     const std::string r = "robot" + std::to_string(k) + "_";
-    h += "," + r + "player," + r + "distance_m," + r + "falls," + r + "sideline_moves";
+    h += "," + r + "player," + r + "distance_m," + r + "falls," + r + "contact_falls," + r + "sideline_moves";
   }
   return h + "\n";
 }
@@ -244,9 +213,9 @@ std::string csvRow(const TrialResult& r, int robots) {
     if (k < static_cast<int>(r.robots.size())) {
       const RobotOutcome& o = r.robots[k];
       s << ',' << agent::libagent::robotTag(o.team, o.player) << ',' << fixed(o.distance_m, 3) << ',' << o.falls << ','
-        << o.sideline_moves;
+        << o.contact_falls << ',' << o.sideline_moves;
     } else {
-      s << ",,,,";
+      s << ",,,,,";
     }
   }
   s << '\n';
@@ -268,7 +237,7 @@ TrialResult parseCsvRow(const std::string& line, int swept_paths) {
     r.cell_values.assign(f.begin() + 2, f.begin() + 2 + swept_paths);
     f.erase(f.begin() + 1, f.begin() + 2 + swept_paths);
   }
-  if (f.size() < 10 || (f.size() - 10) % 4 != 0)
+  if (f.size() < 10 || (f.size() - 10) % 5 != 0)
     throw std::runtime_error("bad results row (" + std::to_string(f.size()) + " fields): " + line);
   try {
     r.trial = std::stoi(f[0]);
@@ -281,13 +250,14 @@ TrialResult parseCsvRow(const std::string& line, int swept_paths) {
     r.finder = f[7];
     r.resets = std::stoi(f[8]);
     r.failed = f[9];
-    for (size_t k = 10; k + 3 < f.size(); k += 4) {
+    for (size_t k = 10; k + 4 < f.size(); k += 5) {
       if (f[k].empty()) continue;
       RobotOutcome o;
       if (!agent::libagent::parseRobotTag(f[k], &o.team, &o.player)) throw std::runtime_error("player " + f[k]);
       o.distance_m = std::stod(f[k + 1]);
       o.falls = std::stoi(f[k + 2]);
-      o.sideline_moves = std::stoi(f[k + 3]);
+      o.contact_falls = std::stoi(f[k + 3]);
+      o.sideline_moves = std::stoi(f[k + 4]);
       r.robots.push_back(o);
     }
   } catch (const std::exception& ex) {

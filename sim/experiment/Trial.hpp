@@ -34,6 +34,7 @@ struct RobotOutcome {
   int team = 0, player = 0;   // SPL numbers
   double distance_m = 0;      // walked (track samples, teleports excluded)
   int falls = 0;              // Runner's fall count
+  int contact_falls = 0;      // of falls, those right after touching another robot (runner::FallDetector)
   int sideline_moves = 0;
 };
 
@@ -80,8 +81,6 @@ std::string csvRow(const TrialResult& r, int robots);  // with '\n'
 // Parses a csvRow back (tracks and timing stay empty); `swept_paths`: the
 // sweep's path count (0 without one). Throws std::runtime_error.
 TrialResult parseCsvRow(const std::string& line, int swept_paths = 0);
-// A CSV field: quoted ("" for a quote) if it holds a comma, quote or newline.
-std::string csvField(const std::string& s);
 // tracks.csv
 std::string tracksHeader();
 std::string tracksRows(const TrialResult& r, const Experiment& e);

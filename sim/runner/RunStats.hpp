@@ -37,6 +37,7 @@ struct RunStats {
     double x = 0, y = 0, theta = 0;  // torso position and heading
     int falls = 0;
     bool down = false;  // on the ground at the end (fallen and not yet back up)
+    int contact_falls = 0;  // of falls, those right after touching another robot (FallDetector)
   };
   std::vector<RobotEnd> robots;
 

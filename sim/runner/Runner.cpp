@@ -510,8 +510,15 @@ void Runner::latchActuators() {
 }
 
 void Runner::updateFalls() {
+  const double now = world_->time();  // s
+  for (const LinkContact& c : world_->contacts())
+    if (c.other == GeomTag::RobotLink && c.other_robot != c.robot && c.robot >= 0 &&
+        c.robot < static_cast<int>(robots_.size()))
+      robots_[c.robot]->last_robot_contact_s = now;
   for (size_t i = 0; i < robots_.size(); ++i) {
-    robots_[i]->fall.update(world_->robot(static_cast<int>(i)).torsoPose().z);  // torso origin height, m
+    Robot& r = *robots_[i];
+    const bool contact = now - r.last_robot_contact_s <= FallDetector::kContactWindow;
+    r.fall.update(world_->robot(static_cast<int>(i)).torsoPose().z, contact);  // torso origin height, m
   }
 }
 
@@ -615,7 +622,7 @@ RunStats Runner::stats() const {
     if (world_ && static_cast<int>(i) < world_->numRobots() && i < scenario_.robots.size()) {
       const RobotBody::TorsoPose t = world_->robot(static_cast<int>(i)).torsoPose();
       s.robots.push_back({scenario_.robots[i].team, scenario_.robots[i].player, t.x, t.y, t.heading,
-                          robots_[i]->fall.falls, robots_[i]->fall.fallen});
+                          robots_[i]->fall.falls, robots_[i]->fall.fallen, robots_[i]->fall.contact_falls});
     }
     if (robots_[i]->host) s.skipped_cycles += robots_[i]->host->skippedCycles();
     if (world_ && static_cast<int>(i) < world_->numRobots()) {

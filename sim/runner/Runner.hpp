@@ -217,6 +217,7 @@ class Runner {
     bool perception = false;
     bool attached = false;  // has answered its first tick
     FallDetector fall;  // torso-height fall bookkeeping (statistics only)
+    double last_robot_contact_s = -1e9;  // s (world time) this robot last touched another robot
     size_t next_push = 0;  // next of spec.pushes to apply
     agent::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
     std::unique_ptr<ProgramProcess> process;  // a launched program (program: {command: ...})

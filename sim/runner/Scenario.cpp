@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "agent/nao/NaoFacts.hpp"
 #include "agent/motion/ActionYaml.hpp"
 #include "agent/behaviour/BehaviourYaml.hpp"
 #include "agent/program/RobotSetup.hpp"
@@ -63,7 +64,7 @@ constexpr double kMaxHeading = 2 * M_PI;   // rad
 constexpr double kMaxWallClock = 3600;     // s: watchdog, attach timeout
 constexpr double kMaxSeed = 9007199254740992.0;  // 2^53: every whole number below is exact
 constexpr double kMaxJointAngle = 10;      // rad (the servos clamp to the joint's range)
-constexpr double kRobotRadius = 0.15;      // m: a NAO's footprint, centre to the arms' sides
+constexpr double kRobotRadius = agent::nao::kFootprintRadius / 1000;  // m
 }  // namespace limits
 
 namespace {

@@ -140,7 +140,7 @@ struct RobotSpec {
   bool buttonHeld(sensors::Button b, double t_s) const;  // any press of b covers t_s
 };
 
-// Camera rendering (the camera issue). Off unless a scenario or flag asks.
+// Camera rendering. Off unless a scenario or flag asks.
 struct CameraSpec {
   bool enabled = false;            // robot cameras into each robot's CameraImages
   int width = 640, height = 480;   // px: 640x480 or 1280x960

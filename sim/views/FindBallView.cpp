@@ -7,12 +7,13 @@
 #include <cstdio>
 
 #include "agent/behaviour/PositionalDistribution.hpp"
+#include "agent/nao/NaoFacts.hpp"
 
 namespace sim::views {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kRobotRadius = 150.0;   // mm, drawn size of a robot
+constexpr double kRobotRadius = agent::nao::kFootprintRadius;  // mm, drawn size of a robot
 constexpr double kTargetRadius = 120.0;  // mm, drawn size of a search point
 
 void setColour(cairo_t* cr, Rgb c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }

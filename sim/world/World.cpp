@@ -17,13 +17,14 @@
 //   quick  10 ms x1, floor   : 162 / 53 / 16    z 0.3175 m  range 0.6 mm
 //
 // Stability first: every floored configuration stands, none without the
-// floor does, so the floor is not optional. Then speed: the issue asks for
-// >= 30 / 10 / 3 with sensors, which only QuickStep reaches; exact 10 ms
-// misses it already without sensors. Among the QuickSteps, 5 ms x2 keeps the
-// hinge anchors within 0.8 mm of each other (torso 3.5 mm below the exact
-// solution, joint angles within 0.5 mrad), whereas 10 ms x1 lets them drift
-// 3.2 mm (torso 11 mm low) and halves the servo update rate; 5 ms also keeps
-// a 3 m/s ball to 1.5 cm per step, below the 2 cm net and 10 cm posts.
+// floor does, so the floor is not optional. Then speed: the target is
+// >= 30 / 10 / 3 with sensors (bench_world), which only QuickStep reaches;
+// exact 10 ms misses it already without sensors. Among the QuickSteps, 5 ms
+// x2 keeps the hinge anchors within 0.8 mm of each other (torso 3.5 mm below
+// the exact solution, joint angles within 0.5 mrad), whereas 10 ms x1 lets
+// them drift 3.2 mm (torso 11 mm low) and halves the servo update rate; 5 ms
+// also keeps a 3 m/s ball to 1.5 cm per step, below the 2 cm net and 10 cm
+// posts.
 // Exact remains selectable (WorldConfig::solver) for reference runs.
 //
 // ERP 0.8, measured with bench_motion's 20 s walk at 300 mm/s
@@ -45,7 +46,9 @@
 // speed allowed. ERP 0.8 at 20 iterations is the best that keeps the speed:
 // it does NOT reach the 0.5 mm goal (1.5 mm peak, 0.6 mm typical).
 //
-// Issue 10, second pass, with the faithful motor on (torque-speed line,
+// Second pass toward the goals of the uncalibrated walk (hinge anchors
+// within 0.5 mm, stance slip under 2 mm per step; the first pass is the ERP
+// table above), with the faithful motor on (torque-speed line,
 // efficiency 0.8, kp 100), same bench walk (seed 5), one run each (the CPU
 // RTF is noisy on the shared machine: 40-58 for identical settings):
 //
@@ -69,7 +72,7 @@
 // the stance slip at 2.7 mm/step: more iterations cost more than the 10 %
 // of speed allowed (30 get 1.0 mm / 2.1 mm at about -25 % RTF).
 //
-// Issue 10, third pass: two cheap passes outside the LCP instead.
+// Third pass, same goals: two cheap passes outside the LCP instead.
 //  - Sole friction anchors (Contacts.cpp): ODE's friction rows are velocity
 //    rows with no position term, so QuickStep's residual lets a loaded sole
 //    creep. Each sole point remembers where it touched down and its friction
@@ -81,7 +84,7 @@
 //    their soles stay put. Box2D's position pass, for hinges.
 // Same bench walk (seed 5, 20 s at 300 mm/s); instructions counted with
 // callgrind for the whole bench run (the CPU clock is too noisy on a shared
-// machine; the walking RTF is measured quietly in the README):
+// machine; the walking RTF is measured quietly in docs/benchmarks.md):
 //
 //   setting                                  peak / median   slip mean/max  instructions
 //   before (W 1.7, no anchors, no projection): 1.08 / 0.35 mm  2.67 / 3.93 mm  4.13 G

@@ -339,7 +339,7 @@ TEST(Sweep, WithoutASweepNothingChanges) {
   ASSERT_EQ(pb.size(), 3u);
   EXPECT_EQ(pa[0],
             "trial,setup,position,repeat,seed,found,seconds,finder,resets,failed,robot1_player,robot1_distance_m,"
-            "robot1_falls,robot1_sideline_moves");
+            "robot1_falls,robot1_contact_falls,robot1_sideline_moves");
   EXPECT_EQ(pb[0], "trial,cell,noise," + pa[0].substr(6));
   for (int i = 1; i <= 2; ++i) {
     const std::string t = std::to_string(i - 1);

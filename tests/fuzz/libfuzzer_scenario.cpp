@@ -1,5 +1,5 @@
 // libFuzzer target for the scenario loader (clang, -DSIMSWIFT_LIBFUZZER=ON; see
-// README "Fuzzing"). Any crash, hang or ErrorWithoutFile is a finding.
+// docs/testing.md, "Fuzzing the loaders"). Any crash, hang or ErrorWithoutFile is a finding.
 #include <cstdint>
 #include <cstdlib>
 #include <cstdio>

@@ -183,7 +183,7 @@ TEST(MotionPhysics, OdometryAfterThreeMetres) {
   EXPECT_LE(err, 0.1 * dist);
 }
 
-// Issue 10, gains 1.0: forward 100 mm/s reaches >= 90 % (seeds 21-22, 8 s),
+// No calibration (every walk gain 1.0): forward 100 mm/s reaches >= 90 % (seeds 21-22, 8 s),
 // and forward 200 + left 100 mm/s is within 10 % on each axis with a heading
 // drift under 0.005 rad/s (seeds 23-24, 10 s). Bench seeds 1-5 differ; the
 // walk's heading hold was tuned on seeds 40-79.
@@ -228,7 +228,7 @@ TEST(MotionPhysics, WalkSlowForwardAndCombined) {
     // end (seeds 23, 24: 2.0 / 3.5 mrad/s, bench seed 4: 3.2, with slopes of
     // 0.1-1.0; on the physics before the hinge-stop change tuning seeds 60-79
     // reached 5.9 end-to-start with slopes under 1.8). Both are held to the
-    // issue's 0.005 rad/s here.
+    // target of 0.005 rad/s here.
     // TODO: a smaller in-cycle yaw swing would make the
     // end-to-start figure as steady as the slope on every seed.
     EXPECT_LT(std::fabs(slope), 0.005) << "seed " << seed;
@@ -236,7 +236,7 @@ TEST(MotionPhysics, WalkSlowForwardAndCombined) {
   }
 }
 
-// Issue 10: over a 20 s walk at 300 mm/s the hinge anchors stay within
+// Over a 20 s walk at 300 mm/s the hinge anchors stay within
 // 0.5 mm of each other (JointProjector) and the stance feet slide less than
 // 2 mm per step on average (the sole's friction anchors). Seeds 31-32; the
 // bench walks seed 5.

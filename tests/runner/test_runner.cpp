@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <thread>
 
 #include "sim/runner/Runner.hpp"
@@ -182,4 +183,40 @@ TEST(Runner, ExternalProcessAttachesByNameAndMovesAJoint) {
   // It held the standing posture too: the knees stay bent at ~0.8 rad.
   EXPECT_NEAR(modelJoint(r, 0, "LKneePitch"), 0.8, 0.1);
   EXPECT_EQ(st.falls, 0);
+}
+
+// Fall attribution (FallDetector::contact_falls): a robot pushed over on its
+// own counts a fall and no contact fall; a robot pushed into a standing
+// teammate 0.35 m ahead brings one or both down, and every such fall counts
+// as one after a robot contact. Impulse 6 N*s for the pair (about 1.1 m/s
+// for the pushed 5.3 kg robot; 3 N*s, enough alone, leaves the pair leaning
+// on each other).
+TEST(Runner, FallsAfterTouchingAnotherRobotAreAttributed) {
+  const std::string stand_push =
+      ", actions: [{t: 0, action: stand}, {t: 0.5, push: {x: 3.0, y: 0.0}}]}\n";
+  const std::string stand_shove =
+      ", actions: [{t: 0, action: stand}, {t: 0.5, push: {x: 6.0, y: 0.0}}]}\n";
+  {
+    Scenario s = Scenario::parse("duration: 3.0\nrobots:\n  - {team: 0, player: 1, x: -1.0, y: 0.0, theta: 0.0" +
+                                     stand_push,
+                                 "alone.yaml");
+    Runner r(s);
+    const RunStats st = r.run(quiet());
+    ASSERT_EQ(st.robots.size(), 1u);
+    EXPECT_EQ(st.robots[0].falls, 1);
+    EXPECT_EQ(st.robots[0].contact_falls, 0);
+  }
+  {
+    Scenario s = Scenario::parse("duration: 3.0\nrobots:\n  - {team: 0, player: 1, x: -1.0, y: 0.0, theta: 0.0" +
+                                     stand_shove +
+                                     "  - {team: 0, player: 2, x: -0.65, y: 0.0, theta: 3.1416, actions: [{t: 0, action: stand}]}\n",
+                                 "pair.yaml");
+    Runner r(s);
+    const RunStats st = r.run(quiet());
+    ASSERT_EQ(st.robots.size(), 2u);
+    std::printf("pushed into a teammate: falls %d / %d, after robot contact %d / %d\n", st.robots[0].falls,
+                st.robots[1].falls, st.robots[0].contact_falls, st.robots[1].contact_falls);
+    EXPECT_GE(st.robots[0].falls + st.robots[1].falls, 1);  // the two go down together (or one of them)
+    for (int i = 0; i < 2; ++i) EXPECT_EQ(st.robots[i].contact_falls, st.robots[i].falls) << i;  // all after the contact
+  }
 }

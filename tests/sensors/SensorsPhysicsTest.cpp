@@ -47,7 +47,7 @@ float fsrSum(const SensorReading& r) {
 
 }  // namespace
 
-// The 60 s of standing; it runs in about 1.5 s of wall time.
+// 60 s of standing; it runs in about 1.5 s of wall time.
 // Contact and servo chatter in the physics makes single 10 ms samples jitter
 // (accelerometer by up to ~1.6 m/s^2, gyro by up to ~0.2 rad/s, FSR sum by a
 // few N), as a real IMU's raw samples do; the steady-state figures are

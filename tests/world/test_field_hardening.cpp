@@ -1,6 +1,6 @@
 // Field files: every dimension in a sane range, the goal checked as a whole
-// (a post shorter than its diameter crashed ODE's capsule code before issue
-// 14), errors naming file, line and key.
+// (a post shorter than its diameter crashed ODE's capsule code before these
+// checks), errors naming file, line and key.
 #include <gtest/gtest.h>
 
 #include <filesystem>

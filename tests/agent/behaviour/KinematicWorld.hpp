@@ -117,8 +117,10 @@ struct World {
     for (size_t i = 0; i < robots.size(); ++i) {
       Robot& r = robots[i];
       r.last = outs[i];
-      if (outs[i].payload && time - r.packet_time >= packet_period - 1e-9) {
-        r.packet = outs[i].payload->toBytes();
+      // Every robot sends a packet (pose, ...) at the packet rate; its free
+      // data carries the search payload when the behaviour has one.
+      if (time - r.packet_time >= packet_period - 1e-9) {
+        if (outs[i].payload) r.packet = outs[i].payload->toBytes();
         r.packet_time = time;
       }
       const auto& b = outs[i].request.body;

@@ -88,10 +88,14 @@ TEST(FindBall2016Logic, StartsNearestTheLastBallThenVisitsInOrder) {
   EXPECT_EQ(FindBall2016::nextIndex(7, 8), 0);
 
   // Closed loop: the robot saw the ball at (2500, 1800) once, it was then
-  // taken away; the points visited must be 4, 5, 6, 7, 8, 1, 2, 3, 4.
+  // taken away; the points visited must be 4, 5, 6, 7, 8, 1, 2, 3, 4. In the
+  // stop_scan_spin style (it stops at 4 first; the era style passes through
+  // 4 at once from beside the ball: test_search_era.cpp).
   kin::World w;
   w.ball = {2500, 1800};
-  w.add(2, {1000, 1500, 0}, config(BehaviourKind::FINDBALL_2016));
+  BehaviourConfig stop = config(BehaviourKind::FINDBALL_2016);
+  stop.search2016.style = Search2016Style::STOP_SCAN_SPIN;
+  w.add(2, {1000, 1500, 0}, stop);
   w.step();
   ASSERT_TRUE(w.robots[0].ever_seen);
   w.ball = {20000, 20000};

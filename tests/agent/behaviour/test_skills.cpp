@@ -99,7 +99,7 @@ TEST(HeadScan, SweepCoversTheFieldOfViewWithinTheHeadsLimits) {
   const SkillConfig s;
   HeadScan scan(s);
   scan.start(10.0);
-  EXPECT_NEAR(scan.sweepDuration(), 4.0, 1e-12);  // 4 x 1 rad at 1 rad/s
+  EXPECT_NEAR(scan.sweepDuration(), 4 * 1.04 / 1.68, 1e-12);  // 4 x 1.04 rad at 1.68 rad/s: 2.48 s
   const double dt = 0.01;
   double lo = 1e9, hi = -1e9, prev = scan.yawAt(10.0);
   std::vector<std::pair<double, double>> seen;
@@ -112,14 +112,14 @@ TEST(HeadScan, SweepCoversTheFieldOfViewWithinTheHeadsLimits) {
     lo = std::min(lo, h.yaw - s.camera_hfov / 2);
     hi = std::max(hi, h.yaw + s.camera_hfov / 2);
   }
-  // The camera saw +-(scan_yaw + hfov/2) = +-1.531 rad: 175 deg around the body.
-  EXPECT_NEAR(lo, -(1.0 + s.camera_hfov / 2), 0.02);
-  EXPECT_NEAR(hi, 1.0 + s.camera_hfov / 2, 0.02);
-  EXPECT_TRUE(scan.sweepDone(14.0));
-  EXPECT_FALSE(scan.sweepDone(13.9));
+  // The camera saw +-(scan_yaw + hfov/2) = +-1.571 rad: the front half.
+  EXPECT_NEAR(lo, -(1.04 + s.camera_hfov / 2), 0.02);
+  EXPECT_NEAR(hi, 1.04 + s.camera_hfov / 2, 0.02);
+  EXPECT_TRUE(scan.sweepDone(10.0 + 2.48));
+  EXPECT_FALSE(scan.sweepDone(10.0 + 2.40));
 }
 
-TEST(Spin, TurnsOnceInPlace) {
+TEST(Spin, TurnsInPlaceUntilTheCircleIsComplete) {
   const SkillConfig s;
   Spin spin(s);
   BehaviourInputs in;
@@ -134,9 +134,10 @@ TEST(Spin, TurnsOnceInPlace) {
     EXPECT_LE(o.body.turn, in.walk.max_turn + 1e-6);
     integrate(in.self.pose, o.body, 0.02);
   }
-  EXPECT_NEAR(t, 2 * kPi / 0.8, 0.05);  // 7.85 s at 0.8 rad/s
+  const double angle = 2 * kPi - 1.04 - s.camera_hfov;  // 4.18 rad: what the scan left unseen
+  EXPECT_NEAR(t, angle / 0.8, 0.05);  // 5.2 s at 0.8 rad/s
   EXPECT_NEAR(in.self.pose.x, 500, 1e-9);
-  EXPECT_NEAR(wrapAngle(in.self.pose.theta - 3.0), 0.0, 0.02);
+  EXPECT_NEAR(wrapAngle(in.self.pose.theta - 3.0 - angle), 0.0, 0.02);
 }
 
 TEST(ApproachBallAndKick, LineUpBehindTheBallAndKickTowardTheGoal) {

@@ -68,6 +68,7 @@ TEST(SimpleUtilityCalculator, UtilityIsProbabilityOverTime) {
 
 TEST(DistributedUtilityCalculator, TwoTeammatesOnSegment5DivideByThree) {
   StrategyConfig c;
+  c.exclusive_segments = false;  // the thesis's formula alone (exclusivity: test_search_era.cpp)
   DistributedUtilityCalculator u(std::make_unique<SimpleUtilityCalculator>(c), c);
   SimpleUtilityCalculator local(c);
   PositionalDistribution d;

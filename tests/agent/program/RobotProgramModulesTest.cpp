@@ -1,11 +1,13 @@
 // The robot program's Blackboard and modules: start-up refuses a module that
 // reads an unprovided section; a scenario's actions reach Motion through the
-// behaviour request at frame time; every frame runs the Perception modules.
+// behaviour request at frame time; every frame runs the Perception modules;
+// the game-state and team devices reach modules only through sections.
 #include <gtest/gtest.h>
 
 #include <ctime>
 #include <string>
 
+#include "agent/comms/SplMessage.hpp"
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/program/RobotProgram.hpp"
 
@@ -119,4 +121,63 @@ TEST(RobotProgramModules, ActionsReachMotionThroughTheMotionRequestAtFrameTime) 
     EXPECT_EQ(program.board().motion.read().request_sequence, program.board().motion_request.read().sequence);
     body.shutdown();
   }
+}
+
+// The extension devices reach the modules only through sections: the program
+// copies the game-state block into game_controller and the arrived packets
+// into team_inbox before the Perception modules, and puts team send's
+// team_outbox on the team link after them.
+TEST(RobotProgramModules, TheDevicesReachTheModulesThroughSections) {
+  Body body;
+  al::GameStateBlock& g = body.ext->game;
+  g.magic = al::kGameStateMagic;
+  g.updates = 1;
+  g.state = static_cast<uint8_t>(al::GameStateValue::Playing);
+  g.teams[0].team_number = 1;
+  g.teams[1].team_number = 2;
+  g.teams[0].players[3 - 1].penalty = 5;  // any penalty: player 3 is penalised
+  g.teams[0].players[3 - 1].secs_till_unpenalised = 20;
+  agent::comms::SplMessage mate;
+  mate.team = 1;
+  mate.player = 2;
+  mate.pose_x = 1500;
+  const std::vector<uint8_t> bytes = agent::comms::serialise(mate);
+  ASSERT_TRUE(body.ext->team.inbox.push(bytes.data(), bytes.size(), 5000, 2));
+
+  ap::ProgramConfig cfg;
+  cfg.team = 1;
+  cfg.player = 3;
+  cfg.extensions = body.ext.get();
+  agent::motion::ActionStep stand;
+  stand.body.type = bb::ActionType::STAND;
+  cfg.actions = {stand};
+  ap::RobotProgram program(body.connect(), std::move(cfg));
+  program.start();
+  ASSERT_TRUE(body.step(10000));
+  ASSERT_TRUE(body.frame(10000, 0));
+
+  const bb::GameControllerData gc = program.board().game_controller.read();
+  EXPECT_TRUE(gc.present);
+  EXPECT_EQ(gc.block.teams[0].players[2].secs_till_unpenalised, 20);
+  const bb::GameInfo game = program.board().game.read();
+  EXPECT_TRUE(game.known);
+  EXPECT_EQ(game.state, bb::GameStateId::PLAYING);
+  EXPECT_TRUE(game.penalised);
+  const bb::TeamInbox inbox = program.board().team_inbox.read();
+  EXPECT_TRUE(inbox.connected);
+  ASSERT_EQ(inbox.packets.size(), 1u);
+  EXPECT_EQ(inbox.packets[0].bytes, bytes);
+  EXPECT_EQ(body.ext->team.inbox.size(), 0u);  // drained by the program, not by a module
+  const bb::TeamInfo team = program.board().team.read();
+  EXPECT_TRUE(team.mates[2].valid);
+  EXPECT_FLOAT_EQ(static_cast<float>(team.mates[2].x), 1500.0f);
+  // Our first message (the sender is due at once) went out through the link.
+  ASSERT_EQ(program.board().team_outbox.read().packets.size(), 1u);
+  EXPECT_EQ(body.ext->team.outbox.size(), 1u);
+  al::TeamPacket sent{};
+  ASSERT_TRUE(body.ext->team.outbox.pop(sent));
+  const agent::comms::ParseResult parsed = agent::comms::parse(sent.bytes, sent.size);
+  ASSERT_TRUE(parsed.ok());
+  EXPECT_EQ(parsed.message.player, 3);
+  body.shutdown();
 }
