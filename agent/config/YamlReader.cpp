@@ -1,11 +1,14 @@
 // Typed YAML reading with file:line:key errors. See YamlReader.hpp.
 #include "agent/config/YamlReader.hpp"
 
+#include <yaml-cpp/depthguard.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_map>
 
 namespace agent::config {
 
@@ -26,7 +29,39 @@ std::string shown(const YAML::Node& n) {
   return "?";
 }
 
+// A key as shown in a message: long ones cut (a 1 MB key is a typo, not
+// something to print in full).
+std::string clip(const std::string& s) {
+  return s.size() <= 80 ? s : s.substr(0, 80) + "...(" + std::to_string(s.size()) + " bytes)";
+}
+
+// expandedNodes: a collection's total is kept by its position in the file
+// (an alias is the very node it names, so it has the same mark).
+size_t countNodes(const YAML::Node& n, size_t limit, std::unordered_map<size_t, size_t>& seen) {
+  if (!n.IsMap() && !n.IsSequence()) return 1;
+  const YAML::Mark m = n.Mark();
+  const bool keyed = !m.is_null();
+  if (keyed)
+    if (auto it = seen.find(static_cast<size_t>(m.pos)); it != seen.end()) return it->second;
+  size_t total = 1;
+  for (auto it = n.begin(); it != n.end() && total <= limit; ++it) {
+    if (n.IsMap()) {
+      total += countNodes(it->first, limit, seen);
+      total += countNodes(it->second, limit, seen);
+    } else {
+      total += countNodes(*it, limit, seen);
+    }
+  }
+  if (keyed) seen[static_cast<size_t>(m.pos)] = total;
+  return total;
+}
+
 }  // namespace
+
+size_t expandedNodes(const YAML::Node& root, size_t limit) {
+  std::unordered_map<size_t, size_t> seen;
+  return countNodes(root, limit, seen);
+}
 
 bool Range::contains(double v) const {
   if (lo && (lo_open ? !(v > *lo) : !(v >= *lo))) return false;
@@ -44,25 +79,45 @@ std::string Range::describe() const {
   return "must be a number";
 }
 
+void checkConfigSize(unsigned long long bytes, const std::string& file) {
+  if (bytes > kMaxConfigBytes)
+    throw ConfigError(file + ":1: " + std::to_string(bytes) + " bytes is more than a configuration file can be (" +
+                      std::to_string(kMaxConfigBytes >> 10) + " KB)");
+}
+
 YAML::Node YamlReader::parse(const std::string& text, const std::string& file) {
-  if (text.size() > kMaxConfigBytes)
-    throw ConfigError(file + ":1: " + std::to_string(text.size()) + " bytes is more than a configuration file can be (1 MB)");
+  checkConfigSize(text.size(), file);
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    const long line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+    throw ConfigError(file + ":" + std::to_string(line) + ": contains a NUL byte (not a text file?)");
+  }
+  YAML::Node root;
   try {
-    YAML::Node root = YAML::Load(text);
-    return root;
+    root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp says "bad file" here; its mark is where it stopped.
+    throw ConfigError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML nested too deep: yaml-cpp stops at " +
+                      std::to_string(e.depth()) + " levels of recursion (a configuration file needs fewer than 10)");
   } catch (const YAML::Exception& e) {
     // e.mark.line is 0-based; e.msg is yaml-cpp's text without the position.
     throw ConfigError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " +
                       e.msg);
   }
+  // Only an alias ('*') can make the readers' walk longer than the text.
+  if (text.find('*') != std::string::npos) {
+    const size_t nodes = expandedNodes(root, kMaxConfigNodes);
+    if (nodes > kMaxConfigNodes)
+      throw ConfigError(file + ":1: more than " + std::to_string(kMaxConfigNodes) +
+                        " YAML nodes, counting each use of an alias in full (aliases of aliases?)");
+  }
+  return root;
 }
 
 YAML::Node YamlReader::parseFile(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ":1: is a directory, not a file");
   const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxConfigBytes)
-    throw ConfigError(path + ":1: " + std::to_string(size) + " bytes is more than a configuration file can be (1 MB)");
+  if (!ec) checkConfigSize(size, path);
   std::ifstream in(path);
   if (!in) throw ConfigError(path + ":1: cannot open file");
   std::ostringstream ss;
@@ -253,7 +308,7 @@ void YamlReader::finish() const {
     for (const auto& e : known_) expected += (expected.empty() ? "" : ", ") + e;
     YAML::Mark m = it->first.Mark();
     const std::string where = file_ + ":" + std::to_string(m.is_null() ? 1 : m.line + 1);
-    throw ConfigError(where + ": unknown key '" + k + "' in " +
+    throw ConfigError(where + ": unknown key '" + clip(k) + "' in " +
                       (path_.empty() ? std::string("<document>") : path_) +
                       "; expected one of " + (expected.empty() ? "(none)" : expected));
   }

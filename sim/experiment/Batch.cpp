@@ -183,7 +183,11 @@ std::string trialFile(const std::string& dir, int trial, const std::string& suff
 
 void runAndWriteTrial(const Experiment& e, const TrialHooks& hooks, int trial, const std::string& dir) {
   // Launched programs' logs and setups: dir/trials/<trial>/.
-  const TrialResult r = runTrial(e, trial, hooks, dir + "/trials/" + std::to_string(trial));
+  TrialResult r = runTrial(e, trial, hooks, dir + "/trials/" + std::to_string(trial));
+  // This process's peak resident memory: the trial's worker (ru_maxrss is in
+  // KiB on Linux; launched robot programs are processes of their own).
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) == 0) r.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
   writeAtomic(trialFile(dir, trial, ".tracks.csv"), tracksRows(r, e));
   writeAtomic(trialFile(dir, trial, ".timing.csv"), timingRow(r));
   writeAtomic(trialFile(dir, trial, ".csv"), csvRow(r, static_cast<int>(r.robots.size())));  // last: "done"
@@ -316,7 +320,7 @@ BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchO
     wall.peak_trial_mb = std::max(wall.peak_trial_mb, static_cast<double>(usage.ru_maxrss) / 1024.0);  // KiB -> MB
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && trialDone(opt.out_dir, t)) {
       TrialResult r = parseCsvRow(readFile(trialFile(opt.out_dir, t, ".csv")), static_cast<int>(e.sweep.size()));
-      std::sscanf(readFile(trialFile(opt.out_dir, t, ".timing.csv")).c_str(), "%*d,%lf,%lf", &r.sim_s, &r.wall_s);
+      parseTimingRow(readFile(trialFile(opt.out_dir, t, ".timing.csv")), r);
       pr.trial(e, r, jobs);
       ++out.ran;
       ++wall.ran;
@@ -432,7 +436,7 @@ void assemble(const Experiment& e, const std::string& dir, std::string* notes, c
     if (exists(tm)) {
       const std::string row = readFile(tm);
       timing += row;
-      std::sscanf(row.c_str(), "%*d,%lf,%lf", &r.sim_s, &r.wall_s);
+      parseTimingRow(row, r);
     }
     results.push_back(r);
   }
@@ -445,13 +449,15 @@ void assemble(const Experiment& e, const std::string& dir, std::string* notes, c
   {
     std::ostringstream s;
     double sim = 0, wall = 0;
-    std::vector<double> rtf;
+    std::vector<double> rtf, peak;
     for (const TrialResult& r : results) {
       sim += r.sim_s;
       wall += r.wall_s;
       if (r.wall_s > 0) rtf.push_back(r.realTimeFactor());
+      if (r.peak_mb > 0) peak.push_back(r.peak_mb);
     }
     std::sort(rtf.begin(), rtf.end());
+    std::sort(peak.begin(), peak.end());
     s << "# Wall clock of `" << e.name << "`\n\n"
       << "Real-time factor = simulated s / wall s of one trial in one worker process (per core). "
       << "These figures depend on the machine and its load; nothing else in the folder does (but report.md's "
@@ -463,10 +469,15 @@ void assemble(const Experiment& e, const std::string& dir, std::string* notes, c
       s << "Trials " << results.size() << "; simulated " << fixed(sim, 1) << " s in " << fixed(wall, 1)
         << " s of worker time; real-time factor min " << fixed(rtf.front(), 2) << ", median "
         << fixed(stats::median(rtf), 2) << ", max " << fixed(rtf.back(), 2) << ".\n\n";
-    s << "| Trial | Setup | Position | Simulated s | Wall s | Real-time factor |\n|---:|---|---:|---:|---:|---:|\n";
+    if (!peak.empty())
+      s << "Peak resident memory of one trial process (MB): min " << fixed(peak.front(), 0) << ", median "
+        << fixed(stats::median(peak), 0) << ", max " << fixed(peak.back(), 0) << ".\n\n";
+    s << "| Trial | Setup | Position | Simulated s | Wall s | Real-time factor | Peak MB |\n"
+         "|---:|---|---:|---:|---:|---:|---:|\n";
     for (const TrialResult& r : results)
       s << "| " << r.trial << " | " << r.setup << " | " << r.position << " | " << fixed(r.sim_s, 2) << " | "
-        << fixed(r.wall_s, 2) << " | " << fixed(r.realTimeFactor(), 2) << " |\n";
+        << fixed(r.wall_s, 2) << " | " << fixed(r.realTimeFactor(), 2) << " | "
+        << (r.peak_mb > 0 ? fixed(r.peak_mb, 0) : std::string()) << " |\n";
     writeAtomic(dir + "/timing.md", s.str());
   }
 

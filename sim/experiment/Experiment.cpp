@@ -67,8 +67,13 @@ int Experiment::maxRobots() const {
 }
 
 Experiment Experiment::loadFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ":1: is a directory, not an experiment file");
+  // Refused from its size before it is read.
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec) checkConfigSize(size, path);
   std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot open experiment file");
+  if (!in) throw ConfigError(path + ":1: cannot open experiment file");
   std::ostringstream text;
   text << in.rdbuf();
   return parse(text.str(), path);
@@ -76,14 +81,15 @@ Experiment Experiment::loadFile(const std::string& path) {
 
 namespace {
 
-// The experiment of one tree: the file's own, or a fresh parse of it with
-// swept values set in (Sweep.hpp). Never looks at sweep: beyond its name.
-Experiment parseTree(const YAML::Node& root, const std::string& text, const std::string& source_name) {
+// The experiment of one tree: the file's own, or the file's with swept
+// values set in (Sweep.hpp). Never looks at sweep: beyond its name. `field`:
+// the field already loaded for the file's own tree (a sweep cannot change
+// it), else it is loaded here.
+Experiment parseTree(const YAML::Node& root, const std::string& source_name, const FieldConfig* field = nullptr) {
   if (!root.IsMap()) throw ConfigError(source_name + ":1: an experiment file is a map (name:, seed:, balls:, ...)");
   YamlReader top(root, source_name);
   Experiment e;
   e.source = source_name;
-  e.text = text;
   e.name = top.string("name");
   if (e.name.empty() || e.name.find_first_of("/\\ \t") != std::string::npos)
     top.fail("name", "must be a non-empty word without spaces or slashes (it names the results folder)");
@@ -96,7 +102,7 @@ Experiment parseTree(const YAML::Node& root, const std::string& text, const std:
   runner::readPhysics(top, e.base);
   (void)top.has("sweep");  // Experiment::parse's
   try {
-    e.field = FieldConfig::loadYaml(e.base.fieldFile());
+    e.field = field ? *field : FieldConfig::loadYaml(e.base.fieldFile());
   } catch (const ConfigError& err) {
     top.fail("field", std::string("cannot load the field: ") + err.what());
   }
@@ -280,35 +286,56 @@ Experiment parseTree(const YAML::Node& root, const std::string& text, const std:
 
 Experiment Experiment::parse(const std::string& text, const std::string& source_name) {
   const YAML::Node root = YamlReader::parse(text, source_name);
-  Experiment e = parseTree(root, text, source_name);
+  Experiment e = parseTree(root, source_name);
+  e.text = text;
   if (!root["sweep"]) return e;
   const YamlReader top(root, source_name);
   e.sweep = readSweep(top);
   for (const auto& kv : root)
     if (kv.first.IsScalar() && kv.first.Scalar() == "sweep")
       e.sweep_line = kv.first.Mark().is_null() ? 1 : kv.first.Mark().line + 1;
+  // Every check below reads the whole tree (all nodes but the sweep list's):
+  // refused first if that is too much. With one path a cell is a value
+  // alone, checked once.
+  const int n = sweepCells(e.sweep);
+  const bool one_axis = e.sweep.size() == 1;
+  long long checks = one_axis ? 0 : n;
+  for (const SweepAxis& a : e.sweep) checks += static_cast<long long>(a.values.size());
+  const long long nodes = static_cast<long long>(expandedNodes(root, kMaxConfigNodes)) -
+                          static_cast<long long>(expandedNodes(root["sweep"], kMaxConfigNodes));
+  if (checks * nodes > kMaxSweepNodes) {
+    const std::string what = one_axis ? "each value" : "each value alone, then each of the " + std::to_string(n) + " cells";
+    throw ConfigError(source_name + ":" + std::to_string(e.sweep_line) + ": sweep: " + std::to_string(checks) +
+                      " checks (" + what + ") of a file of " + std::to_string(nodes) + " YAML nodes is more than " +
+                      std::to_string(kMaxSweepNodes) + " nodes to read; sweep fewer values or shorten the file");
+  }
   // Each value alone on the base, so an error names the value's line; then
-  // every cell (values that are fine alone may clash together).
+  // every cell (values that are fine alone may clash together). Values are
+  // set into the file's own tree and taken back after each check.
+  SweepTree tree(root);
   for (SweepAxis& a : e.sweep)
     for (size_t v = 0; v < a.values.size(); ++v) {
-      YAML::Node tree = YamlReader::parse(text, source_name);
-      applySweepValue(tree, a, static_cast<int>(v), source_name);
+      tree.apply(a, static_cast<int>(v), source_name);
       try {
-        a.values[v].alone = std::make_shared<const Experiment>(parseTree(tree, text, source_name));
+        a.values[v].alone = std::make_shared<const Experiment>(parseTree(root, source_name, &e.field));
       } catch (const ConfigError& err) {
         throw blameValue(source_name, a, static_cast<int>(v), err.what());
       }
+      tree.restore();
     }
-  const int n = sweepCells(e.sweep);
   for (int c = 0; c < n; ++c) {
-    YAML::Node tree = YamlReader::parse(text, source_name);
+    if (one_axis) {
+      e.cells.push_back(e.sweep[0].values[c].alone);
+      continue;
+    }
     const std::vector<int> choice = sweepChoice(e.sweep, c);
-    for (size_t k = 0; k < e.sweep.size(); ++k) applySweepValue(tree, e.sweep[k], choice[k], source_name);
+    for (size_t k = 0; k < e.sweep.size(); ++k) tree.apply(e.sweep[k], choice[k], source_name);
     try {
-      e.cells.push_back(std::make_shared<const Experiment>(parseTree(tree, text, source_name)));
+      e.cells.push_back(std::make_shared<const Experiment>(parseTree(root, source_name, &e.field)));
     } catch (const ConfigError& err) {
       throw blameCell(source_name, e.sweep_line, e.sweep, c, err.what());
     }
+    tree.restore();
   }
   if (e.numTrials() > 1000000)
     throw ConfigError(source_name + ":" + std::to_string(e.sweep_line) + ": sweep: " + std::to_string(e.numTrials()) +

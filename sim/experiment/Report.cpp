@@ -220,13 +220,27 @@ std::string wallClockSection(const Experiment& e, const std::vector<TrialResult>
   for (const Setup& st : e.setups) row("`" + st.name + "`", st.name);
   if (e.setups.size() > 1) row("all", "");
   s << "\n";
+  // Peak resident memory, as each trial's process recorded it (timing.csv).
+  double peak = 0;
+  int recorded = 0;
+  for (const TrialResult& r : results)
+    if (r.peak_mb > 0) {
+      peak = std::max(peak, r.peak_mb);
+      ++recorded;
+    }
+  if (recorded > 0)
+    s << "Peak resident memory of one trial process: " << fixed(peak, 0) << " MB (the largest of " << recorded
+      << " trials; per trial in timing.csv).\n\n";
   if (run && run->ran > 0) {
     const long w = std::lround(run->wall_s);
     s << "The run that completed this folder ran " << run->ran << " trial(s) with " << run->jobs
       << " worker process(es) in " << w / 60 << " min " << w % 60 << " s of wall time ("
       << fixed(run->wall_s, 1) << " s): " << fixed(run->trial_sim_s, 1) << " simulated s, "
       << fixed(run->wall_s > 0 ? run->trial_sim_s / run->wall_s : 0, 2) << " simulated s per wall s on the whole "
-      << "machine. Peak resident memory of one trial process: " << fixed(run->peak_trial_mb, 0) << " MB.\n";
+      << "machine.";
+    // Trials of folders written before timing.csv had peak_mb: the run's.
+    if (recorded == 0) s << " Peak resident memory of one trial process: " << fixed(run->peak_trial_mb, 0) << " MB.";
+    s << "\n";
   } else {
     s << "This folder was assembled from earlier runs or merged shards: no single run's wall time.\n";
   }

@@ -81,6 +81,10 @@ std::vector<SweepAxis> readSweep(const YamlReader& top) {
   std::vector<SweepAxis> axes;
   const std::string file = top.file();
   for (const auto& kv : sweep) {
+    if (axes.size() == static_cast<size_t>(kMaxSweepPaths))
+      throw ConfigError(file + ":" + lineOf(kv.first) + ": sweep: more than " + std::to_string(kMaxSweepPaths) +
+                        " paths (1000 cells allow 9 with two values or more; a setting with one value belongs in "
+                        "the experiment itself)");
     SweepAxis a;
     a.path = kv.first.IsScalar() ? kv.first.Scalar() : "";
     a.line = kv.first.Mark().is_null() ? 1 : kv.first.Mark().line + 1;
@@ -188,9 +192,17 @@ void applySweepValue(YAML::Node root, const SweepAxis& axis, int value, const st
     }
     if (index < 0 && allDigits(seg[1]) && std::stoi(seg[1]) < static_cast<int>(setups.size())) index = std::stoi(seg[1]);
     if (index < 0) fail("no setup '" + seg[1] + "' (setups: " + names + "; or an index from 0)");
-    // The setup's own copy: a robots list shared by alias stays unchanged in the other setups.
-    const YAML::Node fresh = YAML::Clone(setups[index]);
-    setups[index] = fresh;
+    // A new setups list in the file's place, holding the same setups but a
+    // copy of this one (a robots list shared by alias stays unchanged in the
+    // other setups): no node of the file's tree changes, so SweepTree can put
+    // it back. The list is made as root's own entry: yaml-cpp copies the node
+    // set of what is assigned into a node into that node's set, so building
+    // it as a fresh node would copy the whole file's set each time.
+    const YAML::Node old = setups;
+    const YAML::Node fresh = YAML::Clone(old[index]);
+    root.remove("setups");
+    YAML::Node list = root["setups"];
+    for (size_t i = 0; i < old.size(); ++i) list.push_back(static_cast<int>(i) == index ? fresh : old[i]);
     at.reset(fresh);
     next = 2;
     if (seg[2] == "robots") {
@@ -209,6 +221,7 @@ void applySweepValue(YAML::Node root, const SweepAxis& axis, int value, const st
   for (size_t k = next; k + 1 < seg.size(); ++k) {
     YAML::Node child = at[seg[k]];
     if (!child.IsDefined() || child.IsNull()) {
+      at.remove(seg[k]);  // a new entry: assigning to a null one would change the file's node
       at[seg[k]] = YAML::Node(YAML::NodeType::Map);
     } else if (!child.IsMap()) {
       fail("'" + joinPath(seg, k + 1) + "' is " + kindOf(child) + " in the experiment, not a map: it has no key '" +
@@ -218,6 +231,23 @@ void applySweepValue(YAML::Node root, const SweepAxis& axis, int value, const st
   }
   if (at[seg.back()].IsDefined()) at.remove(seg.back());  // replaced, not written through an alias
   at[seg.back()] = v;
+}
+
+SweepTree::SweepTree(YAML::Node root) : root_(root) {
+  const YAML::Node& c = root_;  // const: never inserts
+  for (const std::string& key : kSettings) saved_.emplace_back(key, c[key]);
+  saved_.emplace_back("setups", c["setups"]);
+}
+
+void SweepTree::apply(const SweepAxis& axis, int value, const std::string& file) {
+  applySweepValue(root_, axis, value, file);
+}
+
+void SweepTree::restore() {
+  for (const auto& [key, node] : saved_) {
+    root_.remove(key);
+    if (node.IsDefined()) root_[key] = node;
+  }
 }
 
 ConfigError blameValue(const std::string& file, const SweepAxis& axis, int value, const std::string& what) {

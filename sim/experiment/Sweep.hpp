@@ -10,17 +10,23 @@
 // Sweepable: the scenario settings an experiment takes (team_comms.*,
 // game.*, vision.*, noise or noise.*, physics.*) and behaviour overrides
 // (setups.<name or index>.config.*, setups.<name or index>.robots.<index>.config.*).
-// A value is set into a fresh parse of the file at its path (missing maps
-// are created) before the experiment's own readers (the scenario's and the
-// behaviour's) validate it: one parser for base and swept values. An error
-// a swept value causes is said at the value's line in the sweep list.
+// A value is set into the file's tree at its path (missing maps are
+// created; SweepTree puts the tree back after each cell) before the
+// experiment's own readers (the scenario's and the behaviour's) validate it:
+// one parser for base and swept values. An error a swept value causes is
+// said at the value's line in the sweep list.
 //
 // Cells are numbered like nested loops in file order: the first path varies
-// slowest. At most kMaxSweepCells cells.
+// slowest. At most kMaxSweepCells cells, kMaxSweepPaths paths and
+// kMaxSweepNodes YAML nodes read over all checks (each value alone, then
+// each cell, reads the whole file's tree: the work is (values + cells) x
+// nodes), each refused at its line (16 paths of one value each took 1 s,
+// 3,000 took 65 s: each cell copied the setup once per path).
 #pragma once
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/world/ConfigError.hpp"
@@ -30,6 +36,14 @@ namespace simswift::experiment {
 struct Experiment;
 
 constexpr int kMaxSweepCells = 1000;
+// Paths in one sweep: a cell sets every path (copying what it changes).
+constexpr int kMaxSweepPaths = 16;
+// (values + cells; values alone with one axis) x the file's YAML nodes but
+// the sweep list's: the nodes the checks read in all. The readers take about
+// 1 us per node (a 2 x 2 sweep over 2,500 setups, 45,000 nodes: 8 checks in
+// 0.42 s with the parse); the shipped experiments have 110-210 nodes, so
+// 1,000 cells fit with room to spare.
+constexpr long long kMaxSweepNodes = 1LL << 19;
 
 struct SweepValue {
   std::string label;  // as written: a scalar's text, else flow YAML
@@ -58,13 +72,28 @@ std::vector<int> sweepChoice(const std::vector<SweepAxis>& axes, int cell);
 std::string cellLabel(const std::vector<SweepAxis>& axes, int cell);
 
 // Sets value `value` of `axis` (its node in root's own sweep: list) at the
-// axis's path in `root`, a fresh parse of the experiment file. The setup or
-// settings block it changes is copied first, so YAML aliases (robots:
-// *three) do not carry the value into other setups. Throws ConfigError at
+// axis's path in `root`, the experiment file's tree. It replaces entries of
+// `root` only (the settings block or the setups list it changes, copied
+// first), never a node of the file's tree, so YAML aliases (robots: *three)
+// do not carry the value into other setups and SweepTree can undo it. Throws ConfigError at
 // the path's line if the path is not sweepable or leads through something
 // the base does not have (no such setup or robot, a scalar where a map
 // would be).
 void applySweepValue(YAML::Node root, const SweepAxis& axis, int value, const std::string& file);
+
+// The file's tree with values applied and taken back: each cell is checked
+// on the nodes of the one parse (a fresh parse per cell cost cells x file,
+// the sweep's own list included: 1,000 values took 85 s in a 1 MB file).
+class SweepTree {
+ public:
+  explicit SweepTree(YAML::Node root);  // saves the entries values may replace
+  void apply(const SweepAxis& axis, int value, const std::string& file);
+  void restore();                       // the saved entries back in place
+
+ private:
+  YAML::Node root_;
+  std::vector<std::pair<std::string, YAML::Node>> saved_;
+};
 
 // An error found while validating with swept values, said where the values
 // are: one value ("file:line: sweep.<path>[i] = <value>: <what>") or a cell

@@ -278,11 +278,21 @@ std::string tracksRows(const TrialResult& r, const Experiment& e) {
   return s.str();
 }
 
-std::string timingHeader() { return "trial,sim_s,wall_s,real_time_factor\n"; }
+std::string timingHeader() { return "trial,sim_s,wall_s,real_time_factor,peak_mb\n"; }
 
 std::string timingRow(const TrialResult& r) {
   return std::to_string(r.trial) + "," + fixed(r.sim_s, 2) + "," + fixed(r.wall_s, 3) + "," +
-         fixed(r.realTimeFactor(), 2) + "\n";
+         fixed(r.realTimeFactor(), 2) + "," + fixed(r.peak_mb, 1) + "\n";
+}
+
+void parseTimingRow(const std::string& row, TrialResult& r) {
+  double sim = 0, wall = 0, rtf = 0, peak = 0;
+  const int n = std::sscanf(row.c_str(), "%*d,%lf,%lf,%lf,%lf", &sim, &wall, &rtf, &peak);
+  if (n >= 2) {
+    r.sim_s = sim;
+    r.wall_s = wall;
+  }
+  r.peak_mb = n >= 4 ? peak : 0;
 }
 
 }  // namespace simswift::experiment

@@ -63,8 +63,9 @@ struct TrialResult {
   std::string failed;
   std::vector<RobotOutcome> robots;
   std::vector<TrackSample> tracks;
-  // Timing (wall clock), reporting only.
+  // Timing (wall clock) and memory, reporting only (they depend on the machine).
   double sim_s = 0, wall_s = 0;
+  double peak_mb = 0;  // MB (MiB): peak resident memory of the trial's process, 0 = not recorded
   double realTimeFactor() const { return wall_s > 0 ? sim_s / wall_s : 0; }
 };
 
@@ -83,9 +84,12 @@ TrialResult parseCsvRow(const std::string& line, int swept_paths = 0);
 // tracks.csv
 std::string tracksHeader();
 std::string tracksRows(const TrialResult& r, const Experiment& e);
-// timing.csv (wall clock)
+// timing.csv (wall clock; peak_mb: the trial process's peak resident memory)
 std::string timingHeader();
 std::string timingRow(const TrialResult& r);
+// Reads sim_s, wall_s and peak_mb (absent in folders written before it: 0)
+// of a timingRow into `r`.
+void parseTimingRow(const std::string& row, TrialResult& r);
 
 std::string fixed(double v, int decimals);  // "%.*f", locale-free
 

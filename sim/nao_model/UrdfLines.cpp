@@ -4,6 +4,7 @@
 #include <tinyxml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -20,12 +21,17 @@ namespace {
   throw ModelError(source + ":" + std::to_string(line) + ": " + what);
 }
 
-// Deepest element nesting in `xml`, found by a linear scan (comments,
-// processing instructions, declarations and quoted attribute values
-// skipped). Stops counting as soon as `limit` is passed and returns the line
-// where that happened in `*line`.
-int maxDepth(const std::string& xml, int limit, int* line) {
-  int depth = 0, deepest = 0, row = 1;
+// The first limit of UrdfLimits (depth, elements, attributes) `xml` passes,
+// found by one linear scan (comments, processing instructions, declarations
+// and quoted attribute values skipped): what is wrong and the line of the
+// tag where it was passed. Empty `what` if none.
+struct Excess {
+  std::string what;
+  int line = 1;
+};
+
+Excess scanLimits(const std::string& xml) {
+  int depth = 0, elements = 0, row = 1;
   const size_t n = xml.size();
   auto skipTo = [&](size_t& i, const char* end) {
     const size_t e = xml.find(end, i);
@@ -35,8 +41,8 @@ int maxDepth(const std::string& xml, int limit, int* line) {
   };
   for (size_t i = 0; i < n;) {
     const char c = xml[i];
-    if (c == '\n') ++row;
     if (c != '<') {
+      if (c == '\n') ++row;
       ++i;
       continue;
     }
@@ -52,8 +58,16 @@ int maxDepth(const std::string& xml, int limit, int* line) {
       if (depth > 0) --depth;
       skipTo(i, ">");
     } else {
-      // An opening tag: find its end outside quotes; "/>" closes it at once.
+      // An opening tag: find its end outside quotes, counting attributes
+      // (one '=' each); "/>" closes it at once.
+      const int tag_row = row;
+      size_t name_end = i + 1;
+      while (name_end < n && name_end - i <= 40 && !std::isspace(static_cast<unsigned char>(xml[name_end])) &&
+             xml[name_end] != '/' && xml[name_end] != '>')
+        ++name_end;
+      const std::string name = xml.substr(i + 1, name_end - i - 1);
       char quote = 0;
+      int attributes = 0;
       size_t j = i + 1;
       for (; j < n; ++j) {
         const char d = xml[j];
@@ -62,23 +76,27 @@ int maxDepth(const std::string& xml, int limit, int* line) {
           if (d == quote) quote = 0;
         } else if (d == '"' || d == '\'') {
           quote = d;
+        } else if (d == '=') {
+          if (++attributes > UrdfLimits::kMaxAttributes)
+            return {"<" + name + "> has more than " + std::to_string(UrdfLimits::kMaxAttributes) +
+                        " attributes (a URDF element needs at most 6)",
+                    tag_row};
         } else if (d == '>') {
           break;
         }
       }
+      if (++elements > UrdfLimits::kMaxElements)
+        return {"more than " + std::to_string(UrdfLimits::kMaxElements) +
+                    " elements (the NAO's URDF has about 600)",
+                tag_row};
       const bool empty = j < n && j > i + 1 && xml[j - 1] == '/';
-      if (!empty) {
-        deepest = std::max(deepest, ++depth);
-        if (deepest > limit) {
-          *line = row;
-          return deepest;
-        }
-      }
+      if (!empty && ++depth > UrdfLimits::kMaxDepth)
+        return {"elements nested more than " + std::to_string(UrdfLimits::kMaxDepth) + " deep (a URDF needs 5)",
+                tag_row};
       i = j + 1;
     }
   }
-  *line = row;
-  return deepest;
+  return {};
 }
 
 // Numeric attributes URDF defines: element, attribute, how many numbers.
@@ -153,11 +171,7 @@ UrdfLines::UrdfLines(const std::string& xml, const std::string& source) {
     const int row = 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
     fail(source, row, "URDF contains a NUL byte (not a text file?)");
   }
-  int line = 1;
-  const int depth = maxDepth(xml, UrdfLimits::kMaxDepth, &line);
-  if (depth > UrdfLimits::kMaxDepth)
-    fail(source, line, "elements nested more than " + std::to_string(UrdfLimits::kMaxDepth) +
-                           " deep (a URDF needs 5)");
+  if (const Excess e = scanLimits(xml); !e.what.empty()) fail(source, e.line, e.what);
 
   TiXmlDocument doc;
   doc.Parse(xml.c_str(), nullptr, TIXML_ENCODING_UTF8);
@@ -224,11 +238,30 @@ size_t UrdfLines::collisionCount(const std::string& link) const {
 }
 
 int UrdfLines::lineMentioned(const std::string& text) const {
-  for (const auto* m : {&links_, &joints_})
-    for (const auto& [name, el] : *m)
-      if (!name.empty() && (text.find("[" + name + "]") != std::string::npos ||
-                            text.find("'" + name + "'") != std::string::npos))
-        return el.line;
+  // Each "[...]" (innermost) and '...' in one pass, looked up as it closes
+  // (searching the text once per known name took time links x text).
+  auto lineOf = [&](size_t open, size_t close) -> int {
+    const std::string name = text.substr(open + 1, close - open - 1);
+    if (name.empty()) return 0;
+    if (auto it = links_.find(name); it != links_.end()) return it->second.line;
+    if (auto it = joints_.find(name); it != joints_.end()) return it->second.line;
+    return 0;
+  };
+  size_t bracket = std::string::npos, quote = std::string::npos;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '[') {
+      bracket = i;
+    } else if (c == ']' && bracket != std::string::npos) {
+      if (const int line = lineOf(bracket, i)) return line;
+      bracket = std::string::npos;
+    } else if (c == '\'') {
+      // An unknown name's closing quote may open the next name.
+      if (quote != std::string::npos)
+        if (const int line = lineOf(quote, i)) return line;
+      quote = i;
+    }
+  }
   return robot_line_;
 }
 

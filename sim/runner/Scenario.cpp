@@ -369,8 +369,7 @@ Scenario Scenario::loadFile(const std::string& path) {
   if (!in) throw ConfigError(path + ":1: cannot open scenario file");
   // yaml-cpp reads everything at once: refuse a huge file first.
   const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxConfigBytes)
-    throw ConfigError(path + ":1: " + std::to_string(size) + " bytes is more than a scenario can be (1 MB)");
+  if (!ec) checkConfigSize(size, path);
   std::ostringstream text;
   text << in.rdbuf();
   return parse(text.str(), path);

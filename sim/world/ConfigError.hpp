@@ -10,7 +10,10 @@
 namespace simswift {
 
 using agent::config::ConfigError;
+using agent::config::checkConfigSize;
+using agent::config::expandedNodes;
 using agent::config::kMaxConfigBytes;
+using agent::config::kMaxConfigNodes;
 using agent::config::Range;
 using agent::config::YamlReader;
 

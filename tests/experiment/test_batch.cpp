@@ -4,6 +4,7 @@
 // from results.csv. Also the found rule and the fallen-robot rule.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -244,6 +245,43 @@ TEST(Batch, ReportNumbersFollowFromTheCsv) {
   const std::vector<std::string>& tot = rows["Total:"];
   EXPECT_EQ(std::stoi(tot[1]), 6);
   EXPECT_EQ(std::stoi(tot[2]), static_cast<int>(times[1].size() + times[2].size()));
+
+  // Each trial process's peak resident memory (MB) is in timing.csv; the
+  // report's wall-clock section gives the largest.
+  const std::vector<std::string> timing = split(readAll(dir + "/timing.csv"), '\n');
+  ASSERT_EQ(timing[0], "trial,sim_s,wall_s,real_time_factor,peak_mb");
+  double peak = 0;
+  int rows_with_peak = 0;
+  for (size_t i = 1; i < timing.size(); ++i) {
+    if (timing[i].empty()) continue;
+    const std::vector<std::string> f = split(timing[i], ',');
+    ASSERT_EQ(f.size(), 5u) << timing[i];
+    EXPECT_GT(std::stod(f[4]), 1.0) << timing[i];  // a process holds at least 1 MB
+    peak = std::max(peak, std::stod(f[4]));
+    ++rows_with_peak;
+  }
+  EXPECT_EQ(rows_with_peak, 6);
+  EXPECT_NE(readAll(dir + "/report.md").find("Peak resident memory of one trial process: " + fixed(peak, 0) +
+                                             " MB (the largest of 6 trials"),
+            std::string::npos);
+  EXPECT_NE(readAll(dir + "/timing.md").find("| Peak MB |"), std::string::npos);
+}
+
+// A timing.csv row written before peak_mb: read, memory not recorded.
+TEST(Batch, TimingRowsWithAndWithoutPeakMemory) {
+  TrialResult r;
+  r.trial = 4;
+  r.sim_s = 12.5;
+  r.wall_s = 0.5;
+  r.peak_mb = 42.25;
+  TrialResult back;
+  parseTimingRow(timingRow(r), back);
+  EXPECT_DOUBLE_EQ(back.sim_s, 12.5);
+  EXPECT_DOUBLE_EQ(back.wall_s, 0.5);
+  EXPECT_NEAR(back.peak_mb, 42.25, 0.05);  // one decimal
+  parseTimingRow("4,12.50,0.500,25.00\n", back);
+  EXPECT_DOUBLE_EQ(back.sim_s, 12.5);
+  EXPECT_EQ(back.peak_mb, 0.0);
 }
 
 // The found rule needs the ball in a camera's view: 0.25 m behind a standing

@@ -1,7 +1,8 @@
 // Seeded, in-process mutation fuzzer over the three loaders (URDF, field,
 // scenario). Each case takes a shipped input, applies 1-4 random mutations
 // (numbers replaced by extremes, lines deleted/duplicated/swapped, bytes
-// flipped, deep nesting, truncation) and runs it through FuzzCases.hpp.
+// flipped, deep nesting, truncation, rarely growth to 0.25-3 MB) and runs it
+// through FuzzCases.hpp.
 //
 //   fuzz_loaders [--cases N] [--seed S] [--only K] [--timeout S] [--dump DIR]
 //
@@ -11,6 +12,7 @@
 // without a file; 3 on a hang (a case over --timeout s of CPU time, default
 // 10, or 12x that of wall clock); a crash
 // ends the process (the case number is printed first).
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -82,8 +84,30 @@ struct Mutator {
     return s;
   }
 
+  // Grows `s` to 0.25-3 MB: one line repeated, or (one time in four) made
+  // that long. Any input must be read or refused in time linear in its size
+  // (a 3 MB URDF with a NUL byte near its end once took 33 s).
+  void grow(std::string& s) {
+    auto ls = lines(s);
+    const size_t i = below(ls.size());
+    const size_t target = (size_t{256} << 10) + below(size_t{3} << 20);  // bytes
+    if (ls[i].empty()) ls[i] = "x";
+    const std::string unit = ls[i];
+    if (below(4) == 0) {
+      while (ls[i].size() < target) ls[i] += unit;
+    } else {
+      const size_t copies = std::min<size_t>(target / (unit.size() + 1), 200000);
+      ls.insert(ls.begin() + static_cast<long>(i), copies, unit);
+    }
+    s = join(ls);
+  }
+
   void mutate(std::string& s) {
     if (s.empty()) s = "x";
+    if (below(40) == 0) {  // rare: large inputs cost time in every loader
+      grow(s);
+      return;
+    }
     switch (below(10)) {
       case 0: case 1: case 2: case 3: {  // a number becomes an extreme (the most telling mutation)
         size_t b, len;

@@ -3,6 +3,9 @@
 // placement, absurd theta, walk speeds, durations and seeds, directories).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
+
 #include "sim/runner/Scenario.hpp"
 #include "tests/support/ConfigErrors.hpp"
 
@@ -98,4 +101,21 @@ TEST(ScenarioHardening, RelativePathsResolveAgainstTheScenarioFolderThenTheDataF
   } catch (const ConfigError& e) {
     EXPECT_EQ(std::string(e.what()).rfind("/tmp/x.yaml:2: model: 'nope.urdf' not found", 0), 0u) << e.what();
   }
+}
+
+TEST(ScenarioHardening, OversizeAndBinaryFilesAreRefusedWithTheirLine) {
+  // Refused from the file's size, before it is read or parsed.
+  const std::string path = ::testing::TempDir() + "simswift_test_big_scenario.yaml";
+  {
+    std::ofstream out(path);
+    out << kOneRobot << std::string(300 * 1024, '#') << "\n";
+  }
+  const std::string err = simswift::testing::configError([&] { Scenario::loadFile(path); });
+  EXPECT_EQ(err.rfind(path + ":1: ", 0), 0u) << err;
+  EXPECT_NE(err.find("bytes is more than a configuration file can be (256 KB)"), std::string::npos) << err;
+  std::remove(path.c_str());
+
+  std::string text = std::string(kOneRobot) + "duration: 5\n";
+  text.insert(text.find("duration"), std::string("x\0", 2));  // line 3
+  expectRefused(text, "s.yaml:3: contains a NUL byte");
 }
