@@ -155,6 +155,29 @@ struct SkillConfig {
   // the hard limit.
   double keep_out_distance = 550.0;   // mm: two 150 mm radii plus 250 mm for localisation error
   double blocked_arrive_distance = 900.0;  // mm
+  // Sonar avoidance: what the chest sonars report close by is avoided like a
+  // teammate (keep-out, repulsion, a target it is nearer to counts as
+  // reached within blocked_arrive_distance), whatever the team packets say.
+  // This catches a teammate whose packets put it elsewhere (a robot whose
+  // localisation took the field's mirror twin walked into one standing on
+  // its target, docs/experiment.md). The era's rule: rUNSWift 2016 release,
+  // util/Sonar.py counts a side as having a nearby object while its first
+  // echo reads under 0.4 m, after 3 such frames and for 10 frames after the
+  // last, and skills/WalkToPointV2.py then avoids an obstacle
+  // Constants.ROBOT_DIAM (450 mm) away, 30 deg to that side.
+  bool sonar_avoid = true;
+  double sonar_near_distance = 400.0;     // mm: a first echo under this is near
+  double sonar_min_frames = 3;            // behaviour frames of near echoes before a side counts
+  double sonar_hold_frames = 10;          // behaviour frames a side still counts after the last
+  double sonar_obstacle_distance = 450.0; // mm, robot centre to the assumed obstacle centre
+  double sonar_obstacle_angle = 0.5236;   // rad (30 deg) off straight ahead, to the side that heard it
+  // Ours, not the era's: while a side counts as near the robot also steps
+  // back from it at sonar_back_off_speed without turning (so it never stops
+  // within a turning robot's reach), and a target within
+  // blocked_arrive_distance counts as reached only once no side counts as
+  // near, with an echo (any, within the sonar's range) in front nearer the
+  // target than the robot (the one standing on the target is left to it).
+  double sonar_back_off_speed = 100.0;    // mm/s
   // HeadScan. The stop at a 2017 search point (thesis 4.2.3: "scans the
   // robot head ... Failing to find the ball, ... spins the robot around";
   // neither how far nor how fast is said, and the code is not public):

@@ -69,6 +69,14 @@ struct WalkLimits {
   double max_turn = motion::WalkConfig{}.max_turn;        // rad/s
 };
 
+// The chest sonars' first echoes as the behaviour sees them: the nearest
+// echo of each side (mm; no echo: the NAO's 2.55 m) and whether that side
+// counts as having an object close by (SonarFilter, over frames).
+struct SonarState {
+  double left = 2550, right = 2550;  // mm
+  bool near_left = false, near_right = false;
+};
+
 struct BehaviourInputs {
   double time = 0;        // s, simulated time of this tick (monotonic)
   int player = 2;         // this robot's player number
@@ -78,6 +86,7 @@ struct BehaviourInputs {
   std::vector<Teammate> teammates;  // this robot excluded
   GameInfo game;
   WalkLimits walk;
+  SonarState sonar;
 };
 
 }  // namespace agent::behaviour

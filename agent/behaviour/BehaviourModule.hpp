@@ -14,6 +14,8 @@
 #include "agent/behaviour/Behaviour.hpp"
 #include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/behaviour/BehaviourInputs.hpp"
+#include "agent/behaviour/SonarFilter.hpp"
+#include "agent/blackboard/FrameInfo.hpp"
 #include "agent/framework/Module.hpp"
 
 namespace agent::behaviour {
@@ -31,10 +33,12 @@ blackboard::FindBallTeammate findBallTeammate(const Teammate& t);
 class BehaviourModule
     : public framework::ModuleOf<framework::Reads<blackboard::FrameInfo, blackboard::LocalisationEstimate,
                                                   blackboard::BallEstimate, blackboard::TeamInfo,
-                                                  blackboard::GameInfo, blackboard::MotionState>,
+                                                  blackboard::GameInfo, blackboard::MotionState,
+                                                  blackboard::SensorFrame>,
                                  framework::Writes<blackboard::MotionRequest, blackboard::FindBallInfo>> {
  public:
-  explicit BehaviourModule(const BehaviourModuleConfig& c) : c_(c), behaviour_(c.behaviour) {}
+  explicit BehaviourModule(const BehaviourModuleConfig& c)
+      : c_(c), behaviour_(c.behaviour), sonar_(c.behaviour.skills) {}
   const char* name() const override { return "behaviour"; }
   const Behaviour& behaviour() const { return behaviour_; }
 
@@ -46,6 +50,7 @@ class BehaviourModule
   BehaviourInputs inputsFrom(const In& board) const;
   BehaviourModuleConfig c_;
   Behaviour behaviour_;
+  SonarFilter sonar_;  // the chest sonars over frames (inputs' sonar)
   bool was_uniform_ = true;
   int64_t resets_ = 0;
 };

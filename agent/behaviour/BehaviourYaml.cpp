@@ -101,6 +101,13 @@ void readSkills(const YamlReader& r, ab::SkillConfig& k) {
   num(r, "obstacle_timeout", k.obstacle_timeout, Range::nonNegative());
   num(r, "keep_out_distance", k.keep_out_distance, Range::closed(0, 3000));
   num(r, "blocked_arrive_distance", k.blocked_arrive_distance, Range::closed(0, 5000));
+  flag(r, "sonar_avoid", k.sonar_avoid);
+  num(r, "sonar_near_distance", k.sonar_near_distance, Range::closed(0, 2550));
+  num(r, "sonar_min_frames", k.sonar_min_frames, Range::closed(0, 100));
+  num(r, "sonar_hold_frames", k.sonar_hold_frames, Range::closed(0, 100));
+  num(r, "sonar_obstacle_distance", k.sonar_obstacle_distance, Range::closed(0, 2000));
+  num(r, "sonar_obstacle_angle", k.sonar_obstacle_angle, Range::closed(0, 1.5708));
+  num(r, "sonar_back_off_speed", k.sonar_back_off_speed, Range::closed(0, 500));
   num(r, "scan_yaw", k.scan_yaw, Range::closed(0, 2.0857));
   num(r, "scan_speed", k.scan_speed, Range::closed(0.01, 8.27));
   num(r, "scan_pitch", k.scan_pitch, Range::closed(-0.67, 0.51));

@@ -6,6 +6,10 @@
 
 namespace agent::behaviour {
 
+namespace {
+constexpr double kSonarNoEchoMm = 2550.0;  // the NAO's "no echo" reading, 2.55 m
+}  // namespace
+
 using blackboard::ActionType;
 using blackboard::BodyCommand;
 
@@ -27,6 +31,7 @@ Point2 WalkTo::repulsion(const BehaviourInputs& in, Point2 target) const {
   std::vector<Obstacle> obs;
   for (const Teammate& t : in.teammates)
     if (!t.penalised && t.time_since_heard <= s_.obstacle_timeout) obs.push_back({position(t.pose), s_.robot_radius});
+  for (const Point2& p : sonarObstacles(in)) obs.push_back({p, s_.robot_radius});
   for (double sx : {-1.0, 1.0})
     for (double sy : {-1.0, 1.0})
       obs.push_back({{sx * f_.length / 2, sy * f_.goal_post_y}, f_.goal_post_radius});
@@ -58,13 +63,26 @@ Point2 WalkTo::repulsion(const BehaviourInputs& in, Point2 target) const {
   return rep;
 }
 
+std::vector<Point2> WalkTo::sonarObstacles(const BehaviourInputs& in) const {
+  std::vector<Point2> out;
+  if (!s_.sonar_avoid) return out;
+  const Pose2& me = in.self.pose;
+  for (int side : {1, -1}) {  // left, right
+    if (!(side > 0 ? in.sonar.near_left : in.sonar.near_right)) continue;
+    const double a = me.theta + side * s_.sonar_obstacle_angle;
+    out.push_back({me.x + s_.sonar_obstacle_distance * std::cos(a), me.y + s_.sonar_obstacle_distance * std::sin(a)});
+  }
+  return out;
+}
+
 namespace {
-// Teammates the walk keeps clear of: heard recently, not penalised (a
-// penalised robot is off the field).
+// What the walk keeps clear of: teammates heard recently, not penalised (a
+// penalised robot is off the field), and what the sonars report close by.
 template <typename F>
-void forEachNearTeammate(const BehaviourInputs& in, const SkillConfig& s, F f) {
+void forEachNearRobot(const BehaviourInputs& in, const SkillConfig& s, const std::vector<Point2>& sonar, F f) {
   for (const Teammate& t : in.teammates)
     if (!t.penalised && t.time_since_heard <= s.obstacle_timeout) f(position(t.pose));
+  for (const Point2& p : sonar) f(p);
 }
 }  // namespace
 
@@ -72,16 +90,30 @@ bool WalkTo::blocked(const BehaviourInputs& in, Point2 target) const {
   const Point2 me = position(in.self.pose);
   const double mine = distance(me, target);
   if (mine > s_.blocked_arrive_distance) return false;
+  // What the sonars hear at all (not only near): an obstacle one robot
+  // radius beyond the echo, on that side.
+  std::vector<Point2> heard;
+  if (s_.sonar_avoid)
+    for (int side : {1, -1}) {
+      const double echo = side > 0 ? in.sonar.left : in.sonar.right;
+      if (!(echo < kSonarNoEchoMm)) continue;
+      const double a = in.self.pose.theta + side * s_.sonar_obstacle_angle, r = echo + s_.robot_radius;
+      heard.push_back({me.x + r * std::cos(a), me.y + r * std::sin(a)});
+    }
   bool b = false;
-  forEachNearTeammate(in, s_, [&](Point2 t) {
+  forEachNearRobot(in, s_, heard, [&](Point2 t) {
     if (distance(t, target) < mine && distance(t, me) <= s_.keep_out_distance + 100.0) b = true;
   });
   return b;
 }
 
+bool WalkTo::sonarNear(const BehaviourInputs& in) const {
+  return s_.sonar_avoid && (in.sonar.near_left || in.sonar.near_right);
+}
+
 Point2 WalkTo::keepOut(const BehaviourInputs& in, Point2 v) const {
   const Point2 me = position(in.self.pose);
-  forEachNearTeammate(in, s_, [&](Point2 t) {
+  forEachNearRobot(in, s_, sonarObstacles(in), [&](Point2 t) {
     const double dx = t.x - me.x, dy = t.y - me.y;
     const double d = std::hypot(dx, dy);
     if (d < 1e-6 || d > s_.keep_out_distance) return;
@@ -100,7 +132,8 @@ WalkToResult WalkTo::tick(const BehaviourInputs& in, Point2 target, std::optiona
   const double dist = distance(position(me), target);
   const double final_err = heading ? wrapAngle(*heading - me.theta) : 0.0;
   WalkToResult r;
-  if (!heading && blocked(in, target)) {  // a teammate stands on it: search from here
+  const bool back_off = sonarNear(in);
+  if (!heading && !back_off && blocked(in, target)) {  // a teammate stands on it: search from here
     r.arrived = true;
     r.body.type = ActionType::STAND;
     return r;
@@ -118,9 +151,15 @@ WalkToResult WalkTo::tick(const BehaviourInputs& in, Point2 target, std::optiona
   v.x += rep.x;
   v.y += rep.y;
   v = keepOut(in, v);
+  if (back_off)  // step back from what the sonars hear close by
+    for (const Point2& o : sonarObstacles(in)) {
+      const double d = std::max(1e-6, distance(o, position(me)));
+      v.x -= s_.sonar_back_off_speed * (o.x - me.x) / d;
+      v.y -= s_.sonar_back_off_speed * (o.y - me.y) / d;
+    }
 
   double want_heading = heading ? *heading : me.theta;
-  bool travelling = dist > s_.face_target_distance;
+  bool travelling = dist > s_.face_target_distance && !back_off;  // backing off: no turning round
   if (travelling && std::hypot(v.x, v.y) > 1e-6) want_heading = std::atan2(v.y, v.x);
   const double err = wrapAngle(want_heading - me.theta);
 

@@ -10,6 +10,7 @@
 #include "Table51Setup.hpp"
 #include "agent/behaviour/DistributedUtilityCalculator.hpp"
 #include "agent/behaviour/SimpleUtilityCalculator.hpp"
+#include "agent/behaviour/SonarFilter.hpp"
 
 using namespace agent::behaviour;
 using namespace agent::behaviour::table51;
@@ -197,6 +198,53 @@ TEST(WalkToKeepOut, NeverClosesOnATeammateAndStopsBesideATakenTarget) {
   EXPECT_TRUE(walk.tick(in, {0, 600}, std::nullopt, 300).arrived);
   in.teammates.clear();
   EXPECT_FALSE(walk.tick(in, {0, 600}, std::nullopt, 300).arrived);
+}
+
+// The era's sonar rule (SkillConfig::sonar_*): a side counts after 3 + 1
+// near frames from rest, holds 10 frames after the last, and a far echo
+// never counts.
+TEST(SonarFilter, CountsASideAfterNearFramesAndHoldsIt) {
+  const SkillConfig s;
+  SonarFilter f(s);
+  for (int i = 0; i < 5; ++i) EXPECT_FALSE(f.update(2550, 600).near_right);  // rests at -3
+  EXPECT_FALSE(f.update(2550, 300).near_right);  // -2
+  EXPECT_FALSE(f.update(2550, 300).near_right);  // -1
+  EXPECT_FALSE(f.update(2550, 300).near_right);  // 0
+  SonarState st = f.update(2550, 300);           // to the top, 10
+  EXPECT_TRUE(st.near_right);
+  EXPECT_FALSE(st.near_left);
+  for (int i = 0; i < 9; ++i) EXPECT_TRUE(f.update(2550, 2550).near_right) << i;
+  EXPECT_FALSE(f.update(2550, 2550).near_right);
+}
+
+// A robot the packets do not place there (a teammate whose localisation took
+// the mirror twin) but the sonars hear close ahead: the walk does not close
+// on it, steps back, and arrives beside it once clear.
+TEST(WalkToSonar, NeverClosesOnWhatTheSonarsHearAndStepsBack) {
+  const SkillConfig s;
+  const WalkTo walk(s, FieldGeometry{});
+  BehaviourInputs in;
+  in.self.pose = {0, 0, 0};
+  const WalkToResult free_walk = walk.tick(in, {3000, 0}, std::nullopt, 300);
+  EXPECT_GT(free_walk.body.forward, 100.0f);
+  in.sonar.left = in.sonar.right = 300;
+  in.sonar.near_left = in.sonar.near_right = true;
+  const WalkToResult blocked = walk.tick(in, {3000, 0}, std::nullopt, 300);
+  EXPECT_FALSE(blocked.arrived);
+  EXPECT_LT(blocked.body.forward, 0.0f);  // backs off
+  EXPECT_NEAR(blocked.body.turn, 0.0f, 1e-6);
+  // Target 700 mm ahead, an echo at 400 mm but no longer near: reached.
+  in.sonar.near_left = in.sonar.near_right = false;
+  in.sonar.left = in.sonar.right = 400;
+  EXPECT_TRUE(walk.tick(in, {700, 0}, std::nullopt, 300).arrived);
+  // Near: steps back first.
+  in.sonar.near_left = true;
+  EXPECT_FALSE(walk.tick(in, {700, 0}, std::nullopt, 300).arrived);
+  // Switched off: the sonars are ignored.
+  SkillConfig off = s;
+  off.sonar_avoid = false;
+  const WalkTo blind(off, FieldGeometry{});
+  EXPECT_GT(blind.tick(in, {3000, 0}, std::nullopt, 300).body.forward, 100.0f);
 }
 
 // Seeded random starts (fixed here: seeds 1-4), three teammates searching
