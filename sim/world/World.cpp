@@ -201,7 +201,7 @@ World::~World() {
   dWorldDestroy(world_);
 }
 
-int World::addRobot(std::shared_ptr<const NaoModel> model, double x, double y, double theta,
+int World::addRobot(std::shared_ptr<const RobotModel> model, double x, double y, double theta,
                     const std::vector<double>& posture) {
   const int index = numRobots();
   dSpaceID rs = dSimpleSpaceCreate(space_);
