@@ -239,7 +239,8 @@ int main(int argc, char** argv) {
     // What Runner::start() would refuse before the first tick, without
     // starting robot programs (an external robot's program need not run).
     try {
-      simswift::NaoModel::loadUrdf(sc.modelFile());
+      const simswift::RobotModel model = simswift::RobotModel::loadUrdf(sc.modelFile());
+      const simswift::NaoBinding nao(model);  // every robot runs on libagent
       sc.checkAgainstField(simswift::FieldConfig::loadYaml(sc.fieldFile()));
     } catch (const std::exception& e) {
       std::fprintf(stderr, "simswift: %s\n", e.what());

@@ -50,7 +50,7 @@ inline std::shared_ptr<const NaoModel> loadNao() {
 
 // The robot program's standing posture (agent/program/Postures.hpp), model joint order.
 inline std::vector<double> standingPosture(const NaoModel& m) {
-  return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+  return simswift::NaoBinding(m).posture(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
 }  // namespace simswift::bench

@@ -14,6 +14,7 @@
 
 #include "BenchResults.hpp"
 #include "agent/program/Postures.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
 
@@ -30,7 +31,8 @@ int main(int argc, char** argv) {
   const ap::JointArray stand = ap::postureAngles(ap::Posture::Stand);
   ap::JointArray stiff;
   stiff.fill(ap::postureStiffness(ap::Posture::Stand));
-  const std::vector<double> posture = model->postureFromLibagent(stand);
+  const simswift::NaoBinding nao(*model);
+  const std::vector<double> posture = nao.posture(stand);
 
   std::printf("simswift world benchmark: %.0f simulated s per case, physics + sensors, one core\n",
               sim_seconds);
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < n; ++r) {
       // Robots 1 m apart along the half-way line, facing +x.
       const int id = world.addRobot(model, -2.0 + (r % 5) * 1.0, (r < 5 ? 1.5 : -1.5), 0.0, posture);
-      world.robot(id).setCommand(stand, stiff);
+      nao.command(world.robot(id), stand, stiff);
     }
     sensors::SensorConfig cfg;
     for (int r = 0; r < n; ++r) suites.push_back(std::make_unique<sensors::SensorSuite>(world, r, cfg));

@@ -1,4 +1,4 @@
-// RobotBody: one NAO as ODE bodies, hinges and geoms (see RobotBody.hpp).
+// RobotBody: one robot as ODE bodies, hinges and geoms (see RobotBody.hpp).
 //
 // Construction order matters to ODE: hinges are created with every link in
 // the zero posture, so ODE's hinge angle (measured from the pose at creation)
@@ -36,7 +36,7 @@ Eigen::Matrix3d fromOde(const dReal* r) {
 
 Eigen::Vector3d vec(const dReal* v) { return Eigen::Vector3d(v[0], v[1], v[2]); }
 
-std::vector<ServoBank::Limits> servoLimits(const NaoModel& model) {
+std::vector<ServoBank::Limits> servoLimits(const RobotModel& model) {
   std::vector<ServoBank::Limits> out;
   for (const auto& j : model.joints()) {
     ServoBank::Limits l{j.lower, j.upper, j.max_velocity, j.max_effort};
@@ -62,7 +62,7 @@ Eigen::Matrix3d conditionedInertia(const Eigen::Matrix3d& inertia, double floor)
 
 }  // namespace
 
-RobotBody::RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSpaceID space,
+RobotBody::RobotBody(const RobotModel& model, int robot_index, dWorldID world, dSpaceID space,
                      const Eigen::Isometry3d& torso_pose, const std::vector<double>& posture,
                      const ServoConfig& servo_config)
     : model_(&model), index_(robot_index), world_(world),
@@ -126,6 +126,9 @@ RobotBody::RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSp
     hinges.push_back({spec.child_link, spec.parent_link, local(spec.child_link), local(spec.parent_link)});
   }
   projector_ = std::make_unique<JointProjector>(bodies_, hinges);
+  followers_.resize(joints.size());
+  for (size_t j = 0; j < joints.size(); ++j)
+    if (joints[j].mimic) followers_[model.jointIndex(*joints[j].mimic)].push_back(static_cast<int>(j));
 
   // Geoms: one per collision shape, in the given space, offset from the
   // body (CoM) frame. Self-collision is left to the world's callback, which
@@ -228,23 +231,18 @@ void RobotBody::teleport(const Eigen::Isometry3d& torso_pose) {
 }
 
 void RobotBody::holdPosture(const std::vector<double>& posture, float stiffness) {
-  std::array<float, 25> angles{}, stiffnesses{};
-  for (int i = 0; i < 25; ++i) {
-    const int j = model_->jointForLibagent(i);
-    angles[i] = j >= 0 && j < static_cast<int>(posture.size()) ? static_cast<float>(posture[j]) : 0.0f;
-    stiffnesses[i] = stiffness;
-  }
-  setCommand(angles, stiffnesses);
-}
-
-void RobotBody::setCommand(const std::array<float, 25>& angles,
-                           const std::array<float, 25>& stiffnesses) {
-  for (int i = 0; i < 25; ++i) servo_.setTarget(model_->jointForLibagent(i), angles[i], stiffnesses[i]);
   const auto& joints = model_->joints();
   for (size_t j = 0; j < joints.size(); ++j) {
-    if (joints[j].mimic)
-      servo_.follow(static_cast<int>(j), model_->jointIndex(*joints[j].mimic), joints[j].mimic_multiplier);
+    if (joints[j].mimic) continue;  // follows its leader
+    const float angle = j < posture.size() ? static_cast<float>(posture[j]) : 0.0f;
+    setTarget(static_cast<int>(j), angle, stiffness);
   }
+}
+
+void RobotBody::setTarget(int joint, double angle, double stiffness) {
+  servo_.setTarget(joint, angle, stiffness);
+  const auto& joints = model_->joints();
+  for (int f : followers_[joint]) servo_.follow(f, joint, joints[f].mimic_multiplier);
 }
 
 void RobotBody::applyServos(double dt) {

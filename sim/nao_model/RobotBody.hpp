@@ -1,6 +1,8 @@
-// One simulated NAO: the NaoModel instantiated as ODE bodies, geoms and hinge
-// joints, plus its joint servos (the DCM's behaviour). Mutable state; the
-// model it was built from is shared and immutable.
+// One simulated robot (the NAO, or any RobotModel: a box, a pendulum): the
+// model instantiated as ODE bodies, geoms and hinge joints, plus its joint
+// servos (the DCM's behaviour). Mutable state; the model it was built from
+// is shared and immutable. Commands here are in model joint order; libagent's
+// 25 slots reach them through NaoBinding (NaoBinding.hpp).
 //
 // Units: m, rad, rad/s, N, N*m. Poses are in the world (field) frame: origin
 // at the centre spot, x toward the opponent goal, y left, z up.
@@ -15,7 +17,7 @@
 #include <vector>
 
 #include "sim/nao_model/JointProjector.hpp"
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 #include "sim/nao_model/Servo.hpp"
 
 namespace simswift {
@@ -24,7 +26,7 @@ namespace simswift {
 struct GeomTag {
   enum Kind : int32_t { Ground, FieldObject, Net, Ball, RobotLink } kind = Ground;
   int32_t robot = -1;  // robot index for RobotLink
-  int32_t link = -1;   // link index in the NaoModel for RobotLink
+  int32_t link = -1;   // link index in the RobotModel for RobotLink
   // A foot's sole box (the box collision shape of the link below an
   // AnkleRoll joint): the world gives its ground contact as a patch of points
   // over the whole sole instead of the box's corners (Contacts.cpp).
@@ -44,21 +46,24 @@ class RobotBody {
   // index and its link: the world's collision callback must skip pairs whose
   // tags name the same robot (no self-collision). Destroy every RobotBody
   // before its dWorldID. Link inertias get ServoConfig::min_link_inertia.
-  RobotBody(const NaoModel& model, int robot_index, dWorldID world, dSpaceID space,
+  RobotBody(const RobotModel& model, int robot_index, dWorldID world, dSpaceID space,
             const Eigen::Isometry3d& torso_pose, const std::vector<double>& posture,
             const ServoConfig& servo_config);
   ~RobotBody();
   RobotBody(const RobotBody&) = delete;
   RobotBody& operator=(const RobotBody&) = delete;
 
-  const NaoModel& model() const { return *model_; }
+  const RobotModel& model() const { return *model_; }
   int index() const { return index_; }
 
-  // --- Commands (libagent order, 25 slots). Latched; the runner decides
-  // when they take effect (one 10 ms cycle after they were written).
-  void setCommand(const std::array<float, agent::libagent::kNumJoints>& angles,
-                  const std::array<float, agent::libagent::kNumJoints>& stiffnesses);
-  // The same for a posture in model joint order (rad), every joint at `stiffness`.
+  // --- Commands (model joint order). Latched; the runner decides when they
+  // take effect (one 10 ms cycle after they were written).
+  // One joint's servo target (rad) and stiffness (0..1; <= 0 limp); the
+  // joints that mimic it follow (RHipYawPitch follows LHipYawPitch).
+  void setTarget(int joint, double angle, double stiffness);
+  // Every joint but the mimics to `posture` (rad; missing entries 0) at
+  // `stiffness`. The angles pass through float, as libagent's commands do,
+  // so a held posture is the same posture commanded through libagent.
   void holdPosture(const std::vector<double>& posture, float stiffness = 1.0f);
   const ServoCommandStats& commandStats() const { return servo_.stats(); }
 
@@ -107,7 +112,7 @@ class RobotBody {
   bool blownUp(double max_linear, double max_angular) const;
 
  private:
-  const NaoModel* model_;
+  const RobotModel* model_;
   int index_;
   dWorldID world_;
   std::vector<dBodyID> bodies_;        // per link
@@ -121,6 +126,7 @@ class RobotBody {
   std::vector<dJointFeedback> feedback_;  // per joint, filled by ODE each step
   std::vector<double> motor_cap_;         // per joint, the motor's torque cap last substep (N*m)
   std::unique_ptr<JointProjector> projector_;
+  std::vector<std::vector<int>> followers_;  // per joint: the joints that mimic it
   // Link frames in the world for torso pose `torso` and joint angles (rad).
   std::vector<Eigen::Isometry3d> forwardKinematics(const Eigen::Isometry3d& torso,
                                                    const std::vector<double>& angles) const;

@@ -11,7 +11,7 @@
 #include <locale>
 #include <sstream>
 
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 
 namespace simswift {
 

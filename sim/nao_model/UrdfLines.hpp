@@ -1,7 +1,7 @@
 // A pre-pass over URDF text, before urdfdom sees it: refuses absurd input
 // cheaply, then reads the document with TinyXML (the parser urdfdom 3.0
 // itself uses) to record the line of every <link>/<joint> and of their
-// sub-elements, so that NaoModel's errors can say "file:line: ...". It also
+// sub-elements, so that RobotModel's errors can say "file:line: ...". It also
 // keeps what urdfdom drops without a word (the number of <collision>
 // elements per link).
 //

@@ -138,7 +138,7 @@ std::string Runner::finishOverview() {
 }
 
 std::vector<double> Runner::modelPosture(const ap::JointArray& angles) const {
-  return model_->postureFromLibagent(angles);
+  return nao_->posture(angles);
 }
 
 // The composition root, in stages: the world, then one body (World robot,
@@ -160,7 +160,7 @@ void Runner::start() {
 // The model, the field (the scenario's placements checked against it) and
 // the World with the scenario's ball.
 void Runner::buildWorld() {
-  model_ = std::make_shared<const NaoModel>(NaoModel::loadUrdf(scenario_.modelFile()));
+  model_ = std::make_shared<const RobotModel>(RobotModel::loadUrdf(scenario_.modelFile()));
   const FieldConfig field = FieldConfig::loadYaml(scenario_.fieldFile());
   scenario_.checkAgainstField(field);
   WorldConfig wc;
@@ -196,6 +196,9 @@ sensors::SensorConfig Runner::sensorConfig() const {
 // side of libagent: in-process for a builtin program, named shared memory
 // for an external one), in scenario order.
 void Runner::buildHosts() {
+  // Every robot is attached to libagent through its host: the model must be
+  // a NAO libagent can drive (ModelError "file:line: missing joint ..." if not).
+  nao_ = std::make_unique<NaoBinding>(*model_);
   const sensors::SensorConfig sc = sensorConfig();
   if (robots_.empty()) {
     robots_.resize(scenario_.robots.size());
@@ -443,7 +446,7 @@ void Runner::applyCommands() {
       angles[j] = r.latched.joints.angles[j];
       stiff[j] = r.latched.joints.stiffnesses[j];
     }
-    world_->robot(static_cast<int>(i)).setCommand(angles, stiff);
+    nao_->command(world_->robot(static_cast<int>(i)), angles, stiff);
     r.sensors->setSonarMode(r.latched.sonar);
   }
 }

@@ -72,6 +72,7 @@
 #include "sim/game/GameController.hpp"
 #include "sim/game/GameControllerUdp.hpp"
 #include "sim/game/Sideline.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/network/TeamNetwork.hpp"
 #include "sim/runner/FallDetector.hpp"
 #include "sim/runner/RunStats.hpp"
@@ -247,7 +248,8 @@ class Runner {
   bool watchdogArmed() const;   // on, and no debugger attached
 
   Scenario scenario_;
-  std::shared_ptr<const NaoModel> model_;
+  std::shared_ptr<const RobotModel> model_;
+  std::unique_ptr<NaoBinding> nao_;  // the model's libagent joints (checked in buildHosts)
   std::unique_ptr<World> world_;
   std::vector<std::unique_ptr<Robot>> robots_;
   agent::program::Threading threading_ = agent::program::Threading::Named;

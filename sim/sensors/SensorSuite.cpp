@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/sensors/JointEncoders.hpp"
 #include "sim/world/World.hpp"
 
@@ -31,7 +32,7 @@ bool endsWith(const std::string& s, const std::string& tail) {
 }
 
 // The link moved by `joint_name` (the ankle frame for L/RAnkleRoll).
-int childOf(const NaoModel& model, const std::string& joint_name) {
+int childOf(const RobotModel& model, const std::string& joint_name) {
   const int j = model.jointIndex(joint_name);
   if (j < 0)
     throw std::runtime_error("SensorSuite: robot model has no joint '" + joint_name +
@@ -40,7 +41,7 @@ int childOf(const NaoModel& model, const std::string& joint_name) {
 }
 
 // True if `link` is `root` or hangs below it.
-bool below(const NaoModel& model, int link, int root) {
+bool below(const RobotModel& model, int link, int root) {
   for (int l = link; l >= 0;) {
     if (l == root) return true;
     const int pj = model.links()[l].parent_joint;
@@ -71,7 +72,7 @@ SensorSuite::SensorSuite(const World& world, int robot, const SensorConfig& conf
   if (robot < 0 || robot >= world.numRobots())
     throw std::out_of_range("SensorSuite: robot index " + std::to_string(robot) + " not in the world (" +
                             std::to_string(world.numRobots()) + " robots)");
-  const NaoModel& model = world.robot(robot).model();
+  const RobotModel& model = world.robot(robot).model();
   foot_link_[0] = childOf(model, "LAnkleRoll");
   foot_link_[1] = childOf(model, "RAnkleRoll");
   link_foot_.assign(model.links().size(), -1);
@@ -79,9 +80,11 @@ SensorSuite::SensorSuite(const World& world, int robot, const SensorConfig& conf
     if (below(model, l, foot_link_[0])) link_foot_[l] = 0;
     if (below(model, l, foot_link_[1])) link_foot_[l] = 1;
   }
+  const NaoBinding nao(model);
   for (int i = 0; i < la::kNumJoints; ++i) {
-    const int j = model.jointForLibagent(i);
-    is_hand_[i] = j >= 0 && endsWith(model.joints()[j].name, "Hand");
+    const int j = nao.joint(i);
+    joint_of_slot_[i] = j;
+    is_hand_[i] = endsWith(model.joints()[j].name, "Hand");
   }
   reading_.sonar.fill(la::kSonarNoEcho);
   reset(world);
@@ -118,10 +121,9 @@ void SensorSuite::update(const World& world) {
 
 void SensorSuite::updateJoints(const World& world, double /*dt*/) {
   const RobotBody& body = world.robot(robot_);
-  const NaoModel& model = body.model();
+  const RobotModel& model = body.model();
   for (int i = 0; i < la::kNumJoints; ++i) {
-    const int j = model.jointForLibagent(i);
-    if (j < 0) continue;
+    const int j = joint_of_slot_[i];
     const JointSpec& spec = model.joints()[j];
     const double measured = quantise(
         encoder_noise_.perturb(body.jointAngle(j), config_.encoder.sigma, config_.encoder.bias, config_.noise),

@@ -47,7 +47,8 @@ void copyToAgent(const SensorReading& reading, la::SensorValues& out);
 class SensorSuite {
  public:
   // Throws SensorConfigError for a bad config, std::runtime_error if the
-  // robot's model lacks the ankle joints the FSRs hang from.
+  // robot's model lacks the ankle joints the FSRs hang from, ModelError if
+  // it is not a NAO libagent can read (NaoBinding.hpp).
   SensorSuite(const World& world, int robot, const SensorConfig& config);
 
   // Reads the world after a step. Ticks are expected consecutively; after a
@@ -89,6 +90,7 @@ class SensorSuite {
   std::array<FsrLayout, 2> fsr_layout_;
   std::array<double, 2> true_foot_force_{{0, 0}};
   std::array<bool, la::kNumJoints> is_hand_{};
+  std::array<int, la::kNumJoints> joint_of_slot_{};  // model joint of each libagent slot
   std::array<SonarBeam, 2> sonar_beam_;
   std::array<bool, 4> buttons_{};
   float sonar_mode_ = 0;

@@ -201,7 +201,7 @@ World::~World() {
   dWorldDestroy(world_);
 }
 
-int World::addRobot(std::shared_ptr<const NaoModel> model, double x, double y, double theta,
+int World::addRobot(std::shared_ptr<const RobotModel> model, double x, double y, double theta,
                     const std::vector<double>& posture) {
   const int index = numRobots();
   dSpaceID rs = dSimpleSpaceCreate(space_);
@@ -325,7 +325,12 @@ void World::applyPendingPushes(double dt) {
 void World::integrate(int substep, double dt) {
   // QuickStep shuffles its constraint rows with ODE's one process-wide
   // random generator; reseeding it from the tick makes every world's
-  // result a function of its own state, whatever other worlds did.
+  // result a function of its own state, whatever other worlds did. Worlds
+  // stepping on other threads draw from the same generator: the seed and
+  // the step it feeds are one critical section, so a world's result does
+  // not depend on how many run beside it (tests/world/test_physics_hash.cpp).
+  static std::mutex ode_random;
+  std::lock_guard<std::mutex> lock(ode_random);
   dRandSetSeed(static_cast<unsigned long>(tick_) * 16u + static_cast<unsigned long>(substep));
   if (config_.solver == WorldConfig::Solver::Exact) {
     dWorldStep(world_, dt);

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "agent/nao/NaoFacts.hpp"
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 #include "sim/nao_model/RobotBody.hpp"
 #include "sim/world/FieldConfig.hpp"
 
@@ -92,9 +92,11 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  // Adds a robot whose feet rest on the carpet at (x, y) m facing `theta`
-  // rad, joints at `posture` (model joint order). Returns its index.
-  int addRobot(std::shared_ptr<const NaoModel> model, double x, double y, double theta,
+  // Adds a robot (any RobotModel: the NAO, a box, a pendulum) whose lowest
+  // collision shape rests on the carpet (the NAO: its feet) with its root
+  // link at (x, y) m facing `theta` rad, joints at `posture` (model joint
+  // order). Returns its index.
+  int addRobot(std::shared_ptr<const RobotModel> model, double x, double y, double theta,
                const std::vector<double>& posture);
   int numRobots() const { return static_cast<int>(robots_.size()); }
   RobotBody& robot(int i) { return *robots_[i]; }

@@ -41,7 +41,7 @@ struct World::Impl {
     std::vector<double> posture;     // rad, model joint order
   };
   std::vector<dSpaceID> robot_spaces;
-  std::vector<std::shared_ptr<const NaoModel>> models;
+  std::vector<std::shared_ptr<const RobotModel>> models;
   std::vector<Placement> placements;
   // Pushes waiting for the next step (N*s, world frame), per robot.
   std::vector<Eigen::Vector3d> pending_impulse;

@@ -11,6 +11,7 @@
 #include "agent/perception/CameraMatrix.hpp"
 #include "agent/program/Postures.hpp"
 #include "sim/camera/CameraModel.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
 
@@ -30,7 +31,7 @@ TEST(CameraMatrix, MatchesTheSimulatedCameraPose) {
                                         std::tuple{-0.8, -0.3, 0.15}}) {
     World world(FieldConfig::spl2017());
     const NaoModel& m = *naoModel();
-    std::vector<double> q = m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+    std::vector<double> q = simswift::NaoBinding(m).posture(agent::program::postureAngles(agent::program::Posture::Stand));
     q[m.jointIndex("HeadYaw")] = yaw;
     q[m.jointIndex("HeadPitch")] = pitch;
     // Bend one knee a little more: the torso tilts and the feet differ.

@@ -12,6 +12,7 @@
 #include "sim/camera/Png.hpp"
 #include "sim/camera/RobotCameras.hpp"
 #include "sim/camera/Yuv.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/world/World.hpp"
 
 using namespace simswift;
@@ -29,7 +30,7 @@ std::shared_ptr<const NaoModel> naoModel() {
 
 // The robot program's standing posture (agent/program/Postures.hpp), model joint order.
 std::vector<double> standingPosture(const NaoModel& m) {
-  return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+  return simswift::NaoBinding(m).posture(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
 std::vector<uint8_t> copyRgb(const CameraImages& im, int cam) {

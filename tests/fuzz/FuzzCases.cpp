@@ -39,7 +39,7 @@ bool namesFileAndLine(const std::string& msg, const std::string& source) {
 // A few ticks with `model` standing on `field` at (x, y, theta).
 void stepWorld(const FieldConfig& field, std::shared_ptr<const NaoModel> model, double x, double y, double theta) {
   World w(field);
-  const auto q = model->postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+  const auto q = simswift::NaoBinding(*model).posture(agent::program::postureAngles(agent::program::Posture::Stand));
   const int i = w.addRobot(model, x, y, theta, q);
   w.robot(i).holdPosture(q);
   for (int k = 0; k < 3; ++k) w.step();
@@ -99,7 +99,7 @@ CaseResult runCase(Loader l, const std::string& text) {
         const auto model = goodModel();
         for (const auto& rs : sc.robots) {
           const int i = w.addRobot(model, rs.x, rs.y, rs.theta,
-                                   model->postureFromLibagent(agent::program::postureAngles(rs.posture)));
+                                   simswift::NaoBinding(*model).posture(agent::program::postureAngles(rs.posture)));
           for (const auto& p : rs.pushes) w.applyImpulse(i, Eigen::Vector3d(p.jx, p.jy, 0));
         }
         for (int k = 0; k < 3; ++k) w.step();

@@ -5,6 +5,7 @@
 
 #include "agent/program/Postures.hpp"
 #include "sim/game/Sideline.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 
 using namespace simswift;
 using namespace simswift::game;
@@ -15,7 +16,7 @@ std::shared_ptr<const NaoModel> naoModel() {
   return model;
 }
 std::vector<double> standing() {
-  return naoModel()->postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+  return simswift::NaoBinding(*naoModel()).posture(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 int addStanding(World& w, double x, double y, double theta) {
   const int i = w.addRobot(naoModel(), x, y, theta, standing());

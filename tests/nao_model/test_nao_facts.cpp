@@ -36,7 +36,7 @@ const simswift::ShapeSpec& firstCollision(const std::string& link) {
 TEST(NaoFacts, JointLimitsAndSpeedsMatchTheUrdf) {
   const auto& lim = nao::jointLimits();
   for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
-    const int j = model().jointForLibagent(i);
+    const int j = simswift::NaoBinding(model()).joint(i);
     ASSERT_GE(j, 0) << "libagent joint " << i;
     const auto& spec = model().joints()[j];
     // The URDF keeps 6 digits of the published degrees-derived radians.

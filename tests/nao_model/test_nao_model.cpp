@@ -36,7 +36,9 @@ std::pair<size_t, size_t> element(const std::string& xml, const std::string& tag
 // Runs the loader on `xml` and returns the ModelError message ("" if none).
 std::string errorOf(const std::string& xml) {
   try {
-    NaoModel::loadUrdfString(xml, "bad.urdf");
+    // The model, then its libagent joints, as the runner checks them.
+    const NaoModel m = NaoModel::loadUrdfString(xml, "bad.urdf");
+    const simswift::NaoBinding nao(m);
   } catch (const ModelError& e) {
     std::cout << "  ModelError: " << e.what() << "\n";
     return e.what();
@@ -57,15 +59,16 @@ TEST(NaoModel, LoadsTheNaoV5) {
   EXPECT_GT(m.totalMass(), 5.18);
   EXPECT_LT(m.totalMass(), 5.48);
   EXPECT_NEAR(m.totalMass(), 5.305, 0.01);
+  const simswift::NaoBinding nao(m);
   for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
-    const int j = m.jointForLibagent(i);
+    const int j = nao.joint(i);
     ASSERT_GE(j, 0);
     EXPECT_EQ(m.joints()[j].name, agent::libagent::Joints::kNames[i]);
-    EXPECT_EQ(m.joints()[j].libagent_index, i);
+    EXPECT_EQ(nao.slot(j), i);
   }
   const int r = m.jointIndex("RHipYawPitch");
   ASSERT_GE(r, 0);
-  EXPECT_EQ(m.joints()[r].libagent_index, -1);
+  EXPECT_EQ(nao.slot(r), -1);
   ASSERT_TRUE(m.joints()[r].mimic.has_value());
   EXPECT_EQ(*m.joints()[r].mimic, "LHipYawPitch");
   // Parents precede children, so forward kinematics is one pass.

@@ -1,5 +1,7 @@
-// RobotBody in a bare ODE world (a plane, dWorldStep at 5 ms): kinematics,
-// servo speed limits, settling, joint stops and the shared hip motor.
+// RobotBody in the production World (sim/world/World.hpp with the default
+// WorldConfig: QuickStep, 2 substeps of 5 ms per 10 ms tick, the sole
+// patches and the joint projection): kinematics, servo speed limits,
+// settling, joint stops and the shared hip motor.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,115 +10,66 @@
 #include <memory>
 
 #include "agent/libagent/AgentShared.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/nao_model/RobotBody.hpp"
+#include "sim/world/World.hpp"
 
 using simswift::GeomTag;
+using simswift::NaoBinding;
 using simswift::NaoModel;
 using simswift::RobotBody;
 
 namespace {
 
-constexpr double kDt = 0.005;  // s, physics step
+constexpr double kDt = simswift::kTickSeconds;  // s, one World::step (a tick)
+// s, one physics substep of the production World (5 ms)
+const double kSubstep = simswift::kTickSeconds / simswift::WorldConfig{}.substeps;
 const double kDeg = M_PI / 180.0;
 
-class OdeEnv : public ::testing::Environment {
- public:
-  void SetUp() override { dInitODE2(0); }
-  void TearDown() override { dCloseODE(); }
-};
-const auto* const kOdeEnv = ::testing::AddGlobalTestEnvironment(new OdeEnv);
-
-const NaoModel& model() {
-  static const NaoModel m =
-      NaoModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf");
+std::shared_ptr<const NaoModel> naoModel() {
+  static const auto m = std::make_shared<const NaoModel>(
+      NaoModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf"));
   return m;
 }
+const NaoModel& model() { return *naoModel(); }
+const NaoBinding& nao() {
+  static const NaoBinding b(model());
+  return b;
+}
 
-// A minimal world: gravity, a ground plane, foot-carpet friction 0.8; pairs
-// of geoms of the same robot do not collide.
+// One NAO in the zero posture (clamped to the limits) standing on the
+// carpet at the centre spot of the production World, no ball. fix_torso:
+// hung 0.3 m higher, the torso held by a fixed joint to the world.
 class Sim {
  public:
-  explicit Sim(bool fix_torso = false, int quick_iterations = 0,
-               simswift::ServoConfig servo = {})
-      : quick_(quick_iterations) {
-    world_ = dWorldCreate();
-    dWorldSetGravity(world_, 0, 0, -9.81);
-    dWorldSetERP(world_, 0.2);
-    dWorldSetCFM(world_, 1e-5);
-    space_ = dHashSpaceCreate(nullptr);
-    contacts_ = dJointGroupCreate(0);
-    ground_ = dCreatePlane(space_, 0, 0, 1, 0);
-    dGeomSetData(ground_, &ground_tag_);
-    std::vector<double> posture(model().joints().size(), 0.0);
-    Eigen::Isometry3d torso = Eigen::Isometry3d::Identity();
-    torso.translation() = Eigen::Vector3d(0, 0, 1.0);
-    if (quick_ > 0) dWorldSetQuickStepNumIterations(world_, quick_);
-    robot_ = std::make_unique<RobotBody>(model(), 0, world_, space_, torso, posture, servo);
-    torso.translation().z() -= robot_->lowestPoint() - 0.0005;  // feet 0.5 mm above the carpet
-    robot_->teleport(torso);
+  explicit Sim(bool fix_torso = false) : world_(simswift::FieldConfig::spl2017()) {
+    world_.removeBall();  // the robot stands on the centre spot
+    world_.addRobot(naoModel(), 0, 0, 0, std::vector<double>(model().joints().size(), 0.0));
     if (fix_torso) {
+      Eigen::Isometry3d torso = robot().linkPose(model().rootLink());
       torso.translation().z() += 0.3;  // hanging in the air
-      robot_->teleport(torso);
-      fixed_ = dJointCreateFixed(world_, nullptr);
-      dJointAttach(fixed_, robot_->torsoBody(), nullptr);
-      dJointSetFixed(fixed_);
+      robot().teleport(torso);
+      // A test rig, not part of the World's API: ODE holds the torso.
+      dJointID fixed = dJointCreateFixed(world_.odeWorld(), nullptr);
+      dJointAttach(fixed, robot().torsoBody(), nullptr);
+      dJointSetFixed(fixed);
     }
   }
-  ~Sim() {
-    robot_.reset();
-    dJointGroupDestroy(contacts_);
-    dGeomDestroy(ground_);
-    dSpaceDestroy(space_);
-    dWorldDestroy(world_);
-  }
 
-  RobotBody& robot() { return *robot_; }
+  RobotBody& robot() { return world_.robot(0); }
+  simswift::World& world() { return world_; }
 
   // All 25 libagent joints held at `angles` with stiffness `stiffness`.
   void command(const std::array<float, 25>& angles, float stiffness = 1.0f) {
     std::array<float, 25> s;
     s.fill(stiffness);
-    robot_->setCommand(angles, s);
+    nao().command(robot(), angles, s);
   }
 
-  void step(double dt = kDt) {
-    robot_->applyServos(dt);
-    dSpaceCollide(space_, this, &Sim::nearCallback);
-    if (quick_ > 0)
-      dWorldQuickStep(world_, dt);
-    else
-      dWorldStep(world_, dt);
-    dJointGroupEmpty(contacts_);
-  }
+  void step() { world_.step(); }  // one 10 ms tick
 
  private:
-  static void nearCallback(void* data, dGeomID a, dGeomID b) {
-    auto* self = static_cast<Sim*>(data);
-    const auto* ta = static_cast<const GeomTag*>(dGeomGetData(a));
-    const auto* tb = static_cast<const GeomTag*>(dGeomGetData(b));
-    if (ta && tb && ta->kind == GeomTag::RobotLink && tb->kind == GeomTag::RobotLink &&
-        ta->robot == tb->robot)
-      return;
-    dContact c[8];
-    const int n = dCollide(a, b, 8, &c[0].geom, sizeof(dContact));
-    for (int i = 0; i < n; ++i) {
-      c[i].surface.mode = dContactSoftCFM | dContactSoftERP | dContactApprox1;
-      c[i].surface.mu = 0.8;
-      c[i].surface.soft_erp = 0.2;
-      c[i].surface.soft_cfm = 1e-5;
-      dJointID j = dJointCreateContact(self->world_, self->contacts_, &c[i]);
-      dJointAttach(j, dGeomGetBody(a), dGeomGetBody(b));
-    }
-  }
-
-  dWorldID world_;
-  dSpaceID space_;
-  dJointGroupID contacts_;
-  dGeomID ground_;
-  dJointID fixed_ = nullptr;
-  int quick_ = 0;  // QuickStep iterations; 0 = dWorldStep
-  GeomTag ground_tag_;
-  std::unique_ptr<RobotBody> robot_;
+  simswift::World world_;
 };
 
 int joint(const char* name) { return model().jointIndex(name); }
@@ -126,7 +79,7 @@ int joint(const char* name) { return model().jointIndex(name); }
 std::array<float, 25> neutral() {
   std::array<float, 25> a;
   for (int i = 0; i < 25; ++i) {
-    const auto& j = model().joints()[model().jointForLibagent(i)];
+    const auto& j = model().joints()[nao().joint(i)];
     a[i] = static_cast<float>(std::clamp(0.0, j.lower, j.upper));
   }
   return a;
@@ -182,7 +135,7 @@ TEST(RobotBody, StandsStillWhenStiff) {
   RobotBody& r = sim.robot();
   sim.command(neutral());
   const double z0 = r.linkPose(model().rootLink()).translation().z();
-  for (int i = 0; i < 400; ++i) sim.step();  // 2 s
+  for (int i = 0; i < 200; ++i) sim.step();  // 2 s
   EXPECT_FALSE(r.blownUp(50, 200));
   const Eigen::Isometry3d torso = r.linkPose(model().rootLink());
   EXPECT_NEAR(torso.translation().z(), z0, 0.01);            // m
@@ -195,7 +148,7 @@ TEST(RobotBody, StepTargetRespectsMaxSpeedAndSettles) {
   RobotBody& r = sim.robot();
   auto cmd = neutral();
   sim.command(cmd);
-  for (int i = 0; i < 40; ++i) sim.step();
+  for (int i = 0; i < 20; ++i) sim.step();  // 0.2 s
   struct Case { const char* name; int slot; double target; };
   const Case cases[] = {{"HeadYaw", 0, 1.5}, {"LShoulderPitch", 2, -1.2}, {"RElbowYaw", 21, 1.0}};
   for (const Case& c : cases) cmd[c.slot] = static_cast<float>(c.target);
@@ -203,7 +156,7 @@ TEST(RobotBody, StepTargetRespectsMaxSpeedAndSettles) {
   double max_speed[3] = {0, 0, 0};
   double prev[3];
   for (int k = 0; k < 3; ++k) prev[k] = r.jointAngle(joint(cases[k].name));
-  for (int i = 0; i < 200; ++i) {  // 1 s
+  for (int i = 0; i < 100; ++i) {  // 1 s
     sim.step();
     for (int k = 0; k < 3; ++k) {
       const double a = r.jointAngle(joint(cases[k].name));
@@ -215,8 +168,9 @@ TEST(RobotBody, StepTargetRespectsMaxSpeedAndSettles) {
     const auto& spec = model().joints()[joint(cases[k].name)];
     SCOPED_TRACE(cases[k].name);
     // The no-load speed is the motor's ceiling: the arm joints move together
-    // and carry their links' weight, so a substep may be pushed a little past
+    // and carry their links' weight, so a tick may be pushed a little past
     // it (the motor then brakes) or stay well below it (torque-speed line).
+    // Speeds are means over a tick (two substeps).
     EXPECT_LE(max_speed[k], spec.max_velocity * 1.1);  // rad/s
     // HeadYaw turns about the vertical, unloaded: close to no-load speed.
     EXPECT_GT(max_speed[k], spec.max_velocity * (k == 0 ? 0.9 : 0.7));
@@ -235,7 +189,7 @@ TEST(RobotBody, StopsAtLimitWhenCommandedPast) {
   sim.command(cmd);
   const double upper = model().joints()[joint("HeadYaw")].upper;
   double highest = -10;
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < 100; ++i) {  // 1 s
     sim.step();
     highest = std::max(highest, r.jointAngle(joint("HeadYaw")));
   }
@@ -255,8 +209,12 @@ TEST(RobotBody, HingeStopHoldsALimpJointAgainstTorque) {
   const int head = model().linkIndex("Head");
   const Eigen::Vector3d up = r.linkPose(model().rootLink()).linear().col(2);
   double highest = -10, peak = 0;
-  for (int i = 0; i < 200; ++i) {
-    dBodyAddTorque(r.body(head), 0.3 * up.x(), 0.3 * up.y(), 0.3 * up.z());  // N*m, yaw left
+  // 0.3 N*m yawing left, as a tick's mean: ODE clears a body's added torque
+  // after each substep, so the tick's angular impulse (0.3 N*m x 10 ms) goes
+  // in during its first substep, as World::applyImpulse delivers a push.
+  const double torque = 0.3 * simswift::WorldConfig{}.substeps;  // N*m in the first substep
+  for (int i = 0; i < 100; ++i) {  // 1 s
+    dBodyAddTorque(r.body(head), torque * up.x(), torque * up.y(), torque * up.z());
     sim.step();
     highest = std::max(highest, r.jointAngle(joint("HeadYaw")));
     peak = std::max(peak, std::abs(r.jointVelocity(joint("HeadYaw"))));
@@ -264,8 +222,8 @@ TEST(RobotBody, HingeStopHoldsALimpJointAgainstTorque) {
   // The mechanical stop, a little outside the commanded range.
   const double stop = model().joints()[joint("HeadYaw")].upper + RobotBody::kStopBeyondLimit;
   // ODE enforces a stop once the angle is past it, so a fast joint may
-  // overrun by up to one step's travel before being pushed back.
-  EXPECT_LT(highest, stop + peak * kDt + 1 * kDeg);
+  // overrun by up to one substep's travel before being pushed back.
+  EXPECT_LT(highest, stop + peak * kSubstep + 1 * kDeg);
   EXPECT_NEAR(r.jointAngle(joint("HeadYaw")), stop, 0.1 * kDeg);
 }
 
@@ -276,7 +234,7 @@ TEST(RobotBody, LHipYawPitchDrivesBothHips) {
   cmd[agent::libagent::Joints::LHipYawPitch] = -0.5f;
   sim.command(cmd);
   double worst = 0;
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < 100; ++i) {  // 1 s
     sim.step();
     worst = std::max(worst, std::abs(r.jointAngle(joint("LHipYawPitch")) -
                                      r.jointAngle(joint("RHipYawPitch"))));
@@ -289,16 +247,21 @@ TEST(RobotBody, LHipYawPitchDrivesBothHips) {
 // Measured with ODE 0.16: QuickStep (20 iterations) at 5 ms blows the bare NAO
 // up; with the default inertia floor (ServoConfig::min_link_inertia) it
 // stands. Probe on this model: floor 0 blows up at 5 and 10 ms; 5e-4 kg*m^2
-// stands at both (torso sags 3 mm at 5 ms, 11 mm at 10 ms).
+// stands at both (torso sags 3 mm at 5 ms, 11 mm at 10 ms). The production
+// World is that QuickStep (WorldConfig: 20 iterations, 5 ms substeps).
 TEST(RobotBody, StandsWithQuickStepThanksToInertiaFloor) {
-  Sim sim(/*fix_torso=*/false, /*quick_iterations=*/20);
+  ASSERT_EQ(simswift::WorldConfig{}.solver, simswift::WorldConfig::Solver::Quick);
+  ASSERT_EQ(simswift::WorldConfig{}.quick_iterations, 20);
+  Sim sim;
   RobotBody& r = sim.robot();
   sim.command(neutral());
   const double z0 = r.linkPose(model().rootLink()).translation().z();
-  for (int i = 0; i < 400; ++i) {  // 2 s
-    sim.step(0.005);
-    ASSERT_FALSE(r.blownUp(50, 200)) << "step " << i;
+  for (int i = 0; i < 200; ++i) {  // 2 s
+    sim.step();
+    ASSERT_FALSE(r.blownUp(50, 200)) << "tick " << i;
   }
+  // The World resets a robot that blew up (and says so): none did.
+  EXPECT_TRUE(sim.world().takeEvents().empty());
   const Eigen::Isometry3d torso = r.linkPose(model().rootLink());
   EXPECT_NEAR(torso.translation().z(), z0, 0.01);       // m
   EXPECT_GT(torso.linear()(2, 2), std::cos(5 * kDeg));  // upright within 5 deg
@@ -310,7 +273,7 @@ TEST(RobotBody, JointTorqueBalancesGravity) {
   Sim sim(/*fix_torso=*/true);
   RobotBody& r = sim.robot();
   sim.command(neutral());
-  for (int i = 0; i < 200; ++i) sim.step();  // 1 s to settle
+  for (int i = 0; i < 100; ++i) sim.step();  // 1 s to settle
   const int sp = joint("LShoulderPitch");
   const Eigen::Vector3d shoulder =
       r.linkPose(model().joints()[sp].child_link).translation();  // hinge anchor (m)

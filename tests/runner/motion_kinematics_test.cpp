@@ -9,6 +9,7 @@
 
 #include "agent/motion/JointLimits.hpp"
 #include "agent/motion/Kinematics.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/world/World.hpp"
 
 using namespace agent::motion;
@@ -74,7 +75,7 @@ TEST(MotionKinematics, ClipperLimitsMatchTheModel) {
   const auto& lim = agent::motion::jointLimits();
   for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
     if (i == agent::libagent::Joints::LHand || i == agent::libagent::Joints::RHand) continue;  // fraction, not rad
-    const auto& j = model.joints()[model.jointForLibagent(i)];
+    const auto& j = model.joints()[simswift::NaoBinding(model).joint(i)];
     EXPECT_NEAR(lim[i].lower, j.lower, 2e-3) << j.name;
     EXPECT_NEAR(lim[i].upper, j.upper, 2e-3) << j.name;
     EXPECT_NEAR(lim[i].max_velocity, j.max_velocity, 2e-3) << j.name;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "agent/program/Postures.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
 
@@ -24,7 +25,7 @@ std::shared_ptr<const NaoModel> nao() {
 
 // The robot program's standing posture (agent/program/Postures.hpp), model joint order.
 std::vector<double> standingPosture(const NaoModel& m) {
-  return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+  return simswift::NaoBinding(m).posture(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
 int addRobot(World& w, double x, double y, double theta, float stiffness) {
@@ -128,7 +129,7 @@ TEST(SensorsPhysics, StandingRobotFeelsItsWeightAndGravity) {
   // Joint readings: angles near the commanded stand, plausible temperatures and currents.
   const auto q = standingPosture(*nao());
   for (int s = 0; s < 25; ++s) {
-    const int j = nao()->jointForLibagent(s);
+    const int j = simswift::NaoBinding(*nao()).joint(s);
     const bool hand = nao()->joints()[j].name.find("Hand") != std::string::npos;
     if (!hand) {
       EXPECT_NEAR(r.joint_angles[s], q[j], 0.1) << nao()->joints()[j].name;
@@ -142,7 +143,7 @@ TEST(SensorsPhysics, StandingRobotFeelsItsWeightAndGravity) {
   const double step = SensorConfig{}.encoder_step;
   const int knee = [] {
     for (int s = 0; s < 25; ++s)
-      if (nao()->joints()[nao()->jointForLibagent(s)].name == "LKneePitch") return s;
+      if (nao()->joints()[simswift::NaoBinding(*nao()).joint(s)].name == "LKneePitch") return s;
     return 0;
   }();
   const double counts = r.joint_angles[knee] / step;

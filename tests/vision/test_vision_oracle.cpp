@@ -35,7 +35,7 @@ std::shared_ptr<const NaoModel> model() {
   return m;
 }
 std::vector<double> stand() {
-  return model()->postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+  return simswift::NaoBinding(*model()).posture(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
 // Noise off: exact positions, no misses, no phantoms, no camera error.

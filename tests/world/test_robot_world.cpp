@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "agent/program/Postures.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/world/World.hpp"
 
 using namespace simswift;
@@ -19,7 +20,7 @@ std::shared_ptr<const NaoModel> naoModel() {
 
 // The robot program's standing posture (agent/program/Postures.hpp), model joint order.
 std::vector<double> standingPosture(const NaoModel& m) {
-  return m.postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+  return simswift::NaoBinding(m).posture(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 
 int addStandingRobot(World& w, double x, double y, double theta) {

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "agent/program/Postures.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/world/World.hpp"
 
 using namespace simswift;
@@ -23,7 +24,7 @@ std::shared_ptr<const NaoModel> naoModel() {
 
 int addStandingRobot(World& w, double x, double y) {
   auto model = naoModel();
-  const auto q = model->postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+  const auto q = simswift::NaoBinding(*model).posture(agent::program::postureAngles(agent::program::Posture::Stand));
   const int i = w.addRobot(model, x, y, 0.0, q);
   w.robot(i).holdPosture(q);
   return i;
@@ -48,7 +49,7 @@ Eigen::Vector3d momentum(const World& w, int i) {
 TEST(WorldHardening, HugePlacementsAndVelocitiesAreRefused) {
   World w(FieldConfig::spl2017());
   const int i = addStandingRobot(w, 0, 0);
-  const auto q = w.robot(i).model().postureFromLibagent(agent::program::postureAngles(agent::program::Posture::Stand));
+  const auto q = simswift::NaoBinding(w.robot(i).model()).posture(agent::program::postureAngles(agent::program::Posture::Stand));
   EXPECT_THROW(w.placeRobot(i, 1e308, 0, 0, q), WorldError);
   EXPECT_THROW(w.placeRobot(i, 0, std::nan(""), 0, q), WorldError);
   EXPECT_THROW(w.placeRobot(i, 0, 0, 1e30, q), WorldError);

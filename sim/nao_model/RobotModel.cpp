@@ -1,7 +1,9 @@
-// NaoModel: loads the NAO's URDF with urdfdom and checks it is a robot the
-// simulator can drive (every link has mass, every joint is a limited hinge,
-// every libagent joint exists). Units as in NaoModel.hpp.
-#include "sim/nao_model/NaoModel.hpp"
+// RobotModel: loads a URDF with urdfdom and checks it is a robot the
+// simulator can build (every link has mass and a rigid body's inertia,
+// every joint is a limited hinge, mimics follow a real leader). Whether it
+// is a NAO libagent can drive is NaoBinding's check. Units as in
+// RobotModel.hpp.
+#include "sim/nao_model/RobotModel.hpp"
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
@@ -15,7 +17,7 @@
 #include <mutex>
 #include <sstream>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "agent/libagent/AgentShared.hpp"  // the NAO's joint names, for the joint order only
 #include "sim/nao_model/UrdfLines.hpp"
 
 namespace simswift {
@@ -158,7 +160,8 @@ ShapeSpec toShape(const urdf::GeometrySharedPtr& g, const urdf::Pose& origin, bo
 
 // Position of a joint in the NAO's 26-joint order (libagent order with
 // RHipYawPitch just before RHipRoll); used to give links and joints a stable,
-// familiar order instead of urdfdom's alphabetical maps.
+// familiar order instead of urdfdom's alphabetical maps. Any other model's
+// joints sort by name.
 double orderKey(const std::string& name) {
   for (int i = 0; i < la::kNumJoints; ++i)
     if (name == la::Joints::kNames[i]) return i;
@@ -168,7 +171,7 @@ double orderKey(const std::string& name) {
 
 }  // namespace
 
-NaoModel NaoModel::loadUrdf(const std::string& path) {
+RobotModel RobotModel::loadUrdf(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw ModelError(path + ":1: is a directory, not a URDF file");
   std::ifstream in(path);
@@ -183,7 +186,7 @@ NaoModel NaoModel::loadUrdf(const std::string& path) {
   return loadUrdfString(ss.str(), path);
 }
 
-NaoModel NaoModel::loadUrdfString(const std::string& xml, const std::string& source) {
+RobotModel RobotModel::loadUrdfString(const std::string& xml, const std::string& source) {
   // Size, depth and XML syntax first (cheap, and urdfdom's parser would
   // overflow the stack on deep nesting); then lines for every message.
   const UrdfLines lines(xml, source);
@@ -207,7 +210,9 @@ NaoModel NaoModel::loadUrdfString(const std::string& xml, const std::string& sou
   }
   if (!urdf->getRoot()) fail(source, lines.robot(), "URDF has no root link");
 
-  NaoModel model;
+  RobotModel model;
+  model.source_ = source;
+  model.robot_line_ = lines.robot();
   std::map<std::string, int> link_index;
 
   // Depth-first from the root, children in NAO order: parents always come
@@ -303,6 +308,8 @@ NaoModel NaoModel::loadUrdfString(const std::string& xml, const std::string& sou
     if (!j->limits) fail(source, lines.joint(j->name), where + " has no <limit>");
     JointSpec spec;
     spec.name = j->name;
+    spec.line = lines.joint(j->name);
+    spec.mimic_line = at("mimic");
     spec.parent_link = link_index.at(j->parent_link_name);
     spec.child_link = link_index.at(j->child_link_name);
     const std::string bad_origin = badPose(j->parent_to_joint_origin_transform);
@@ -341,64 +348,34 @@ NaoModel NaoModel::loadUrdfString(const std::string& xml, const std::string& sou
     model.joints_.push_back(std::move(spec));
   }
 
-  for (int i = 0; i < la::kNumJoints; ++i) {
-    const int j = model.jointIndex(la::Joints::kNames[i]);
-    if (j < 0)
-      fail(source, lines.robot(), std::string("missing joint '") + la::Joints::kNames[i] + "' (a libagent joint)");
-    if (model.joints_[j].mimic)
-      fail(source, lines.jointChild(la::Joints::kNames[i], "mimic"),
-           std::string("joint '") + la::Joints::kNames[i] + "' is a libagent joint and cannot be a mimic");
-    model.joints_[j].libagent_index = i;
-    model.libagent_to_joint_[i] = j;
-  }
-  // The NAO's two HipYawPitch joints share one motor: without the mimic the
-  // right hip would hang free and the robot falls over when it walks.
-  const int rhyp = model.jointIndex("RHipYawPitch");
-  if (rhyp < 0) fail(source, lines.robot(), "missing joint 'RHipYawPitch' (it mimics LHipYawPitch)");
-  if (!model.joints_[rhyp].mimic || *model.joints_[rhyp].mimic != "LHipYawPitch" ||
-      model.joints_[rhyp].mimic_multiplier != 1.0)
-    fail(source, lines.jointChild("RHipYawPitch", "mimic"),
-         "joint 'RHipYawPitch' needs <mimic joint=\"LHipYawPitch\" multiplier=\"1\"/> (the NAO drives both "
-         "HipYawPitch joints with one motor)");
   for (const auto& j : model.joints_) {
     if (!j.mimic) continue;
     const int target = model.jointIndex(*j.mimic);
-    if (target < 0) fail(source, lines.jointChild(j.name, "mimic"), "joint '" + j.name + "' mimics unknown joint '" + *j.mimic + "'");
+    if (target < 0)
+      fail(source, j.mimic_line, "missing joint '" + *j.mimic + "' (joint '" + j.name + "' mimics it)");
     if (model.joints_[target].mimic)
-      fail(source, lines.jointChild(j.name, "mimic"), "joint '" + j.name + "' mimics '" + *j.mimic + "', which is itself a mimic");
+      fail(source, j.mimic_line, "joint '" + j.name + "' mimics '" + *j.mimic + "', which is itself a mimic");
   }
 
   return model;
 }
 
-int NaoModel::linkIndex(const std::string& name) const {
+int RobotModel::linkIndex(const std::string& name) const {
   for (size_t i = 0; i < links_.size(); ++i)
     if (links_[i].name == name) return static_cast<int>(i);
   return -1;
 }
 
-int NaoModel::jointIndex(const std::string& name) const {
+int RobotModel::jointIndex(const std::string& name) const {
   for (size_t i = 0; i < joints_.size(); ++i)
     if (joints_[i].name == name) return static_cast<int>(i);
   return -1;
 }
 
-double NaoModel::totalMass() const {
+double RobotModel::totalMass() const {
   double m = 0;
   for (const auto& l : links_) m += l.mass;
   return m;
-}
-
-std::vector<double> NaoModel::postureFromLibagent(const std::array<float, la::kNumJoints>& angles) const {
-  std::vector<double> q(joints_.size(), 0.0);
-  for (int i = 0; i < la::kNumJoints; ++i)
-    if (libagent_to_joint_[i] >= 0) q[libagent_to_joint_[i]] = angles[i];
-  for (size_t j = 0; j < joints_.size(); ++j)
-    if (joints_[j].mimic) {
-      const int leader = jointIndex(*joints_[j].mimic);
-      if (leader >= 0) q[j] = joints_[j].mimic_multiplier * q[leader];
-    }
-  return q;
 }
 
 }  // namespace simswift
