@@ -10,15 +10,16 @@
 #include <vector>
 
 #include "agent/behaviour/Geometry.hpp"
+#include "agent/field/FieldFacts.hpp"
 
 namespace agent::behaviour {
 
-// Field geometry the behaviour plans with (SPL 2017, inside the lines).
+// Field geometry the behaviour plans with (SPL 2017, agent/field/FieldFacts.hpp).
 struct FieldGeometry {
-  double length = 9000.0;        // mm, goal line to goal line
-  double width = 6000.0;         // mm, touch line to touch line
-  double goal_post_y = 800.0;    // mm, post centres at x = +-length/2, y = +-goal_post_y
-  double goal_post_radius = 50.0;  // mm
+  double length = field::kLength;  // mm, goal line to goal line
+  double width = field::kWidth;    // mm, touch line to touch line
+  double goal_post_y = field::kGoalPostSeparation / 2;     // mm, post centres at x = +-length/2, y = +-goal_post_y
+  double goal_post_radius = field::kGoalPostDiameter / 2;  // mm
 };
 
 // PositionalDistribution's grid (thesis 4.2.1).
@@ -224,7 +225,7 @@ struct SkillConfig {
   double kick_power = 1.0;            // 0..1
   double ball_lost_time = 3.0;        // s without a sighting before the ball counts as lost
   double team_ball_max_age = 2.0;     // s: a teammate's sighting older than this is ignored
-  Point2 kick_target{4500, 0};        // mm, opponent goal centre
+  Point2 kick_target{field::kLength / 2, 0};  // mm, opponent goal centre
 };
 
 enum class BehaviourKind : int32_t { FINDBALL_2016 = 0, FINDBALL_2017, STRIKER };

@@ -13,14 +13,15 @@
 
 #include "agent/behaviour/BehaviourConfig.hpp"
 #include "agent/behaviour/Geometry.hpp"
+#include "agent/field/FieldFacts.hpp"
 
 namespace agent::behaviour {
 
 class PositionalDistribution {
  public:
   // Uniform over a columns x rows grid over a length x width field (mm).
-  PositionalDistribution(int columns = 3, int rows = 3, double length = 9000.0,
-                         double width = 6000.0);
+  PositionalDistribution(int columns = 3, int rows = 3, double length = field::kLength,
+                         double width = field::kWidth);
   static PositionalDistribution fromConfig(const GridConfig& grid, const FieldGeometry& field);
 
   // The smallest grid whose segments' centre-to-corner distance is at most

@@ -1,7 +1,7 @@
-// The robot code's model of the SPL 2017 field (the rules' dimensions, as a
-// team would write them down), for localisation and behaviour. The simulator's
-// field lives in fields/spl_2017.yaml; tests/world/test_field_model_agreement.cpp holds
-// the two against each other.
+// The robot code's model of the SPL 2017 field for localisation: the
+// dimensions of agent/field/FieldFacts.hpp and the landmarks and lines they
+// give. The simulator's field lives in fields/spl_2017.yaml;
+// tests/world/test_field_model_agreement.cpp holds the two against each other.
 //
 // Field frame: origin at the centre spot, x toward the opponent goal, y left;
 // mm. Lines are their centre lines.
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "agent/blackboard/Vision.hpp"
+#include "agent/field/FieldFacts.hpp"
 
 namespace agent::localisation {
 
@@ -30,12 +31,12 @@ struct Landmark {
 };
 
 struct FieldModel {
-  double length = 9000, width = 6000;        // mm, between the lines' centres
-  double penalty_area_depth = 600, penalty_area_width = 2200;
-  double penalty_mark_distance = 1300;       // from the goal line
-  double centre_circle_radius = 750;
-  double goal_post_separation = 1600;        // between the posts' centres
-  double line_width = 50;
+  double length = field::kLength, width = field::kWidth;  // mm, between the lines' centres
+  double penalty_area_depth = field::kPenaltyAreaDepth, penalty_area_width = field::kPenaltyAreaWidth;  // mm
+  double penalty_mark_distance = field::kPenaltyMarkDistance;     // mm, from the goal line
+  double centre_circle_radius = field::kCentreCircleDiameter / 2;  // mm
+  double goal_post_separation = field::kGoalPostSeparation;       // mm, between the posts' centres
+  double line_width = field::kLineWidth;                          // mm
 
   // The SPL 2017 field.
   static FieldModel spl2017() { return FieldModel{}; }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agent/field/FieldFacts.hpp"
+
 namespace agent::localisation {
 
 using blackboard::FeatureKind;
@@ -171,7 +173,8 @@ void Localiser::resample() {
 
 void Localiser::candidates(std::vector<Particle>& out) const {
   out.clear();
-  const double hx = field_.halfLength() + 700, hy = field_.halfWidth() + 700;
+  // Poses on the carpet: the lines plus the border strip (mm).
+  const double hx = field_.halfLength() + field::kBorderStripWidth, hy = field_.halfWidth() + field::kBorderStripWidth;
   auto add = [&](double x, double y, double theta) {
     if (std::fabs(x) < hx && std::fabs(y) < hy && static_cast<int>(out.size()) < cfg_.max_candidates)
       out.push_back({x, y, wrapAngle(theta), 0});

@@ -18,11 +18,18 @@
 // Everything but timing.* and report.md's wall-clock section is a pure
 // function of the experiment file, so reruns, --jobs, shards + merge and
 // interrupted-then-resumed runs give byte-identical results.
+//
+// The parts, one file each: ResultsFolder (claiming the folder, which
+// trials are done), WorkerPool (the forked workers and Ctrl-C),
+// ProgressLine (stderr), Merge.cpp (shards), Assemble.cpp (results.csv,
+// tracks.csv, timing.csv, report.md), TimingPage (timing.md), FolderFigures
+// (figures/), Files (atomic writes and the other file operations).
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "sim/experiment/BatchError.hpp"
 #include "sim/experiment/Experiment.hpp"
 #include "sim/experiment/Report.hpp"
 #include "sim/experiment/TrialHooks.hpp"
@@ -44,10 +51,6 @@ struct BatchOutcome {
   bool interrupted = false;
   bool assembled = false;  // every trial of the experiment present: results written
   std::string message;     // what to tell the user at the end
-};
-
-struct BatchError : std::runtime_error {
-  using std::runtime_error::runtime_error;
 };
 
 // Throws ConfigError (behaviours) or BatchError (folder of another experiment, I/O).

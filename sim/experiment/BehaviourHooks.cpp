@@ -20,8 +20,9 @@ void RobotBehaviours::configure(const Experiment& e, const TrialSpec& t, runner:
 }
 
 TrialHooks behaviourHooks() {
-  TrialHooks h = defaultHooks();
+  TrialHooks h;
   h.behaviours = std::make_shared<RobotBehaviours>();
+  h.found = std::make_shared<VisionFoundRule>();
   return h;
 }
 

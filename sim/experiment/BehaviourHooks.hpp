@@ -17,7 +17,7 @@ class RobotBehaviours : public BehaviourFactory {
   void configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const override;
 };
 
-// defaultHooks() with RobotBehaviours.
+// The trial hooks of simswift: RobotBehaviours and the VisionFoundRule.
 TrialHooks behaviourHooks();
 
 }  // namespace simswift::experiment

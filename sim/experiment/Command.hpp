@@ -10,6 +10,6 @@ extern const char* kExperimentUsage;
 
 // argv[0] is "experiment". Returns the process exit code: 0 done, 1 trial
 // or I/O failure, 2 bad command line or experiment file, 130 interrupted.
-int experimentMain(int argc, char** argv, const TrialHooks& hooks = defaultHooks());
+int experimentMain(int argc, char** argv, const TrialHooks& hooks);
 
 }  // namespace simswift::experiment

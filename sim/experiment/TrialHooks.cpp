@@ -6,18 +6,6 @@
 
 namespace simswift::experiment {
 
-void ScriptBehaviours::check(const Experiment& e, const ExperimentRobot& r) const {
-  if (r.behaviour == Behaviour::Script) return;
-  throw ConfigError(r.behaviour_where + ": " + behaviourName(r.behaviour) +
-                    ": not built yet in this simswift (this build runs script robots only)");
-}
-
-void ScriptBehaviours::configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const {
-  // trialScenario already copied each script robot's actions; nothing else
-  // to set.
-  for (const ExperimentRobot& r : e.setups[t.setup].robots) check(e, r);
-}
-
 double VisionFoundRule::ballDistance(runner::Runner& r, int robot) {
   const vision::GroundFrame g = r.visionOracle().groundFrame(r.world(), robot);
   const Eigen::Vector3d ball = r.world().ballPosition();
@@ -31,13 +19,6 @@ int VisionFoundRule::finder(const Experiment& e, runner::Runner& r) const {
     if (foundBy(e.found, s.frame, s.distance_mm * 1e-3, s.consecutive, r.lastFrame(), true_distance)) return i;
   }
   return -1;
-}
-
-TrialHooks defaultHooks() {
-  TrialHooks h;
-  h.behaviours = std::make_shared<ScriptBehaviours>();
-  h.found = std::make_shared<VisionFoundRule>();
-  return h;
 }
 
 void checkBehaviours(const Experiment& e, const TrialHooks& hooks) {

@@ -7,8 +7,8 @@
 //  - FoundRule: after every tick of play, which robot (if any) has found
 //    the ball.
 //
-// defaultHooks(): script robots only (ScriptBehaviours) and the VisionFoundRule;
-// behaviourHooks() (BehaviourHooks.hpp) adds the agent/behaviour behaviours.
+// behaviourHooks() (BehaviourHooks.hpp): the agent/behaviour behaviours and
+// the VisionFoundRule.
 #pragma once
 
 #include <memory>
@@ -47,14 +47,6 @@ struct TrialHooks {
   std::shared_ptr<const FoundRule> found;
 };
 
-// Script robots run their actions: list; findball2016, findball2017 and
-// striker are refused ("not built yet in this simswift").
-class ScriptBehaviours : public BehaviourFactory {
- public:
-  void check(const Experiment& e, const ExperimentRobot& r) const override;
-  void configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const override;
-};
-
 // Found by what the robot's vision reports (thesis §5.1: a robot "could both
 // see the ball, and was within 300mm (inclusive)"): with `found.sees`, the
 // vision oracle gave the robot the true ball (no false positive) in the
@@ -68,8 +60,6 @@ class VisionFoundRule : public FoundRule {
   // m, true ground distance from the point between robot's feet to the ball.
   static double ballDistance(runner::Runner& r, int robot);
 };
-
-TrialHooks defaultHooks();
 
 // Validates every robot's behaviour against the hooks (throws ConfigError).
 void checkBehaviours(const Experiment& e, const TrialHooks& hooks);

@@ -375,13 +375,14 @@ Scenario Scenario::loadFile(const std::string& path) {
   return parse(text.str(), path);
 }
 
-Scenario Scenario::parse(const std::string& text, const std::string& source_name) {
-  const YAML::Node root = YamlReader::parse(text, source_name);
-  YamlReader top(root, source_name);
-  Scenario sc;
-  sc.source = source_name;
+namespace {
+
+// The run's own settings: where its files are, how long, the seed, the
+// wall-clock limits and the launched programs' log folder.
+void readRun(const YamlReader& top, Scenario& sc) {
+  const YAML::Node& root = top.node();
   // Relative paths resolve against the scenario file's folder first.
-  sc.base_dir = top.string("base_dir", std::filesystem::path(source_name).parent_path().string());
+  sc.base_dir = top.string("base_dir", std::filesystem::path(sc.source).parent_path().string());
   sc.model_path = top.string("model", "models/nao_v5.urdf");
   sc.field_path = top.string("field", "fields/spl_2017.yaml");
   auto lineOf = [&](const char* key) { return root[key] ? root[key].Mark().line + 1 : 1; };
@@ -402,17 +403,19 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
   sc.attach_timeout_s = top.number("attach_timeout", 30.0, Range::openClosed(0, limits::kMaxWallClock));
   sc.program_logs = top.string("program_logs", sc.program_logs);
   if (sc.program_logs.empty()) top.fail("program_logs", "must name a folder");
+}
 
-  readNoise(top, sc.noise);
-  readPhysics(top, sc);
-  std::optional<YamlReader> overview_reader;  // for errors about overview.robot
+// camera: the robots' cameras and the overview. Returns the overview's
+// reader, kept for errors about overview.robot once the robots are known.
+std::optional<YamlReader> readCamera(const YamlReader& top, CameraSpec& camera) {
+  std::optional<YamlReader> overview_reader;
   if (auto c = top.optionalMap("camera")) {
-    sc.camera.enabled = c->boolean("enabled", false);
+    camera.enabled = c->boolean("enabled", false);
     const std::string res = c->choice("resolution", "640x480", {"640x480", "1280x960"});
-    sc.camera.width = res == "640x480" ? 640 : 1280;
-    sc.camera.height = res == "640x480" ? 480 : 960;
+    camera.width = res == "640x480" ? 640 : 1280;
+    camera.height = res == "640x480" ? 480 : 960;
     if (auto o = c->optionalMap("overview")) {
-      CameraSpec::Overview& ov = sc.camera.overview;
+      CameraSpec::Overview& ov = camera.overview;
       ov.enabled = o->boolean("enabled", true);
       const std::string mode = o->choice("mode", "fixed", {"fixed", "robot", "ball"});
       ov.mode = mode == "fixed" ? CameraSpec::Overview::Mode::Fixed
@@ -429,13 +432,21 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     }
     c->finish();
   }
-  // vision: on/off, or the detector model's map (sim/vision/VisionConfig.hpp).
-  if (top.has("vision")) {
-    if (root["vision"].IsMap())
-      sc.vision = vision::readVisionConfig(top.map("vision"), sc.vision);
-    else
-      sc.vision.enabled = top.boolean("vision");
-  }
+  return overview_reader;
+}
+
+// vision: on/off, or the detector model's map (sim/vision/VisionConfig.hpp).
+void readVision(const YamlReader& top, vision::VisionConfig& vision) {
+  if (!top.has("vision")) return;
+  if (top.node()["vision"].IsMap())
+    vision = vision::readVisionConfig(top.map("vision"), vision);
+  else
+    vision.enabled = top.boolean("vision");
+}
+
+// ball: {x, y} (m, field frame), or none.
+void readBall(const YamlReader& top, Scenario& sc) {
+  const YAML::Node& root = top.node();
   if (root["ball"] && root["ball"].IsScalar()) {
     // The only scalar a ball takes: a world without one (a search with
     // nothing to find), rather than a ball parked somewhere out of sight.
@@ -446,104 +457,168 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
     sc.ball_line = b->node().Mark().line + 1;
     b->finish();
   }
+}
 
-  std::set<int> numbers;               // libagent name numbers in use
-  std::set<std::string> memories;      // libagent memory names in use (releases name differently)
+// What the robots read so far have taken: libagent names and team colours.
+struct RobotClaims {
+  std::set<int> numbers;                          // libagent name numbers in use
+  std::set<std::string> memories;                 // libagent memory names in use (releases name differently)
   std::vector<std::pair<int, TeamColour>> teams;  // team number -> colour, in order of appearance
-  int bare = 0;
-  for (const YamlReader& r : top.list("robots")) {
-    RobotSpec rs;
-    rs.line = r.node().Mark().line + 1;
-    rs.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
-    rs.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
-    if (!numbers.insert(al::simulationNumber(rs.team, rs.player)).second)
-      r.fail("player", "team " + std::to_string(rs.team) + " player " + std::to_string(rs.player) +
-                           " appears twice");
-    auto known = std::find_if(teams.begin(), teams.end(), [&](const auto& t) { return t.first == rs.team; });
-    if (r.has("colour")) {
-      rs.colour = r.choice("colour", "blue", {"blue", "red"}) == "blue" ? TeamColour::Blue : TeamColour::Red;
-    } else if (known != teams.end()) {
-      rs.colour = known->second;
-    } else {
-      rs.colour = teams.empty() || teams.front().second == TeamColour::Red ? TeamColour::Blue : TeamColour::Red;
-    }
-    if (known != teams.end() && known->second != rs.colour)
-      r.fail("colour", "team " + std::to_string(rs.team) + " already plays in " +
-                           (known->second == TeamColour::Blue ? "blue" : "red"));
-    if (known == teams.end()) {
-      if (teams.size() == 2) r.fail("team", "a match has two teams (" + std::to_string(teams[0].first) + " and " +
-                                                std::to_string(teams[1].first) + ")");
-      if (!teams.empty() && teams.front().second == rs.colour)
-        r.fail("colour", "team " + std::to_string(teams.front().first) + " already plays in " +
-                             (rs.colour == TeamColour::Blue ? "blue" : "red"));
-      teams.emplace_back(rs.team, rs.colour);
-    }
-    if (auto l = r.optionalMap("libagent")) readLibagent(*l, rs);
-    rs.bare_names = r.choice("names", "simulation", {"simulation", "bare"}) == "bare";
-    if (rs.release == bridge::Release::R2016) {
-      if (r.has("names") && !rs.bare_names)
-        r.fail("names", "rUNSWift 2016 has only the robot build's names (/libagent-memory): names: bare");
-      rs.bare_names = true;
-    }
-    if (rs.bare_names && ++bare > 1)
-      r.fail("names", "only one robot can have the bare names (/libagent-memory)");
-    const std::string memory = bridge::releaseNames(rs.release, rs.team, rs.player, rs.bare_names).memory;
-    if (!memories.insert(memory).second) r.fail("libagent", "two robots would share " + memory);
-    const Range pos = Range::closed(-limits::kMaxPosition, limits::kMaxPosition);
-    rs.x = r.number("x", 0.0, pos);
-    rs.y = r.number("y", 0.0, pos);
-    rs.theta = r.number("theta", 0.0, Range::closed(-limits::kMaxHeading, limits::kMaxHeading));
-    rs.posture = *agent::program::parsePosture(r.choice("posture", "stand", agent::program::postureNames()));
-    readProgram(r, rs, sc.base_dir);
-    if (r.has("script")) {
-      if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
-        r.fail("script", "an external robot runs its own program; a script needs program: builtin (or a "
-                         "launched program, which gets it in its {config} file)");
-      for (const YamlReader& s : r.list("script")) rs.script.push_back(agent::program::readScriptStep(s));
-    }
-    if (r.has("buttons"))
-      for (const YamlReader& b : r.list("buttons")) rs.buttons.push_back(readButton(b));
-    if (r.has("actions")) {
-      readActions(r, rs);
-      if (!rs.actions.empty() && rs.program == RobotSpec::Program::External && !rs.launch.launched())
-        r.fail("actions", "an external robot runs its own program; body actions need program: builtin "
-                          "or a launched program, which gets them in its {config} file (pushes, clicks and "
-                          "presses are fine)");
-      if (!rs.actions.empty() && !rs.script.empty())
-        r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
-    }
-    if (rs.program == RobotSpec::Program::Builtin && rs.release != bridge::Release::R2017)
-      r.fail("libagent", "the builtin robot program speaks the 2017 block; release " +
-                             std::to_string(bridge::releaseYear(rs.release)) + " needs program: external");
-    if (r.has("behaviour")) {
-      if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
-        r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin (or a "
-                            "launched program, which gets it in its {config} file)");
-      rs.behaviour = agent::behaviour::readBehaviour(r, &rs.behaviour_yaml);
-      if (rs.behaviour && !rs.actions.empty())
-        r.fail("actions", std::string("a robot with behaviour ") + agent::behaviour::behaviourKindName(rs.behaviour->kind) +
-                              " takes no body actions (pushes only); use behaviour: script");
-      if (rs.behaviour && !rs.script.empty())
-        r.fail("script", "a robot with a behaviour takes no joint script");
-    }
-    r.finish();
-    sc.robots.push_back(std::move(rs));
+  int bare = 0;                                   // robots with the bare names
+};
+
+// team, player and colour: one entry per player, two teams, one colour each.
+void readTeamPlayer(const YamlReader& r, RobotSpec& rs, RobotClaims& claims) {
+  std::vector<std::pair<int, TeamColour>>& teams = claims.teams;
+  rs.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
+  rs.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
+  if (!claims.numbers.insert(al::simulationNumber(rs.team, rs.player)).second)
+    r.fail("player", "team " + std::to_string(rs.team) + " player " + std::to_string(rs.player) +
+                         " appears twice");
+  auto known = std::find_if(teams.begin(), teams.end(), [&](const auto& t) { return t.first == rs.team; });
+  if (r.has("colour")) {
+    rs.colour = r.choice("colour", "blue", {"blue", "red"}) == "blue" ? TeamColour::Blue : TeamColour::Red;
+  } else if (known != teams.end()) {
+    rs.colour = known->second;
+  } else {
+    rs.colour = teams.empty() || teams.front().second == TeamColour::Red ? TeamColour::Blue : TeamColour::Red;
   }
+  if (known != teams.end() && known->second != rs.colour)
+    r.fail("colour", "team " + std::to_string(rs.team) + " already plays in " +
+                         (known->second == TeamColour::Blue ? "blue" : "red"));
+  if (known == teams.end()) {
+    if (teams.size() == 2) r.fail("team", "a match has two teams (" + std::to_string(teams[0].first) + " and " +
+                                              std::to_string(teams[1].first) + ")");
+    if (!teams.empty() && teams.front().second == rs.colour)
+      r.fail("colour", "team " + std::to_string(teams.front().first) + " already plays in " +
+                           (rs.colour == TeamColour::Blue ? "blue" : "red"));
+    teams.emplace_back(rs.team, rs.colour);
+  }
+}
+
+// libagent and names: the release's block and its shared-memory names, no
+// two robots on one name.
+void readNames(const YamlReader& r, RobotSpec& rs, RobotClaims& claims) {
+  if (auto l = r.optionalMap("libagent")) readLibagent(*l, rs);
+  rs.bare_names = r.choice("names", "simulation", {"simulation", "bare"}) == "bare";
+  if (rs.release == bridge::Release::R2016) {
+    if (r.has("names") && !rs.bare_names)
+      r.fail("names", "rUNSWift 2016 has only the robot build's names (/libagent-memory): names: bare");
+    rs.bare_names = true;
+  }
+  if (rs.bare_names && ++claims.bare > 1)
+    r.fail("names", "only one robot can have the bare names (/libagent-memory)");
+  const std::string memory = bridge::releaseNames(rs.release, rs.team, rs.player, rs.bare_names).memory;
+  if (!claims.memories.insert(memory).second) r.fail("libagent", "two robots would share " + memory);
+}
+
+// x, y, theta (m, m, rad; field frame) and the start posture.
+void readPlacement(const YamlReader& r, RobotSpec& rs) {
+  const Range pos = Range::closed(-limits::kMaxPosition, limits::kMaxPosition);
+  rs.x = r.number("x", 0.0, pos);
+  rs.y = r.number("y", 0.0, pos);
+  rs.theta = r.number("theta", 0.0, Range::closed(-limits::kMaxHeading, limits::kMaxHeading));
+  rs.posture = *agent::program::parsePosture(r.choice("posture", "stand", agent::program::postureNames()));
+}
+
+// script, buttons and actions: what the robot is told to do over time;
+// joints and Motion actions need a program simswift gives them to.
+void readTimedLists(const YamlReader& r, RobotSpec& rs) {
+  if (r.has("script")) {
+    if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
+      r.fail("script", "an external robot runs its own program; a script needs program: builtin (or a "
+                       "launched program, which gets it in its {config} file)");
+    for (const YamlReader& s : r.list("script")) rs.script.push_back(agent::program::readScriptStep(s));
+  }
+  if (r.has("buttons"))
+    for (const YamlReader& b : r.list("buttons")) rs.buttons.push_back(readButton(b));
+  if (r.has("actions")) {
+    readActions(r, rs);
+    if (!rs.actions.empty() && rs.program == RobotSpec::Program::External && !rs.launch.launched())
+      r.fail("actions", "an external robot runs its own program; body actions need program: builtin "
+                        "or a launched program, which gets them in its {config} file (pushes, clicks and "
+                        "presses are fine)");
+    if (!rs.actions.empty() && !rs.script.empty())
+      r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
+  }
+}
+
+// The builtin program speaks the 2017 block only.
+void checkBuiltinRelease(const YamlReader& r, const RobotSpec& rs) {
+  if (rs.program == RobotSpec::Program::Builtin && rs.release != bridge::Release::R2017)
+    r.fail("libagent", "the builtin robot program speaks the 2017 block; release " +
+                           std::to_string(bridge::releaseYear(rs.release)) + " needs program: external");
+}
+
+// behaviour: agent/behaviour's, for a program simswift configures; it
+// excludes body actions and joint scripts.
+void readRobotBehaviour(const YamlReader& r, RobotSpec& rs) {
+  if (!r.has("behaviour")) return;
+  if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
+    r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin (or a "
+                        "launched program, which gets it in its {config} file)");
+  rs.behaviour = agent::behaviour::readBehaviour(r, &rs.behaviour_yaml);
+  if (rs.behaviour && !rs.actions.empty())
+    r.fail("actions", std::string("a robot with behaviour ") + agent::behaviour::behaviourKindName(rs.behaviour->kind) +
+                          " takes no body actions (pushes only); use behaviour: script");
+  if (rs.behaviour && !rs.script.empty()) r.fail("script", "a robot with a behaviour takes no joint script");
+}
+
+// One entry of robots:, its keys in this order (the first error wins).
+RobotSpec readRobot(const YamlReader& r, const std::string& base_dir, RobotClaims& claims) {
+  RobotSpec rs;
+  rs.line = r.node().Mark().line + 1;
+  readTeamPlayer(r, rs, claims);
+  readNames(r, rs, claims);
+  readPlacement(r, rs);
+  readProgram(r, rs, base_dir);
+  readTimedLists(r, rs);
+  checkBuiltinRelease(r, rs);
+  readRobotBehaviour(r, rs);
+  r.finish();
+  return rs;
+}
+
+void readRobots(const YamlReader& top, Scenario& sc) {
+  RobotClaims claims;
+  for (const YamlReader& r : top.list("robots")) sc.robots.push_back(readRobot(r, sc.base_dir, claims));
   if (sc.robots.empty()) top.fail("robots", "a scenario needs at least one robot");
+}
+
+// Robots on top of one another (the field is not needed for this).
+void checkRobotsApart(const Scenario& sc) {
+  for (size_t i = 0; i < sc.robots.size(); ++i)
+    for (size_t j = 0; j < i; ++j) {
+      const double d = std::hypot(sc.robots[i].x - sc.robots[j].x, sc.robots[i].y - sc.robots[j].y);
+      if (d < 2 * limits::kRobotRadius)
+        throw ConfigError(sc.source + ":" + std::to_string(sc.robots[i].line) + ": robots[" + std::to_string(i) +
+                          "]: overlaps robots[" + std::to_string(j) + "] (centres " + std::to_string(d) +
+                          " m apart; at least " + std::to_string(2 * limits::kRobotRadius) + " m needed)");
+    }
+}
+
+}  // namespace
+
+// The blocks in file order of the documentation (Scenario.hpp); the robots
+// before team_comms and game, which may name them.
+Scenario Scenario::parse(const std::string& text, const std::string& source_name) {
+  const YAML::Node root = YamlReader::parse(text, source_name);
+  YamlReader top(root, source_name);
+  Scenario sc;
+  sc.source = source_name;
+  readRun(top, sc);
+  readNoise(top, sc.noise);
+  readPhysics(top, sc);
+  const std::optional<YamlReader> overview_reader = readCamera(top, sc.camera);
+  readVision(top, sc.vision);
+  readBall(top, sc);
+  readRobots(top, sc);
   if (auto t = top.optionalMap("team_comms")) sc.team_comms = readTeamComms(*t);
   if (auto g = top.optionalMap("game")) sc.game = readGame(*g, static_cast<int>(sc.robots.size()));
   if (overview_reader && sc.camera.overview.robot >= static_cast<int>(sc.robots.size()))
     overview_reader->fail("robot", "no robot " + std::to_string(sc.camera.overview.robot) + " (the scenario has " +
                                        std::to_string(sc.robots.size()) + ")");
-  // Robots on top of one another (the field is not needed for this).
-  for (size_t i = 0; i < sc.robots.size(); ++i)
-    for (size_t j = 0; j < i; ++j) {
-      const double d = std::hypot(sc.robots[i].x - sc.robots[j].x, sc.robots[i].y - sc.robots[j].y);
-      if (d < 2 * limits::kRobotRadius)
-        throw ConfigError(source_name + ":" + std::to_string(sc.robots[i].line) + ": robots[" + std::to_string(i) +
-                          "]: overlaps robots[" + std::to_string(j) + "] (centres " + std::to_string(d) +
-                          " m apart; at least " + std::to_string(2 * limits::kRobotRadius) + " m needed)");
-    }
+  checkRobotsApart(sc);
   top.finish();
   return sc;
 }

@@ -18,7 +18,7 @@ namespace sim::views {
 
 // The view of one robot's findball section (field mm, rad).
 FindBallViewData viewFromInfo(const agent::blackboard::FindBallInfo& fb, int player, const std::string& tag,
-                              double field_length = 9000.0, double field_width = 6000.0);
+                              double field_length = agent::field::kLength, double field_width = agent::field::kWidth);
 
 struct FindBallRecorderConfig {
   std::string dir;       // output folder (created)

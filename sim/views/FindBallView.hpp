@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "agent/blackboard/FindBallInfo.hpp"
+#include "agent/field/FieldFacts.hpp"
 
 namespace agent::behaviour {
 class PositionalDistribution;
@@ -29,9 +30,10 @@ struct ViewRobot {
 };
 
 struct FindBallViewData {
-  double field_length = 9000.0;  // mm, inside the lines
-  double field_width = 6000.0;   // mm
-  double border = 700.0;         // mm of carpet drawn round the lines
+  // The field the robot believes in (its behaviour's, agent/field/FieldFacts.hpp).
+  double field_length = agent::field::kLength;      // mm, between the lines
+  double field_width = agent::field::kWidth;        // mm
+  double border = agent::field::kBorderStripWidth;  // mm of carpet drawn round the lines
   // The distribution: columns x rows, row by row from the top-left (most
   // negative x, most positive y), as agent::behaviour::PositionalDistribution.
   int columns = 3, rows = 3;

@@ -312,249 +312,317 @@ int VisionOracle::fill(const World& world, int robot, al::CameraFrame& frame) {
   return dropped;
 }
 
-void VisionOracle::observeCamera(const World& world, int robot, int camera, int64_t frame,
-                                 std::vector<SeenObject>& out) {
-  const bool noisy = config_.noise;
-  const Eigen::Isometry3d cam = cameraPose(world, robot, camera);
-  const Eigen::Isometry3d to_cam = cam.inverse();
-  const Eigen::Vector3d eye = cam.translation();
-  const GroundFrame g = groundFrame(world, robot);
+// One camera of one robot at one frame: its pose, the robot's ground frame,
+// the calibration error and the frame's draws, and the helpers every stage
+// shares. Each see*() stage appends the observations of one kind of object.
+class VisionOracle::CameraView {
+ public:
+  CameraView(VisionOracle& oracle, const World& world, int robot, int camera, int64_t frame,
+             std::vector<SeenObject>& out);
 
+  void seeBall();
+  void seeGoalPosts();
+  void seeRobots();
+  void seeMarks();
+  void seeCentreCircles();
+  void seeCorners();
+  void seeLines();
+  void addPhantoms();  // the detector's false positives (noise only)
+
+ private:
+  // This frame's sequence for object `index` of kind `f`.
+  Draws drawsFor(Feature f, uint64_t index) const;
+  // Robot-relative point (m) with distance and bearing noise; `height` is
+  // the camera's height above the object's reference point (m).
+  Eigen::Vector2d noisyPoint(const DetectorSpec& s, Eigen::Vector2d rel, double height, Draws& r) const;
+  // Appends an observation at rel_m (robot frame, m); returns it for the
+  // stage to add what its kind carries.
+  SeenObject& emit(Feature f, const Eigen::Vector2d& rel_m, double confidence, int source);
+  // A field angle (rad) as seen from the robot, with orientation noise.
+  float orient(const DetectorSpec& s, double field_angle, Draws& r) const;
+  // Range + image + Bernoulli + occlusion for a point-like object. `look` is
+  // the point that must be in the image (field, m), `ground` its ground
+  // point. Returns the detection probability, or a negative value if unseen.
+  double detect(const DetectorSpec& s, const Eigen::Vector3d& look, const Eigen::Vector2d& ground, double stop_short,
+                int ignore_robot, int ignore_post, double factor, Draws& r);
+  // The points of line k that can be seen, as runs of the line's fixed
+  // sample grid, each reported as a piece.
+  void seeLine(const DetectorSpec& s, int k);
+
+  VisionOracle& o_;
+  const World& world_;
+  const VisionConfig& config_;
+  const FieldFeatures& features_;
+  const int robot_, camera_;
+  const bool noisy_;
+  const Eigen::Isometry3d cam_, to_cam_;
+  const Eigen::Vector3d eye_;  // camera position (field, m)
+  const GroundFrame g_;
+  Eigen::Vector2d off_ = Eigen::Vector2d::Zero();  // camera position error (robot frame, m)
+  uint64_t frame_key_ = 0;
+  std::vector<SeenObject>& out_;
+};
+
+VisionOracle::CameraView::CameraView(VisionOracle& oracle, const World& world, int robot, int camera, int64_t frame,
+                                     std::vector<SeenObject>& out)
+    : o_(oracle),
+      world_(world),
+      config_(oracle.config_),
+      features_(oracle.features_),
+      robot_(robot),
+      camera_(camera),
+      noisy_(oracle.config_.noise),
+      cam_(oracle.cameraPose(world, robot, camera)),
+      to_cam_(cam_.inverse()),
+      eye_(cam_.translation()),
+      g_(oracle.groundFrame(world, robot)),
+      out_(out) {
   // Camera position error (table 3.1), once per robot, horizontal part: the
   // robot believes its camera `off` away from where it is, so everything it
   // sees is shifted by -off (robot frame, m).
-  Eigen::Vector2d off = Eigen::Vector2d::Zero();
-  if (noisy && config_.camera_offset_mm > 0) {
-    Draws c(sensors::streamSeed(seed_, robot, kVisionCalibStream));
-    off.x() = (2 * c.uniform() - 1) * config_.camera_offset_mm * 1e-3;
-    off.y() = (2 * c.uniform() - 1) * config_.camera_offset_mm * 1e-3;
+  if (noisy_ && config_.camera_offset_mm > 0) {
+    Draws c(sensors::streamSeed(o_.seed_, robot, kVisionCalibStream));
+    off_.x() = (2 * c.uniform() - 1) * config_.camera_offset_mm * 1e-3;
+    off_.y() = (2 * c.uniform() - 1) * config_.camera_offset_mm * 1e-3;
   }
-  uint64_t frame_key = sensors::streamSeed(seed_, robot, kVisionStream);
-  frame_key = agent::random::splitmix64(frame_key ^ (static_cast<uint64_t>(camera) + 1));
-  frame_key = agent::random::splitmix64(frame_key ^ static_cast<uint64_t>(frame));
-  auto drawsFor = [&](Feature f, uint64_t index) {
-    return Draws(agent::random::splitmix64(frame_key ^ agent::random::splitmix64((static_cast<uint64_t>(f) << 40) ^ index)));
-  };
+  frame_key_ = sensors::streamSeed(o_.seed_, robot, kVisionStream);
+  frame_key_ = agent::random::splitmix64(frame_key_ ^ (static_cast<uint64_t>(camera) + 1));
+  frame_key_ = agent::random::splitmix64(frame_key_ ^ static_cast<uint64_t>(frame));
+}
 
-  // Robot-relative (m) point with distance and bearing noise. `height` is
-  // the camera's height above the object's reference point (m).
-  auto noisyPoint = [&](const DetectorSpec& s, Eigen::Vector2d rel, double height, Draws& r) {
-    rel -= off;
-    if (!noisy) return rel;
-    const double d = rel.norm();
-    const double dc = (xy(eye) - (g.origin + Eigen::Rotation2Dd(g.heading) * rel)).norm();
-    const double h = std::max(height, 0.05);
-    const double elev = (h * h + dc * dc) / h * s.elevation_sigma_deg * kDeg;
-    const double abs_m = s.distance_sigma_mm * 1e-3, rel_m = s.distance_sigma_fraction * d;
-    const double sd = std::sqrt(abs_m * abs_m + rel_m * rel_m + elev * elev);
-    const double dn = std::max(0.0, d + sd * r.gaussian());
-    const double bn = std::atan2(rel.y(), rel.x()) + s.bearing_sigma_deg * kDeg * r.gaussian();
-    return Eigen::Vector2d(dn * std::cos(bn), dn * std::sin(bn));
-  };
-  auto emit = [&](Feature f, const Eigen::Vector2d& rel_m, double confidence, int source) -> SeenObject& {
-    SeenObject s;
-    al::Observation& o = s.obs;
-    o = al::Observation{};
-    o.type = typeOf(f);
-    o.camera = camera;
-    o.x = static_cast<float>(rel_m.x() * 1000);
-    o.y = static_cast<float>(rel_m.y() * 1000);
-    o.distance = static_cast<float>(rel_m.norm() * 1000);
-    o.heading = static_cast<float>(std::atan2(rel_m.y(), rel_m.x()));
-    o.team = -1;
-    o.colour = -1;
-    o.corner = al::CornerKind::None;
-    o.confidence = static_cast<float>(confidence);
-    s.source = source;
-    out.push_back(s);
-    return out.back();
-  };
-  auto orient = [&](const DetectorSpec& s, double field_angle, Draws& r) {
-    double a = field_angle - g.heading;
-    if (noisy) a += s.orientation_sigma_deg * kDeg * r.gaussian();
-    return static_cast<float>(wrap(a));
-  };
-  // Range + image + occlusion + Bernoulli for a point-like object. `look` is
-  // the point that must be in the image (field, m), `ground` its ground
-  // point. Returns the detection probability, or a negative value if unseen.
-  auto detect = [&](const DetectorSpec& s, const Eigen::Vector3d& look, const Eigen::Vector2d& ground, double stop_short,
-                    int ignore_robot, int ignore_post, double factor, Draws& r) -> double {
-    if (!s.enabled) return -1;
-    const double d_mm = g.toRobot(ground).norm() * 1000;
-    if (d_mm < s.min_distance_mm || d_mm > s.max_distance_mm) return -1;
-    if (!inView(to_cam, look)) return -1;
-    const double p = s.probability(d_mm) * factor;
-    const double u = r.uniform();  // drawn whether or not it is used: fixed sequence per object
-    if (noisy && !(u < p)) return -1;
-    if (occluded(world, eye, look, stop_short, robot, ignore_robot, ignore_post)) return -1;
-    return noisy ? p : 1.0;
-  };
+Draws VisionOracle::CameraView::drawsFor(Feature f, uint64_t index) const {
+  return Draws(agent::random::splitmix64(frame_key_ ^ agent::random::splitmix64((static_cast<uint64_t>(f) << 40) ^ index)));
+}
 
-  // --- Ball (none in a `ball: none` world; draws are per object, so the
-  // other features' draws do not depend on it).
-  if (world.hasBall() && config_.ball_model == BallModel::Detector) {
-    const DetectorSpec& s = config_[Feature::Ball];
-    const Eigen::Vector3d b = world.ballPosition();
-    Draws r = drawsFor(Feature::Ball, 0);
-    // On a line: the ball's footprint overlaps a painted band.
-    bool on_line = false;
-    const Eigen::Vector2d bp = xy(b);
-    const double reach = line_half_width_ + ball_radius_;
+Eigen::Vector2d VisionOracle::CameraView::noisyPoint(const DetectorSpec& s, Eigen::Vector2d rel, double height,
+                                                     Draws& r) const {
+  rel -= off_;
+  if (!noisy_) return rel;
+  const double d = rel.norm();
+  const double dc = (xy(eye_) - (g_.origin + Eigen::Rotation2Dd(g_.heading) * rel)).norm();
+  const double h = std::max(height, 0.05);
+  const double elev = (h * h + dc * dc) / h * s.elevation_sigma_deg * kDeg;
+  const double abs_m = s.distance_sigma_mm * 1e-3, rel_m = s.distance_sigma_fraction * d;
+  const double sd = std::sqrt(abs_m * abs_m + rel_m * rel_m + elev * elev);
+  const double dn = std::max(0.0, d + sd * r.gaussian());
+  const double bn = std::atan2(rel.y(), rel.x()) + s.bearing_sigma_deg * kDeg * r.gaussian();
+  return Eigen::Vector2d(dn * std::cos(bn), dn * std::sin(bn));
+}
+
+SeenObject& VisionOracle::CameraView::emit(Feature f, const Eigen::Vector2d& rel_m, double confidence, int source) {
+  SeenObject s;
+  al::Observation& o = s.obs;
+  o = al::Observation{};
+  o.type = typeOf(f);
+  o.camera = camera_;
+  o.x = static_cast<float>(rel_m.x() * 1000);
+  o.y = static_cast<float>(rel_m.y() * 1000);
+  o.distance = static_cast<float>(rel_m.norm() * 1000);
+  o.heading = static_cast<float>(std::atan2(rel_m.y(), rel_m.x()));
+  o.team = -1;
+  o.colour = -1;
+  o.corner = al::CornerKind::None;
+  o.confidence = static_cast<float>(confidence);
+  s.source = source;
+  out_.push_back(s);
+  return out_.back();
+}
+
+float VisionOracle::CameraView::orient(const DetectorSpec& s, double field_angle, Draws& r) const {
+  double a = field_angle - g_.heading;
+  if (noisy_) a += s.orientation_sigma_deg * kDeg * r.gaussian();
+  return static_cast<float>(wrap(a));
+}
+
+double VisionOracle::CameraView::detect(const DetectorSpec& s, const Eigen::Vector3d& look,
+                                        const Eigen::Vector2d& ground, double stop_short, int ignore_robot,
+                                        int ignore_post, double factor, Draws& r) {
+  if (!s.enabled) return -1;
+  const double d_mm = g_.toRobot(ground).norm() * 1000;
+  if (d_mm < s.min_distance_mm || d_mm > s.max_distance_mm) return -1;
+  if (!o_.inView(to_cam_, look)) return -1;
+  const double p = s.probability(d_mm) * factor;
+  const double u = r.uniform();  // drawn whether or not it is used: fixed sequence per object
+  if (noisy_ && !(u < p)) return -1;
+  if (o_.occluded(world_, eye_, look, stop_short, robot_, ignore_robot, ignore_post)) return -1;
+  return noisy_ ? p : 1.0;
+}
+
+// The ball (none in a `ball: none` world, or with the thesis's ball model).
+void VisionOracle::CameraView::seeBall() {
+  if (!world_.hasBall() || config_.ball_model != BallModel::Detector) return;
+  const DetectorSpec& s = config_[Feature::Ball];
+  const Eigen::Vector3d b = world_.ballPosition();
+  Draws r = drawsFor(Feature::Ball, 0);
+  // On a line: the ball's footprint overlaps a painted band.
+  const double ball_radius = o_.ball_radius_;
+  bool on_line = false;
+  const Eigen::Vector2d bp = xy(b);
+  const double reach = o_.line_half_width_ + ball_radius;
+  for (const LineSegment& l : features_.lines)
+    on_line = on_line || distanceToSegment(bp, {l.ax, l.ay}, {l.bx, l.by}) <= l.width / 2 + ball_radius;
+  for (const LineCircle& c : features_.circles)
+    on_line = on_line || std::abs((bp - Eigen::Vector2d(c.cx, c.cy)).norm() - c.radius) <= c.width / 2 + ball_radius;
+  for (const Eigen::Vector2d& m : features_.marks) on_line = on_line || (bp - m).norm() <= reach + 0.05;
+  const double p = detect(s, b, bp, ball_radius, -1, -1, on_line ? s.on_line_factor : 1.0, r);
+  if (p >= 0) emit(Feature::Ball, noisyPoint(s, g_.toRobot(bp), eye_.z() - b.z(), r), p, -1);
+}
+
+// Goal posts, at their base (what gives a detector the distance).
+void VisionOracle::CameraView::seeGoalPosts() {
+  const DetectorSpec& s = config_[Feature::GoalPost];
+  for (int k = 0; k < static_cast<int>(features_.posts.size()); ++k) {
+    const FieldPost& post = features_.posts[k];
+    Draws r = drawsFor(Feature::GoalPost, k);
+    const Eigen::Vector3d base(post.at.x(), post.at.y(), 0.0);
+    if (!s.enabled || !o_.inView(to_cam_, base)) continue;
+    const double p = detect(s, base + Eigen::Vector3d(0, 0, 0.05), post.at, 0.0, -1, k, 1.0, r);
+    if (p >= 0) emit(Feature::GoalPost, noisyPoint(s, g_.toRobot(post.at), eye_.z(), r), p, k);
+  }
+}
+
+// Other robots: the torso must be in the image; reported at the feet.
+void VisionOracle::CameraView::seeRobots() {
+  const DetectorSpec& s = config_[Feature::Robot];
+  for (int i = 0; i < world_.numRobots() && s.enabled; ++i) {
+    if (i == robot_) continue;
+    const RobotBody& other = world_.robot(i);
+    const Eigen::Vector3d torso = other.linkPose(other.model().rootLink()).translation();
+    const GroundFrame og = o_.groundFrame(world_, i);
+    Draws r = drawsFor(Feature::Robot, i);
+    const double p = detect(s, torso, og.origin, 0.0, i, -1, 1.0, r);
+    if (p < 0) continue;
+    SeenObject& o = emit(Feature::Robot, noisyPoint(s, g_.toRobot(og.origin), eye_.z(), r), p, i);
+    o.obs.team = i < static_cast<int>(o_.teams_.size()) ? o_.teams_[i] : 0;
+    o.obs.colour = i < static_cast<int>(o_.colours_.size()) ? o_.colours_[i] : 0;
+    o.obs.orientation = orient(s, og.heading, r);
+    const Eigen::Matrix3d R = other.linkPose(other.model().rootLink()).linear();
+    if (std::acos(std::clamp(R(2, 2), -1.0, 1.0)) > config_.lying_tilt_deg * kDeg)
+      o.obs.flags |= al::kObservationRobotFallen;
+  }
+}
+
+// Penalty marks and the centre mark.
+void VisionOracle::CameraView::seeMarks() {
+  const DetectorSpec& s = config_[Feature::PenaltyMark];
+  for (int k = 0; k < static_cast<int>(features_.marks.size()); ++k) {
+    const Eigen::Vector2d& m = features_.marks[k];
+    Draws r = drawsFor(Feature::PenaltyMark, k);
+    const double p = detect(s, {m.x(), m.y(), 0.0}, m, 0.02, -1, -1, 1.0, r);
+    if (p >= 0) emit(Feature::PenaltyMark, noisyPoint(s, g_.toRobot(m), eye_.z(), r), p, k);
+  }
+}
+
+// The centre circle: enough of the band in view and unoccluded; reported at its centre.
+void VisionOracle::CameraView::seeCentreCircles() {
+  const DetectorSpec& s = config_[Feature::CentreCircle];
+  for (int k = 0; k < static_cast<int>(features_.circles.size()) && s.enabled; ++k) {
+    const LineCircle& c = features_.circles[k];
+    const Eigen::Vector2d centre(c.cx, c.cy);
+    int visible = 0;
+    for (int i = 0; i < kCircleSamples; ++i) {
+      const double a = 2 * M_PI * i / kCircleSamples;
+      const Eigen::Vector3d q(c.cx + c.radius * std::cos(a), c.cy + c.radius * std::sin(a), 0.0);
+      const double d_mm = g_.toRobot(xy(q)).norm() * 1000;
+      if (d_mm >= s.min_distance_mm && d_mm <= s.max_distance_mm && o_.inView(to_cam_, q) &&
+          !o_.occluded(world_, eye_, q, 0.02, robot_, -1, -1))
+        ++visible;
+    }
+    if (visible < config_.circle_min_fraction * kCircleSamples || visible == 0) continue;
+    Draws r = drawsFor(Feature::CentreCircle, k);
+    const double d_mm = g_.toRobot(centre).norm() * 1000;
+    if (d_mm < s.min_distance_mm || d_mm > s.max_distance_mm) continue;
+    const double p = s.probability(d_mm);
+    if (noisy_ && !(r.uniform() < p)) continue;
+    // Orientation: along a line through the centre (the halfway line).
+    double along = M_PI / 2;
     for (const LineSegment& l : features_.lines)
-      on_line = on_line || distanceToSegment(bp, {l.ax, l.ay}, {l.bx, l.by}) <= l.width / 2 + ball_radius_;
-    for (const LineCircle& c : features_.circles)
-      on_line = on_line || std::abs((bp - Eigen::Vector2d(c.cx, c.cy)).norm() - c.radius) <= c.width / 2 + ball_radius_;
-    for (const Eigen::Vector2d& m : features_.marks) on_line = on_line || (bp - m).norm() <= reach + 0.05;
-    const double p = detect(s, b, bp, ball_radius_, -1, -1, on_line ? s.on_line_factor : 1.0, r);
-    if (p >= 0) emit(Feature::Ball, noisyPoint(s, g.toRobot(bp), eye.z() - b.z(), r), p, -1);
+      if (distanceToSegment(centre, {l.ax, l.ay}, {l.bx, l.by}) < 0.01) along = std::atan2(l.by - l.ay, l.bx - l.ax);
+    SeenObject& o = emit(Feature::CentreCircle, noisyPoint(s, g_.toRobot(centre), eye_.z(), r), noisy_ ? p : 1.0, k);
+    o.obs.orientation = orient(s, along, r);
   }
-  // --- Goal posts (their base: what gives a detector the distance).
-  {
-    const DetectorSpec& s = config_[Feature::GoalPost];
-    for (int k = 0; k < static_cast<int>(features_.posts.size()); ++k) {
-      const FieldPost& post = features_.posts[k];
-      Draws r = drawsFor(Feature::GoalPost, k);
-      const Eigen::Vector3d base(post.at.x(), post.at.y(), 0.0);
-      if (!s.enabled || !inView(to_cam, base)) continue;
-      const double p = detect(s, base + Eigen::Vector3d(0, 0, 0.05), post.at, 0.0, -1, k, 1.0, r);
-      if (p >= 0) emit(Feature::GoalPost, noisyPoint(s, g.toRobot(post.at), eye.z(), r), p, k);
+}
+
+// Line intersections (L, T, X), with their kind and orientation.
+void VisionOracle::CameraView::seeCorners() {
+  const DetectorSpec& s = config_[Feature::Corner];
+  for (int k = 0; k < static_cast<int>(features_.corners.size()) && s.enabled; ++k) {
+    const FieldCorner& c = features_.corners[k];
+    Draws r = drawsFor(Feature::Corner, k);
+    const double p = detect(s, {c.at.x(), c.at.y(), 0.0}, c.at, 0.02, -1, -1, 1.0, r);
+    if (p < 0) continue;
+    SeenObject& o = emit(Feature::Corner, noisyPoint(s, g_.toRobot(c.at), eye_.z(), r), p, k);
+    o.obs.corner = c.kind;
+    o.obs.orientation = orient(s, c.orientation, r);
+  }
+}
+
+// Lines: test points every line_step_mm; each run of visible points is a piece.
+void VisionOracle::CameraView::seeLines() {
+  const DetectorSpec& s = config_[Feature::Line];
+  for (int k = 0; k < static_cast<int>(features_.lines.size()) && s.enabled; ++k) seeLine(s, k);
+}
+
+void VisionOracle::CameraView::seeLine(const DetectorSpec& s, int k) {
+  const double step = config_.line_step_mm * 1e-3;
+  const LineSegment& l = features_.lines[k];
+  const Eigen::Vector2d a(l.ax, l.ay), b(l.bx, l.by);
+  const int n = std::max(2, static_cast<int>(std::ceil((b - a).norm() / step)) + 1);
+  // Only the part of the line within max_distance of the feet can be
+  // seen: sample the fixed grid there (same points as sampling it all).
+  const Eigen::Vector2d dv = b - a, m = a - g_.origin;
+  const double R = s.max_distance_mm * 1e-3;
+  const double A = dv.squaredNorm(), B = 2 * m.dot(dv), C = m.squaredNorm() - R * R;
+  const double disc = B * B - 4 * A * C;
+  if (disc <= 0) return;
+  const double t0 = (-B - std::sqrt(disc)) / (2 * A), t1 = (-B + std::sqrt(disc)) / (2 * A);
+  if (t1 < 0 || t0 > 1) return;
+  const int i0 = std::max(0, static_cast<int>(std::floor(t0 * (n - 1))));
+  const int i1 = std::min(n - 1, static_cast<int>(std::ceil(t1 * (n - 1))));
+  int run_start = -1, piece = 0;
+  double run_near = 1e18;
+  for (int i = i0; i <= i1 + 1; ++i) {
+    bool vis = false;
+    double d_mm = 0;
+    Eigen::Vector2d q;
+    if (i <= i1) {
+      q = a + (b - a) * (static_cast<double>(i) / (n - 1));
+      d_mm = g_.toRobot(q).norm() * 1000;
+      vis = d_mm >= s.min_distance_mm && d_mm <= s.max_distance_mm && o_.inView(to_cam_, {q.x(), q.y(), 0.0}) &&
+            !o_.occluded(world_, eye_, {q.x(), q.y(), 0.0}, 0.02, robot_, -1, -1);
     }
-  }
-  // --- Robots: the torso must be in the image; reported at the feet.
-  {
-    const DetectorSpec& s = config_[Feature::Robot];
-    for (int i = 0; i < world.numRobots() && s.enabled; ++i) {
-      if (i == robot) continue;
-      const RobotBody& other = world.robot(i);
-      const Eigen::Vector3d torso = other.linkPose(other.model().rootLink()).translation();
-      const GroundFrame og = groundFrame(world, i);
-      Draws r = drawsFor(Feature::Robot, i);
-      const double p = detect(s, torso, og.origin, 0.0, i, -1, 1.0, r);
-      if (p < 0) continue;
-      SeenObject& o = emit(Feature::Robot, noisyPoint(s, g.toRobot(og.origin), eye.z(), r), p, i);
-      o.obs.team = i < static_cast<int>(teams_.size()) ? teams_[i] : 0;
-      o.obs.colour = i < static_cast<int>(colours_.size()) ? colours_[i] : 0;
-      o.obs.orientation = orient(s, og.heading, r);
-      const Eigen::Matrix3d R = other.linkPose(other.model().rootLink()).linear();
-      if (std::acos(std::clamp(R(2, 2), -1.0, 1.0)) > config_.lying_tilt_deg * kDeg)
-        o.obs.flags |= al::kObservationRobotFallen;
+    if (vis) {
+      if (run_start < 0) run_start = i, run_near = 1e18;
+      run_near = std::min(run_near, d_mm);
+      continue;
     }
+    if (run_start < 0) continue;
+    // A run ended at i - 1.
+    const Eigen::Vector2d p0 = a + (b - a) * (static_cast<double>(run_start) / (n - 1));
+    const Eigen::Vector2d p1 = a + (b - a) * (static_cast<double>(i - 1) / (n - 1));
+    run_start = -1;
+    if ((p1 - p0).norm() * 1000 < config_.min_line_mm) continue;
+    Draws r = drawsFor(Feature::Line, (static_cast<uint64_t>(k) << 16) | static_cast<uint64_t>(piece++));
+    const double p = s.probability(run_near);
+    if (noisy_ && !(r.uniform() < p)) continue;
+    const Eigen::Vector2d e0 = noisyPoint(s, g_.toRobot(p0), eye_.z(), r);
+    const Eigen::Vector2d e1 = noisyPoint(s, g_.toRobot(p1), eye_.z(), r);
+    // Distance and heading of the nearest point of the piece seen.
+    const Eigen::Vector2d d = e1 - e0;
+    const double t = d.squaredNorm() > 0 ? std::clamp(-e0.dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    SeenObject& o = emit(Feature::Line, e0, noisy_ ? p : 1.0, k);
+    const Eigen::Vector2d near = e0 + t * d;
+    o.obs.distance = static_cast<float>(near.norm() * 1000);
+    o.obs.heading = static_cast<float>(std::atan2(near.y(), near.x()));
+    o.obs.x2 = static_cast<float>(e1.x() * 1000);
+    o.obs.y2 = static_cast<float>(e1.y() * 1000);
+    o.obs.orientation = static_cast<float>(std::atan2(d.y(), d.x()));
   }
-  // --- Marks (penalty marks and the centre mark).
-  {
-    const DetectorSpec& s = config_[Feature::PenaltyMark];
-    for (int k = 0; k < static_cast<int>(features_.marks.size()); ++k) {
-      const Eigen::Vector2d& m = features_.marks[k];
-      Draws r = drawsFor(Feature::PenaltyMark, k);
-      const double p = detect(s, {m.x(), m.y(), 0.0}, m, 0.02, -1, -1, 1.0, r);
-      if (p >= 0) emit(Feature::PenaltyMark, noisyPoint(s, g.toRobot(m), eye.z(), r), p, k);
-    }
-  }
-  // --- Centre circle: enough of the band in view and unoccluded; reported at its centre.
-  {
-    const DetectorSpec& s = config_[Feature::CentreCircle];
-    for (int k = 0; k < static_cast<int>(features_.circles.size()) && s.enabled; ++k) {
-      const LineCircle& c = features_.circles[k];
-      const Eigen::Vector2d centre(c.cx, c.cy);
-      int visible = 0;
-      for (int i = 0; i < kCircleSamples; ++i) {
-        const double a = 2 * M_PI * i / kCircleSamples;
-        const Eigen::Vector3d q(c.cx + c.radius * std::cos(a), c.cy + c.radius * std::sin(a), 0.0);
-        const double d_mm = g.toRobot(xy(q)).norm() * 1000;
-        if (d_mm >= s.min_distance_mm && d_mm <= s.max_distance_mm && inView(to_cam, q) &&
-            !occluded(world, eye, q, 0.02, robot, -1, -1))
-          ++visible;
-      }
-      if (visible < config_.circle_min_fraction * kCircleSamples || visible == 0) continue;
-      Draws r = drawsFor(Feature::CentreCircle, k);
-      const double d_mm = g.toRobot(centre).norm() * 1000;
-      if (d_mm < s.min_distance_mm || d_mm > s.max_distance_mm) continue;
-      const double p = s.probability(d_mm);
-      if (noisy && !(r.uniform() < p)) continue;
-      // Orientation: along a line through the centre (the halfway line).
-      double along = M_PI / 2;
-      for (const LineSegment& l : features_.lines)
-        if (distanceToSegment(centre, {l.ax, l.ay}, {l.bx, l.by}) < 0.01) along = std::atan2(l.by - l.ay, l.bx - l.ax);
-      SeenObject& o = emit(Feature::CentreCircle, noisyPoint(s, g.toRobot(centre), eye.z(), r), noisy ? p : 1.0, k);
-      o.obs.orientation = orient(s, along, r);
-    }
-  }
-  // --- Line intersections.
-  {
-    const DetectorSpec& s = config_[Feature::Corner];
-    for (int k = 0; k < static_cast<int>(features_.corners.size()) && s.enabled; ++k) {
-      const FieldCorner& c = features_.corners[k];
-      Draws r = drawsFor(Feature::Corner, k);
-      const double p = detect(s, {c.at.x(), c.at.y(), 0.0}, c.at, 0.02, -1, -1, 1.0, r);
-      if (p < 0) continue;
-      SeenObject& o = emit(Feature::Corner, noisyPoint(s, g.toRobot(c.at), eye.z(), r), p, k);
-      o.obs.corner = c.kind;
-      o.obs.orientation = orient(s, c.orientation, r);
-    }
-  }
-  // --- Lines: test points every line_step_mm; each run of visible points is a piece.
-  {
-    const DetectorSpec& s = config_[Feature::Line];
-    const double step = config_.line_step_mm * 1e-3;
-    for (int k = 0; k < static_cast<int>(features_.lines.size()) && s.enabled; ++k) {
-      const LineSegment& l = features_.lines[k];
-      const Eigen::Vector2d a(l.ax, l.ay), b(l.bx, l.by);
-      const int n = std::max(2, static_cast<int>(std::ceil((b - a).norm() / step)) + 1);
-      // Only the part of the line within max_distance of the feet can be
-      // seen: sample the fixed grid there (same points as sampling it all).
-      const Eigen::Vector2d dv = b - a, m = a - g.origin;
-      const double R = s.max_distance_mm * 1e-3;
-      const double A = dv.squaredNorm(), B = 2 * m.dot(dv), C = m.squaredNorm() - R * R;
-      const double disc = B * B - 4 * A * C;
-      if (disc <= 0) continue;
-      const double t0 = (-B - std::sqrt(disc)) / (2 * A), t1 = (-B + std::sqrt(disc)) / (2 * A);
-      if (t1 < 0 || t0 > 1) continue;
-      const int i0 = std::max(0, static_cast<int>(std::floor(t0 * (n - 1))));
-      const int i1 = std::min(n - 1, static_cast<int>(std::ceil(t1 * (n - 1))));
-      int run_start = -1, piece = 0;
-      double run_near = 1e18;
-      for (int i = i0; i <= i1 + 1; ++i) {
-        bool vis = false;
-        double d_mm = 0;
-        Eigen::Vector2d q;
-        if (i <= i1) {
-          q = a + (b - a) * (static_cast<double>(i) / (n - 1));
-          d_mm = g.toRobot(q).norm() * 1000;
-          vis = d_mm >= s.min_distance_mm && d_mm <= s.max_distance_mm && inView(to_cam, {q.x(), q.y(), 0.0}) &&
-                !occluded(world, eye, {q.x(), q.y(), 0.0}, 0.02, robot, -1, -1);
-        }
-        if (vis) {
-          if (run_start < 0) run_start = i, run_near = 1e18;
-          run_near = std::min(run_near, d_mm);
-          continue;
-        }
-        if (run_start < 0) continue;
-        // A run ended at i - 1.
-        const Eigen::Vector2d p0 = a + (b - a) * (static_cast<double>(run_start) / (n - 1));
-        const Eigen::Vector2d p1 = a + (b - a) * (static_cast<double>(i - 1) / (n - 1));
-        run_start = -1;
-        if ((p1 - p0).norm() * 1000 < config_.min_line_mm) continue;
-        Draws r = drawsFor(Feature::Line, (static_cast<uint64_t>(k) << 16) | static_cast<uint64_t>(piece++));
-        const double p = s.probability(run_near);
-        if (noisy && !(r.uniform() < p)) continue;
-        const Eigen::Vector2d e0 = noisyPoint(s, g.toRobot(p0), eye.z(), r);
-        const Eigen::Vector2d e1 = noisyPoint(s, g.toRobot(p1), eye.z(), r);
-        // Distance and heading of the nearest point of the piece seen.
-        const Eigen::Vector2d d = e1 - e0;
-        const double t = d.squaredNorm() > 0 ? std::clamp(-e0.dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-        SeenObject& o = emit(Feature::Line, e0, noisy ? p : 1.0, k);
-        const Eigen::Vector2d near = e0 + t * d;
-        o.obs.distance = static_cast<float>(near.norm() * 1000);
-        o.obs.heading = static_cast<float>(std::atan2(near.y(), near.x()));
-        o.obs.x2 = static_cast<float>(e1.x() * 1000);
-        o.obs.y2 = static_cast<float>(e1.y() * 1000);
-        o.obs.orientation = static_cast<float>(std::atan2(d.y(), d.x()));
-      }
-    }
-  }
-  // --- False positives: a phantom at a random ground point this camera sees
-  // within the detector's range (32 random pixels tried).
-  if (!noisy) return;
+}
+
+// False positives: per kind, a phantom at a random ground point this camera
+// sees within the detector's range (32 random pixels tried).
+void VisionOracle::CameraView::addPhantoms() {
   for (int fi = 0; fi < kNumFeatures; ++fi) {
     const Feature f = static_cast<Feature>(fi);
     const DetectorSpec& s = config_[f];
@@ -562,11 +630,11 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
     Draws r = drawsFor(f, 0xFFFFFFull);
     if (!(r.uniform() < s.false_positive_rate)) continue;
     for (int attempt = 0; attempt < 32; ++attempt) {
-      const Eigen::Vector3d ray = cam.linear() * Eigen::Vector3d(1.0, tan_half_h_ * (2 * r.uniform() - 1),
-                                                                 tan_half_v_ * (2 * r.uniform() - 1));
+      const Eigen::Vector3d ray = cam_.linear() * Eigen::Vector3d(1.0, o_.tan_half_h_ * (2 * r.uniform() - 1),
+                                                                  o_.tan_half_v_ * (2 * r.uniform() - 1));
       if (ray.z() > -1e-6) continue;  // above the horizon
-      const Eigen::Vector3d hit = eye + (-eye.z() / ray.z()) * ray;
-      const Eigen::Vector2d rel = g.toRobot(xy(hit)) - off;
+      const Eigen::Vector3d hit = eye_ + (-eye_.z() / ray.z()) * ray;
+      const Eigen::Vector2d rel = g_.toRobot(xy(hit)) - off_;
       const double d_mm = rel.norm() * 1000;
       if (d_mm < s.min_distance_mm || d_mm > s.max_distance_mm) continue;
       SeenObject& o = emit(f, rel, r.uniform() * s.p_near, -1);
@@ -575,8 +643,8 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
       if (f == Feature::Robot) {  // a phantom in one of the two jerseys
         o.obs.colour = r.uniform() < 0.5 ? 0 : 1;
         o.obs.team = -1;
-        for (size_t i = 0; i < teams_.size() && i < colours_.size(); ++i)
-          if (colours_[i] == o.obs.colour) o.obs.team = teams_[i];
+        for (size_t i = 0; i < o_.teams_.size() && i < o_.colours_.size(); ++i)
+          if (o_.colours_[i] == o.obs.colour) o.obs.team = o_.teams_[i];
       }
       if (f == Feature::Corner) o.obs.corner = static_cast<al::CornerKind>(1 + static_cast<int>(r.uniform() * 3));
       if (f == Feature::Line) {
@@ -588,6 +656,24 @@ void VisionOracle::observeCamera(const World& world, int robot, int camera, int6
       break;
     }
   }
+}
+
+// One camera's observations, stage by stage in this fixed order: ball, goal
+// posts, robots, marks, centre circle, corners, lines, then the phantoms.
+// Every object draws from its own sequence (drawsFor), so no stage's draws
+// depend on another's; the order fixes the order of the observations (which
+// observe() returns and fill()'s stable sort keeps within a kind).
+void VisionOracle::observeCamera(const World& world, int robot, int camera, int64_t frame,
+                                 std::vector<SeenObject>& out) {
+  CameraView view(*this, world, robot, camera, frame, out);
+  view.seeBall();
+  view.seeGoalPosts();
+  view.seeRobots();
+  view.seeMarks();
+  view.seeCentreCircles();
+  view.seeCorners();
+  view.seeLines();
+  if (config_.noise) view.addPhantoms();
 }
 
 }  // namespace simswift::vision

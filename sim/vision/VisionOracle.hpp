@@ -11,7 +11,7 @@
 // VisionConfig, the scenario seed. Writes: observations (CameraFrame).
 // Nothing here changes the World, so the state hash does not depend on it.
 //
-// Per camera, in this fixed order:
+// Per camera, in this fixed order (observeCamera, one stage per kind of object):
 //  1. Camera pose = head link pose (HeadPitch child) x mounting (rUNSWift 2017 release, robot/libagent
 //     section 1), plus the per-robot camera position error (table 3.1).
 //  2. Candidates, each tested for: inside the image rectangle (60.9 x 47.6
@@ -118,6 +118,7 @@ class VisionOracle {
   int64_t dropped() const { return dropped_; }  // observations that did not fit a frame, summed
 
  private:
+  class CameraView;  // one camera at one frame and its stages (VisionOracle.cpp)
   void observeCamera(const World& world, int robot, int camera, int64_t frame, std::vector<SeenObject>& out);
   void refreshBounds(const World& world);
   // inImage with the field-to-camera transform already inverted.

@@ -13,7 +13,7 @@
 #include <unistd.h>
 
 #include "sim/experiment/Batch.hpp"
-#include "sim/experiment/TrialHooks.hpp"
+#include "sim/experiment/BehaviourHooks.hpp"
 
 namespace exptest {
 
@@ -44,7 +44,7 @@ inline std::string freshDir(const std::string& tag) {
   return d;
 }
 
-// Runs `e` into `dir` with the default hooks, quietly (shard k of n).
+// Runs `e` into `dir` with simswift's hooks, quietly (shard k of n).
 inline simswift::experiment::BatchOutcome runInto(const simswift::experiment::Experiment& e, const std::string& dir,
                                                   int jobs, int shard = 1, int shards = 1) {
   simswift::experiment::BatchOptions o;
@@ -53,7 +53,7 @@ inline simswift::experiment::BatchOutcome runInto(const simswift::experiment::Ex
   o.shard = shard;
   o.shards = shards;
   o.progress = simswift::experiment::BatchOptions::Progress::None;
-  return simswift::experiment::runBatch(e, simswift::experiment::defaultHooks(), o);
+  return simswift::experiment::runBatch(e, simswift::experiment::behaviourHooks(), o);
 }
 
 inline std::string simswiftBinary() { return std::string(SIMSWIFT_BINARY_DIR) + "/simswift"; }

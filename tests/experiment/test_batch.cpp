@@ -116,7 +116,7 @@ TEST(Batch, RerunsAndJobCountsGiveIdenticalResults) {
     EXPECT_EQ(r.robots[0].falls, 0);
   }
   // One trial in this process (--trial) gives the worker's row.
-  EXPECT_EQ(runSingleTrial(e, defaultHooks(), 2, exptest::freshDir("single")), readAll(trialFile(a, 2, ".csv")));
+  EXPECT_EQ(runSingleTrial(e, behaviourHooks(), 2, exptest::freshDir("single")), readAll(trialFile(a, 2, ".csv")));
   // Noise on, different seeds: the two position-1 trials differ a little.
   EXPECT_NE(parseCsvRow(lines[1]).seed, parseCsvRow(lines[2]).seed);
 }
@@ -300,12 +300,12 @@ TEST(Batch, FoundRuleNeedsTheBallInView) {
       << " actions: [{t: 0, action: stand}]}\n";
     return Experiment::parse(s.str(), "view.yaml");
   };
-  const TrialResult behind = runTrial(file(-0.25, true), 0, defaultHooks());
+  const TrialResult behind = runTrial(file(-0.25, true), 0, behaviourHooks());
   EXPECT_FALSE(behind.found);
-  const TrialResult blind = runTrial(file(-0.25, false), 0, defaultHooks());
+  const TrialResult blind = runTrial(file(-0.25, false), 0, behaviourHooks());
   EXPECT_TRUE(blind.found);
   EXPECT_NEAR(blind.seconds, 0.01, 1e-9);  // the first tick
-  const TrialResult ahead = runTrial(file(0.28, true), 0, defaultHooks());
+  const TrialResult ahead = runTrial(file(0.28, true), 0, behaviourHooks());
   EXPECT_TRUE(ahead.found);
   EXPECT_LT(ahead.seconds, 0.05);
 }
@@ -329,13 +329,13 @@ TEST(Batch, FoundRuleUsesTheRobotsVision) {
         << " actions: [{t: 0, action: stand}]}\n";
     return Experiment::parse(s.str(), "sees.yaml");
   };
-  const TrialResult seen = runTrial(file("", false), 0, defaultHooks());
+  const TrialResult seen = runTrial(file("", false), 0, behaviourHooks());
   EXPECT_TRUE(seen.found);
   EXPECT_EQ(seen.finder, "t19p2");
   EXPECT_LT(seen.seconds, 0.05);  // the frame at the start of play
-  const TrialResult far = runTrial(file("vision: {ball: {max_distance_mm: 600}}\n", false), 0, defaultHooks());
+  const TrialResult far = runTrial(file("vision: {ball: {max_distance_mm: 600}}\n", false), 0, behaviourHooks());
   EXPECT_FALSE(far.found);
-  const TrialResult hidden = runTrial(file("", true), 0, defaultHooks());
+  const TrialResult hidden = runTrial(file("", true), 0, behaviourHooks());
   EXPECT_FALSE(hidden.found);
 }
 
@@ -360,7 +360,7 @@ TEST(Batch, TrialsStartPenalisedThenPlay) {
       "      - {team: 19, player: 3, x: -2.0, y: -2.9, theta: 1.5708, behaviour: script,\n"
       "         actions: [{t: 0, action: walk, forward: 250}]}\n";
   const Experiment e = Experiment::parse(text, "start.yaml");
-  TrialHooks hooks = defaultHooks();
+  TrialHooks hooks = behaviourHooks();
   auto watch = std::make_shared<Watch>();
   hooks.found = watch;
   const TrialResult r = runTrial(e, 0, hooks);
@@ -395,7 +395,7 @@ TEST(Batch, FallenRobotMovedToTheSideline) {
       "      - {team: 19, player: 2, x: 0.0, y: 1.0, theta: 0.0, behaviour: script,\n"
       "         actions: [{t: 0, action: stand}, {t: 0.5, push: {x: 3.0, y: 0.0}}]}\n";
   const Experiment e = Experiment::parse(text, "fall.yaml");
-  const TrialResult r = runTrial(e, 0, defaultHooks());
+  const TrialResult r = runTrial(e, 0, behaviourHooks());
   EXPECT_FALSE(r.found);
   ASSERT_EQ(r.robots.size(), 1u);
   EXPECT_GE(r.robots[0].falls, 1);

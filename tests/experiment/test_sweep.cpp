@@ -65,18 +65,18 @@ void expectSame(const std::string& a, const std::string& b, const std::vector<st
   }
 }
 
-std::string errorOf(const std::string& text, bool behaviours = false) {
+std::string errorOf(const std::string& text) {
   try {
     const Experiment e = Experiment::parse(text, "bad.yaml");
-    checkBehaviours(e, behaviours ? behaviourHooks() : defaultHooks());
+    checkBehaviours(e, behaviourHooks());
   } catch (const ConfigError& err) {
     return err.what();
   }
   return "";
 }
 
-void expectError(const std::string& text, const std::string& where, const std::string& what, bool behaviours = false) {
-  const std::string msg = errorOf(text, behaviours);
+void expectError(const std::string& text, const std::string& where, const std::string& what) {
+  const std::string msg = errorOf(text);
   EXPECT_EQ(msg.rfind(where, 0), 0u) << "message: " << msg << "\nexpected to start with: " << where;
   EXPECT_NE(msg.find(what), std::string::npos) << "message: " << msg << "\nexpected: " << what;
 }
@@ -173,7 +173,7 @@ TEST(Sweep, FourCellsAreTheSameWithOneOrTwoJobsAndShardsMerged) {
 TEST(Sweep, ASweptValueChangesWhatTheTrialRuns) {
   const Experiment e = Experiment::parse(kTiny + "sweep:\n  vision.ball.p_near: [0, 1]\n", "tiny.yaml");
   ASSERT_EQ(e.numCells(), 2);
-  const TrialResult blind = runTrial(e, 0, defaultHooks()), seeing = runTrial(e, 2, defaultHooks());
+  const TrialResult blind = runTrial(e, 0, behaviourHooks()), seeing = runTrial(e, 2, behaviourHooks());
   EXPECT_EQ(blind.seed, seeing.seed);
   EXPECT_EQ(blind.position, 1);
   EXPECT_EQ(seeing.position, 1);
@@ -237,10 +237,9 @@ TEST(Sweep, BehaviourOverridesBySetupAndRobot) {
   // A bad override value is refused by the behaviour's reader, at its line.
   const std::string bad = text.substr(0, text.rfind("  setups.b")) +
                           "  setups.1.config.search.spin_at_point:\n    - on\n    - sometimes\n";
-  expectError(bad, "bad.yaml:18: sweep.setups.1.config.search.spin_at_point[1] = sometimes", "spin_at_point",
-              true);
+  expectError(bad, "bad.yaml:18: sweep.setups.1.config.search.spin_at_point[1] = sometimes", "spin_at_point");
   expectError(text.substr(0, text.rfind("  setups.b")) + "  setups.a.config.search.spin_fast: [on]\n",
-              "bad.yaml:16: sweep.setups.a.config.search.spin_fast[0] = on", "unknown key 'spin_fast'", true);
+              "bad.yaml:16: sweep.setups.a.config.search.spin_fast[0] = on", "unknown key 'spin_fast'");
 }
 
 // Bad sweeps: each error names the file, the line and the key.

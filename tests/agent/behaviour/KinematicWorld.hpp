@@ -4,7 +4,7 @@
 // commanded speed, the ball is seen when it is within the reliable detection
 // distance and inside the camera's horizontal field of view, and teammates
 // exchange SearchPayloads as bytes (encoded, decoded) at the packet rate.
-// The physics version of these tests needs the perception integration.
+// The physics versions of these tests: tests/behaviour_physics.
 #pragma once
 
 #include <algorithm>
