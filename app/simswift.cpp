@@ -25,6 +25,7 @@
 
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Command.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace {

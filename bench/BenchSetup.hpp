@@ -13,7 +13,8 @@
 #include <vector>
 
 #include "agent/program/Postures.hpp"
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 
 namespace simswift::bench {
 
@@ -44,12 +45,12 @@ inline bool parseFrameArgs(int argc, char** argv, FrameArgs* a) {
   return true;
 }
 
-inline std::shared_ptr<const NaoModel> loadNao() {
-  return std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+inline std::shared_ptr<const RobotModel> loadNao() {
+  return std::make_shared<const RobotModel>(RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
 }
 
 // The robot program's standing posture (agent/program/Postures.hpp), model joint order.
-inline std::vector<double> standingPosture(const NaoModel& m) {
+inline std::vector<double> standingPosture(const RobotModel& m) {
   return simswift::NaoBinding(m).posture(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 

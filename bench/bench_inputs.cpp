@@ -1,5 +1,5 @@
 // Seconds to accept or refuse pathological inputs of 1, 3 and 10 MB (and
-// 0.25 MB, the YAML loaders' size limit), per loader: the URDF (NaoModel),
+// 0.25 MB, the YAML loaders' size limit), per loader: the URDF (RobotModel),
 // the field, a scenario and an experiment. The speed issue asks for any
 // input up to 10 MB to be accepted or refused in under a second; a loader
 // that is not linear in its input shows up here (a 3 MB URDF with a NUL
@@ -29,7 +29,7 @@
 
 #include "BenchResults.hpp"
 #include "sim/experiment/Experiment.hpp"
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/FieldConfig.hpp"
@@ -291,7 +291,7 @@ std::vector<Case> cases() {
 void load(const std::string& loader, const std::string& path, std::string* what) {
   try {
     if (loader == "urdf") {
-      NaoModel::loadUrdf(path);
+      RobotModel::loadUrdf(path);
     } else if (loader == "field") {
       FieldConfig::loadYaml(path);
     } else if (loader == "scenario") {

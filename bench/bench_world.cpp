@@ -23,8 +23,8 @@ namespace ap = agent::program;
 
 int main(int argc, char** argv) {
   const double sim_seconds = argc > 1 ? std::atof(argv[1]) : 20.0;
-  auto model = std::make_shared<const NaoModel>(
-      NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+  auto model = std::make_shared<const RobotModel>(
+      RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
   const FieldConfig field = FieldConfig::loadYaml(SIMSWIFT_SOURCE_DIR "/fields/spl_2017.yaml");
 
   // The robot program's standing posture (agent/program/Postures.hpp), stiffness 1.

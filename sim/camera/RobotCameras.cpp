@@ -29,7 +29,7 @@ void RobotCameras::setResolution(int width, int height) {
   height_ = height;
 }
 
-int RobotCameras::headLink(const NaoModel& model) {
+int RobotCameras::headLink(const RobotModel& model) {
   const int j = model.jointIndex("HeadPitch");
   if (j < 0) throw std::runtime_error("camera: the robot model has no HeadPitch joint to carry the cameras");
   return model.joints()[j].child_link;

@@ -57,7 +57,7 @@ class RobotCameras {
   Renderer& renderer() { return renderer_; }
 
   // Index of the link the HeadPitch joint moves (the cameras' parent).
-  static int headLink(const NaoModel& model);
+  static int headLink(const RobotModel& model);
 
  private:
   Scene scene_;

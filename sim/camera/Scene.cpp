@@ -407,7 +407,7 @@ struct Scene::LinkGeometry {
   }
 };
 
-const std::vector<Scene::LinkGeometry>& Scene::modelGeometry(const NaoModel& model) const {
+const std::vector<Scene::LinkGeometry>& Scene::modelGeometry(const RobotModel& model) const {
   for (const auto& g : geometry_)
     if (g.first == &model) return g.second;
   std::vector<LinkGeometry> links(model.links().size());
@@ -461,7 +461,7 @@ const std::vector<Scene::LinkGeometry>& Scene::modelGeometry(const NaoModel& mod
   return geometry_.back().second;
 }
 
-void Scene::preloadModel(const NaoModel& model) { modelGeometry(model); }
+void Scene::preloadModel(const RobotModel& model) { modelGeometry(model); }
 
 // All robots in one vertex array, transformed on the CPU: one draw call for
 // every robot instead of one per shape (llvmpipe's per-draw cost dominates).

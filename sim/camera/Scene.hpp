@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 #include "sim/world/FieldConfig.hpp"
 
 namespace simswift::camera {
@@ -39,7 +39,7 @@ struct SceneOptions {
 
 // One robot's pose for drawing.
 struct RobotDrawState {
-  const NaoModel* model = nullptr;
+  const RobotModel* model = nullptr;
   int team = 0;
   std::vector<Eigen::Isometry3d> link_poses;  // per model link, link frame in world
 };
@@ -70,7 +70,7 @@ class Scene {
   // Loads every mesh a model's visuals name (cached by path). Throws
   // std::runtime_error naming the link and mesh if one cannot be found or
   // read. Called automatically on first draw; call it early to fail early.
-  void preloadModel(const NaoModel& model);
+  void preloadModel(const RobotModel& model);
 
   // Draws everything with the current GL context, whose modelview must hold
   // the world-to-eye transform. `context_id` identifies the context: display
@@ -88,7 +88,7 @@ class Scene {
   const MeshData& mesh(const std::string& path, const std::string& link) const;
   void buildLists() const;
   struct LinkGeometry;
-  const std::vector<LinkGeometry>& modelGeometry(const NaoModel& model) const;
+  const std::vector<LinkGeometry>& modelGeometry(const RobotModel& model) const;
   void drawRobots(const DrawOptions& options) const;
 
   FieldConfig field_;
@@ -96,7 +96,7 @@ class Scene {
   mutable std::unique_ptr<Gl> gl_;
   mutable std::vector<std::pair<std::string, std::unique_ptr<MeshData>>> meshes_;
   // Per model (by address: a model must outlive the Scene's use of it).
-  mutable std::vector<std::pair<const NaoModel*, std::vector<LinkGeometry>>> geometry_;
+  mutable std::vector<std::pair<const RobotModel*, std::vector<LinkGeometry>>> geometry_;
   mutable std::vector<Eigen::Vector3f> scratch_p_, scratch_n_;
   mutable std::vector<Eigen::Vector4f> scratch_c_;
 };

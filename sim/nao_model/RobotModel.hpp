@@ -100,8 +100,4 @@ class RobotModel {
   int robot_line_ = 1;
 };
 
-// The model's former name, from when the loader accepted only the NAO;
-// code that needs the NAO's joints asks NaoBinding (NaoBinding.hpp).
-using NaoModel = RobotModel;
-
 }  // namespace simswift

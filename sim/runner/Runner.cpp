@@ -10,6 +10,7 @@
 
 #include "agent/behaviour/BehaviourModule.hpp"
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/vision/VisionOracle.hpp"
 #include "sim/runner/Tracer.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS

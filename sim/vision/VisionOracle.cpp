@@ -96,7 +96,7 @@ bool segmentHitsBox(const Eigen::Vector3d& from, const Eigen::Vector3d& dir, dou
 
 Eigen::Vector2d xy(const Eigen::Vector3d& v) { return {v.x(), v.y()}; }
 
-int headLinkOf(const NaoModel& m) {
+int headLinkOf(const RobotModel& m) {
   const int j = m.jointIndex("HeadPitch");
   if (j < 0) throw std::runtime_error("vision: the robot model has no HeadPitch joint to carry the cameras");
   return m.joints()[j].child_link;
@@ -148,7 +148,7 @@ Eigen::Isometry3d VisionOracle::cameraPose(const World& world, int robot, int ca
 
 GroundFrame VisionOracle::groundFrame(const World& world, int robot) const {
   const RobotBody& body = world.robot(robot);
-  const NaoModel& m = body.model();
+  const RobotModel& m = body.model();
   const int lf = m.linkIndex("LFoot"), rf = m.linkIndex("RFoot");
   const Eigen::Isometry3d torso = body.linkPose(m.rootLink());
   const Eigen::Vector2d origin = (lf >= 0 && rf >= 0) ? Eigen::Vector2d(0.5 * (xy(body.linkPose(lf).translation()) +

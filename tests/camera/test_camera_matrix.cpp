@@ -19,9 +19,9 @@ using namespace simswift;
 namespace ape = agent::perception;
 
 namespace {
-std::shared_ptr<const NaoModel> naoModel() {
+std::shared_ptr<const RobotModel> naoModel() {
   static auto model =
-      std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+      std::make_shared<const RobotModel>(RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
   return model;
 }
 }  // namespace
@@ -30,7 +30,7 @@ TEST(CameraMatrix, MatchesTheSimulatedCameraPose) {
   for (auto [yaw, pitch, knee_extra] : {std::tuple{0.0, 0.0, 0.0}, std::tuple{0.5, 0.25, 0.0},
                                         std::tuple{-0.8, -0.3, 0.15}}) {
     World world(FieldConfig::spl2017());
-    const NaoModel& m = *naoModel();
+    const RobotModel& m = *naoModel();
     std::vector<double> q = simswift::NaoBinding(m).posture(agent::program::postureAngles(agent::program::Posture::Stand));
     q[m.jointIndex("HeadYaw")] = yaw;
     q[m.jointIndex("HeadPitch")] = pitch;

@@ -165,8 +165,8 @@ TEST(Render, MeshThroughAssimpCoversTheSamePixelsAsTheBox) {
     std::string s = nao;
     return s.replace(s.find(torso_box), torso_box.size(), geometry);
   };
-  const NaoModel box = NaoModel::loadUrdfString(urdf("<box size='0.1 0.1 0.1'/>"), "box.urdf");
-  const NaoModel mesh = NaoModel::loadUrdfString(
+  const RobotModel box = RobotModel::loadUrdfString(urdf("<box size='0.1 0.1 0.1'/>"), "box.urdf");
+  const RobotModel mesh = RobotModel::loadUrdfString(
       urdf("<mesh filename='package://simswift/models/meshes/cube_100mm.obj'/>"), "mesh.urdf");
   SceneOptions opt = testOptions();
   opt.mesh_dirs = {SIMSWIFT_SOURCE_DIR};
@@ -180,7 +180,7 @@ TEST(Render, MeshThroughAssimpCoversTheSamePixelsAsTheBox) {
   view.camera.pose = lookAt({0, 0, 0.5}, pose.translation());
   Renderer renderer;
   std::vector<std::vector<uint8_t>> masks;
-  for (const NaoModel* m : {&box, &mesh}) {
+  for (const RobotModel* m : {&box, &mesh}) {
     // Torso at `pose`; every other link far behind the camera, out of view.
     Eigen::Isometry3d away = Eigen::Isometry3d::Identity();
     away.translation() = Eigen::Vector3d(-50, 0, 0);
@@ -198,11 +198,11 @@ TEST(Render, MeshThroughAssimpCoversTheSamePixelsAsTheBox) {
   EXPECT_GT(on, 5000);             // the cube is in view (~0.13 m across at ~0.9 m)
   EXPECT_LE(differ, on / 200);     // same silhouette up to edge pixels
   // The shipped head shell loads through assimp too.
-  const NaoModel head = NaoModel::loadUrdfString(
+  const RobotModel head = RobotModel::loadUrdfString(
       urdf("<mesh filename='package://simswift/models/meshes/head_shell.obj'/>"), "head.urdf");
   EXPECT_NO_THROW(scene.preloadModel(head));
   // A missing mesh is a clear error naming the link and file.
-  const NaoModel bad = NaoModel::loadUrdfString(urdf("<mesh filename='meshes/nope.obj'/>"), "bad.urdf");
+  const RobotModel bad = RobotModel::loadUrdfString(urdf("<mesh filename='meshes/nope.obj'/>"), "bad.urdf");
   try {
     scene.preloadModel(bad);
     FAIL() << "no error for a missing mesh";

@@ -22,14 +22,14 @@ using agent::libagent::CameraImages;
 
 namespace {
 
-std::shared_ptr<const NaoModel> naoModel() {
+std::shared_ptr<const RobotModel> naoModel() {
   static auto model =
-      std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+      std::make_shared<const RobotModel>(RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
   return model;
 }
 
 // The robot program's standing posture (agent/program/Postures.hpp), model joint order.
-std::vector<double> standingPosture(const NaoModel& m) {
+std::vector<double> standingPosture(const RobotModel& m) {
   return simswift::NaoBinding(m).posture(agent::program::postureAngles(agent::program::Posture::Stand));
 }
 

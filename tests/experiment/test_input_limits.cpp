@@ -12,7 +12,7 @@
 
 #include "sim/experiment/Experiment.hpp"
 #include "sim/experiment/Sweep.hpp"
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/FieldConfig.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
@@ -125,7 +125,7 @@ TEST(InputLimits, OversizeAndBinaryExperimentFilesAreRefusedWithTheirLine) {
 
 TEST(InputLimits, ShippedInputsStillLoad) {
   const fs::path src = SIMSWIFT_SOURCE_DIR;
-  EXPECT_NO_THROW(NaoModel::loadUrdf((src / "models" / "nao_v5.urdf").string()));
+  EXPECT_NO_THROW(RobotModel::loadUrdf((src / "models" / "nao_v5.urdf").string()));
   int experiments = 0, scenarios = 0;
   for (const auto& f : fs::directory_iterator(src / "fields")) EXPECT_NO_THROW(FieldConfig::loadYaml(f.path().string()));
   for (const auto& f : fs::directory_iterator(src / "scenarios")) {

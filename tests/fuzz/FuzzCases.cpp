@@ -7,7 +7,8 @@
 #include <sstream>
 
 #include "agent/program/Postures.hpp"
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/FieldConfig.hpp"
 #include "sim/world/World.hpp"
@@ -23,8 +24,8 @@ std::string readFile(const std::string& path) {
   return ss.str();
 }
 
-std::shared_ptr<const NaoModel> goodModel() {
-  static auto m = std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+std::shared_ptr<const RobotModel> goodModel() {
+  static auto m = std::make_shared<const RobotModel>(RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
   return m;
 }
 
@@ -37,7 +38,7 @@ bool namesFileAndLine(const std::string& msg, const std::string& source) {
 }
 
 // A few ticks with `model` standing on `field` at (x, y, theta).
-void stepWorld(const FieldConfig& field, std::shared_ptr<const NaoModel> model, double x, double y, double theta) {
+void stepWorld(const FieldConfig& field, std::shared_ptr<const RobotModel> model, double x, double y, double theta) {
   World w(field);
   const auto q = simswift::NaoBinding(*model).posture(agent::program::postureAngles(agent::program::Posture::Stand));
   const int i = w.addRobot(model, x, y, theta, q);
@@ -81,7 +82,7 @@ CaseResult runCase(Loader l, const std::string& text) {
   try {
     switch (l) {
       case Loader::Urdf: {
-        auto m = std::make_shared<const NaoModel>(NaoModel::loadUrdfString(text, source));
+        auto m = std::make_shared<const RobotModel>(RobotModel::loadUrdfString(text, source));
         stepWorld(FieldConfig::spl2017(), m, 0, 0, 0);
         break;
       }

@@ -9,15 +9,16 @@
 #include "agent/libagent/AgentShared.hpp"
 #include "agent/motion/Kinematics.hpp"
 #include "agent/nao/NaoFacts.hpp"
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 
 namespace nao = agent::nao;
 namespace J = agent::libagent::Joints;
-using simswift::NaoModel;
+using simswift::RobotModel;
 
 namespace {
-const NaoModel& model() {
-  static const NaoModel m = NaoModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf");
+const RobotModel& model() {
+  static const RobotModel m = RobotModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf");
   return m;
 }
 // Joint origin (mm) in the parent link frame.

@@ -1,4 +1,4 @@
-// NaoModel: the shipped URDF loads as a complete NAO, and malformed URDFs are
+// RobotModel: the shipped URDF loads as a complete NAO, and malformed URDFs are
 // rejected with errors naming the file and the offending link or joint.
 #include <gtest/gtest.h>
 
@@ -9,10 +9,11 @@
 
 #include "agent/libagent/AgentShared.hpp"
 #include "sim/nao_model/Motors.hpp"
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 
 using simswift::ModelError;
-using simswift::NaoModel;
+using simswift::RobotModel;
 
 namespace {
 
@@ -37,7 +38,7 @@ std::pair<size_t, size_t> element(const std::string& xml, const std::string& tag
 std::string errorOf(const std::string& xml) {
   try {
     // The model, then its libagent joints, as the runner checks them.
-    const NaoModel m = NaoModel::loadUrdfString(xml, "bad.urdf");
+    const RobotModel m = RobotModel::loadUrdfString(xml, "bad.urdf");
     const simswift::NaoBinding nao(m);
   } catch (const ModelError& e) {
     std::cout << "  ModelError: " << e.what() << "\n";
@@ -50,8 +51,8 @@ double deg(double d) { return d * M_PI / 180.0; }
 
 }  // namespace
 
-TEST(NaoModel, LoadsTheNaoV5) {
-  const NaoModel m = NaoModel::loadUrdf(kUrdfPath);
+TEST(RobotModel, LoadsTheNaoV5) {
+  const RobotModel m = RobotModel::loadUrdf(kUrdfPath);
   EXPECT_EQ(m.joints().size(), 26u);
   EXPECT_EQ(m.links().size(), 27u);  // 26 joint children + torso
   EXPECT_EQ(m.links()[m.rootLink()].name, "torso");
@@ -75,8 +76,8 @@ TEST(NaoModel, LoadsTheNaoV5) {
   for (const auto& j : m.joints()) EXPECT_LT(j.parent_link, j.child_link) << j.name;
 }
 
-TEST(NaoModel, PublishedNumbers) {
-  const NaoModel m = NaoModel::loadUrdf(kUrdfPath);
+TEST(RobotModel, PublishedNumbers) {
+  const RobotModel m = RobotModel::loadUrdf(kUrdfPath);
   auto joint = [&](const char* n) -> const simswift::JointSpec& { return m.joints()[m.jointIndex(n)]; };
   auto link = [&](const char* n) -> const simswift::LinkSpec& { return m.links()[m.linkIndex(n)]; };
   EXPECT_NEAR(joint("HeadYaw").origin.xyz.z(), 0.1265, 1e-9);
@@ -102,16 +103,16 @@ TEST(NaoModel, PublishedNumbers) {
   EXPECT_EQ(link("LThigh").visuals.at(0).type, simswift::ShapeType::Cylinder);
 }
 
-TEST(NaoModel, MissingFileNamesThePath) {
+TEST(RobotModel, MissingFileNamesThePath) {
   try {
-    NaoModel::loadUrdf("/nonexistent/nao.urdf");
+    RobotModel::loadUrdf("/nonexistent/nao.urdf");
     FAIL() << "no error";
   } catch (const ModelError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/nao.urdf"), std::string::npos);
   }
 }
 
-TEST(NaoModel, LinkWithoutMassIsRejected) {
+TEST(RobotModel, LinkWithoutMassIsRejected) {
   std::string xml = readUrdf();
   auto [b, e] = element(xml, "link", "LThigh");
   const size_t m = xml.find("<mass", b);
@@ -122,7 +123,7 @@ TEST(NaoModel, LinkWithoutMassIsRejected) {
   EXPECT_NE(err.find("LThigh"), std::string::npos) << err;
 }
 
-TEST(NaoModel, LinkWithoutMassElementIsRejected) {
+TEST(RobotModel, LinkWithoutMassElementIsRejected) {
   std::string xml = readUrdf();
   auto [b, e] = element(xml, "link", "Head");
   const size_t m = xml.find("<mass", b);
@@ -133,7 +134,7 @@ TEST(NaoModel, LinkWithoutMassElementIsRejected) {
   EXPECT_NE(err.find("Head"), std::string::npos) << err;
 }
 
-TEST(NaoModel, LinkWithoutInertialIsRejected) {
+TEST(RobotModel, LinkWithoutInertialIsRejected) {
   std::string xml = readUrdf();
   auto [b, e] = element(xml, "link", "RTibia");
   const size_t ib = xml.find("<inertial>", b);
@@ -146,7 +147,7 @@ TEST(NaoModel, LinkWithoutInertialIsRejected) {
   EXPECT_NE(err.find("inertial"), std::string::npos) << err;
 }
 
-TEST(NaoModel, JointWithoutLimitsIsRejected) {
+TEST(RobotModel, JointWithoutLimitsIsRejected) {
   std::string xml = readUrdf();
   auto [b, e] = element(xml, "joint", "LKneePitch");
   const size_t l = xml.find("<limit", b);
@@ -157,7 +158,7 @@ TEST(NaoModel, JointWithoutLimitsIsRejected) {
   EXPECT_NE(err.find("LKneePitch"), std::string::npos) << err;
 }
 
-TEST(NaoModel, InvertedLimitsAreRejected) {
+TEST(RobotModel, InvertedLimitsAreRejected) {
   std::string xml = readUrdf();
   auto [b, e] = element(xml, "joint", "HeadPitch");
   const size_t l = xml.find("lower=\"", b);
@@ -168,7 +169,7 @@ TEST(NaoModel, InvertedLimitsAreRejected) {
   EXPECT_NE(err.find("lower"), std::string::npos) << err;
 }
 
-TEST(NaoModel, NonHingeJointIsRejected) {
+TEST(RobotModel, NonHingeJointIsRejected) {
   std::string xml = readUrdf();
   auto [b, e] = element(xml, "joint", "RElbowYaw");
   const size_t t = xml.find("type=\"revolute\"", b);
@@ -179,7 +180,7 @@ TEST(NaoModel, NonHingeJointIsRejected) {
   EXPECT_NE(err.find("hinge"), std::string::npos) << err;
 }
 
-TEST(NaoModel, MissingLibagentJointIsRejected) {
+TEST(RobotModel, MissingLibagentJointIsRejected) {
   std::string xml = readUrdf();
   const std::string from = "<joint name=\"LHipYawPitch\"";
   const size_t p = xml.find(from);
@@ -190,7 +191,7 @@ TEST(NaoModel, MissingLibagentJointIsRejected) {
   EXPECT_NE(err.find("missing joint 'LHipYawPitch'"), std::string::npos) << err;
 }
 
-TEST(NaoModel, MalformedXmlIsRejected) {
+TEST(RobotModel, MalformedXmlIsRejected) {
   const std::string xml = readUrdf();
   const std::string err = errorOf(xml.substr(0, xml.size() / 2));
   EXPECT_NE(err.find("bad.urdf"), std::string::npos) << err;
@@ -198,7 +199,7 @@ TEST(NaoModel, MalformedXmlIsRejected) {
   EXPECT_NE(errorOf("this is not xml").find("bad.urdf"), std::string::npos);
 }
 
-TEST(NaoModel, PoseIsometry) {
+TEST(RobotModel, PoseIsometry) {
   simswift::Pose3 p;
   p.xyz = Eigen::Vector3d(1, 2, 3);
   p.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
@@ -208,8 +209,8 @@ TEST(NaoModel, PoseIsometry) {
 
 // The URDF's speed and effort limits are the motor table's joint-side
 // no-load speed and stall torque (sim/nao_model/Motors.hpp, Aldebaran's NAO V5 (H25) documentation).
-TEST(NaoModel, UrdfLimitsAgreeWithTheMotorTable) {
-  const simswift::NaoModel m = simswift::NaoModel::loadUrdf(kUrdfPath);
+TEST(RobotModel, UrdfLimitsAgreeWithTheMotorTable) {
+  const simswift::RobotModel m = simswift::RobotModel::loadUrdf(kUrdfPath);
   int with_motor = 0;
   for (const auto& j : m.joints()) {
     const auto motor = simswift::naoJointMotor(j.name);

@@ -16,7 +16,7 @@
 
 using simswift::GeomTag;
 using simswift::NaoBinding;
-using simswift::NaoModel;
+using simswift::RobotModel;
 using simswift::RobotBody;
 
 namespace {
@@ -26,12 +26,12 @@ constexpr double kDt = simswift::kTickSeconds;  // s, one World::step (a tick)
 const double kSubstep = simswift::kTickSeconds / simswift::WorldConfig{}.substeps;
 const double kDeg = M_PI / 180.0;
 
-std::shared_ptr<const NaoModel> naoModel() {
-  static const auto m = std::make_shared<const NaoModel>(
-      NaoModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf"));
+std::shared_ptr<const RobotModel> naoModel() {
+  static const auto m = std::make_shared<const RobotModel>(
+      RobotModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf"));
   return m;
 }
-const NaoModel& model() { return *naoModel(); }
+const RobotModel& model() { return *naoModel(); }
 const NaoBinding& nao() {
   static const NaoBinding b(model());
   return b;

@@ -8,11 +8,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "sim/nao_model/NaoModel.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
+#include "sim/nao_model/RobotModel.hpp"
 #include "sim/nao_model/UrdfLines.hpp"
 
 using simswift::ModelError;
-using simswift::NaoModel;
+using simswift::RobotModel;
 
 namespace {
 
@@ -32,7 +33,7 @@ int lineAt(const std::string& text, size_t pos) {
 std::string errorOf(const std::string& xml) {
   try {
     // The model, then its libagent joints, as the runner checks them.
-    const NaoModel m = NaoModel::loadUrdfString(xml, "bad.urdf");
+    const RobotModel m = RobotModel::loadUrdfString(xml, "bad.urdf");
     const simswift::NaoBinding nao(m);
   } catch (const ModelError& e) {
     return e.what();
@@ -163,7 +164,7 @@ TEST(UrdfHardening, DeepNestingAndHugeFilesAreRefusedBeforeParsing) {
 
 TEST(UrdfHardening, DirectoryIsNotAUrdf) {
   try {
-    NaoModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models");
+    RobotModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models");
     FAIL() << "a directory loaded";
   } catch (const ModelError& e) {
     EXPECT_NE(std::string(e.what()).find("models:1: is a directory"), std::string::npos) << e.what();
@@ -258,7 +259,7 @@ TEST(UrdfHardening, OversizeFileIsRefusedNamingTheLimit) {
     out << std::string(simswift::UrdfLimits::kMaxBytes, '\n');
   }
   try {
-    NaoModel::loadUrdf(path.string());
+    RobotModel::loadUrdf(path.string());
     ADD_FAILURE() << "a 4 MB + 25 KB URDF loaded";
   } catch (const ModelError& e) {
     EXPECT_EQ(std::string(e.what()).rfind(path.string() + ":1: URDF is ", 0), 0u) << e.what();

@@ -15,8 +15,8 @@
 using namespace agent::motion;
 
 TEST(MotionKinematics, ForwardKinematicsMatchesTheSimulatedModel) {
-  auto model = std::make_shared<const simswift::NaoModel>(
-      simswift::NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+  auto model = std::make_shared<const simswift::RobotModel>(
+      simswift::RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
   simswift::World w(simswift::FieldConfig::spl2017());
   std::vector<double> q(model->joints().size(), 0.0);
   const int robot = w.addRobot(model, 0, 0, 0, q);
@@ -71,7 +71,7 @@ TEST(MotionKinematics, ForwardKinematicsMatchesTheSimulatedModel) {
 // simulated model's joint limits and speeds, so clipped commands are never
 // clamped again by the servo.
 TEST(MotionKinematics, ClipperLimitsMatchTheModel) {
-  const auto model = simswift::NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf");
+  const auto model = simswift::RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf");
   const auto& lim = agent::motion::jointLimits();
   for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
     if (i == agent::libagent::Joints::LHand || i == agent::libagent::Joints::RHand) continue;  // fraction, not rad

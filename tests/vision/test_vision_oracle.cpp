@@ -16,6 +16,7 @@
 
 #include "agent/program/Postures.hpp"
 #include "sim/runner/Runner.hpp"
+#include "sim/nao_model/NaoBinding.hpp"
 #include "sim/vision/VisionOracle.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "tests/support/ConfigErrors.hpp"
@@ -30,8 +31,8 @@ using namespace simswift::vision;
 namespace al = agent::libagent;
 constexpr double kDeg = M_PI / 180.0;
 
-std::shared_ptr<const NaoModel> model() {
-  static auto m = std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+std::shared_ptr<const RobotModel> model() {
+  static auto m = std::make_shared<const RobotModel>(RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
   return m;
 }
 std::vector<double> stand() {

@@ -17,8 +17,8 @@ using namespace simswift;
 
 namespace {
 
-std::shared_ptr<const NaoModel> naoModel() {
-  static auto model = std::make_shared<const NaoModel>(NaoModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
+std::shared_ptr<const RobotModel> naoModel() {
+  static auto model = std::make_shared<const RobotModel>(RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
   return model;
 }
 
