@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cstdio>
 #include <random>
 #include <thread>
 
@@ -13,6 +12,9 @@
 
 #include "agent/framework/ModuleSchedule.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/support/HashText.hpp"
+
+using simswift::testing::hashLiteral;
 
 using namespace simswift::runner;
 
@@ -75,24 +77,18 @@ uint64_t runHash(bool jitter, uint64_t jitter_seed,
   return runner.run(opt).hash;
 }
 
-std::string hex(uint64_t v) {
-  char b[24];
-  std::snprintf(b, sizeof b, "0x%016llxull", static_cast<unsigned long long>(v));
-  return b;
-}
-
 }  // namespace
 
 TEST(Determinism, PinnedHash) {
   const uint64_t h = runHash(false, 0);
-  EXPECT_EQ(h, kPinnedHash) << "state hash is " << hex(h) << ", pinned " << hex(kPinnedHash)
+  EXPECT_EQ(h, kPinnedHash) << "state hash is " << hashLiteral(h) << ", pinned " << hashLiteral(kPinnedHash)
                             << ": if physics changed on purpose, update kPinnedHash in " << __FILE__;
 }
 
 TEST(Determinism, JitteredRobotThreadsGiveThePinnedHash) {
   for (uint64_t seed : {1u, 2u}) {
     const uint64_t h = runHash(true, seed);
-    EXPECT_EQ(h, kPinnedHash) << "jitter seed " << seed << ": " << hex(h);
+    EXPECT_EQ(h, kPinnedHash) << "jitter seed " << seed << ": " << hashLiteral(h);
   }
 }
 
@@ -100,7 +96,7 @@ TEST(Determinism, JitteredRobotThreadsGiveThePinnedHash) {
 // the same program in the same order: the same pinned hash.
 TEST(Determinism, InlineProgramsGiveThePinnedHash) {
   const uint64_t h = runHash(false, 0, agent::program::Threading::Inline);
-  EXPECT_EQ(h, kPinnedHash) << "inline: " << hex(h);
+  EXPECT_EQ(h, kPinnedHash) << "inline: " << hashLiteral(h);
 }
 
 // The same with every robot thread busy: three robots searching for the ball
@@ -123,7 +119,7 @@ TEST(Determinism, InlineAndNamedThreadsGiveTheSameHashWithBehaviourAndTeamComms)
     hashes[k] = runner.run(opt).hash;
     frames[k] = runner.program(0)->perceptionFrames();
   }
-  EXPECT_EQ(hashes[1], hashes[0]) << "named " << hex(hashes[0]) << ", inline " << hex(hashes[1]);
+  EXPECT_EQ(hashes[1], hashes[0]) << "named " << hashLiteral(hashes[0]) << ", inline " << hashLiteral(hashes[1]);
   EXPECT_EQ(frames[1], frames[0]);
   EXPECT_GE(frames[0], 119);  // 30 Hz for 4 s: Perception really ran
 }

@@ -16,7 +16,6 @@
 // leave it as it is.
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -24,6 +23,9 @@
 #include "agent/program/Postures.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/world/World.hpp"
+#include "tests/support/HashText.hpp"
+
+using simswift::testing::hashLiteral;
 
 using namespace simswift;
 
@@ -52,17 +54,11 @@ uint64_t physicsHash() {
   return w.stateHash();
 }
 
-std::string hex(uint64_t v) {
-  char b[24];
-  std::snprintf(b, sizeof b, "0x%016llxull", static_cast<unsigned long long>(v));
-  return b;
-}
-
 }  // namespace
 
 TEST(PhysicsHash, StandingNaoPinned) {
   const uint64_t h = physicsHash();
-  EXPECT_EQ(h, kPinnedPhysicsHash) << "physics hash is " << hex(h) << ", pinned " << hex(kPinnedPhysicsHash)
+  EXPECT_EQ(h, kPinnedPhysicsHash) << "physics hash is " << hashLiteral(h) << ", pinned " << hashLiteral(kPinnedPhysicsHash)
                                    << ": if physics changed on purpose, re-pin in " << __FILE__;
 }
 
@@ -75,6 +71,6 @@ TEST(PhysicsHash, SameOnAnyNumberOfThreads) {
     for (int t = 0; t < threads; ++t) pool.emplace_back([&hashes, t] { hashes[t] = physicsHash(); });
     for (auto& th : pool) th.join();
     for (int t = 0; t < threads; ++t)
-      EXPECT_EQ(hashes[t], kPinnedPhysicsHash) << threads << " threads, thread " << t << ": " << hex(hashes[t]);
+      EXPECT_EQ(hashes[t], kPinnedPhysicsHash) << threads << " threads, thread " << t << ": " << hashLiteral(hashes[t]);
   }
 }
