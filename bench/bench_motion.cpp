@@ -4,7 +4,11 @@
 // sideways walk, the joints' hinge-anchor separation and the stance feet's
 // slip over a 20 s walk at full speed, falls per 100 random 20 s command
 // sequences, and the real-time factor of one walking robot with its Motion
-// thread in the loop. Figures go to stdout and the results file.
+// thread in the loop. The walk runs through the robot program's production
+// schedule (inline): the bench plays Behaviour through a RequestedBehaviour
+// (agent/behaviour/RequestedBehaviour.hpp) in the Perception thread's
+// behaviour slot, and the standard Motion module follows its requests.
+// Figures go to stdout and the results file.
 //
 //   bench_motion [--sequences N] [--only SECTIONS]
 //     --sequences: random 20 s sequences for falls and the RTF (default 100)
@@ -22,7 +26,7 @@
 
 #include "BenchResults.hpp"
 #include "agent/blackboard/Blackboard.hpp"
-#include "agent/motion/RequestedMotion.hpp"
+#include "agent/behaviour/RequestedBehaviour.hpp"
 #include "sim/runner/HeadingDrift.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/StanceSlip.hpp"
@@ -32,22 +36,22 @@ namespace {
 using agent::blackboard::ActionType;
 
 struct Rig {
-  agent::motion::RequestedMotion* motion = nullptr;
+  std::shared_ptr<agent::behaviour::MotionRequestMailbox> behaviour;  // the bench's motion requests
   simswift::runner::Runner runner;
   int torso;
   explicit Rig(uint64_t seed, double x = 0.0)  // x: start on the field (m)
       : runner(simswift::runner::Scenario::parse(
             "seed: " + std::to_string(seed) + "\nnoise: on\nrobots:\n  - {team: 0, player: 1, x: " + std::to_string(x) + ", y: 0}\n",
             "bench_motion")) {
-    auto m = std::make_unique<agent::motion::RequestedMotion>();
-    motion = m.get();
-    runner.setMotionGenerator(0, std::move(m));
+    auto b = std::make_unique<agent::behaviour::RequestedBehaviour>();
+    behaviour = b->mailbox();
+    runner.setBehaviour(0, std::move(b));
     runner.setThreading(agent::program::Threading::Inline);  // as the experiment runs programs
     runner.start();
     torso = runner.world().robot(0).model().rootLink();
   }
   void walk(double f, double l, double t) {
-    motion->request([&](agent::blackboard::MotionRequest& r) {
+    behaviour->set([&](agent::blackboard::MotionRequest& r) {
       r.body.type = ActionType::WALK;
       r.body.forward = static_cast<float>(f);
       r.body.left = static_cast<float>(l);

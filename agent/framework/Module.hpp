@@ -132,7 +132,7 @@ class ModuleOf<Reads<R...>, Writes<W...>, UsesPrevious<U...>> : public Module {
     update(in, out);
     out.publish(board);
   }
-  static std::vector<SectionId> idsWhere(bool optional) {
+  static std::vector<SectionId> idsWhere([[maybe_unused]] bool optional) {  // unused for Reads<>
     std::vector<SectionId> ids;
     ((detail::Unwrap<R>::optional == optional ? ids.push_back(SectionOf<typename detail::Unwrap<R>::type>::id)
                                               : void()),

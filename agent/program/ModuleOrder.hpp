@@ -11,7 +11,8 @@
 // the Perception modules), and reads `team_outbox` (onto its team
 // transport) and `findball` (the simulator's FindBall view draws it). The bracketed modules are optional:
 // a PerceptionStep given by a test or tool, and a behaviour (the scenario's
-// action script or one of agent/behaviour's). Without a behaviour nothing
+// action script, one of agent/behaviour's, or a test's, bench's or tool's
+// RequestedBehaviour: agent/behaviour/RequestedBehaviour.hpp). Without a behaviour nothing
 // writes the motion request, so Motion must then be a generator (a held
 // posture or joint script) -- the start-up check says so otherwise.
 #pragma once
@@ -38,7 +39,7 @@ struct ProgramConfig {
   uint64_t seed = 1;  // the filters' random source (scenario seed and robot)
   // Motion: a generator replaces the Motion module (the walk, kicks, falls).
   std::unique_ptr<framework::MotionGenerator> motion_generator;
-  motion::MotionConfig motion;
+  motion::MotionConfig motion;  // the Motion module's (composeProgram's motion_config)
   // Behaviour: a scenario's timed body actions (empty and no `behaviour`: none).
   std::vector<motion::ActionStep> actions;
   std::unique_ptr<framework::Module> behaviour;  // a behaviour module (wins over actions)

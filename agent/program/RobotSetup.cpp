@@ -28,8 +28,10 @@ constexpr double kMaxPosition = 50;     // m
 
 }  // namespace
 
-ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::MotionGenerator> motion) {
+ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::MotionGenerator> motion,
+                             const motion::MotionConfig& motion_config) {
   ProgramConfig pc;
+  pc.motion = motion_config;
   pc.team = s.team;
   pc.player = s.player;
   pc.seed = s.seed;

@@ -53,8 +53,12 @@ struct RobotSetup {
 // the behaviour module plans with the walk's top speeds; with actions the
 // scripted behaviour runs them through the Motion module; otherwise Motion
 // is the scripted posture and joint steps. `motion` (may be null) replaces
-// the Motion module (a test's generator).
-ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::MotionGenerator> motion = nullptr);
+// the Motion module (a test's generator). `motion_config` is the Motion
+// module's configuration (ProgramConfig::motion: walk, kick, get-ups; the
+// behaviour plans with its walk's top speeds); the simulator's runner takes
+// a test's through Runner::setMotionConfig.
+ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::MotionGenerator> motion = nullptr,
+                             const motion::MotionConfig& motion_config = motion::MotionConfig());
 
 // The posture names the files use.
 const std::vector<std::string>& postureNames();

@@ -55,6 +55,14 @@ void Runner::setMotionGenerator(int robot, std::unique_ptr<agent::framework::Mot
   overrideSlot(robot, "setMotionGenerator").motion_override = std::move(motion);
 }
 
+void Runner::setBehaviour(int robot, std::unique_ptr<agent::framework::Module> behaviour) {
+  overrideSlot(robot, "setBehaviour").behaviour_override = std::move(behaviour);
+}
+
+void Runner::setMotionConfig(int robot, const agent::motion::MotionConfig& config) {
+  overrideSlot(robot, "setMotionConfig").motion_config = config;
+}
+
 void Runner::setPerceptionStep(int robot, std::unique_ptr<agent::framework::PerceptionStep> perception) {
   overrideSlot(robot, "setPerceptionStep").perception_override = std::move(perception);
 }
@@ -242,8 +250,23 @@ void Runner::buildPrograms() {
     if (!external) {
       // The robot program: the standard modules composed from the robot's
       // setup (agent/program/RobotSetup.hpp: the same for a launched
-      // simswift-agent), Motion replaced by a test's generator if it set one.
-      ap::ProgramConfig pc = ap::composeProgram(robotSetup(scenario_, static_cast<int>(i)), std::move(r.motion_override));
+      // simswift-agent), Motion replaced by a test's generator if it set one,
+      // the Motion module configured by a test's MotionConfig if it set one.
+      if (r.behaviour_override && r.motion_override)
+        throw RunnerError("robot " + std::to_string(i) +
+                          ": setBehaviour and setMotionGenerator both given (the generator would leave the "
+                          "behaviour's motion request unread)");
+      ap::ProgramConfig pc =
+          ap::composeProgram(robotSetup(scenario_, static_cast<int>(i)), std::move(r.motion_override),
+                             r.motion_config ? *r.motion_config : agent::motion::MotionConfig());
+      if (r.behaviour_override) {
+        // A test's behaviour in the behaviour slot: it replaces the
+        // scenario's behaviour, actions or held posture, and the standard
+        // Motion module follows its requests.
+        pc.behaviour = std::move(r.behaviour_override);
+        pc.actions.clear();
+        pc.motion_generator.reset();
+      }
       pc.perception_step = std::move(r.perception_override);
       pc.step_hook = std::move(r.step_hook);
       // The game state and team link reach the program's modules. A test's

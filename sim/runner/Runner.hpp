@@ -127,6 +127,19 @@ class Runner {
   // Before start(): replace a builtin robot's Motion step (robot index in
   // scenario order), e.g. a test's motion generator.
   void setMotionGenerator(int robot, std::unique_ptr<agent::framework::MotionGenerator> motion);
+  // Before start(): give a builtin robot this behaviour module (the
+  // Perception thread's behaviour slot, agent/program/ModuleOrder.cpp; e.g.
+  // agent/behaviour/RequestedBehaviour.hpp, through which a test, bench or
+  // tool plays Behaviour). It replaces the scenario robot's behaviour,
+  // action script or held posture; Motion is then the standard Motion module
+  // (MotionThreadModule, with setMotionConfig's configuration), reading the
+  // motion request the behaviour writes. start() throws RunnerError if the
+  // robot also has a setMotionGenerator (nothing would read the request).
+  void setBehaviour(int robot, std::unique_ptr<agent::framework::Module> behaviour);
+  // Before start(): a builtin robot's Motion module configuration
+  // (ProgramConfig::motion: walk, kick, get-ups, fall handling; default
+  // agent::motion::MotionConfig()).
+  void setMotionConfig(int robot, const agent::motion::MotionConfig& config);
   // Before start(): replace a builtin robot's Perception step.
   void setPerceptionStep(int robot, std::unique_ptr<agent::framework::PerceptionStep> perception);
   // Before start(): a hook each of a builtin robot's threads calls before
@@ -162,6 +175,11 @@ class Runner {
   RunStats stats() const;  // so far
   // Robot i's sensor values as published this tick (what its program read).
   const agent::libagent::SensorValues& lastSensors(int i) const { return robots_[i]->values; }
+  // Robot i's command latched this tick (tick stage 8), applied to its
+  // servos at the start of the next: what its program sent, unless libagent
+  // acted on its own (limp, the sit after a lost contact); before the first
+  // tick, what the body gets before any command.
+  const agent::libagent::ActuatorCommand& lastCommand(int i) const { return robots_[i]->latched; }
   // Robot i's fall bookkeeping (statistics only).
   const FallDetector& robotFall(int i) const { return robots_[i]->fall; }
   // The vision oracle (after start()): what each robot was shown in the
@@ -208,6 +226,8 @@ class Runner {
     std::unique_ptr<bridge::BodyHost> host;
     std::unique_ptr<sensors::SensorSuite> sensors;
     std::unique_ptr<agent::framework::MotionGenerator> motion_override;
+    std::unique_ptr<agent::framework::Module> behaviour_override;
+    std::optional<agent::motion::MotionConfig> motion_config;
     std::unique_ptr<agent::framework::PerceptionStep> perception_override;
     std::function<void(agent::framework::ThreadId)> step_hook;
     // Camera images (set up by the host when rendering).

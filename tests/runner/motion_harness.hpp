@@ -1,15 +1,27 @@
-// Shared harness for the Motion physics tests: one robot in the lock-step
-// runner with the MotionModule as its Motion thread; the test plays
-// Behaviour by setting the motion request between ticks (RequestedMotion).
+// Shared harness for the Motion physics tests, benchmarks' and tools' way
+// of driving the walk: one robot in the lock-step runner running the
+// production schedule (agent/program/ModuleOrder.cpp) inline: the test
+// plays Behaviour through a RequestedBehaviour in the Perception thread's
+// behaviour slot (agent/behaviour/RequestedBehaviour.hpp), which writes the
+// program's MotionRequest section each camera frame (30 Hz); the standard
+// MotionThreadModule and EffectorModule run in the Motion thread. Between
+// ticks the harness reads the program's Blackboard (MotionState) and checks
+// the command the simulator latched (Runner::lastCommand) against the joint
+// limits and the per-tick speed limit (the clipper's promise).
+// A request set between ticks reaches Motion on the first Motion tick after
+// the next camera frame: 2-5 ticks (20-50 ms) later, where a Motion step
+// that took it directly would have had it on the next tick (10 ms).
 // Units: m and rad in the field frame (world), mm in the robot frame (odometry).
 #pragma once
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
+#include "agent/behaviour/RequestedBehaviour.hpp"
 #include "agent/blackboard/Blackboard.hpp"
-#include "agent/motion/RequestedMotion.hpp"
+#include "agent/program/StandardModules.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace motion_test {
@@ -20,18 +32,17 @@ inline bool downOrGettingUp(agent::blackboard::BodyState p) {
   return p == P::FALLEN_FORWARD || p == P::FALLEN_BACKWARD || p == P::FALLEN_SIDEWAYS || p == P::GETTING_UP;
 }
 
-// Forwards to the MotionModule and checks every command it sends against the
-// joint limits and the per-tick speed limit (the clipper's promise).
-class CheckedMotion : public agent::framework::MotionGenerator {
+// Checks every command the body gets against the joint limits and the
+// per-tick speed limit; keeps the last command and the sensors it answered.
+class CommandCheck {
  public:
-  explicit CheckedMotion(std::unique_ptr<agent::motion::RequestedMotion> m) : m_(std::move(m)) {}
-  void tick(const agent::libagent::SensorValues& s, int64_t t_us, agent::libagent::JointValues& out) override {
-    m_->tick(s, t_us, out);
-    last_command = out;
-    last_sensed = s;
+  // After each tick: `cmd` latched this tick, `sensed` published this tick.
+  void check(const agent::libagent::ActuatorCommand& cmd, const agent::libagent::SensorValues& sensed) {
+    last_command = cmd.joints;
+    last_sensed = sensed;
     const auto& lim = agent::motion::jointLimits();
     for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
-      const float a = out.angles[i];
+      const float a = cmd.joints.angles[i];
       if (!(a >= lim[i].lower && a <= lim[i].upper)) ++limit_violations;
       if (have_prev_ && std::fabs(a - prev_[i]) > lim[i].max_velocity * agent::motion::kMotionTick + 1e-6)
         ++speed_violations;
@@ -40,13 +51,11 @@ class CheckedMotion : public agent::framework::MotionGenerator {
     have_prev_ = true;
     ++ticks;
   }
-  agent::motion::RequestedMotion& motion() { return *m_; }
   int64_t limit_violations = 0, speed_violations = 0, ticks = 0;
   agent::libagent::JointValues last_command{};
   agent::libagent::SensorValues last_sensed{};
 
  private:
-  std::unique_ptr<agent::motion::RequestedMotion> m_;
   float prev_[agent::libagent::kNumJoints] = {};
   bool have_prev_ = false;
 };
@@ -58,16 +67,21 @@ struct Pose2 {
 class MotionHarness {
  public:
   // A scenario with one robot at (x, y, theta) standing; noise on, seeded.
+  // `cfg` configures its Motion module (Runner::setMotionConfig).
   explicit MotionHarness(uint64_t seed = 1, double x = -3.0, double y = 0.0, double theta = 0.0,
                          const std::string& extra_yaml = "",
                          const agent::motion::MotionConfig& cfg = agent::motion::MotionConfig())
       : runner_(makeScenario(seed, x, y, theta, extra_yaml)) {
-    auto m = std::make_unique<agent::motion::RequestedMotion>(cfg);
-    motion_ = m.get();
-    auto c = std::make_unique<CheckedMotion>(std::move(m));
-    checked_ = c.get();
-    runner_.setMotionGenerator(0, std::move(c));
+    auto b = std::make_unique<agent::behaviour::RequestedBehaviour>();
+    mailbox_ = b->mailbox();
+    runner_.setBehaviour(0, std::move(b));
+    runner_.setMotionConfig(0, cfg);
+    runner_.setThreading(agent::program::Threading::Inline);  // deterministic, no hand-over
     runner_.start();
+    auto* m = dynamic_cast<agent::program::MotionThreadModule*>(
+        runner_.program(0)->schedule().find("motion"));
+    if (!m) throw std::logic_error("motion_test: the robot program runs no Motion module");
+    motion_ = &m->motion();
   }
 
   static simswift::runner::Scenario makeScenario(uint64_t seed, double x, double y, double theta,
@@ -81,7 +95,7 @@ class MotionHarness {
   }
 
   void request(agent::blackboard::ActionType type, double forward = 0, double left = 0, double turn = 0) {
-    motion_->request([&](agent::blackboard::MotionRequest& r) {
+    mailbox_->set([&](agent::blackboard::MotionRequest& r) {
       r.body.type = type;
       r.body.forward = static_cast<float>(forward);
       r.body.left = static_cast<float>(left);
@@ -90,7 +104,7 @@ class MotionHarness {
     });
   }
   void kick(agent::blackboard::Foot foot, double power, double direction = 0) {
-    motion_->request([&](agent::blackboard::MotionRequest& r) {
+    mailbox_->set([&](agent::blackboard::MotionRequest& r) {
       r.body.type = agent::blackboard::ActionType::KICK;
       r.body.foot = foot;
       r.body.kick_power = static_cast<float>(power);
@@ -105,6 +119,7 @@ class MotionHarness {
     bool ok = true;
     for (int i = 0; i < n; ++i) {
       runner_.tick();
+      checked_.check(runner_.lastCommand(0), runner_.lastSensors(0));
       if (torsoHeight() < simswift::runner::FallDetector::kFallHeight) ok = false;
     }
     return ok;
@@ -120,17 +135,14 @@ class MotionHarness {
     return runner_.world().robot(0).linkPose(runner_.world().robot(0).model().rootLink()).translation().z();
   }
 
-  agent::blackboard::MotionState state() const { return motion_->state(); }
-  agent::motion::MotionModule& motion() { return motion_->module(); }
+  // The program's Motion section after the last tick (its Blackboard).
+  agent::blackboard::MotionState state() const { return runner_.program(0)->board().motion.read(); }
+  // The program's Motion module (its MotionThreadModule's), for what the
+  // Motion section does not publish: mode(), getupAttempts(). Read between ticks.
+  const agent::motion::MotionModule& motion() const { return *motion_; }
   simswift::runner::Runner& runner() { return runner_; }
-
- private:
-  simswift::runner::Runner runner_;
-  agent::motion::RequestedMotion* motion_ = nullptr;
-  CheckedMotion* checked_ = nullptr;
-
- public:
-  const CheckedMotion& checked() const { return *checked_; }
+  // The limit checks over every tick so far, the last command and sensors.
+  const CommandCheck& checked() const { return checked_; }
 
   // A push: adds `dv` (m/s, field frame) to the torso's velocity.
   void push(double vx, double vy) {
@@ -138,6 +150,12 @@ class MotionHarness {
     const dReal* v = dBodyGetLinearVel(b);
     dBodySetLinearVel(b, v[0] + vx, v[1] + vy, v[2]);
   }
+
+ private:
+  simswift::runner::Runner runner_;
+  std::shared_ptr<agent::behaviour::MotionRequestMailbox> mailbox_;
+  const agent::motion::MotionModule* motion_ = nullptr;
+  CommandCheck checked_;
 };
 
 inline double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
