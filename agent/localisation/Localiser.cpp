@@ -40,7 +40,7 @@ void Localiser::reset(InitialPose where) {
     const double side = (i % 2 == 0) ? 1.0 : -1.0;  // left / right touch line
     switch (where) {
       case InitialPose::SidelineEntry:
-        p.x = rng_.uniform(-hx + 500, -300);
+        p.x = rng_.uniform(cfg_.entry_x_min, cfg_.entry_x_max);
         p.y = side * hy + rng_.gaussian(50);
         p.theta = -side * kPi / 2 + rng_.gaussian(0.1);
         break;
@@ -57,6 +57,11 @@ void Localiser::reset(InitialPose where) {
     }
     p.w = 1.0 / particles_.size();
   }
+  // The furthest up the field a placement of this kind puts the robot.
+  const double placed_max_x = where == InitialPose::SidelineEntry   ? cfg_.entry_x_max
+                              : where == InitialPose::PenaltyReturn ? cfg_.penalty_return_x + 3 * 200
+                                                                    : 0.0;
+  bound_x_ = cfg_.own_half_bound ? placed_max_x + cfg_.bound_margin : kNoBound;
   w_slow_ = w_fast_ = 0;
   have_estimate_ = false;
   computeEstimate(estimate_.time, 0, 0, 0);
@@ -71,6 +76,7 @@ void Localiser::resetTo(const blackboard::FieldPose& pose, double sd_xy, double 
     p.theta = wrapAngle(pose.theta + rng_.gaussian(sd_theta));
     p.w = 1.0 / particles_.size();
   }
+  bound_x_ = kNoBound;  // a known start: the team placed it, anywhere
   w_slow_ = w_fast_ = 0;
   have_estimate_ = false;
   computeEstimate(estimate_.time, 0, 0, 0);
@@ -222,11 +228,14 @@ void Localiser::inject(int count) {
   std::vector<Particle> cand;
   candidates(cand);
   if (cand.empty() || count <= 0) return;
-  // Of each mirror pair keep the twin nearer the current belief (the side
-  // the robot started on, carried forward by odometry).
+  // Of each mirror pair keep the twin inside the own-half bound, else the
+  // one nearer the current belief (the side the robot started on, carried
+  // forward by odometry).
   std::vector<Particle> kept;
   for (Particle& c : cand) {
-    if (!modes_.empty() && modeCost(c.x, c.y) > modeCost(-c.x, -c.y)) continue;
+    const bool out = beyondBound(c.x), twin_out = beyondBound(-c.x);
+    if (out && !twin_out) continue;
+    if (out == twin_out && !modes_.empty() && modeCost(c.x, c.y) > modeCost(-c.x, -c.y)) continue;
     c.w = likelihood(c);
     kept.push_back(c);
   }
@@ -274,6 +283,10 @@ double Localiser::modeCost(double x, double y) const {
 void Localiser::update(double forward, double left, double turn, const blackboard::VisionMeasurements& vision,
                        double time, bool fallen) {
   predict(forward, left, turn);
+  if (bound_x_ != kNoBound) {
+    bound_x_ += cfg_.bound_walk_factor * std::hypot(forward, left);
+    if (bound_x_ > field_.halfLength() + field::kBorderStripWidth) bound_x_ = kNoBound;  // any x now
+  }
   if (fallen) {
     // Falling turns the body unpredictably: widen the heading.
     for (Particle& p : particles_) p.theta = wrapAngle(p.theta + rng_.gaussian(0.01));
@@ -290,6 +303,7 @@ void Localiser::update(double forward, double left, double turn, const blackboar
       const double l = likelihood(p);
       fit += p.w * std::pow(l, inv_n);
       p.w *= l;  // prior (summing to 1) times likelihood: unnormalised
+      if (beyondBound(p.x)) p.w *= cfg_.bound_weight;
     }
     if (w_slow_ == 0) w_slow_ = w_fast_ = fit;
     w_slow_ += cfg_.slow_rate * (fit - w_slow_);

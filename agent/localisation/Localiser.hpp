@@ -19,6 +19,15 @@
 //   game state gave (own half, sideline entry), so the symmetric pose is
 //   rejected. (A robot carried across the halfway line cannot tell; neither
 //   can a real one on this field without teammates.)
+// - Own-half bound: after a sideline entry or a penalty return the robot
+//   stands in its own half, and it can since have come no further up the
+//   field than the distance it walked. Particles beyond that bound (x above
+//   the furthest placement plus the walked distance) lose weight, and an
+//   injected pose beyond it gives way to its twin. Near the halfway line the
+//   twins are close and both near the entry belief's modes, so this is what
+//   tells them apart in the first metres. B-Human's public code release
+//   reasons the same way (SideInformationProvider: a robot must be in its
+//   own half given the distance walked since it was placed).
 // - Flip / kidnap: when the estimate moves more than odometry explains
 //   (jump_distance / jump_angle) the estimate's `jumped` flag is raised.
 //
@@ -27,6 +36,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "agent/blackboard/Blackboard.hpp"
@@ -76,6 +86,13 @@ struct LocaliserConfig {
   double jump_angle = 0.6;           // rad
   // Initial poses.
   double penalty_return_x = -3200;   // mm, where a penalised robot comes back (own penalty mark's x)
+  double entry_x_min = -4000;        // mm, the sideline-entry belief's x range (own half,
+  double entry_x_max = -300;         //   clear of the goal area and the halfway line)
+  // Own-half bound (above); off: the twin choice by the belief's modes alone.
+  bool own_half_bound = true;
+  double bound_margin = 500;         // mm beyond the furthest placement (a fall, a shove)
+  double bound_walk_factor = 1.3;    // of the odometry's distance (slip, odometry error)
+  double bound_weight = 0.01;        // a particle's weight factor per frame beyond the bound
 };
 
 // Where to (re)start the belief.
@@ -97,6 +114,10 @@ class Localiser {
   void reset(InitialPose where);
   // A known pose with spread (mm, rad, 1 sigma).
   void resetTo(const blackboard::FieldPose& p, double sd_xy = 100, double sd_theta = 0.1);
+  // The own-half bound: the largest x (mm) the robot can be at; kNoBound
+  // when unbounded (a known start, or walked far enough for any x).
+  static constexpr double kNoBound = std::numeric_limits<double>::infinity();
+  double ownHalfBound() const { return bound_x_; }
 
   // One frame: odometry step since the previous frame (robot frame of the
   // previous pose: forward mm, left mm, turn rad), then the observations.
@@ -154,6 +175,8 @@ class Localiser {
   };
   std::vector<Mode> modes_;
   double w_slow_ = 0, w_fast_ = 0;
+  double bound_x_ = kNoBound;  // mm: the own-half bound (ownHalfBound())
+  bool beyondBound(double x) const { return x > bound_x_; }
   double last_probe_ = -1e9;  // s
   bool have_estimate_ = false;
   int64_t injections_ = 0;

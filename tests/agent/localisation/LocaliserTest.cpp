@@ -126,6 +126,30 @@ TEST(Localiser, SymmetricPoseIsRejected) {
   }
 }
 
+// The bound's bookkeeping; its effect in physics: tests/behaviour_physics/
+// test_halfway_entry.cpp (the synthetic detector here sees too much of the
+// field for the twins to be confused near the halfway line).
+TEST(Localiser, OwnHalfBoundGrowsWithTheDistanceWalked) {
+  const al::LocaliserConfig c;
+  al::Localiser l(c);
+  l.reset(al::InitialPose::SidelineEntry);
+  EXPECT_DOUBLE_EQ(l.ownHalfBound(), c.entry_x_max + c.bound_margin);
+  const bb::VisionMeasurements none{};
+  for (int i = 0; i < 10; ++i) l.update(60, 80, 0, none, i / 30.0);  // 100 mm per frame
+  EXPECT_NEAR(l.ownHalfBound(), c.entry_x_max + c.bound_margin + c.bound_walk_factor * 1000, 1e-6);
+  l.reset(al::InitialPose::PenaltyReturn);
+  EXPECT_LT(l.ownHalfBound(), -1000);  // back at the own penalty mark's x
+  for (int i = 0; i < 70; ++i) l.update(100, 0, 0, none, i / 30.0);  // 7 m: anywhere on the field now
+  EXPECT_EQ(l.ownHalfBound(), al::Localiser::kNoBound);
+  l.resetTo({2000, 0, 0});  // a known start: the team placed it, anywhere
+  EXPECT_EQ(l.ownHalfBound(), al::Localiser::kNoBound);
+  al::LocaliserConfig off;
+  off.own_half_bound = false;
+  al::Localiser u(off);
+  u.reset(al::InitialPose::SidelineEntry);
+  EXPECT_EQ(u.ownHalfBound(), al::Localiser::kNoBound);
+}
+
 TEST(Localiser, SameSeedSameEstimate) {
   Walk a(3, {-2000, 0, 0}), b(3, {-2000, 0, 0});
   a.loc.reset(al::InitialPose::OwnHalf);
