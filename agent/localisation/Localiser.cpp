@@ -13,6 +13,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 double sq(double v) { return v * v; }
+constexpr double kPenaltyReturnSpread = 200;  // mm, 1 sigma along the touch line
 }  // namespace
 
 double wrapAngle(double a) {
@@ -45,7 +46,7 @@ void Localiser::reset(InitialPose where) {
         p.theta = -side * kPi / 2 + rng_.gaussian(0.1);
         break;
       case InitialPose::PenaltyReturn:
-        p.x = cfg_.penalty_return_x + rng_.gaussian(200);
+        p.x = cfg_.penalty_return_x + rng_.gaussian(kPenaltyReturnSpread);
         p.y = side * hy + rng_.gaussian(50);
         p.theta = -side * kPi / 2 + rng_.gaussian(0.1);
         break;
@@ -59,7 +60,7 @@ void Localiser::reset(InitialPose where) {
   }
   // The furthest up the field a placement of this kind puts the robot.
   const double placed_max_x = where == InitialPose::SidelineEntry   ? cfg_.entry_x_max
-                              : where == InitialPose::PenaltyReturn ? cfg_.penalty_return_x + 3 * 200
+                              : where == InitialPose::PenaltyReturn ? cfg_.penalty_return_x + 3 * kPenaltyReturnSpread
                                                                     : 0.0;
   bound_x_ = cfg_.own_half_bound ? placed_max_x + cfg_.bound_margin : kNoBound;
   w_slow_ = w_fast_ = 0;
