@@ -10,12 +10,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 
 #include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/Trial.hpp"
 #include "sim/world/World.hpp"
 
 using namespace simswift;
@@ -30,16 +32,10 @@ int main(int argc, char** argv) {
   const TrialSpec t = trialSpec(e, std::atoi(argv[2]));
   const double every = argc > 3 ? std::atof(argv[3]) : 0.5;
   const TrialHooks hooks = behaviourHooks();
-  runner::Scenario sc = trialScenario(e, t);
-  hooks.behaviours->configure(e, t, sc);
-  runner::Runner run(sc);
-  run.setThreading(agent::program::Threading::Inline);
-  hooks.behaviours->attach(e, t, run);
-  run.start();
+  const std::unique_ptr<runner::Runner> owned = startTrial(e, t.index, hooks);
+  runner::Runner& run = *owned;
   const Setup& setup = e.setups[t.setup];
   const int n = static_cast<int>(setup.robots.size());
-  for (int i = 0; i < n; ++i) run.placeRobot(i, setup.robots[i].x, setup.robots[i].y, setup.robots[i].theta);
-  hooks.behaviours->startPlay(e, t, run);
   std::printf("# trial %d setup %s ball %d (%.2f, %.2f) seed %llu\n", t.index, setup.name.c_str(), t.ball + 1,
               e.balls[t.ball].x, e.balls[t.ball].y, static_cast<unsigned long long>(t.seed));
   const int64_t play = playTick(e);

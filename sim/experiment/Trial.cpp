@@ -56,6 +56,8 @@ void sidelineSpot(const Experiment& e, const World& w, int i, double* x, double*
 }  // namespace
 
 namespace {
+std::unique_ptr<runner::Runner> startRunner(const Experiment& e, const TrialSpec& t, const runner::Scenario& sc,
+                                            const TrialHooks& hooks);
 void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& sc, const TrialHooks& hooks,
                TrialResult& res);
 
@@ -78,6 +80,14 @@ TrialResult trialHeader(const Experiment& e, const TrialSpec& t) {
   return res;
 }
 }  // namespace
+
+std::unique_ptr<runner::Runner> startTrial(const Experiment& e, int index, const TrialHooks& hooks) {
+  const TrialSpec t = trialSpec(e, index);
+  const Experiment& cell = e.cell(t.cell);
+  runner::Scenario sc = trialScenario(e, t);
+  hooks.behaviours->configure(cell, t, sc);
+  return startRunner(cell, t, sc, hooks);
+}
 
 TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs) {
   using Clock = std::chrono::steady_clock;
@@ -107,20 +117,30 @@ TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, co
 
 namespace {
 
+// The trial's runner, started, its robots on their start poses (penalised).
+std::unique_ptr<runner::Runner> startRunner(const Experiment& e, const TrialSpec& t, const runner::Scenario& sc,
+                                            const TrialHooks& hooks) {
+  const Setup& setup = e.setups[t.setup];
+  auto run = std::make_unique<runner::Runner>(sc);
+  // The robot programs' steps on this thread: no hand-over between threads
+  // (the same results as named threads; two trials per two cores keep both busy).
+  run->setThreading(agent::program::Threading::Inline);
+  hooks.behaviours->attach(e, t, *run);
+  run->start();  // the t = 0 penalties: the GameController's placer takes the robots to the sideline
+  // ... and the experiment puts them on their start poses, penalised, as
+  // findballexp did (they stay there when unpenalised: Return::Sideline).
+  for (size_t i = 0; i < setup.robots.size(); ++i)
+    run->placeRobot(static_cast<int>(i), setup.robots[i].x, setup.robots[i].y, setup.robots[i].theta);
+  hooks.behaviours->startPlay(e, t, *run);
+  return run;
+}
+
 void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& sc, const TrialHooks& hooks,
                TrialResult& res) {
   const Setup& setup = e.setups[t.setup];
   const int n = static_cast<int>(setup.robots.size());
-  runner::Runner run(sc);
-  // The robot programs' steps on this thread: no hand-over between threads
-  // (the same results as named threads; two trials per two cores keep both busy).
-  run.setThreading(agent::program::Threading::Inline);
-  hooks.behaviours->attach(e, t, run);
-  run.start();  // the t = 0 penalties: the GameController's placer takes the robots to the sideline
-  // ... and the experiment puts them on their start poses, penalised, as
-  // findballexp did (they stay there when unpenalised: Return::Sideline).
-  for (int i = 0; i < n; ++i) run.placeRobot(i, setup.robots[i].x, setup.robots[i].y, setup.robots[i].theta);
-  hooks.behaviours->startPlay(e, t, run);
+  const std::unique_ptr<runner::Runner> owned = startRunner(e, t, sc, hooks);
+  runner::Runner& run = *owned;
   World& w = run.world();
 
   const int64_t play = playTick(e);  // PLAYING from the end of this tick: the trial's clock starts

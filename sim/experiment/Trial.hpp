@@ -22,6 +22,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,12 @@ struct TrialResult {
 // start fresh for the trial, their logs and setups in program_logs ("" =
 // the experiment's default); if one fails the result says so in `failed`.
 TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs = "");
+
+// Trial `index` set up as runTrial sets it up: its scenario with the
+// behaviour hooks, the robot programs inline, the robots on their start
+// poses, penalised until playTick(e). The caller ticks it and watches what
+// it likes (tools/findball_trace.cpp, tests); no found or sideline rule.
+std::unique_ptr<runner::Runner> startTrial(const Experiment& e, int index, const TrialHooks& hooks);
 
 // results.csv: header for up to `robots` robots, one row per trial. With a
 // sweep, `cell` and one column per swept path follow `trial`.

@@ -17,6 +17,7 @@
 #include "agent/program/RobotProgram.hpp"
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Experiment.hpp"
+#include "sim/experiment/Trial.hpp"
 #include "sim/world/World.hpp"
 
 using namespace simswift;
@@ -26,18 +27,11 @@ TEST(HalfwayEntryPhysics, RobotsEnteringBesideTheHalfwayLineKeepTheirSide) {
   const Experiment e =
       Experiment::loadFile(std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/findball_random_starts_touchline_2514.yaml");
   const TrialSpec t = trialSpec(e, 170);
-  const TrialHooks hooks = behaviourHooks();
-  runner::Scenario sc = trialScenario(e, t);
-  hooks.behaviours->configure(e, t, sc);
-  runner::Runner run(sc);
-  run.setThreading(agent::program::Threading::Inline);
-  hooks.behaviours->attach(e, t, run);
-  run.start();
   const experiment::Setup& setup = e.setups[t.setup];
   ASSERT_EQ(setup.name, "2017-s4");
+  const std::unique_ptr<runner::Runner> owned = startTrial(e, t.index, behaviourHooks());
+  runner::Runner& run = *owned;
   const int n = static_cast<int>(setup.robots.size());
-  for (int i = 0; i < n; ++i) run.placeRobot(i, setup.robots[i].x, setup.robots[i].y, setup.robots[i].theta);
-  hooks.behaviours->startPlay(e, t, run);
   const int64_t play = playTick(e);
   const int64_t per_s = std::llround(1.0 / kTickSeconds);
   while (run.ticks() < play + 5 * per_s) {
