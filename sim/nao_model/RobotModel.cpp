@@ -191,6 +191,19 @@ RobotModel RobotModel::loadUrdfString(const std::string& xml, const std::string&
   // overflow the stack on deep nesting); then lines for every message.
   const UrdfLines lines(xml, source);
   urdf::ModelInterfaceSharedPtr urdf;
+  // urdfdom's links hold their children by shared_ptr, so a kinematic loop
+  // in a malformed file (the fuzzer's: two <child> lines swapped) is a
+  // cycle nothing would free. Break it however this function ends.
+  struct BreakLinkCycles {
+    urdf::ModelInterfaceSharedPtr& model;
+    ~BreakLinkCycles() {
+      if (!model) return;
+      for (auto& named : model->links_) {
+        named.second->child_links.clear();
+        named.second->child_joints.clear();
+      }
+    }
+  } break_cycles{urdf};
   CaptureHandler capture;
   {
     std::lock_guard<std::mutex> lock(parserMutex());

@@ -267,3 +267,20 @@ TEST(UrdfHardening, OversizeFileIsRefusedNamingTheLimit) {
   }
   std::filesystem::remove(path);
 }
+
+// Two <child> lines swapped make a kinematic loop (RPelvis -> ... -> RTibia
+// -> RPelvis): refused, and freed (urdfdom keeps a loop's links alive through
+// their child pointers; the sanitizer build's leak check fails this test if
+// the loader does not break the cycle). Found by the loader fuzzer.
+TEST(UrdfHardening, KinematicLoopIsRefusedAndFreed) {
+  std::string xml = readUrdf();
+  const size_t a = xml.find("<child link=\"RPelvis\"/>"), b = xml.find("<child link=\"RTibia\"/>");
+  ASSERT_NE(a, std::string::npos);
+  ASSERT_NE(b, std::string::npos);
+  xml.replace(std::max(a, b), std::string(a > b ? "<child link=\"RPelvis\"/>" : "<child link=\"RTibia\"/>").size(),
+              a > b ? "<child link=\"RTibia\"/>" : "<child link=\"RPelvis\"/>");
+  xml.replace(std::min(a, b), std::string(a < b ? "<child link=\"RPelvis\"/>" : "<child link=\"RTibia\"/>").size(),
+              a < b ? "<child link=\"RTibia\"/>" : "<child link=\"RPelvis\"/>");
+  EXPECT_NE(errorOf(xml).find("bad.urdf:"), std::string::npos) << errorOf(xml);
+  EXPECT_NE(errorOf(xml).find("not connected to the root link"), std::string::npos) << errorOf(xml);
+}
