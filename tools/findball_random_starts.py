@@ -3,7 +3,7 @@
 ball positions, both components, as one experiment file.
 
   tools/findball_random_starts.py --seed 25 > scenarios/findball_random_starts.yaml
-  build/app/simswift experiment scenarios/findball_random_starts.yaml --jobs 2
+  build/simswift experiment scenarios/findball_random_starts.yaml --jobs 2
   tools/findball_random_starts.py --summarise results/findball_random_starts/results.csv
 
 The file has `starts` random start sets (three robots of team 19, players
@@ -31,9 +31,10 @@ measurement, with the same build.
                        (agent/localisation/Localiser.cpp, SidelineEntry).
   own_half             anywhere in the own half, any heading: the seed-2512
                        file. Its localisation starts on the touch lines, so a
-                       robot placed far from them starts lost and may settle
-                       on the field's point-mirror pose (tools/findball_trace
-                       shows it, docs/experiment.md).
+                       robot placed away from them starts lost; the
+                       localisation's own-half bound keeps it off the field's
+                       point-mirror pose (tools/findball_trace shows a trial,
+                       docs/experiment.md).
   anywhere             over the whole field, any heading: the seed-25 and
                        seed-2511 files (--anywhere is the same).
 
