@@ -34,6 +34,20 @@ void requestWalk(ab::MotionRequestMailbox& box, float forward) {
   });
 }
 
+// The standing robot, inline, started with a RequestedBehaviour whose
+// mailbox the test holds.
+struct RequestedRobot {
+  Runner runner{standingRobot()};
+  std::shared_ptr<ab::MotionRequestMailbox> box;
+  RequestedRobot() {
+    runner.setThreading(ap::Threading::Inline);
+    auto b = std::make_unique<ab::RequestedBehaviour>();
+    box = b->mailbox();
+    runner.setBehaviour(0, std::move(b));
+    runner.start();
+  }
+};
+
 struct NoMotion : agent::framework::MotionGenerator {
   void tick(const agent::libagent::SensorValues&, int64_t, agent::libagent::JointValues&) override {}
 };
@@ -63,12 +77,9 @@ TEST(RunnerBehaviour, RunsInTheBehaviourSlotWithTheStandardMotionModule) {
 // by the Motion module on the tick after it: 2-5 ticks, the frames being
 // 3 or 4 ticks apart (30 per second, 100 ticks per second).
 TEST(RunnerBehaviour, ARequestReachesMotionThroughTheBlackboardWithinFiveTicks) {
-  Runner r(standingRobot());
-  r.setThreading(ap::Threading::Inline);
-  auto b = std::make_unique<ab::RequestedBehaviour>();
-  const std::shared_ptr<ab::MotionRequestMailbox> box = b->mailbox();
-  r.setBehaviour(0, std::move(b));
-  r.start();
+  RequestedRobot q;
+  Runner& r = q.runner;
+  const std::shared_ptr<ab::MotionRequestMailbox>& box = q.box;
   for (int i = 0; i < 50; ++i) r.tick();
   int seen_min = 99, seen_max = 0;
   for (int k = 0; k < 12; ++k) {  // twelve requests at the phases of the camera frames
@@ -93,12 +104,9 @@ TEST(RunnerBehaviour, ARequestReachesMotionThroughTheBlackboardWithinFiveTicks) 
 // The command latched each tick is the one the program's Motion module
 // computed that tick (its Blackboard's actuator request).
 TEST(RunnerBehaviour, LastCommandIsWhatTheProgramSent) {
-  Runner r(standingRobot());
-  r.setThreading(ap::Threading::Inline);
-  auto b = std::make_unique<ab::RequestedBehaviour>();
-  const std::shared_ptr<ab::MotionRequestMailbox> box = b->mailbox();
-  r.setBehaviour(0, std::move(b));
-  r.start();
+  RequestedRobot q;
+  Runner& r = q.runner;
+  const std::shared_ptr<ab::MotionRequestMailbox>& box = q.box;
   requestWalk(*box, 200.0f);
   for (int i = 0; i < 150; ++i) {
     r.tick();
