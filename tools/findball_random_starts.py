@@ -17,8 +17,8 @@ any experiment. Python's random.Random(seed) (Mersenne Twister) gives the
 same draws on every platform and version, so a seed names one file.
 
 --legacy gives every setup the overrides that restore the behaviours as
-they were before the era-style 2016 search, the chosen 2017 stop and the
-teammate keep-out (LEGACY below): the "before" of a before/after
+they were before the era-style 2016 search, the chosen 2017 stop, the
+teammate keep-out and the keep-right pass (LEGACY below): the "before" of a before/after
 measurement, with the same build.
 
 --place says where the starts are drawn:
@@ -53,7 +53,7 @@ HALF_LENGTH, HALF_WIDTH = 4.5, 3.0  # m, inside the lines (SPL 2017)
 # The earlier defaults (agent/behaviour/BehaviourConfig.hpp before them).
 LEGACY = ("{search2016: {style: stop_scan_spin}, strategy: {exclusive_segments: false}, "
           "skills: {scan_yaw: 1.0, scan_speed: 1.0, spin_angle: 6.2832, keep_out_distance: 0, "
-          "blocked_arrive_distance: 0}}")
+          "blocked_arrive_distance: 0, keep_right: false}}")
 
 
 # Touch-line starts: x range (m) of the localisation's sideline-entry belief.

@@ -23,6 +23,30 @@ BodyCommand WalkTo::clampToWalk(BodyCommand b, const WalkLimits& w) {
   return b;
 }
 
+Point2 WalkTo::passOncoming(const BehaviourInputs& in, Point2 target, Point2 v) const {
+  const double speed = std::hypot(v.x, v.y);
+  if (!s_.keep_right || speed < 1e-6) return v;
+  const Point2 me = position(in.self.pose);
+  const double dx = v.x / speed, dy = v.y / speed;  // the way, unit
+  // Only teammates before the target (or standing on it) are passed.
+  const double reach = std::min(s_.pass_distance, distance(me, target) + 2 * s_.robot_radius);
+  double steer = 0;  // rad, + = left
+  for (const Teammate& t : in.teammates) {
+    if (t.penalised || t.fallen || t.time_since_heard > s_.obstacle_timeout) continue;
+    if (std::cos(t.pose.theta) * dx + std::sin(t.pose.theta) * dy >= 0) continue;  // not facing against the way
+    const double rx = t.pose.x - me.x, ry = t.pose.y - me.y;
+    const double along = rx * dx + ry * dy;    // mm ahead
+    const double lateral = ry * dx - rx * dy;  // mm to the left of the way
+    if (along <= 0 || along > reach || std::abs(lateral) >= s_.pass_clearance) continue;
+    const double a = lateral >= -s_.robot_radius ? -std::atan2(s_.pass_clearance - lateral, along)  // keep right
+                                                 : std::atan2(s_.pass_clearance + lateral, along);
+    if (std::abs(a) > std::abs(steer)) steer = a;
+  }
+  steer = std::clamp(steer, -s_.pass_max_steer, s_.pass_max_steer);
+  const double c = std::cos(steer), s = std::sin(steer);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
 Point2 WalkTo::repulsion(const BehaviourInputs& in, Point2 target) const {
   struct Obstacle {
     Point2 at;
@@ -147,6 +171,7 @@ WalkToResult WalkTo::tick(const BehaviourInputs& in, Point2 target, std::optiona
   const double speed = std::min(in.walk.max_forward, s_.walk_gain * dist);
   Point2 v{0, 0};
   if (dist > 1e-6) v = {(target.x - me.x) / dist * speed, (target.y - me.y) / dist * speed};
+  v = passOncoming(in, target, v);
   const Point2 rep = repulsion(in, target);
   v.x += rep.x;
   v.y += rep.y;

@@ -1,5 +1,6 @@
 // WalkTo skill: walk to a field point (optionally ending at a heading),
-// steering round teammates and goal posts with a repulsive potential field.
+// steering round teammates and goal posts with a repulsive potential field;
+// an oncoming teammate is passed on the left (SkillConfig::keep_right).
 // A hard keep-out round teammates removes any command that would close on
 // one (SkillConfig::keep_out_distance); what the chest sonars report close
 // by is kept clear of the same way (SkillConfig::sonar_*).
@@ -30,6 +31,10 @@ class WalkTo {
   // arrive_distance: mm.
   WalkToResult tick(const BehaviourInputs& in, Point2 target, std::optional<double> heading,
                     double arrive_distance) const;
+  // The way v (field frame, mm/s, toward the target) bent round oncoming
+  // teammates: right to pass one on the left, left for one clearly to the
+  // right (SkillConfig::keep_right, pass_*). v unchanged without one.
+  Point2 passOncoming(const BehaviourInputs& in, Point2 target, Point2 v) const;
   // Repulsion from teammates and posts at the robot's position, field frame, mm/s.
   Point2 repulsion(const BehaviourInputs& in, Point2 target) const;
   // Field-frame velocity v (mm/s) without its parts closing on a teammate

@@ -95,6 +95,100 @@ TEST(WalkTo, WalksRoundATeammateInTheWay) {
   EXPECT_GT(closest, 2 * s.robot_radius);  // never touched it (two 150 mm robots)
 }
 
+namespace {
+
+// Two robots swap ends along nearly one line, as players 3 and 4 of
+// thesis_findball.yaml trial 125 did at x = 2.95 m. Each one's WalkTo sees
+// the other as its team packets report it (5 Hz, so up to 0.2 s old), and
+// its walk takes up the latest command only at the start of a step (every
+// 0.25 s), changed by at most the walk's per-step ratchet (WalkConfig:
+// 60 mm/s forward, 50 mm/s sideways, 0.25 rad/s turn per step). Returns
+// the closest approach (mm, centre to centre); `left_side` says whether
+// each had the other on its left at that moment; `arrived` whether both
+// reached their targets in 40 s.
+struct HeadOn {
+  double closest = 1e9;
+  bool left_side[2] = {false, false};
+  bool arrived = false;
+};
+
+HeadOn swapEnds(const SkillConfig& s) {
+  const WalkTo walk(s, FieldGeometry{});
+  const double dt = 1.0 / 30.0, packet_period = 0.2, step = 0.25;  // s
+  Pose2 pose[2] = {{2929, -1976, 1.57}, {2961, 1976, -1.57}};
+  const Point2 target[2] = {{3000, 2000}, {3000, -2000}};
+  agent::blackboard::BodyCommand actual[2];  // what each walk does now
+  Pose2 heard[2] = {pose[0], pose[1]};       // each one's last packet
+  bool done[2] = {false, false};
+  HeadOn h;
+  agent::blackboard::BodyCommand want[2];   // each one's latest command
+  double since_packet = 0, since_step = step;
+  for (double time = 0; time < 40 && !(done[0] && done[1]); time += dt) {
+    for (int i = 0; i < 2; ++i) {
+      BehaviourInputs in;
+      in.self.pose = pose[i];
+      Teammate t;
+      t.time_since_heard = since_packet;
+      t.pose = heard[1 - i];
+      in.teammates = {t};
+      const auto r = walk.tick(in, target[i], std::nullopt, 150);
+      done[i] = done[i] || r.arrived;
+      want[i] = r.body.type == ActionType::WALK ? r.body : agent::blackboard::BodyCommand{};
+    }
+    if (since_step >= step - 1e-9) {  // a new step: the walk latches, ratcheted
+      auto ratchet = [](float now, float goal, double most) {
+        return static_cast<float>(now + std::clamp<double>(goal - now, -most, most));
+      };
+      for (int i = 0; i < 2; ++i) {
+        actual[i].type = ActionType::WALK;
+        actual[i].forward = ratchet(actual[i].forward, want[i].forward, 60.0);
+        actual[i].left = ratchet(actual[i].left, want[i].left, 50.0);
+        actual[i].turn = ratchet(actual[i].turn, want[i].turn, 0.25);
+      }
+      since_step = 0;
+    }
+    since_step += dt;
+    for (int i = 0; i < 2; ++i) integrate(pose[i], actual[i], dt);
+    since_packet += dt;
+    if (since_packet >= packet_period - 1e-9) {
+      heard[0] = pose[0];
+      heard[1] = pose[1];
+      since_packet = 0;
+    }
+    const double d = distance(position(pose[0]), position(pose[1]));
+    if (d < h.closest) {
+      h.closest = d;
+      for (int i = 0; i < 2; ++i) {
+        const Point2 rel = toRobotFrame(pose[i], position(pose[1 - i]));
+        h.left_side[i] = rel.y > 0;
+      }
+    }
+  }
+  h.arrived = done[0] && done[1];
+  return h;
+}
+
+}  // namespace
+
+TEST(WalkTo, OncomingTeammatesPassEachOtherOnTheLeft) {
+  const SkillConfig s;
+  const HeadOn h = swapEnds(s);
+  EXPECT_TRUE(h.arrived);
+  // Two 150 mm robots with 100 mm to spare; they part by pass_clearance
+  // (500 mm) less what the packets' age and the walk's ramp cost.
+  EXPECT_GT(h.closest, 2 * s.robot_radius + 100.0);
+  EXPECT_TRUE(h.left_side[0]);
+  EXPECT_TRUE(h.left_side[1]);
+}
+
+TEST(WalkTo, WithoutKeepRightTheHeadOnPairMeetsNoseToNose) {
+  // The same encounter without the rule: the case the rule is for (this
+  // is what trial 125 did in physics, where player 4 fell).
+  SkillConfig s;
+  s.keep_right = false;
+  EXPECT_LT(swapEnds(s).closest, 2 * s.robot_radius + 100.0);
+}
+
 TEST(HeadScan, SweepCoversTheFieldOfViewWithinTheHeadsLimits) {
   const SkillConfig s;
   HeadScan scan(s);
