@@ -13,6 +13,7 @@
 #include "agent/behaviour/Kick.hpp"
 #include "agent/behaviour/Spin.hpp"
 #include "agent/behaviour/WalkTo.hpp"
+#include "agent/motion/WalkConfig.hpp"
 
 using namespace agent::behaviour;
 using agent::blackboard::ActionType;
@@ -100,9 +101,9 @@ namespace {
 // Two robots swap ends along nearly one line, as players 3 and 4 of
 // thesis_findball.yaml trial 125 did at x = 2.95 m. Each one's WalkTo sees
 // the other as its team packets report it (5 Hz, so up to 0.2 s old), and
-// its walk takes up the latest command only at the start of a step (every
-// 0.25 s), changed by at most the walk's per-step ratchet (WalkConfig:
-// 60 mm/s forward, 50 mm/s sideways, 0.25 rad/s turn per step). Returns
+// its walk takes up the latest command only at the start of a step,
+// changed by at most the walk's per-step ratchet (WalkConfig's period and
+// ratchet_*: 0.25 s; 60 mm/s, 50 mm/s and 0.25 rad/s a step). Returns
 // the closest approach (mm, centre to centre); `left_side` says whether
 // each had the other on its left at that moment; `arrived` whether both
 // reached their targets in 40 s.
@@ -114,7 +115,8 @@ struct HeadOn {
 
 HeadOn swapEnds(const SkillConfig& s) {
   const WalkTo walk(s, FieldGeometry{});
-  const double dt = 1.0 / 30.0, packet_period = 0.2, step = 0.25;  // s
+  const agent::motion::WalkConfig wc;
+  const double dt = 1.0 / 30.0, packet_period = 0.2, step = wc.period;  // s
   Pose2 pose[2] = {{2929, -1976, 1.57}, {2961, 1976, -1.57}};
   const Point2 target[2] = {{3000, 2000}, {3000, -2000}};
   agent::blackboard::BodyCommand actual[2];  // what each walk does now
@@ -136,14 +138,14 @@ HeadOn swapEnds(const SkillConfig& s) {
       want[i] = r.body.type == ActionType::WALK ? r.body : agent::blackboard::BodyCommand{};
     }
     if (since_step >= step - 1e-9) {  // a new step: the walk latches, ratcheted
-      auto ratchet = [](float now, float goal, double most) {
+      auto ratchet = [](float now, float goal, double most) {  // most: per step
         return static_cast<float>(now + std::clamp<double>(goal - now, -most, most));
       };
       for (int i = 0; i < 2; ++i) {
         actual[i].type = ActionType::WALK;
-        actual[i].forward = ratchet(actual[i].forward, want[i].forward, 60.0);
-        actual[i].left = ratchet(actual[i].left, want[i].left, 50.0);
-        actual[i].turn = ratchet(actual[i].turn, want[i].turn, 0.25);
+        actual[i].forward = ratchet(actual[i].forward, want[i].forward, wc.ratchet_forward);
+        actual[i].left = ratchet(actual[i].left, want[i].left, wc.ratchet_left);
+        actual[i].turn = ratchet(actual[i].turn, want[i].turn, wc.ratchet_turn);
       }
       since_step = 0;
     }
