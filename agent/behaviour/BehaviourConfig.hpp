@@ -179,26 +179,28 @@ struct SkillConfig {
   // near, with an echo (any, within the sonar's range) in front nearer the
   // target than the robot (the one standing on the target is left to it).
   double sonar_back_off_speed = 100.0;    // mm/s
-  // Passing an oncoming teammate: one ahead (within pass_distance, mm
-  // centre to centre, along the way to the target), facing against this
-  // robot's way and less than pass_clearance (mm, centre to centre) to
-  // either side of it is passed on the left: the way bends right by the
-  // angle that brings the teammate pass_clearance to the left by the time
-  // it is alongside, at most pass_max_steer (rad). One clearly to the right
-  // (more than robot_radius) is passed on the right the same way. Both
-  // robots of a head-on pair apply the same rule, so they always part; the
-  // repulsion alone pushes both the same way when their paths cross at a
-  // shallow angle, and the keep-out then stops them too late at walking
-  // speed (the walk sheds 60 mm/s per step), nose to nose
+  // Passing an oncoming teammate: one whose heading is within 60 deg of
+  // the opposite of this robot's, ahead by up to pass_lookahead (mm along
+  // the pair's axis, and no further than the target plus two robot radii)
+  // and less than pass_clearance (mm) to either side of that axis, is
+  // passed on the left: the way bends right by the angle that brings the
+  // teammate pass_clearance to the left by the time it is alongside, at
+  // most pass_max_steer (rad). One clearly to the right (more than
+  // robot_radius) is passed on the right the same way. The axis is the
+  // mean of the two headings, so both robots of a pair measure the same
+  // side and always choose the same way round. Without it: the repulsion
+  // pushes both the same way when their paths cross at a shallow angle,
+  // and the keep-out stops them too late at walking speed (the walk sheds
+  // WalkConfig::ratchet_forward a step), nose to nose
   // (thesis_findball.yaml trial 125, docs/experiment.md).
   // The era steered rather than stopped: rUNSWift 2016 release,
   // skills/WalkToPointV2.py turned the way by the potential field, for
   // obstacles within 1 m of the path ahead, by at most 70 deg. The side
-  // convention is ours. pass_max_steer stays below
+  // convention is ours. Keep pass_max_steer below
   // translate_max_heading_error, so the robot bends its way without
   // stopping to turn. keep_right: false turns the rule off (as before).
   bool keep_right = true;
-  double pass_distance = 1500.0;  // mm
+  double pass_lookahead = 1500.0;  // mm
   double pass_clearance = 500.0;  // mm: two 150 mm radii plus 200 mm
   double pass_max_steer = 0.785;  // rad (45 deg)
   // HeadScan. The stop at a 2017 search point (thesis 4.2.3: "scans the

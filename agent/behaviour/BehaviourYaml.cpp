@@ -109,7 +109,7 @@ void readSkills(const YamlReader& r, ab::SkillConfig& k) {
   num(r, "sonar_obstacle_angle", k.sonar_obstacle_angle, Range::closed(0, 1.5708));
   num(r, "sonar_back_off_speed", k.sonar_back_off_speed, Range::closed(0, 500));
   flag(r, "keep_right", k.keep_right);
-  num(r, "pass_distance", k.pass_distance, Range::closed(0, 5000));
+  num(r, "pass_lookahead", k.pass_lookahead, Range::closed(0, 5000));
   num(r, "pass_clearance", k.pass_clearance, Range::closed(0, 2000));
   num(r, "pass_max_steer", k.pass_max_steer, Range::closed(0, 1.5708));
   num(r, "scan_yaw", k.scan_yaw, Range::closed(0, 2.0857));

@@ -8,6 +8,9 @@ namespace agent::behaviour {
 
 namespace {
 constexpr double kSonarNoEchoMm = 2550.0;  // the NAO's "no echo" reading, 2.55 m
+// A teammate counts as oncoming when its heading is within 60 deg of the
+// opposite of this robot's: |unit(mine) - unit(its)| = 2 sin(120 deg / 2).
+constexpr double kOncomingAxis = 1.7320508;
 }  // namespace
 
 using blackboard::ActionType;
@@ -26,17 +29,24 @@ BodyCommand WalkTo::clampToWalk(BodyCommand b, const WalkLimits& w) {
 Point2 WalkTo::passOncoming(const BehaviourInputs& in, Point2 target, Point2 v) const {
   const double speed = std::hypot(v.x, v.y);
   if (!s_.keep_right || speed < 1e-6) return v;
-  const Point2 me = position(in.self.pose);
-  const double dx = v.x / speed, dy = v.y / speed;  // the way, unit
+  const Pose2& me = in.self.pose;
   // Only teammates before the target (or standing on it) are passed.
-  const double reach = std::min(s_.pass_distance, distance(me, target) + 2 * s_.robot_radius);
+  const double reach = std::min(s_.pass_lookahead, distance(position(me), target) + 2 * s_.robot_radius);
   double steer = 0;  // rad, + = left
   for (const Teammate& t : in.teammates) {
     if (t.penalised || t.fallen || t.time_since_heard > s_.obstacle_timeout) continue;
-    if (std::cos(t.pose.theta) * dx + std::sin(t.pose.theta) * dy >= 0) continue;  // not facing against the way
+    // The pair's axis: my heading minus the teammate's, normalised. The
+    // teammate computes minus it, and its offset from me minus mine, so
+    // both find the same distance ahead and the same side: they can never
+    // choose opposite sides (as two robots would that each measured the
+    // side against their own way to their own target).
+    const double hx = std::cos(me.theta) - std::cos(t.pose.theta), hy = std::sin(me.theta) - std::sin(t.pose.theta);
+    const double hn = std::hypot(hx, hy);
+    if (hn < kOncomingAxis) continue;  // not facing against me
+    const double ux = hx / hn, uy = hy / hn;
     const double rx = t.pose.x - me.x, ry = t.pose.y - me.y;
-    const double along = rx * dx + ry * dy;    // mm ahead
-    const double lateral = ry * dx - rx * dy;  // mm to the left of the way
+    const double along = rx * ux + ry * uy;    // mm ahead
+    const double lateral = ry * ux - rx * uy;  // mm to the left
     if (along <= 0 || along > reach || std::abs(lateral) >= s_.pass_clearance) continue;
     const double a = lateral >= -s_.robot_radius ? -std::atan2(s_.pass_clearance - lateral, along)  // keep right
                                                  : std::atan2(s_.pass_clearance + lateral, along);

@@ -98,12 +98,13 @@ TEST(WalkTo, WalksRoundATeammateInTheWay) {
 
 namespace {
 
-// Two robots swap ends along nearly one line, as players 3 and 4 of
-// thesis_findball.yaml trial 125 did at x = 2.95 m. Each one's WalkTo sees
+// Two robots swap ends along nearly one line: an idealised version of the
+// meeting of players 3 and 4 in thesis_findball.yaml trial 125 at x = 2.95 m
+// (both start at rest, already facing their ways). Each one's WalkTo sees
 // the other as its team packets report it (5 Hz, so up to 0.2 s old), and
 // its walk takes up the latest command only at the start of a step,
 // changed by at most the walk's per-step ratchet (WalkConfig's period and
-// ratchet_*: 0.25 s; 60 mm/s, 50 mm/s and 0.25 rad/s a step). Returns
+// ratchet_*; not the sideways step's longer period, nor the sonars). Returns
 // the closest approach (mm, centre to centre); `left_side` says whether
 // each had the other on its left at that moment; `arrived` whether both
 // reached their targets in 40 s.
@@ -183,12 +184,92 @@ TEST(WalkTo, OncomingTeammatesPassEachOtherOnTheLeft) {
   EXPECT_TRUE(h.left_side[1]);
 }
 
-TEST(WalkTo, WithoutKeepRightTheHeadOnPairMeetsNoseToNose) {
-  // The same encounter without the rule: the case the rule is for (this
-  // is what trial 125 did in physics, where player 4 fell).
+TEST(WalkTo, WithoutKeepRightTheHeadOnPairComesWithin400mm) {
+  // The same encounter without the rule: the case the rule is for (in
+  // physics trial 125's pair came to 0.27 m and player 4 fell).
   SkillConfig s;
   s.keep_right = false;
   EXPECT_LT(swapEnds(s).closest, 2 * s.robot_radius + 100.0);
+}
+
+namespace {
+
+// Robot A at the origin walking to `a_target`, teammate B at `b` walking to
+// `b_target`, each facing its way (as a travelling robot does). Returns
+// the sideways change (mm/s) passOncoming makes to each one's way,
+// measured along the field's x axis.
+struct PassPair {
+  double a_dx = 0, b_dx = 0;
+};
+PassPair passPair(const WalkTo& walk, Point2 a_target, Point2 b, Point2 b_target) {
+  const Pose2 a{0, 0, std::atan2(a_target.y, a_target.x)};
+  const Pose2 bp{b.x, b.y, std::atan2(b_target.y - b.y, b_target.x - b.x)};
+  auto way = [](const Pose2& p) { return Point2{300 * std::cos(p.theta), 300 * std::sin(p.theta)}; };
+  auto inputs = [](const Pose2& self, const Pose2& other) {
+    BehaviourInputs in;
+    in.self.pose = self;
+    Teammate t;
+    t.time_since_heard = 0;
+    t.pose = other;
+    in.teammates = {t};
+    return in;
+  };
+  PassPair r;
+  r.a_dx = walk.passOncoming(inputs(a, bp), a_target, way(a)).x - way(a).x;
+  r.b_dx = walk.passOncoming(inputs(bp, a), b_target, way(bp)).x - way(bp).x;
+  return r;
+}
+
+}  // namespace
+
+TEST(WalkTo, AnOncomingPairChoosesOneSideWhateverTheOffsetAndCrossingAngle) {
+  // A walks up the field (+y), B down it, B 1.2 m ahead and `offset` mm to
+  // the side, their ways a few degrees off parallel (each computes "to the
+  // left" in its own frame, so a side chosen from that alone can differ
+  // between the two). Whenever both bend their way, they must bend it in
+  // opposite field directions, or they stay in line.
+  const SkillConfig s;
+  const WalkTo walk(s, FieldGeometry{});
+  int both = 0;
+  for (double offset = -480; offset <= 480; offset += 10)
+    for (double a_deg : {-6.0, -3.0, 0.0, 3.0, 6.0})
+      for (double b_deg : {-6.0, -3.0, 0.0, 3.0, 6.0}) {
+        const double a = a_deg * M_PI / 180, b = b_deg * M_PI / 180;
+        const Point2 bpos{offset, 1200};
+        const PassPair p = passPair(walk, {3000 * std::sin(a), 3000 * std::cos(a)}, bpos,
+                                    {offset + 3000 * std::sin(b), 1200 - 3000 * std::cos(b)});
+        if (std::abs(p.a_dx) < 1.0 || std::abs(p.b_dx) < 1.0) continue;
+        ++both;
+        EXPECT_LT(p.a_dx * p.b_dx, 0.0) << "offset " << offset << " mm, ways off by " << a_deg << " / " << b_deg
+                                        << " deg: A " << p.a_dx << ", B " << p.b_dx << " mm/s along x";
+      }
+  EXPECT_GT(both, 2000);  // of 2425: most pairs are within the pass clearance
+}
+
+TEST(WalkTo, PassOncomingLeavesOtherTeammatesAlone) {
+  const SkillConfig s;
+  const WalkTo walk(s, FieldGeometry{});
+  const Point2 target{0, 3000}, way{0, 300};
+  BehaviourInputs in;
+  in.self.pose = {0, 0, M_PI / 2};
+  auto with = [&](Pose2 t_pose) {
+    Teammate t;
+    t.time_since_heard = 0;
+    t.pose = t_pose;
+    in.teammates = {t};
+    const Point2 v = walk.passOncoming(in, target, way);
+    return v.x;  // mm/s sideways: + = right of the way (+y)
+  };
+  // Oncoming (facing -y): nearly dead ahead or to the left, bend right
+  // (+x) to pass it on the left; clearly to the right, bend left.
+  EXPECT_GT(with({50, 1000, -M_PI / 2}), 10.0);
+  EXPECT_GT(with({-300, 1000, -M_PI / 2}), 10.0);
+  EXPECT_LT(with({300, 1000, -M_PI / 2}), -10.0);
+  EXPECT_NEAR(with({0, 1000, M_PI / 2}), 0.0, 1e-9);    // walking the same way
+  EXPECT_NEAR(with({0, 1000, 0.0}), 0.0, 1e-9);         // crossing at right angles
+  EXPECT_NEAR(with({0, -800, -M_PI / 2}), 0.0, 1e-9);   // behind
+  EXPECT_NEAR(with({0, 1700, -M_PI / 2}), 0.0, 1e-9);   // beyond pass_lookahead
+  EXPECT_NEAR(with({600, 1000, -M_PI / 2}), 0.0, 1e-9); // beyond pass_clearance to the side
 }
 
 TEST(HeadScan, SweepCoversTheFieldOfViewWithinTheHeadsLimits) {
