@@ -112,6 +112,9 @@ void readSkills(const YamlReader& r, ab::SkillConfig& k) {
   num(r, "pass_lookahead", k.pass_lookahead, Range::closed(0, 5000));
   num(r, "pass_clearance", k.pass_clearance, Range::closed(0, 2000));
   num(r, "pass_max_steer", k.pass_max_steer, Range::closed(0, 1.5708));
+  if (k.keep_right && k.pass_max_steer >= k.translate_max_heading_error)
+    r.fail("pass_max_steer",
+           "must be less than translate_max_heading_error, or a robot passing a teammate stops to turn");
   num(r, "scan_yaw", k.scan_yaw, Range::closed(0, 2.0857));
   num(r, "scan_speed", k.scan_speed, Range::closed(0.01, 8.27));
   num(r, "scan_pitch", k.scan_pitch, Range::closed(-0.67, 0.51));

@@ -62,6 +62,10 @@ TEST(BehaviourScenario, ErrorsNameFileLineAndField) {
   EXPECT_NE(unknown.find("distributd"), std::string::npos) << unknown;
   const std::string range = errorOf(robot("behaviour: {kind: striker, skills: {scan_speed: 20}}"));
   EXPECT_NE(range.find("scan_speed"), std::string::npos) << range;
+  const std::string steer = errorOf(robot("behaviour: {kind: striker, skills: {pass_max_steer: 1.2}}"));
+  EXPECT_NE(steer.find("b.yaml:2"), std::string::npos) << steer;
+  EXPECT_NE(steer.find("pass_max_steer"), std::string::npos) << steer;
+  EXPECT_NE(steer.find("translate_max_heading_error"), std::string::npos) << steer;
   const std::string section = errorOf(robot("behaviour: {kind: striker, tactics: {}}"));
   EXPECT_NE(section.find("tactics"), std::string::npos) << section;
   const std::string mixed = errorOf(robot("behaviour: findball2017, actions: [{t: 1, action: walk, forward: 100}]"));
