@@ -18,8 +18,8 @@ same draws on every platform and version, so a seed names one file.
 
 --legacy gives every setup the overrides that restore the behaviours as
 they were before the era-style 2016 search, the chosen 2017 stop, the
-teammate keep-out and the keep-right pass (LEGACY below): the "before" of a before/after
-measurement, with the same build.
+teammate keep-out and the keep-right pass (LEGACY below): the "before" of
+a before/after measurement, with the same build.
 
 --place says where the starts are drawn:
   touchline (default)  as a game places its robots: on either touch line of
