@@ -11,6 +11,12 @@ constexpr double kSonarNoEchoMm = 2550.0;  // the NAO's "no echo" reading, 2.55 
 // A teammate counts as oncoming when its heading is within 60 deg of the
 // opposite of this robot's: |unit(mine) - unit(its)| = 2 sin(120 deg / 2).
 constexpr double kOncomingAxis = 1.7320508;
+
+// A teammate the walk keeps clear of: heard recently and not penalised (a
+// penalised robot is off the field).
+bool onFieldAndHeard(const Teammate& t, const SkillConfig& s) {
+  return !t.penalised && t.time_since_heard <= s.obstacle_timeout;
+}
 }  // namespace
 
 using blackboard::ActionType;
@@ -34,7 +40,7 @@ Point2 WalkTo::passOncoming(const BehaviourInputs& in, Point2 target, Point2 v) 
   const double reach = std::min(s_.pass_lookahead, distance(position(me), target) + 2 * s_.robot_radius);
   double steer = 0;  // rad, + = left
   for (const Teammate& t : in.teammates) {
-    if (t.penalised || t.fallen || t.time_since_heard > s_.obstacle_timeout) continue;
+    if (!onFieldAndHeard(t, s_) || t.fallen) continue;
     // The pair's axis: my heading minus the teammate's, normalised. The
     // teammate computes minus it, and its offset from me minus mine, so
     // both find the same distance ahead and the same side: they can never
@@ -64,7 +70,7 @@ Point2 WalkTo::repulsion(const BehaviourInputs& in, Point2 target) const {
   };
   std::vector<Obstacle> obs;
   for (const Teammate& t : in.teammates)
-    if (!t.penalised && t.time_since_heard <= s_.obstacle_timeout) obs.push_back({position(t.pose), s_.robot_radius});
+    if (onFieldAndHeard(t, s_)) obs.push_back({position(t.pose), s_.robot_radius});
   for (const Point2& p : sonarObstacles(in)) obs.push_back({p, s_.robot_radius});
   for (double sx : {-1.0, 1.0})
     for (double sy : {-1.0, 1.0})
@@ -110,12 +116,12 @@ std::vector<Point2> WalkTo::sonarObstacles(const BehaviourInputs& in) const {
 }
 
 namespace {
-// What the walk keeps clear of: teammates heard recently, not penalised (a
-// penalised robot is off the field), and what the sonars report close by.
+// What the walk keeps clear of: teammates on the field and heard
+// recently, and what the sonars report close by.
 template <typename F>
 void forEachNearRobot(const BehaviourInputs& in, const SkillConfig& s, const std::vector<Point2>& sonar, F f) {
   for (const Teammate& t : in.teammates)
-    if (!t.penalised && t.time_since_heard <= s.obstacle_timeout) f(position(t.pose));
+    if (onFieldAndHeard(t, s)) f(position(t.pose));
   for (const Point2& p : sonar) f(p);
 }
 }  // namespace

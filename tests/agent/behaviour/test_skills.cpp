@@ -25,6 +25,17 @@ bool withinLimits(const agent::blackboard::BodyCommand& b, const WalkLimits& w) 
   return e <= 1.0 + 1e-6 && std::abs(b.turn) <= w.max_turn + 1e-6;
 }
 
+// This robot at `self` with one teammate at `other`, heard `ago` s ago.
+BehaviourInputs withTeammate(const Pose2& self, const Pose2& other, double ago = 0) {
+  BehaviourInputs in;
+  in.self.pose = self;
+  Teammate t;
+  t.time_since_heard = ago;
+  t.pose = other;
+  in.teammates = {t};
+  return in;
+}
+
 // Integrates a body command exactly for dt s.
 void integrate(Pose2& p, const agent::blackboard::BodyCommand& b, double dt) {
   if (b.type != ActionType::WALK) return;
@@ -128,13 +139,7 @@ HeadOn swapEnds(const SkillConfig& s) {
   double since_packet = 0, since_step = step;
   for (double time = 0; time < 40 && !(done[0] && done[1]); time += dt) {
     for (int i = 0; i < 2; ++i) {
-      BehaviourInputs in;
-      in.self.pose = pose[i];
-      Teammate t;
-      t.time_since_heard = since_packet;
-      t.pose = heard[1 - i];
-      in.teammates = {t};
-      const auto r = walk.tick(in, target[i], std::nullopt, 150);
+      const auto r = walk.tick(withTeammate(pose[i], heard[1 - i], since_packet), target[i], std::nullopt, 150);
       done[i] = done[i] || r.arrived;
       want[i] = r.body.type == ActionType::WALK ? r.body : agent::blackboard::BodyCommand{};
     }
@@ -205,18 +210,9 @@ PassPair passPair(const WalkTo& walk, Point2 a_target, Point2 b, Point2 b_target
   const Pose2 a{0, 0, std::atan2(a_target.y, a_target.x)};
   const Pose2 bp{b.x, b.y, std::atan2(b_target.y - b.y, b_target.x - b.x)};
   auto way = [](const Pose2& p) { return Point2{300 * std::cos(p.theta), 300 * std::sin(p.theta)}; };
-  auto inputs = [](const Pose2& self, const Pose2& other) {
-    BehaviourInputs in;
-    in.self.pose = self;
-    Teammate t;
-    t.time_since_heard = 0;
-    t.pose = other;
-    in.teammates = {t};
-    return in;
-  };
   PassPair r;
-  r.a_dx = walk.passOncoming(inputs(a, bp), a_target, way(a)).x - way(a).x;
-  r.b_dx = walk.passOncoming(inputs(bp, a), b_target, way(bp)).x - way(bp).x;
+  r.a_dx = walk.passOncoming(withTeammate(a, bp), a_target, way(a)).x - way(a).x;
+  r.b_dx = walk.passOncoming(withTeammate(bp, a), b_target, way(bp)).x - way(bp).x;
   return r;
 }
 
@@ -250,14 +246,8 @@ TEST(WalkTo, PassOncomingLeavesOtherTeammatesAlone) {
   const SkillConfig s;
   const WalkTo walk(s, FieldGeometry{});
   const Point2 target{0, 3000}, way{0, 300};
-  BehaviourInputs in;
-  in.self.pose = {0, 0, M_PI / 2};
   auto with = [&](Pose2 t_pose) {
-    Teammate t;
-    t.time_since_heard = 0;
-    t.pose = t_pose;
-    in.teammates = {t};
-    const Point2 v = walk.passOncoming(in, target, way);
+    const Point2 v = walk.passOncoming(withTeammate({0, 0, M_PI / 2}, t_pose), target, way);
     return v.x;  // mm/s sideways: + = right of the way (+y)
   };
   // Oncoming (facing -y): nearly dead ahead or to the left, bend right
