@@ -47,8 +47,10 @@ done < <(find "$agent_inc" -name '*.hpp' | sort)
 # The data from the moved prefix: the program, then the Python module.
 scenario="$prefix/share/simswift/scenarios/stand_one.yaml"
 (cd / && "$prefix/bin/simswift" run "$scenario" --check >/dev/null)
+# The interpreter the module was built for (CMakeLists.txt prefers /usr/bin/python3).
+python="$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt")"
 if [ -d "$prefix/lib/python3/dist-packages" ]; then
-  (cd / && PYTHONPATH="$prefix/lib/python3/dist-packages" python3 - "$scenario" "$prefix" <<'PY'
+  (cd / && PYTHONPATH="$prefix/lib/python3/dist-packages" "$python" - "$scenario" "$prefix" <<'PY'
 import sys
 import simswift
 scenario, prefix = sys.argv[1], sys.argv[2]
