@@ -229,7 +229,11 @@ std::string encodeActuatorMap(const ActuatorCommand& c) {
     pk.pack_str(static_cast<std::uint32_t>(name.size()));
     pk.pack_str_body(name.data(), static_cast<std::uint32_t>(name.size()));
     pk.pack_array(static_cast<std::uint32_t>(n));
-    for (int i = 0; i < n; ++i) pk.pack_float(values[i]);
+    char bytes[5];
+    for (int i = 0; i < n; ++i) {
+      writeFloat32(bytes, values[i]);  // float32 always, as LoLA's clients send
+      buffer.write(bytes, 5);
+    }
   };
   if (c.position) floats(ActuatorKey::Position, c.position->data(), kNumJoints);
   if (c.stiffness) floats(ActuatorKey::Stiffness, c.stiffness->data(), kNumJoints);

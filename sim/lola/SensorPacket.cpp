@@ -8,6 +8,19 @@
 
 namespace simswift::lola {
 
+// Not msgpack::packer::pack_float: msgpack-c 4 packs a float with an
+// integral value (0, 1, -3) as an integer (msgpack/v1/pack.hpp pack_float),
+// which would move every later byte of the packet.
+void writeFloat32(char* out, float value) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &value, 4);
+  out[0] = static_cast<char>(0xca);
+  out[1] = static_cast<char>(bits >> 24);
+  out[2] = static_cast<char>(bits >> 16);
+  out[3] = static_cast<char>(bits >> 8);
+  out[4] = static_cast<char>(bits);
+}
+
 namespace {
 
 // A fixed-capacity stream for msgpack::packer: the packet is written into a
@@ -23,9 +36,13 @@ struct FixedBuffer {
 };
 
 template <std::size_t N>
-void packFloats(msgpack::packer<FixedBuffer>& pk, const std::array<float, N>& values) {
+void packFloats(msgpack::packer<FixedBuffer>& pk, FixedBuffer& out, const std::array<float, N>& values) {
   pk.pack_array(static_cast<std::uint32_t>(N));  // N < 16: fixarray; N = 25: array16 (0xdc 00 19)
-  for (float v : values) pk.pack_float(v);       // always float32 (0xca), whatever the value
+  char bytes[5];
+  for (float v : values) {
+    writeFloat32(bytes, v);  // float32 whatever the value (SensorPacket.hpp)
+    out.write(bytes, 5);
+  }
 }
 
 void packKey(msgpack::packer<FixedBuffer>& pk, SensorKey key) {
@@ -72,23 +89,23 @@ PacketBytes encodeSensorPacket(const SensorPacket& p) {
     const auto key = static_cast<SensorKey>(k);
     packKey(pk, key);
     switch (key) {
-      case SensorKey::Stiffness: packFloats(pk, p.stiffness); break;
-      case SensorKey::Position: packFloats(pk, p.position); break;
-      case SensorKey::Temperature: packFloats(pk, p.temperature); break;
-      case SensorKey::Current: packFloats(pk, p.current); break;
-      case SensorKey::Battery: packFloats(pk, p.battery); break;
-      case SensorKey::Accelerometer: packFloats(pk, p.accelerometer); break;
-      case SensorKey::Gyroscope: packFloats(pk, p.gyroscope); break;
-      case SensorKey::Angles: packFloats(pk, p.angles); break;
-      case SensorKey::Sonar: packFloats(pk, p.sonar); break;
-      case SensorKey::FSR: packFloats(pk, p.fsr); break;
+      case SensorKey::Stiffness: packFloats(pk, buffer, p.stiffness); break;
+      case SensorKey::Position: packFloats(pk, buffer, p.position); break;
+      case SensorKey::Temperature: packFloats(pk, buffer, p.temperature); break;
+      case SensorKey::Current: packFloats(pk, buffer, p.current); break;
+      case SensorKey::Battery: packFloats(pk, buffer, p.battery); break;
+      case SensorKey::Accelerometer: packFloats(pk, buffer, p.accelerometer); break;
+      case SensorKey::Gyroscope: packFloats(pk, buffer, p.gyroscope); break;
+      case SensorKey::Angles: packFloats(pk, buffer, p.angles); break;
+      case SensorKey::Sonar: packFloats(pk, buffer, p.sonar); break;
+      case SensorKey::FSR: packFloats(pk, buffer, p.fsr); break;
       case SensorKey::Status:
         pk.pack_array(kNumJoints);
         // Positive fixints (one byte each): LoLA's 0..3, clamped so the
         // layout cannot change.
         for (std::uint8_t s : p.status) pk.pack_uint8(std::min<std::uint8_t>(s, 3));
         break;
-      case SensorKey::Touch: packFloats(pk, p.touch); break;
+      case SensorKey::Touch: packFloats(pk, buffer, p.touch); break;
       case SensorKey::RobotConfig:
         pk.pack_array(4);
         for (int i = 0; i < 4; ++i) {
