@@ -64,7 +64,9 @@ std::string typeName(const msgpack::object& o) {
 bool number(const msgpack::object& o, bool allow_bool, double& out) {
   switch (o.type) {
     case msgpack::type::FLOAT32:
-    case msgpack::type::FLOAT64: out = o.via.f64; return std::isfinite(out);
+    case msgpack::type::FLOAT64:
+      out = o.via.f64;
+      return std::isfinite(static_cast<float>(out));  // a float64 beyond float32's range too
     case msgpack::type::POSITIVE_INTEGER: out = static_cast<double>(o.via.u64); return true;
     case msgpack::type::NEGATIVE_INTEGER: out = static_cast<double>(o.via.i64); return true;
     case msgpack::type::BOOLEAN:

@@ -164,6 +164,7 @@ TEST(ActuatorDecoder, WrongLengthsKeysAndValuesAreRefusedNamingTheKey) {
   std::map<std::string, std::vector<float>> short_position{{"Position", std::vector<float>(24, 0.f)}};
   std::map<std::string, std::vector<float>> unknown{{"RHipYawPitch", {0.f}}};
   std::map<std::string, std::vector<float>> nan{{"Stiffness", std::vector<float>(25, NAN)}};
+  std::map<std::string, std::vector<double>> huge{{"Position", std::vector<double>(25, 1e300)}};
   std::map<std::string, std::vector<bool>> bool_position{{"Position", std::vector<bool>(25, true)}};
   std::map<std::string, float> scalar{{"Position", 1.5f}};
   std::map<int, std::vector<float>> int_key{{1, {0.f}}};
@@ -171,6 +172,7 @@ TEST(ActuatorDecoder, WrongLengthsKeysAndValuesAreRefusedNamingTheKey) {
       {packed(short_position), "key \"Position\": 24 values, LoLA takes 25"},
       {packed(unknown), "key \"RHipYawPitch\": not a LoLA actuator key"},
       {packed(nan), "key \"Stiffness\"[0]: a float, expected a finite number"},
+      {packed(huge), "key \"Position\"[0]: a float, expected a finite number"},
       {packed(bool_position), "key \"Position\"[0]: a boolean"},
       {packed(scalar), "key \"Position\": expected an array, got a float"},
       {packed(int_key), "a key is an integer"},
