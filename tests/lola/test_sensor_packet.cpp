@@ -29,6 +29,11 @@ SensorPacket randomPacket(unsigned seed) {
   for (float& v : p.sonar) v = u(rng);
   for (float& v : p.fsr) v = u(rng);
   for (float& v : p.touch) v = static_cast<float>(rng() % 2);
+  // Integral values too (msgpack-c would pack those as integers), and the
+  // Touch values are 0 or 1.
+  p.position[3] = 1.f;
+  p.current[0] = -3.f;
+  p.battery[BatteryStatus] = 128.f;
   p.robot_config = {"ABCDEFGHIJKLMNOPQRST", "6.0.4", "01234567890123456789", "6.1.0"};
   return p;
 }
