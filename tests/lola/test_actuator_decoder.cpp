@@ -208,6 +208,17 @@ TEST(ActuatorDecoder, GarbageIsAnErrorNeverACrash) {
   {
     ActuatorDecoder d;  // an array32 header of 4 G elements
     EXPECT_FALSE(feed(d, std::string("\xdd\xff\xff\xff\xff", 5)));
+    EXPECT_NE(d.error().find("array size overflow"), std::string::npos) << d.error();
+  }
+  {
+    ActuatorDecoder d;  // arrays nested 7 deep
+    EXPECT_FALSE(feed(d, std::string("\x91\x91\x91\x91\x91\x91\x90", 7)));
+    EXPECT_NE(d.error().find("depth size overflow"), std::string::npos) << d.error();
+  }
+  {
+    ActuatorDecoder d;  // a 100-byte key (str8)
+    EXPECT_FALSE(feed(d, std::string("\x81\xd9\x64", 3) + std::string(100, 'a') + std::string("\x90", 1)));
+    EXPECT_NE(d.error().find("str size overflow"), std::string::npos) << d.error();
   }
   {
     // A valid map after a good one: the error names map 2 and where it starts.
