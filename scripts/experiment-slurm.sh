@@ -46,7 +46,7 @@ cpus=$((10#$cpus))
 "$bin" experiment "$file" --check >/dev/null  # refuse a bad file before queueing anything
 
 # The partition the jobs go to: the last --partition/-p among the sbatch
-# options, else $SBATCH_PARTITION, else the cluster's default (sinfo's "*").
+# options, else $SBATCH_PARTITION, else the cluster's default.
 partition=${SBATCH_PARTITION:-}
 prev=
 for a in "$@"; do
@@ -54,18 +54,18 @@ for a in "$@"; do
   case $a in --partition=*) partition=${a#--partition=} ;; -p?*) partition=${a#-p} ;; esac
   prev=$a
 done
-if command -v sinfo >/dev/null; then
-  # Most CPUs of one node in that partition ("%c" may read "4+" for mixed nodes; -N: one line per node).
-  if [ -n "$partition" ]; then
-    node_cpus=$(sinfo -h -N -p "$partition" -o '%c' 2>/dev/null | tr -d '+' | sort -n | tail -n 1)
-  else
-    node_cpus=$(sinfo -h -N -o '%P %c' 2>/dev/null | awk '$1 ~ /\*$/ {gsub(/\+/, "", $2); print $2}' | sort -n | tail -n 1)
-  fi
-  [ -n "$node_cpus" ] || fail "sinfo lists no nodes${partition:+ in partition $partition}"
+# Most CPUs of one node in that partition (-N: a line per node; "%c" may
+# read "4+" on mixed nodes; the default partition is marked "*").
+if command -v sinfo >/dev/null && nodes=$(sinfo -h -N ${partition:+-p "$partition"} -o '%P %c' 2>&1); then
+  node_cpus=$(printf '%s\n' "$nodes" | awk -v p="$partition" '
+    (p != "" || $1 ~ /\*$/) {gsub(/\+/, "", $2); if ($2 + 0 > m) m = $2 + 0} END {if (m) print m}')
+  [ -n "$node_cpus" ] || fail "sinfo lists no nodes in partition ${partition:-(the default)}"
   [ "$cpus" -le "$node_cpus" ] ||
-    fail "CPUS=$cpus, but the nodes${partition:+ of partition $partition} have at most $node_cpus CPUs (the shards would pend forever)"
-elif [ "${DRY_RUN:-0}" != 1 ]; then
-  echo "experiment-slurm: sinfo not found: is this a Slurm login node?" >&2
+    fail "CPUS=$cpus, but the nodes of partition ${partition:-(the default)} have at most $node_cpus CPUs (the shards would pend forever)"
+elif [ "${DRY_RUN:-0}" = 1 ]; then
+  echo "experiment-slurm: no Slurm reachable here (sinfo): CPUS not checked" >&2
+else
+  echo "experiment-slurm: sinfo failed or is missing: is this a Slurm login node? ${nodes:-}" >&2
   exit 1
 fi
 
