@@ -813,7 +813,7 @@ TEST(LibagentReleases, Release2016And2018StandingThenTheirOwnSitAfterContactLoss
       EXPECT_EQ(sit[300].stiffnesses[J::LKneePitch], 0.0f);
     }
     EXPECT_TRUE(r.host(0).libagent().limp());
-    std::printf("release %d: knee %.3f rad after the sit (its pose %.3f)\n", release, modelJoint(r, "LKneePitch"),
-                pose[J::LKneePitch]);
+    std::printf("release %d: knee %.3f rad after the sit (its pose %.3f), falls %d\n", release,
+                modelJoint(r, "LKneePitch"), pose[J::LKneePitch], r.robotFall(0).falls);
   }
 }
