@@ -33,10 +33,7 @@ cluster_up=0
 watchdog=
 cleanup() {
   local p
-  if [ -n "$watchdog" ]; then
-    pkill -P "$watchdog" 2>/dev/null || true
-    kill "$watchdog" 2>/dev/null || true
-  fi
+  [ -z "$watchdog" ] || kill "$watchdog" 2>/dev/null || true
   # Jobs of this test's cluster first (their steps outlive slurmd), then the daemons.
   [ "$cluster_up" = 1 ] && timeout 5 scancel --me 2>/dev/null && sleep 1 || true
   for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
@@ -57,8 +54,14 @@ cleanup() {
 trap cleanup EXIT
 trap 'echo "test_slurm: interrupted" >&2; exit 1' INT TERM
 # The whole test's deadline (ctest's TIMEOUT is 120 s).
-( sleep 110; echo "test_slurm: over 110 s: giving up" >&2; kill -TERM $$ 2>/dev/null ) &
+# Short sleeps, so the watchdog leaves nothing behind for long once killed.
+( end=$((SECONDS + 110)); while [ "$SECONDS" -lt "$end" ]; do sleep 1; done
+  echo "test_slurm: over 110 s: giving up" >&2
+  # The daemons first (the script may be inside a command that waits on them).
+  [ -f "$T/daemons" ] && kill $(cat "$T/daemons") 2>/dev/null
+  kill -TERM $$ 2>/dev/null ) &
 watchdog=$!
+disown "$watchdog"
 
 die() { echo "test_slurm: FAIL: $*" >&2; exit 1; }
 skip() { echo "test_slurm: SKIPPED: $*"; exit 77; }
@@ -126,6 +129,7 @@ chmod 400 "$T/munge.key"
 munged -F --force --key-file="$T/munge.key" --socket="$T/munge.socket" --pid-file="$T/munged.pid" \
   --seed-file="$T/munge.seed" --log-file="$T/munged.log" >"$T/munged.out" 2>&1 &
 pids+=($!)
+echo $! >>"$T/daemons"
 for _ in $(seq 100); do [ -S "$T/munge.socket" ] && break; sleep 0.1; done
 [ -S "$T/munge.socket" ] || die "munged did not start: $(cat "$T/munged.out" "$T/munged.log" 2>/dev/null)"
 
@@ -171,8 +175,10 @@ export SLURM_CONF=$T/slurm.conf
 unset SBATCH_PARTITION SLURM_JOB_ID || true
 slurmctld -D -c -f "$SLURM_CONF" >"$T/slurmctld.out" 2>&1 &
 pids+=($!)
+echo $! >>"$T/daemons"
 slurmd -D -f "$SLURM_CONF" -N "$node" >"$T/slurmd.out" 2>&1 &
 pids+=($!)
+echo $! >>"$T/daemons"
 state=
 for _ in $(seq 150); do
   state=$(timeout 5 sinfo -h -N -o '%T' 2>/dev/null | head -n 1 || true)
@@ -203,7 +209,7 @@ submit() { # submit OUT [sbatch options]: prints the script's output; JOB and ME
 }
 
 # The single run to compare with, while the cluster is idle.
-timeout 60 "$bin" experiment "$T/tiny.yaml" --out "$T/single" --jobs 2 --progress none >"$T/single.out" 2>&1 ||
+timeout 40 "$bin" experiment "$T/tiny.yaml" --out "$T/single" --jobs 2 --progress none >"$T/single.out" 2>&1 ||
   die "the single run failed: $(cat "$T/single.out")"
 
 # 5 (first: it queues nothing). CPUS above the node's.
