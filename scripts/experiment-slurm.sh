@@ -43,6 +43,7 @@ cpus=${CPUS:-2}
 [[ $cpus =~ ^[0-9]+$ ]] && [ "$((10#$cpus))" -ge 1 ] || fail "CPUS must be a whole number >= 1 (got '$cpus')"
 cpus=$((10#$cpus))
 [ -x "$bin" ] || { echo "experiment-slurm: no simswift binary at $bin (build it, or set SIMSWIFT)" >&2; exit 1; }
+bin=$(realpath "$bin")  # the jobs run it from wherever Slurm starts them
 "$bin" experiment "$file" --check >/dev/null  # refuse a bad file before queueing anything
 
 # The partition the jobs go to: the last --partition/-p among the sbatch
