@@ -48,7 +48,7 @@ done < <(find "$agent_inc" -name '*.hpp' | sort)
 scenario="$prefix/share/simswift/scenarios/stand_one.yaml"
 (cd / && "$prefix/bin/simswift" run "$scenario" --check >/dev/null)
 # The interpreter the module was built for (CMakeLists.txt prefers /usr/bin/python3).
-python="$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt")"
+python="$(sed -n 's/^_\{0,1\}Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt" | head -n1)"
 if [ -d "$prefix/lib/python3/dist-packages" ]; then
   (cd / && PYTHONPATH="$prefix/lib/python3/dist-packages" "$python" - "$scenario" "$prefix" <<'PY'
 import sys
