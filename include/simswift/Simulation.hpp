@@ -44,6 +44,7 @@ struct ConfigError : std::runtime_error {
 using Controller = std::function<void(const SensorValues& sensors, JointValues& joints)>;
 
 class Simulation;
+struct SimulationAccess;  // the library's own helpers (sim/api), e.g. the walk test kit
 
 // A handle to robot i of a Simulation (valid while it lives).
 class Robot {
@@ -97,6 +98,7 @@ class Simulation {
 
  private:
   friend class Robot;
+  friend struct SimulationAccess;
   struct Impl;
   explicit Simulation(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
