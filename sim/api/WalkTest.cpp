@@ -303,9 +303,11 @@ bool plotTrace(const std::string& csv_path, const std::string& png_path, std::st
     };
     gp << "set datafile separator ','\nset datafile commentschars '#'\n"
        << "set terminal pngcairo size 1000,1500 font ',9'\nset output '" << stem << ".png'\n"
-       << "set multiplot layout 6,1 title '" << csv_path << "'\nset grid\nset key outside right\n"
-       << "set ylabel 'm'\nplot '" << csv_abs << "' every ::1 using " << u("t") << ":" << u("x")
-       << " with lines title 'x', '' every ::1 using " << u("t") << ":" << u("y") << " with lines title 'y'\n"
+       << "set termoption noenhanced\nset multiplot layout 6,1 title '" << csv_path << "'\n"
+       << "set grid\nset key outside right\nset lmargin 10\nset rmargin 24\n"
+       << "set ylabel 'x (m)'\nset y2label 'y (m)'\nset y2tics\nplot '" << csv_abs << "' every ::1 using "
+       << u("t") << ":" << u("x") << " with lines title 'x', '' every ::1 using " << u("t") << ":" << u("y")
+       << " axes x1y2 with lines title 'y (right axis)'\nunset y2tics\nunset y2label\n"
        << "set ylabel 'rad'\nplot '" << csv_abs << "' every ::1 using " << u("t") << ":" << u("theta")
        << " with lines title 'heading'\n"
        << "plot " << pair("LHipPitch", "red") << ", " << pair("LKneePitch", "blue") << ", "
