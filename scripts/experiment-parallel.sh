@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Runs a find-ball experiment as N shards with GNU parallel -- on this
 # machine, or on several hosts over ssh -- then merges the shard folders into
-# one result (byte-identical to a single `simswift experiment` run).
+# one result: the same results (results.csv, tracks.csv, trial logs, figures,
+# report.md) as a single `simswift experiment` run; only the wall-clock
+# files (timing.md, timing.csv, trials/*.timing.*) and report.md's last
+# section (wall clock) differ, as between any two runs.
 #
 #   scripts/experiment-parallel.sh FILE.yaml OUT [SHARDS]
 #
@@ -18,7 +21,7 @@
 # stopped, then the merge runs again.
 set -euo pipefail
 if [ $# -lt 2 ] || [ $# -gt 3 ]; then
-  sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
 fi
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -27,6 +30,8 @@ out=$2
 shards=${3:-$(nproc)}
 bin=${SIMSWIFT:-$root/build/simswift}
 jobs=${JOBS_PER_SHARD:-1}
+[[ $shards =~ ^[0-9]+$ ]] && [ "$((10#$shards))" -ge 1 ] ||
+  { echo "experiment-parallel: SHARDS must be a whole number >= 1 (got '$shards')" >&2; exit 2; }
 command -v parallel >/dev/null || { echo "experiment-parallel: GNU parallel is missing (scripts/install-deps.sh)" >&2; exit 1; }
 [ -x "$bin" ] || { echo "experiment-parallel: no simswift binary at $bin (build it, or set SIMSWIFT)" >&2; exit 1; }
 "$bin" experiment "$file" --check >/dev/null  # a bad file fails here, once, with its error

@@ -6,8 +6,10 @@ pkgs=(build-essential cmake pkg-config git
       libassimp-dev libosmesa6-dev libpng-dev libcairo2-dev
       libgtest-dev libbenchmark-dev ffmpeg gdb
       gnuplot-nox parallel
+      slurmctld slurmd slurm-client munge   # the Slurm scale-out test (tests/slurm, a one-node cluster)
       python3-dev python3-pybind11 python3-pytest python3-numpy   # Python bindings (python/)
       libboost-math-dev   # the report's statistics (sim/experiment/Statistics.cpp)
+      libmsgpack-dev      # the LoLA protocol (sim/lola): msgpack-c
       clang libclang-rt-14-dev)   # libFuzzer targets (README "Tests, sanitizers and fuzzing")
 missing=()
 for p in "${pkgs[@]}"; do

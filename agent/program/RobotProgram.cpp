@@ -123,12 +123,17 @@ void RobotProgram::motionLoop() {
 void RobotProgram::motionStep() {
   blackboard::SensorFrame s;
   s.values = conn_.readSensors();
+  if (io_) {
+    io_->standing = conn_.block()->standing;
+    io_->buttons = conn_.buttons();
+    io_->stiffen = false;
+  }
   s.sim_time_us = conn_.simTimeUs();
   s.time = static_cast<double>(s.sim_time_us) * 1e-6;
   board_.sensors.write(s);
   if (cfg_.step_hook) cfg_.step_hook(framework::ThreadId::Motion);
   schedule_.run(framework::ThreadId::Motion, board_);  // motion -> effector
-  conn_.writeActuators(pending_);
+  conn_.writeActuators(pending_, nullptr, 0, io_ && io_->stiffen);
   motion_ticks_.fetch_add(1);
   if (after_tick_) after_tick_(s.values, s.sim_time_us);
 }

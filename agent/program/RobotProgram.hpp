@@ -27,6 +27,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -42,6 +43,17 @@
 namespace agent::program {
 
 enum class Threading { Named, Inline };
+
+// libagent beyond the joints, for a Motion step that wants it (the public
+// API's libagent controller). rUNSWift's Touch reads the block's `standing`
+// and the slot's ButtonPresses with the sensors, and its Effector may send
+// STIFFEN with a command: the program fills the first two before each
+// Motion step and sends `stiffen` (reset to false each step) with its command.
+struct LibagentIO {
+  bool standing = false;  // the block's flag when the sensors were read
+  uint8_t buttons = 0;    // ButtonPresses of the slot read (bit n-1: a series of n chest clicks)
+  bool stiffen = false;   // set by the step: STIFFEN with this command
+};
 
 class RobotProgram {
  public:
@@ -73,6 +85,10 @@ class RobotProgram {
   bool stepMotion();
   bool stepPerception();
   Threading threading() const { return threading_; }
+
+  // Shares `io` with the Motion step (a generator holding the same
+  // pointer); set it before the first Motion step. Null: none (STIFFEN never sent).
+  void setLibagentIO(std::shared_ptr<LibagentIO> io) { io_ = std::move(io); }
 
   // Optional hook run by Motion after each command is sent (e.g. printing).
   void setAfterTick(std::function<void(const agent::libagent::SensorValues&, int64_t)> f) {
@@ -109,6 +125,7 @@ class RobotProgram {
   // The team transport over the extension object's team link (null: none).
   std::unique_ptr<comms::TeamTransport> team_link_;
   agent::libagent::JointValues pending_{};  // the effector's command, sent after the Motion modules
+  std::shared_ptr<LibagentIO> io_;           // libagent's extras for the Motion step (null: none)
   std::function<void(const agent::libagent::SensorValues&, int64_t)> after_tick_;
   Threading threading_ = Threading::Named;
   bool with_perception_ = false;

@@ -43,6 +43,21 @@ struct ConfigError : std::runtime_error {
 // tick's (acting during the next tick, as on the NAO).
 using Controller = std::function<void(const SensorValues& sensors, JointValues& joints)>;
 
+// libagent beyond the sensors and joints, as an external program sees it in
+// the block (docs/libagent.md). In: `standing`, libagent's one-shot "just
+// stiffened" flag (set at a stiff start until the first command, and on
+// every limp-to-stiff change; this tick's command clears it, as rUNSWift's
+// Effector does; while it is set the body gets libagent's sit at stiffness
+// 0), and `buttons`, the ButtonPresses (bit n-1: a series of n chest clicks
+// ended; libagent keeps 2, 3 and 4 clicks). Out: `stiffen`, send STIFFEN
+// with this tick's command (a limp body stiffens and `standing` is set).
+struct Libagent {
+  bool standing = false;
+  uint8_t buttons = 0;
+  bool stiffen = false;  // reset to false every tick
+};
+using LibagentController = std::function<void(const SensorValues& sensors, JointValues& joints, Libagent& libagent)>;
+
 class Simulation;
 struct SimulationAccess;  // the library's own helpers (sim/api), e.g. the walk test kit
 
@@ -55,6 +70,9 @@ class Robot {
   // Before the first step: drive this robot from `c` instead of its
   // scenario program.
   void setController(Controller c);
+  // The same, seeing `standing` and the buttons and able to send STIFFEN
+  // (a team's MotionAdapter resets its generators while `standing` is set).
+  void setController(LibagentController c);
   // Hold these joint commands (a controller that repeats them); before the
   // first step, or later for a robot already driven by setJoints.
   void setJoints(const JointValues& joints);
@@ -111,6 +129,8 @@ namespace simswift {
 using api::BallState;
 using api::Controller;
 using api::JointValues;
+using api::Libagent;
+using api::LibagentController;
 using api::Pose;
 using api::Robot;
 using api::SensorValues;

@@ -37,21 +37,35 @@ static_assert(sameIndex(Sonar, al::Sensors::US) && sameIndex(RFsrRearRight, al::
 
 namespace {
 
-// The controller as the program's Motion step.
+// The controller as the program's Motion step; a libagent controller also
+// sees `standing` and the buttons and sends STIFFEN through the program
+// (RobotProgram::setLibagentIO), as an external program does in the block.
 class ControllerMotion : public agent::framework::MotionGenerator {
  public:
   explicit ControllerMotion(Controller c) : c_(std::move(c)) {}
+  ControllerMotion(LibagentController c, std::shared_ptr<agent::program::LibagentIO> io)
+      : lc_(std::move(c)), io_(std::move(io)) {}
   void tick(const al::SensorValues& sensors, int64_t, al::JointValues& out) override {
     SensorValues s;
     std::memcpy(&s, &sensors, sizeof s);
     JointValues j;
     std::memcpy(&j, &out, sizeof j);
-    c_(s, j);
+    if (lc_) {
+      Libagent l;
+      l.standing = io_->standing;
+      l.buttons = io_->buttons;
+      lc_(s, j, l);
+      io_->stiffen = l.stiffen;
+    } else {
+      c_(s, j);
+    }
     std::memcpy(&out, &j, sizeof j);
   }
 
  private:
   Controller c_;
+  LibagentController lc_;
+  std::shared_ptr<agent::program::LibagentIO> io_;
 };
 
 }  // namespace
@@ -70,6 +84,7 @@ struct Simulation::Impl {
   explicit Impl(runner::Scenario sc) : runner(std::move(sc)) {}
   runner::Runner runner;
   std::vector<std::shared_ptr<JointValues>> held;  // setJoints' commands, by robot (null: none)
+  std::vector<std::shared_ptr<agent::program::LibagentIO>> io;  // libagent controllers' extras, by robot
   bool started = false;
   void start() {
     if (started) return;
@@ -77,12 +92,15 @@ struct Simulation::Impl {
     // tick is posted (Runner::setThreading): no thread hand-over per tick.
     runner.setThreading(agent::program::Threading::Inline);
     runner.start();
+    for (size_t i = 0; i < io.size(); ++i)
+      if (io[i]) runner.program(static_cast<int>(i))->setLibagentIO(io[i]);
     started = true;
   }
 };
 
 Simulation::Simulation(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {
   impl_->held.resize(impl_->runner.scenario().robots.size());
+  impl_->io.resize(impl_->held.size());
 }
 Simulation::Simulation(Simulation&&) noexcept = default;
 Simulation& Simulation::operator=(Simulation&&) noexcept = default;
@@ -168,6 +186,15 @@ void Robot::setController(Controller c) {
     throw std::logic_error("robot " + std::to_string(index_) +
                            ": its scenario runs an external program; a controller needs program: builtin");
   sim_->impl_->runner.setMotionGenerator(index_, std::make_unique<ControllerMotion>(std::move(c)));
+  sim_->impl_->io[index_].reset();
+}
+
+void Robot::setController(LibagentController c) {
+  if (!c) throw std::invalid_argument("robot " + std::to_string(index_) + ": setController: empty controller");
+  auto io = std::make_shared<agent::program::LibagentIO>();
+  setController([](const SensorValues&, JointValues&) {});  // the same checks, then replaced
+  sim_->impl_->runner.setMotionGenerator(index_, std::make_unique<ControllerMotion>(std::move(c), io));
+  sim_->impl_->io[index_] = std::move(io);
 }
 
 void Robot::setJoints(const JointValues& joints) {

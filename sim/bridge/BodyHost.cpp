@@ -61,7 +61,7 @@ BodyHost::BodyHost(int team, int player, Mode mode, const al::JointValues& initi
       tag_(al::robotTag(team, player)),
       mode_(mode),
       options_(options),
-      libagent_(options.start) {
+      libagent_(options.start, options.release) {
   if (team < al::kMinTeamNumber || team > al::kMaxTeamNumber || player < al::kMinPlayer || player > al::kMaxPlayer)
     throw BridgeError("robot " + tag_ + ": the team must be an SPL team number " + std::to_string(al::kMinTeamNumber) +
                       ".." + std::to_string(al::kMaxTeamNumber) + " and the player " +

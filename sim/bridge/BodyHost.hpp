@@ -26,7 +26,7 @@
 //
 // What the body does with the commands is libagent's (LibagentBehaviour.hpp):
 // start limp or stiff, `standing` and STIFFEN, counted chest clicks in
-// ButtonPresses, the two-stage sit after a contact loss and limp until
+// ButtonPresses, the release's sit after a contact loss and limp until
 // stiffened. The block is the one of the robot's rUNSWift release
 // (Releases.hpp: 2016, 2017 or 2018); block() is the 2017 one's (null for
 // the others).

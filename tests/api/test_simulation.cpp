@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "simswift/Simulation.hpp"
 
@@ -92,6 +93,57 @@ TEST(Simulation, AControllerAndAnExternalProgramSendingTheSameCommandsGiveTheSam
   EXPECT_NE(a.stateHash(), 0u);
   // The commands acted: the head turned.
   EXPECT_NEAR(a.robot(0).sensors().joints.angles[simswift::api::HeadYaw], 0.5, 0.05);
+}
+
+// A libagent controller gets what an external program gets in the block
+// (docs/libagent.md): `start: limp` sits the body limp until the controller
+// sends STIFFEN (tick 100); `standing` is then read once (tick 101) and the
+// command holds; a chest click reaches the buttons once (bit 0); a stiff
+// start shows `standing` on the first tick only.
+TEST(Simulation, ALibagentControllerSeesStandingAndButtonsAndStiffensALimpStart) {
+  using namespace simswift::api;
+  simswift::Simulation sim = simswift::Simulation::fromYaml(
+      oneRobot(", libagent: {start: limp}, actions: [{t: 0.5, click: chest}]"), "limp.yaml", SIMSWIFT_SOURCE_DIR);
+  std::vector<long> standing_at, click_at;
+  std::vector<float> stiffness_read;
+  long k = 0;
+  sim.robot(0).setController([&](const simswift::SensorValues& s, simswift::JointValues& j, simswift::Libagent& l) {
+    ++k;
+    if (l.standing) standing_at.push_back(k);
+    if (l.buttons != 0) click_at.push_back(k * 100 + l.buttons);
+    if (k < 100) stiffness_read.push_back(s.joints.stiffnesses[LKneePitch]);
+    for (float& st : j.stiffnesses) st = 1.0f;
+    for (float& a : j.angles) a = 0.0f;
+    for (int hip : {LHipPitch, RHipPitch}) j.angles[hip] = -0.4f;
+    for (int knee : {LKneePitch, RKneePitch}) j.angles[knee] = 0.8f;
+    for (int ankle : {LAnklePitch, RAnklePitch}) j.angles[ankle] = -0.4f;
+    l.stiffen = k == 100;
+  });
+  sim.step();
+  const double z0 = sim.robot(0).pose().z;
+  sim.run(0.98);  // to tick 99
+  const double z_limp = sim.robot(0).pose().z;
+  sim.run(2.0);
+  EXPECT_LT(z_limp, z0 - 0.03);  // limp: the body sags although the controller commands a stiff stand
+  for (float st : stiffness_read) ASSERT_EQ(st, 0.0f);
+  EXPECT_EQ(standing_at, std::vector<long>({101}));
+  // Pressed 0.5-0.6 s, out after more than 18 cycles up: one single click.
+  ASSERT_EQ(click_at.size(), 1u);
+  EXPECT_EQ(click_at[0] % 100, 1);
+  EXPECT_NEAR(click_at[0] / 100, 80, 2);
+  EXPECT_NEAR(sim.robot(0).sensors().joints.angles[LKneePitch], 0.8, 0.1);  // stiffened: the stand holds
+
+  simswift::Simulation stiff = simswift::Simulation::fromYaml(oneRobot(""), "stiff.yaml", SIMSWIFT_SOURCE_DIR);
+  std::vector<long> stiff_standing;
+  long n = 0;
+  stiff.robot(0).setController([&](const simswift::SensorValues& s, simswift::JointValues& j, simswift::Libagent& l) {
+    ++n;
+    if (l.standing) stiff_standing.push_back(n);
+    j = s.joints;
+    for (float& st : j.stiffnesses) st = 1.0f;
+  });
+  stiff.run(0.5);
+  EXPECT_EQ(stiff_standing, std::vector<long>({1}));
 }
 
 TEST(Simulation, SetJointsHoldsACommandAndPushesAndTeleportsAct) {

@@ -3,6 +3,8 @@
 // press (rUNSWift 2017/2018 libagent.cpp doButtons and preCallback).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -152,4 +154,97 @@ TEST(LibagentBehaviour, StartLimpUntilStiffenThenStandingOnce) {
   // Stiff start: the program's command... before its first one, the scenario posture.
   LibagentBehaviour stiff(StartMode::Stiff);
   EXPECT_EQ(stiff.body(program, false, true, false, program.angles).stiffnesses[3], 1.0f);
+}
+
+namespace {
+// Runs a contact loss from `from` cycle by cycle; the body's command per sit cycle (index 0 = cycle 1).
+std::vector<al::JointValues> sitFrom(LibagentBehaviour& lb, const al::JointValues& from, int cycles) {
+  std::vector<al::JointValues> out;
+  for (int c = 0; c < cycles; ++c) out.push_back(lb.body(from, true, false, true, from.angles));
+  return out;
+}
+al::JointValues standCommand() {
+  al::JointValues j{};
+  for (int q = 0; q < al::kNumJoints; ++q) j.stiffnesses[q] = 1.0f;
+  j.angles[al::Joints::LKneePitch] = j.angles[al::Joints::RKneePitch] = 0.8f;
+  j.angles[al::Joints::LShoulderPitch] = j.angles[al::Joints::RShoulderPitch] = 1.5f;
+  return j;
+}
+}  // namespace
+
+// rUNSWift 2016's libagent sits in one phase: from the measured angles
+// straight to its own sit pose at stiffness 1, head and legs over 200
+// cycles, arms over 100 (twice as fast); no middle pose and no 0.2 phase.
+// Then limp, as the others.
+TEST(LibagentBehaviour, Release2016SitsInOnePhaseToItsOwnPose) {
+  using LB = LibagentBehaviour;
+  namespace J = al::Joints;
+  const auto& sit = LB::sitAngles(simswift::bridge::Release::R2016);
+  EXPECT_EQ(LB::sitMiddleAngles(simswift::bridge::Release::R2016), nullptr);
+  // Its own pose: elbows yawed in to -120 deg (2017: -33 deg), the legs the same.
+  EXPECT_NEAR(sit[J::LElbowYaw], -120.0 * M_PI / 180, 1e-6);
+  EXPECT_NEAR(sit[J::LShoulderPitch], 65.0 * M_PI / 180, 1e-6);
+  EXPECT_NEAR(LB::sitAngles(simswift::bridge::Release::R2017)[J::LElbowYaw], -33.0 * M_PI / 180, 1e-6);
+  EXPECT_EQ(sit[J::LKneePitch], LB::sitAngles()[J::LKneePitch]);
+
+  LibagentBehaviour lb(StartMode::Stiff, simswift::bridge::Release::R2016);
+  const al::JointValues from = standCommand();
+  const std::vector<al::JointValues> c = sitFrom(lb, from, 202);
+  for (int n = 1; n <= 200; ++n) {
+    SCOPED_TRACE("sit cycle " + std::to_string(n));
+    const al::JointValues& j = c[n - 1];
+    for (int q = 0; q < al::kNumJoints; ++q) ASSERT_EQ(j.stiffnesses[q], 1.0f);
+    const float legs = n / 200.0f, arms = std::min(1.0f, n / 100.0f);
+    EXPECT_NEAR(j.angles[J::LKneePitch], (1 - legs) * from.angles[J::LKneePitch] + legs * sit[J::LKneePitch], 1e-5);
+    EXPECT_NEAR(j.angles[J::LShoulderPitch], (1 - arms) * from.angles[J::LShoulderPitch] + arms * sit[J::LShoulderPitch], 1e-5);
+    EXPECT_NEAR(j.angles[J::RElbowYaw], (1 - arms) * from.angles[J::RElbowYaw] + arms * sit[J::RElbowYaw], 1e-5);
+  }
+  EXPECT_TRUE(lb.limp());  // cycle 201 went limp
+  for (int q = 0; q < al::kNumJoints; ++q) {
+    EXPECT_NEAR(c[99].angles[q], LB::isArm(q) ? sit[q] : 0.5f * (from.angles[q] + sit[q]), 1e-5) << q;
+    EXPECT_EQ(c[200].stiffnesses[q], 0.0f);
+    EXPECT_EQ(c[200].angles[q], sit[q]);
+  }
+}
+
+// 2017 and 2018 share the two-phase sit: 200 cycles to the middle pose at
+// stiffness 1, 100 to their sit pose at 0.2, then limp.
+TEST(LibagentBehaviour, Releases2017And2018SitInTwoPhases) {
+  using LB = LibagentBehaviour;
+  namespace J = al::Joints;
+  for (auto release : {simswift::bridge::Release::R2017, simswift::bridge::Release::R2018}) {
+    SCOPED_TRACE(simswift::bridge::releaseYear(release));
+    LibagentBehaviour lb(StartMode::Stiff, release);
+    const std::vector<al::JointValues> c = sitFrom(lb, standCommand(), 301);
+    const auto& middle = *LB::sitMiddleAngles(release);
+    const auto& sit = LB::sitAngles(release);
+    EXPECT_NEAR(c[199].angles[J::LElbowYaw], middle[J::LElbowYaw], 1e-5);
+    EXPECT_EQ(c[199].stiffnesses[J::LElbowYaw], 1.0f);
+    EXPECT_EQ(c[200].stiffnesses[J::LElbowYaw], 0.2f);
+    EXPECT_NEAR(c[299].angles[J::LElbowYaw], sit[J::LElbowYaw], 1e-5);
+    EXPECT_EQ(c[300].stiffnesses[J::LElbowYaw], 0.0f);
+    EXPECT_TRUE(lb.limp());
+  }
+}
+
+// 2016 has no stiffen[] slot: a STIFFEN (which its block cannot carry) is
+// logged and ignored; the double chest click stiffens as in every release.
+TEST(LibagentBehaviour, Release2016IsStiffenedOnlyByTheDoubleClick) {
+  Cycles c;
+  c.lb = LibagentBehaviour(StartMode::Limp, simswift::bridge::Release::R2016);
+  LibagentBehaviour::Standing s;
+  c.lb.stiffen(s);
+  EXPECT_TRUE(c.lb.limp());
+  EXPECT_FALSE(s.write.has_value());
+  EXPECT_EQ(c.lb.takeLog().size(), 1u);
+  c.run(5, false);
+  for (int k = 0; k < 2; ++k) {
+    c.run(10, true);
+    c.run(10, false);
+  }
+  c.run(20, false);
+  EXPECT_FALSE(c.lb.limp());
+  int sets = 0;
+  for (const auto& st : c.standing) sets += st.write.has_value() && *st.write;
+  EXPECT_EQ(sets, 1);
 }

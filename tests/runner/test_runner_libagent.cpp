@@ -701,3 +701,119 @@ TEST(LibagentReleases, AtTheEndAnUnchangedProgramIsNotWokenAndIsNamed) {
   EXPECT_EQ(waitExit(client, 0.2), -1) << "it waits (and is killed here)";
   EXPECT_NE(err.find("(pid " + std::to_string(client) + ") is still attached"), std::string::npos) << err;
 }
+
+// Each release's libagent behaviour through that release's own client
+// (rUNSWift 2016 and 2018; 2017 is above). Limp start: the body gets the
+// release's sit pose at stiffness 0; the client's STIFFEN at tick 100
+// stiffens a 2018 body (`standing` read once, on tick 101) and does nothing
+// to a 2016 body (its block has no stiffen[]: the 2016 client cannot send
+// one), which a double chest click at 1.5 s stiffens instead, `standing`
+// once. Either way the client's stand holds afterwards.
+TEST(LibagentReleases, Release2016And2018LimpStartStiffenAndStandingThroughTheirOwnClients) {
+  namespace J = al::Joints;
+  using LB = simswift::bridge::LibagentBehaviour;
+  for (int release : {2016, 2018}) {
+    SCOPED_TRACE("release " + std::to_string(release));
+    const int team = 73, player = release == 2016 ? 1 : 2;
+    Runner r(releaseScenario(3.0, team, player, "{start: limp, release: " + std::to_string(release) + "}",
+                             release == 2016 ? "[{t: 1.5, click: chest, count: 2}]" : ""));
+    r.start();
+    const auto rel = static_cast<simswift::bridge::Release>(release);
+    const std::string out = tmpPath("limp-" + std::to_string(release) + ".txt");
+    const pid_t client =
+        spawn(releaseClient(release, team, player, 300, {"--stand", "--print-standing", "--stiffen-at", "100"}), out);
+    bool limp_sit_held = true;
+    bool limp_at_120 = false;
+    try {
+      while (r.ticks() < 300) {
+        r.tick();
+        if (r.ticks() == 120) limp_at_120 = r.host(0).libagent().limp();
+        if (r.ticks() < 100) {
+          const al::JointValues& j = r.lastCommand(0).joints;
+          for (int q = 0; q < al::kNumJoints; ++q)
+            limp_sit_held = limp_sit_held && j.stiffnesses[q] == 0.0f && j.angles[q] == LB::sitAngles(rel)[q];
+        }
+      }
+    } catch (...) {
+      kill(client, SIGKILL);
+      waitpid(client, nullptr, 0);
+      throw;
+    }
+    r.shutdown();
+    EXPECT_EQ(waitExit(client, 10), 0);
+    const std::string text = slurp(out);
+    std::remove(out.c_str());
+    EXPECT_TRUE(limp_sit_held);
+    EXPECT_NE(text.find("standing 1 0\n"), std::string::npos) << text;  // limp: not yet
+    size_t sets = 0;
+    for (size_t at = text.find(" 1\n"); at != std::string::npos; at = text.find(" 1\n", at + 1)) ++sets;
+    EXPECT_EQ(sets, 1u) << text;
+    if (release == 2018) {
+      EXPECT_NE(text.find("standing 101 1\nstanding 102 0\n"), std::string::npos) << text;
+      EXPECT_FALSE(limp_at_120);
+    } else {
+      EXPECT_TRUE(limp_at_120);  // the STIFFEN the 2016 block cannot carry
+      EXPECT_EQ(text.find("standing 101 1"), std::string::npos) << text;
+    }
+    EXPECT_FALSE(r.host(0).libagent().limp());
+    EXPECT_EQ(r.lastCommand(0).joints.stiffnesses[J::LKneePitch], 1.0f);
+    EXPECT_NEAR(r.lastCommand(0).joints.angles[J::LKneePitch], 0.8f, 1e-6);  // the client's stand
+  }
+}
+
+// Stiff start, then the client stops answering (it exits after 100 ticks)
+// in free-running mode: `standing` until its first command, then contact
+// lost after more than 50 skipped cycles and the release's own sit:
+// 2016 straight to its pose at stiffness 1 (arms there in 100 cycles, the
+// rest in 200); 2018 via the middle pose (200 cycles at 1, 100 at 0.2).
+TEST(LibagentReleases, Release2016And2018StandingThenTheirOwnSitAfterContactLoss) {
+  namespace J = al::Joints;
+  using LB = simswift::bridge::LibagentBehaviour;
+  for (int release : {2016, 2018}) {
+    SCOPED_TRACE("release " + std::to_string(release));
+    const int team = 73, player = release == 2016 ? 3 : 4;
+    Runner r(releaseScenario(6.0, team, player, "{start: stiff, release: " + std::to_string(release) + "}"));
+    r.start();
+    const auto rel = static_cast<simswift::bridge::Release>(release);
+    const std::string out = tmpPath("sit-" + std::to_string(release) + ".txt");
+    const pid_t client = spawn(releaseClient(release, team, player, 100, {"--stand", "--print-standing"}), out);
+    std::vector<al::JointValues> sit;  // the body's command from the first sit cycle on
+    try {
+      while (r.ticks() < 100) r.tick();
+      EXPECT_EQ(waitExit(client, 10), 0);  // answered its 100 ticks and left
+      r.setFreeRunning(true);
+      while (r.ticks() < 500) {
+        r.tick();
+        if (r.host(0).contactLost()) sit.push_back(r.lastCommand(0).joints);
+      }
+    } catch (...) {
+      kill(client, SIGKILL);
+      waitpid(client, nullptr, 0);
+      throw;
+    }
+    r.shutdown();
+    const std::string text = slurp(out);
+    std::remove(out.c_str());
+    EXPECT_NE(text.find("standing 1 1\nstanding 2 0\n"), std::string::npos) << text;
+    EXPECT_EQ(r.host(0).contactLostEvents(), 1);
+    ASSERT_GE(sit.size(), 302u);
+    const auto& pose = LB::sitAngles(rel);
+    if (release == 2016) {
+      for (int n = 1; n <= 200; ++n) ASSERT_EQ(sit[n - 1].stiffnesses[J::LKneePitch], 1.0f) << n;
+      EXPECT_NEAR(sit[99].angles[J::LElbowYaw], pose[J::LElbowYaw], 1e-5);  // arms there at 100
+      EXPECT_NEAR(sit[99].angles[J::LKneePitch], 0.5f * (0.8f + pose[J::LKneePitch]), 0.02);  // legs half way
+      EXPECT_NEAR(sit[199].angles[J::LKneePitch], pose[J::LKneePitch], 1e-5);
+      EXPECT_EQ(sit[200].stiffnesses[J::LKneePitch], 0.0f);  // then limp
+    } else {
+      const auto& middle = *LB::sitMiddleAngles(rel);
+      EXPECT_NEAR(sit[199].angles[J::LElbowYaw], middle[J::LElbowYaw], 1e-5);
+      EXPECT_EQ(sit[199].stiffnesses[J::LKneePitch], 1.0f);
+      EXPECT_EQ(sit[200].stiffnesses[J::LKneePitch], 0.2f);
+      EXPECT_NEAR(sit[299].angles[J::LElbowYaw], pose[J::LElbowYaw], 1e-5);
+      EXPECT_EQ(sit[300].stiffnesses[J::LKneePitch], 0.0f);
+    }
+    EXPECT_TRUE(r.host(0).libagent().limp());
+    std::printf("release %d: knee %.3f rad after the sit (its pose %.3f), falls %d\n", release,
+                modelJoint(r, "LKneePitch"), pose[J::LKneePitch], r.robotFall(0).falls);
+  }
+}

@@ -1,0 +1,180 @@
+#include "sim/lola/LolaServer.hpp"
+
+#include <cerrno>
+#include <cstring>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+namespace simswift::lola {
+
+const char* toString(Exchange::Status status) {
+  switch (status) {
+    case Exchange::Status::Answered: return "answered";
+    case Exchange::Status::NoClient: return "no client";
+    case Exchange::Status::Timeout: return "timeout";
+    case Exchange::Status::Disconnected: return "disconnected";
+    case Exchange::Status::ProtocolError: return "protocol error";
+    case Exchange::Status::Stalled: return "stalled";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string sysError(const std::string& what, const std::string& path) {
+  return "LoLA socket " + path + ": " + what + ": " + std::strerror(errno);
+}
+
+void setNonBlocking(int fd) {
+  const int flags = fcntl(fd, F_GETFL, 0);
+  fcntl(fd, F_SETFL, flags | O_NONBLOCK);
+}
+
+// Milliseconds left until `deadline`, rounded up, for poll() (0 once past it).
+int msLeft(Clock::time_point deadline) {
+  const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
+  return left > 0 ? static_cast<int>(left) : 0;
+}
+
+}  // namespace
+
+LolaServer::LolaServer(std::string socket_path, DecoderOptions decoder)
+    : path_(std::move(socket_path)), decoder_(decoder) {
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  if (path_.empty() || path_.size() >= sizeof(address.sun_path))
+    throw ServerError("LoLA socket \"" + path_ + "\": the path must have 1.." +
+                      std::to_string(sizeof(address.sun_path) - 1) + " characters");
+  std::memcpy(address.sun_path, path_.c_str(), path_.size() + 1);
+  struct stat st{};
+  if (lstat(path_.c_str(), &st) == 0) {
+    if (!S_ISSOCK(st.st_mode)) throw ServerError("LoLA socket " + path_ + ": exists and is not a socket");
+    ::unlink(path_.c_str());  // a stale socket of an earlier run
+  }
+  listener_ = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (listener_ < 0) throw ServerError(sysError("socket", path_));
+  if (::bind(listener_, reinterpret_cast<const sockaddr*>(&address), sizeof(address)) != 0 ||
+      ::listen(listener_, 4) != 0) {
+    const std::string message = sysError("bind/listen", path_);
+    ::close(listener_);
+    throw ServerError(message);
+  }
+  setNonBlocking(listener_);
+}
+
+LolaServer::~LolaServer() {
+  dropClient();
+  if (listener_ >= 0) {
+    ::close(listener_);
+    ::unlink(path_.c_str());
+  }
+}
+
+void LolaServer::dropClient() {
+  if (client_ >= 0) ::close(client_);
+  client_ = -1;
+  decoder_.reset();
+}
+
+void LolaServer::adopt(int fd) {
+  dropClient();
+  client_ = fd;
+  setNonBlocking(client_);
+  ++accepted_;
+}
+
+bool LolaServer::acceptPending() {
+  for (;;) {
+    const int fd = ::accept4(listener_, nullptr, nullptr, SOCK_CLOEXEC);
+    if (fd < 0) break;  // EAGAIN: none waiting (other errors: try again next cycle)
+    adopt(fd);          // newest wins
+  }
+  return connected();
+}
+
+Exchange LolaServer::exchange(const PacketBytes& packet, std::chrono::milliseconds timeout) {
+  Exchange result;
+  const Clock::time_point deadline = Clock::now() + timeout;
+  const int before = accepted_;
+  acceptPending();
+  while (!connected()) {
+    pollfd p{listener_, POLLIN, 0};
+    const int left = msLeft(deadline);
+    if (left == 0) return result;  // NoClient
+    if (::poll(&p, 1, left) < 0 && errno != EINTR) return result;
+    acceptPending();
+  }
+  result.new_client = accepted_ != before;
+
+  // The packet goes out whole: a client reads 896 bytes per recv().
+  std::size_t sent = 0;
+  while (sent < packet.size()) {
+    const ssize_t n = ::send(client_, packet.data() + sent, packet.size() - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
+    if (n > 0) {
+      sent += static_cast<std::size_t>(n);
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      const int left = msLeft(deadline);
+      if (left > 0) {
+        pollfd p{client_, POLLOUT, 0};
+        ::poll(&p, 1, left);
+        continue;  // send again: the rest of the packet, or the error that ended the connection
+      }
+      result.status = Exchange::Status::Stalled;
+      result.error = "the client did not read: its socket buffer stayed full (" + std::to_string(sent) +
+                     " of 896 bytes sent)";
+      dropClient();
+      return result;
+    }
+    result.status = Exchange::Status::Disconnected;  // EPIPE, ECONNRESET: the client has gone
+    dropClient();
+    return result;
+  }
+
+  // Read until the cycle's answer.
+  char buffer[4096];
+  for (;;) {
+    if (decoder_.hasAnswer()) {
+      result.status = Exchange::Status::Answered;
+      result.command = decoder_.takeAnswer();
+      return result;
+    }
+    const ssize_t n = ::recv(client_, buffer, sizeof buffer, MSG_DONTWAIT);
+    if (n > 0) {
+      if (!decoder_.feed(buffer, static_cast<std::size_t>(n))) {
+        result.status = Exchange::Status::ProtocolError;
+        result.error = decoder_.error();
+        dropClient();
+        return result;
+      }
+      continue;
+    }
+    if (n == 0 || (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) {
+      result.status = Exchange::Status::Disconnected;
+      dropClient();
+      return result;
+    }
+    if (errno == EINTR) continue;
+    pollfd p{client_, POLLIN, 0};
+    const int left = msLeft(deadline);
+    if (left == 0) {
+      result.status = Exchange::Status::Timeout;
+      return result;
+    }
+    if (::poll(&p, 1, left) < 0 && errno != EINTR) {
+      result.status = Exchange::Status::Timeout;
+      return result;
+    }
+  }
+}
+
+}  // namespace simswift::lola

@@ -1,0 +1,85 @@
+// A LoLA server endpoint: the robot's side of one Unix stream socket. It
+// listens at a path (LoLA's is /tmp/robocup), takes one client, and per
+// cycle sends one 896-byte sensor packet and reads until the client's
+// answer for that cycle (ActuatorDecoder.hpp says which maps make one).
+//
+// What happens when (docs/lola.md, "The server"):
+// - no client: exchange() waits for one until the timeout (NoClient);
+// - a new connection while one is open: the newest wins, the old one is
+//   closed (a program restarted by hand reconnects at once);
+// - the client closes its end: Disconnected; the next exchange() waits for
+//   a new client, whose decoder starts afresh;
+// - bad bytes or a map LoLA would not take: ProtocolError with the
+//   decoder's message; the connection is closed (the stream cannot be
+//   resynchronised), the client may reconnect;
+// - the client stops reading: the packet is written whole or not at all
+//   within the timeout; a client whose socket buffer stays full is closed
+//   (Stalled), as rUNSWift notes LoLA ignores a client that stopped reading
+//   until it reconnects.
+// The timeout is wall-clock time: it decides only when to give up waiting,
+// never what a cycle's answer is.
+#pragma once
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "sim/lola/ActuatorDecoder.hpp"
+#include "sim/lola/SensorPacket.hpp"
+
+namespace simswift::lola {
+
+struct ServerError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Exchange {
+  enum class Status {
+    Answered,       // `command` holds the client's answer for this cycle
+    NoClient,       // nobody connected within the timeout; no packet sent
+    Timeout,        // packet sent, no complete answer within the timeout
+    Disconnected,   // the client closed its end during this exchange
+    ProtocolError,  // bad bytes from the client (`error`); connection closed
+    Stalled,        // the client did not read: its buffer stayed full; connection closed
+  };
+  Status status = Status::NoClient;
+  ActuatorCommand command;  // Answered only
+  std::string error;        // ProtocolError, Stalled: why
+  bool new_client = false;  // a client was accepted during this exchange
+};
+const char* toString(Exchange::Status status);
+
+class LolaServer {
+ public:
+  // Binds and listens at `socket_path` (a stale socket file there is
+  // replaced; any other file is refused). Throws ServerError naming the path.
+  explicit LolaServer(std::string socket_path, DecoderOptions decoder = {});
+  ~LolaServer();  // closes both sockets and removes the socket file
+  LolaServer(const LolaServer&) = delete;
+  LolaServer& operator=(const LolaServer&) = delete;
+
+  const std::string& path() const { return path_; }
+  bool connected() const { return client_ >= 0; }
+  int clientsAccepted() const { return accepted_; }
+
+  // One cycle: accept a waiting client (the newest), send `packet`, read
+  // until the cycle's answer. A client that answered ahead (its answer was
+  // already decoded) gets the packet and that answer is returned at once.
+  Exchange exchange(const PacketBytes& packet, std::chrono::milliseconds timeout);
+
+  // Accepts waiting connections without sending anything (newest wins).
+  // true if a client is connected afterwards.
+  bool acceptPending();
+  // Closes the client's connection (the next exchange waits for a new one).
+  void dropClient();
+
+ private:
+  void adopt(int fd);
+  std::string path_;
+  int listener_ = -1;
+  int client_ = -1;
+  int accepted_ = 0;
+  ActuatorDecoder decoder_;
+};
+
+}  // namespace simswift::lola

@@ -1,0 +1,52 @@
+#include "sim/lola/Protocol.hpp"
+
+namespace simswift::lola {
+
+const std::array<std::string_view, kNumJoints> kJointNames{
+    "HeadYaw",        "HeadPitch",
+    "LShoulderPitch", "LShoulderRoll", "LElbowYaw",   "LElbowRoll",  "LWristYaw",
+    "LHipYawPitch",   "LHipRoll",      "LHipPitch",   "LKneePitch",  "LAnklePitch", "LAnkleRoll",
+    "RHipRoll",       "RHipPitch",     "RKneePitch",  "RAnklePitch", "RAnkleRoll",
+    "RShoulderPitch", "RShoulderRoll", "RElbowYaw",   "RElbowRoll",  "RWristYaw",
+    "LHand",          "RHand",
+};
+
+const std::array<KeySpec, kNumSensorKeys> kSensorKeys{{
+    {"Stiffness", kNumJoints},
+    {"Position", kNumJoints},
+    {"Temperature", kNumJoints},
+    {"Current", kNumJoints},
+    {"Battery", kNumBattery},
+    {"Accelerometer", 3},
+    {"Gyroscope", 3},
+    {"Angles", 2},
+    {"Sonar", 2},
+    {"FSR", kNumFsrs},
+    {"Status", kNumJoints},
+    {"Touch", kNumTouch},
+    {"RobotConfig", 4},
+}};
+
+// Lengths: LED counts as B-Human and HULKs write them (Chest/LFoot/RFoot RGB;
+// LEye/REye 8 red, 8 green, 8 blue; LEar/REar 10; Skull 12), Sonar 2 enables.
+const std::array<KeySpec, kNumActuatorKeys> kActuatorKeys{{
+    {"Position", kNumJoints},
+    {"Stiffness", kNumJoints},
+    {"Chest", 3},
+    {"LEye", 24},
+    {"REye", 24},
+    {"LEar", 10},
+    {"REar", 10},
+    {"LFoot", 3},
+    {"RFoot", 3},
+    {"Skull", 12},
+    {"Sonar", 2},
+}};
+
+int actuatorKeyIndex(std::string_view name) {
+  for (int i = 0; i < kNumActuatorKeys; ++i)
+    if (kActuatorKeys[i].name == name) return i;
+  return -1;
+}
+
+}  // namespace simswift::lola
