@@ -219,8 +219,8 @@ void expectLyingAccelerometer(const Fall& f) {
                z = f.lying[S::InertialSensor_AccelerometerZ];
   std::printf("  lying: Accelerometer (%.2f, %.2f, %.2f) m/s^2, Acc (%.1f, %.1f, %.1f) counts; "
               "peak roll rate %.2f, pitch rate %.2f rad/s\n",
-              x, y, z, f.lying[S::InertialSensor_AccX], f.lying[S::InertialSensor_AccY], f.lying[S::InertialSensor_AccZ],
-              f.peak_roll_rate, f.peak_pitch_rate);
+              x, y, z, f.lying[S::InertialSensor_AccX], f.lying[S::InertialSensor_AccY],
+              f.lying[S::InertialSensor_AccZ], f.peak_roll_rate, f.peak_pitch_rate);
   EXPECT_NEAR(x, g * std::sin(f.angle_y), 1.0);
   EXPECT_NEAR(y, g * std::sin(f.angle_x), 1.0);
   const double sx = std::sin(f.angle_x), sy = std::sin(f.angle_y);
