@@ -84,15 +84,39 @@ TEST(MotionPhysics, SideStepFullSpeed) {
   EXPECT_GE(f.left_ratio, 0.85) << f.summary();
 }
 
+// The turn's odometry too: the program's (gyro heading rate while stepping)
+// and an unchanged rUNSWift 2017/2018 MotionOdometry's gyro turn, -0.01 x
+// GyroscopeZ per 10 ms frame (before its 0.95 pessimism), read from the slots
+// the body published: both must turn the way the robot turns (the V5's
+// GyroscopeZ is negative for an anti-clockwise turn; agent/libagent/Inertial.hpp).
 TEST(MotionPhysics, TurnInPlaceFullSpeed) {
   MotionHarness h(13);
   h.request(ActionType::STAND);
   ASSERT_TRUE(h.run(1.0));
-  bool ok;
-  const simswift::WalkFigures f = walkMeasured(h, 0, 0, 0.8, 8.0, &ok);
-  std::printf("[motion] turn 0.8 rad/s x 8 s: %.3f rad/s (%.0f %%)\n", f.turn, f.turn_ratio * 100);
+  h.request(ActionType::WALK, 0, 0, 0.8);
+  bool ok = h.run(2.0);
+  simswift::WalkMeter meter;
+  meter.begin(simswift::api::walkSample(h.runner(), 0), {0, 0, 0.8});
+  double turned = 0, last = h.pose().theta;
+  double odometry = 0, odometry_last = h.state().odometry.theta, runswift = 0;  // rad
+  for (int i = 0; i < 800; ++i) {
+    ok = h.run(0.01) && ok;
+    meter.add(simswift::api::walkSample(h.runner(), 0));
+    const double th = h.pose().theta;
+    turned += wrapAngle(th - last);
+    last = th;
+    odometry += wrapAngle(h.state().odometry.theta - odometry_last);
+    odometry_last = h.state().odometry.theta;
+    runswift += -0.01 * h.checked().last_sensed.sensors[agent::libagent::Sensors::InertialSensor_GyroscopeZ];
+  }
+  const simswift::WalkFigures f = meter.figures();
+  std::printf("[motion] turn 0.8 rad/s x 8 s: %.3f rad/s (%.0f %%); odometry %.3f of it, rUNSWift's gyro "
+              "odometry %.3f of it\n",
+              f.turn, f.turn_ratio * 100, odometry / turned, runswift / turned);
   EXPECT_TRUE(ok) << "fell";
   EXPECT_GE(f.turn_ratio, 0.85) << f.summary();
+  EXPECT_NEAR(odometry / turned, 1.0, 0.03);
+  EXPECT_NEAR(runswift / turned, 1.0, 0.05);
 }
 
 // A new random command every 2 s (seeded) for 60 s: no fall.
