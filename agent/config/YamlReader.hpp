@@ -120,6 +120,17 @@ class YamlReader {
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
   // Same, about this map itself.
   [[noreturn]] void fail(const std::string& message) const;
+  // `key` is absent but needed: a key of this map that nobody asked for and
+  // that looks like a misspelling of it (case, one or two letters) is named
+  // at its own line, "unknown key 'trials_per_positon' in <document> (did
+  // you mean trials_per_position? a required key, missing)"; else fail(key,
+  // message). Required getters call it; so do readers whose key is required
+  // only sometimes.
+  [[noreturn]] void missing(const std::string& key, const std::string& message) const;
+  // The check alone: throws as missing() does if this map holds a
+  // misspelling of `key`, else returns (a key that may be given here or in
+  // an enclosing map).
+  void checkMisspelling(const std::string& key) const;
 
   const YAML::Node& node() const { return node_; }
   const std::string& file() const { return file_; }
