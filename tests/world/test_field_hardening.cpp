@@ -66,8 +66,8 @@ TEST(FieldHardening, DirectoryIsNotAFieldFile) {
 }
 
 // A misspelt key is named at its own line with the key it resembles (issue
-// 34 item 5): the required field: map (it was "missing" at line 1) and an
-// optional key, and a line's required from: in a list.
+// 34 item 5): the required field: map (it was "missing" at the document's
+// first line), an optional key, and a line's required from: in a list.
 TEST(FieldHardening, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
   EXPECT_EQ(errorOf("# a field\nfeild:\n  length: 9.0\n"),
             "f.yaml:2: unknown key 'feild' in <document> (did you mean field? a required key, missing)");
