@@ -6,7 +6,10 @@
 //
 // Usage: parse the text, then walk maps with a YamlReader. Each getter
 // records the key it was asked for; `finish()` then rejects any key in the
-// map that nobody asked for (typos such as 'bal' for 'ball').
+// map that nobody asked for (typos such as 'bal' for 'ball': "did you mean
+// ball?"). A required key that is absent while a near miss of it is there
+// is reported as that misspelling at its own line (missing()), not as a
+// missing key at the map's first line.
 //
 //   YAML::Node root = YamlReader::parse(text, "fields/x.yaml");
 //   YamlReader top(root, "fields/x.yaml");
