@@ -238,7 +238,8 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
       }
       rob.launch = r.has("program") ? readLaunch(r) : def_launch;
       if (rob.behaviour == Behaviour::Script) {
-        if (!r.has("actions")) r.missing("actions", "missing: a script robot needs an actions: list (as in a scenario)");
+        if (!r.has("actions"))
+          r.missing("actions", "missing: a script robot needs an actions: list (as in a scenario)");
         runner::readActions(r, rob.script);
       } else if (r.has("actions")) {
         r.fail("actions", "only a script robot takes actions (this one is " +

@@ -14,7 +14,8 @@ BatchOutcome mergeRuns(const std::vector<std::string>& dirs, const std::string& 
   const std::string text = readFile(dirs[0] + "/experiment.yaml");
   for (const std::string& d : dirs)
     if (readFile(d + "/experiment.yaml") != text)
-      throw BatchInputError(d + "/experiment.yaml differs from " + dirs[0] + "/experiment.yaml: not shards of one experiment");
+      throw BatchInputError(d + "/experiment.yaml differs from " + dirs[0] +
+                            "/experiment.yaml: not shards of one experiment");
   const Experiment e = Experiment::parse(text, dirs[0] + "/experiment.yaml");
   const FolderLock lock = claimFolder(e, out_dir);
   for (const std::string& d : dirs) {

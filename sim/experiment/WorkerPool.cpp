@@ -43,10 +43,13 @@ void onSignal(int) { g_stop = 1; }
   int code = 0;
   try {
     if (private_shm) {
+      const pid_t parent = getppid();
       const std::string err = enterPrivateShm();
       if (!err.empty()) throw BatchError("a private /dev/shm for the trial: " + err);
-      // New credentials may clear the parent-death signal: set it again.
+      // New credentials may clear the parent-death signal: set it again
+      // (and end if the batch died meanwhile).
       prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (getppid() != parent) _exit(1);
     }
     runAndWriteTrial(e, hooks, t, dir);
   } catch (const ConfigError& ex) {

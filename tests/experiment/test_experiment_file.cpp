@@ -116,8 +116,9 @@ TEST(ExperimentFile, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
   expectExactly(replaced(kGood, "    behaviour: script\n", "    behavoiur: script\n"),
                 "bad.yaml:10: unknown key 'behavoiur' in setups[0] (did you mean behaviour? a required key, "
                 "missing)");
-  const std::string no_actions = replaced(kGood, "theta: 0.0, actions: [{t: 0, action: stand}]}\n      - {team: 19, player: 3",
-                                          "theta: 0.0, acitons: [{t: 0, action: stand}]}\n      - {team: 19, player: 3");
+  const std::string robot0 = "theta: 0.0, actions: [{t: 0, action: stand}]}\n      - {team: 19, player: 3";
+  const std::string no_actions = replaced(kGood, robot0, "theta: 0.0, acitons: [{t: 0, action: stand}]}\n"
+                                                         "      - {team: 19, player: 3");
   expectExactly(no_actions, "bad.yaml:12: unknown key 'acitons' in setups[0].robots[0] (did you mean actions? a "
                             "required key, missing)");
   const std::string msg = errorOf(replaced(kGood, "found: {distance: 0.3}", "found: {distnace: 0.3}"));

@@ -50,7 +50,8 @@ TEST(YamlMisspeltKeys, ARequiredKeysNearMissIsNamedAtItsLine) {
   EXPECT_EQ(errorOf("count: 2\ny: 1\n", "x"), "r.yaml:1: x: missing required key");
   EXPECT_EQ(errorOf("count: 2\ngame: 1\n", "name"), "r.yaml:1: name: missing required key");
   // Far from it: missing, as before.
-  EXPECT_EQ(errorOf("count: 2\ntrials: 1\n", "trials_per_position"), "r.yaml:1: trials_per_position: missing required key");
+  EXPECT_EQ(errorOf("count: 2\ntrials: 1\n", "trials_per_position"),
+            "r.yaml:1: trials_per_position: missing required key");
 }
 
 TEST(YamlMisspeltKeys, AnUnknownKeyNearAKnownOneGetsTheHint) {
