@@ -308,6 +308,37 @@ TEST(Batch, AFolderLockIsExclusiveUntilReleased) {
   EXPECT_NO_THROW(FolderLock{dir});
 }
 
+// A run killed with kill -9 leaves its folder locked only while its workers
+// are still dying (they inherited the lock): the next run waits for them
+// (here a "worker" that ends 0.5 s after its run died) instead of refusing.
+TEST(Batch, ALockHeldByADeadRunsLastWorkerIsWaitedFor) {
+  const std::string dir = exptest::freshDir("dying");
+  int started[2];
+  ASSERT_EQ(pipe(started), 0);
+  const pid_t run = fork();
+  ASSERT_GE(run, 0);
+  if (run == 0) {
+    const FolderLock held(dir);
+    if (fork() == 0) {  // the worker: holds the inherited lock a little longer
+      const char c = 'w';
+      if (write(started[1], &c, 1) != 1) _exit(1);
+      usleep(500000);
+      _exit(0);
+    }
+    _exit(0);  // the run dies first
+  }
+  close(started[1]);
+  char c = 0;
+  ASSERT_EQ(read(started[0], &c, 1), 1);
+  close(started[0]);
+  waitpid(run, nullptr, 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_NO_THROW(FolderLock{dir});
+  const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_GT(waited, 0.1) << "the lock was free at once: the worker did not hold it";
+  EXPECT_LT(waited, FolderLock::kWorkerEndWait_s);
+}
+
 // Rerunning into a folder of another experiment file is bad input (exit 2,
 // as a bad file), and the message names the folder and the first
 // difference. It was exit 1 before issue 34.
