@@ -7,6 +7,8 @@
 //   s.fsr.sum(), s.gyroscope, ...     # gyroscope, accelerometer, joint_angles, ...
 //   sim.robot(0).set_controller(lambda s, j: ...)   # j.angles / j.stiffnesses (numpy, in place)
 //   table = simswift.run_experiment("scenarios/findball_quick.yaml", jobs=2)
+//   t = simswift.WalkTest(7, gait)     # gait(command, sensors, joints): the walk test kit
+//   f = t.walk(forward=200); f.forward_ratio, f.falls, f.summary()
 //
 // Errors become Python exceptions: simswift.ConfigError (with .file, .line,
 // .key) for bad files, ValueError / IndexError / RuntimeError otherwise.
@@ -19,6 +21,7 @@
 
 #include "simswift/Experiment.hpp"
 #include "simswift/Simulation.hpp"
+#include "simswift/WalkTest.hpp"
 
 namespace py = pybind11;
 namespace sa = simswift::api;
@@ -54,6 +57,11 @@ struct PySensors {
 // A command a Python controller fills in place.
 struct PyJoints {
   py::array_t<float> angles{sa::kNumJoints}, stiffnesses{sa::kNumJoints};
+};
+
+// The walk test kit's reference walk, callable from Python as a gait.
+struct PyGait {
+  sa::Gait gait;
 };
 
 void translateConfigError(const sa::ConfigError& e, const py::object& type) {
@@ -179,4 +187,89 @@ PYBIND11_MODULE(simswift, m) {
       },
       py::arg("file"), py::arg("jobs") = 0, py::arg("out") = "",
       "Runs an experiment file (every trial in its own process); returns results.csv's rows as dicts.");
+
+  // --- The walk test kit (simswift/WalkTest.hpp) ---
+  py::class_<sa::WalkCommand>(m, "WalkCommand", "forward, left (mm/s), turn (rad/s), walk (False: stand)")
+      .def(py::init([](double forward, double left, double turn, bool walk) {
+             return sa::WalkCommand{forward, left, turn, walk};
+           }),
+           py::arg("forward") = 0.0, py::arg("left") = 0.0, py::arg("turn") = 0.0, py::arg("walk") = true)
+      .def_readwrite("forward", &sa::WalkCommand::forward)
+      .def_readwrite("left", &sa::WalkCommand::left)
+      .def_readwrite("turn", &sa::WalkCommand::turn)
+      .def_readwrite("walk", &sa::WalkCommand::walk);
+
+  py::class_<sa::WalkFigures>(m, "WalkFigures", "what a walk achieved over one window (WalkTest.hpp)")
+      .def_readonly("commanded", &sa::WalkFigures::commanded)
+      .def_readonly("seconds", &sa::WalkFigures::seconds)
+      .def_readonly("forward", &sa::WalkFigures::forward)
+      .def_readonly("left", &sa::WalkFigures::left)
+      .def_readonly("turn", &sa::WalkFigures::turn)
+      .def_readonly("forward_ratio", &sa::WalkFigures::forward_ratio)
+      .def_readonly("left_ratio", &sa::WalkFigures::left_ratio)
+      .def_readonly("turn_ratio", &sa::WalkFigures::turn_ratio)
+      .def_readonly("heading_slope", &sa::WalkFigures::heading_slope)
+      .def_readonly("falls", &sa::WalkFigures::falls)
+      .def_readonly("stances", &sa::WalkFigures::stances)
+      .def_readonly("slip_mean", &sa::WalkFigures::slip_mean)
+      .def_readonly("slip_max", &sa::WalkFigures::slip_max)
+      .def("summary", &sa::WalkFigures::summary)
+      .def("__repr__", &sa::WalkFigures::summary);
+
+  // simswift's reference walk as a gait a Python test passes like its own.
+  py::class_<PyGait>(m, "ReferenceGait", "simswift's reference walk (Walk2014Generator) as gait(command, sensors, joints)")
+      .def(py::init([] { return PyGait{sa::referenceGait()}; }))
+      .def("__call__", [](PyGait& g, const sa::WalkCommand& c, const PySensors& s, PyJoints& j) {
+        sa::JointValues out{};
+        std::memcpy(out.angles, j.angles.data(), sizeof out.angles);
+        std::memcpy(out.stiffnesses, j.stiffnesses.data(), sizeof out.stiffnesses);
+        g.gait(c, s.raw, out);
+        std::memcpy(j.angles.mutable_data(), out.angles, sizeof out.angles);
+        std::memcpy(j.stiffnesses.mutable_data(), out.stiffnesses, sizeof out.stiffnesses);
+      });
+
+  py::class_<sa::WalkTest>(m, "WalkTest", "one robot driven by gait(command, sensors, joints); see simswift/WalkTest.hpp")
+      .def(py::init([](uint64_t seed, py::function gait, bool noise, double x, double y, double theta) {
+             auto joints = std::make_shared<PyJoints>();
+             sa::Gait g = [gait, joints](const sa::WalkCommand& c, const sa::SensorValues& s, sa::JointValues& j) {
+               py::gil_scoped_acquire gil;
+               std::memcpy(joints->angles.mutable_data(), j.angles, sizeof j.angles);
+               std::memcpy(joints->stiffnesses.mutable_data(), j.stiffnesses, sizeof j.stiffnesses);
+               gait(c, PySensors(s), py::cast(joints.get(), py::return_value_policy::reference));
+               std::memcpy(j.angles, joints->angles.data(), sizeof j.angles);
+               std::memcpy(j.stiffnesses, joints->stiffnesses.data(), sizeof j.stiffnesses);
+             };
+             sa::WalkTestSetup setup;
+             setup.seed = seed, setup.noise = noise, setup.x = x, setup.y = y, setup.theta = theta;
+             return sa::WalkTest(setup, std::move(g));
+           }),
+           py::arg("seed"), py::arg("gait"), py::arg("noise") = true, py::arg("x") = -3.0, py::arg("y") = 0.0,
+           py::arg("theta") = 0.0)
+      .def("command",
+           [](sa::WalkTest& t, double forward, double left, double turn, bool walk) {
+             t.command({forward, left, turn, walk});
+           },
+           py::arg("forward") = 0.0, py::arg("left") = 0.0, py::arg("turn") = 0.0, py::arg("walk") = true)
+      .def("run", &sa::WalkTest::run, py::arg("seconds"))
+      .def("walk",
+           [](sa::WalkTest& t, double forward, double left, double turn, double settle, double window) {
+             return t.walk({forward, left, turn, true}, settle, window);
+           },
+           py::arg("forward") = 0.0, py::arg("left") = 0.0, py::arg("turn") = 0.0, py::arg("settle") = 2.0,
+           py::arg("window") = 6.0)
+      .def("trace", &sa::WalkTest::trace, py::arg("csv_path"))
+      .def("stop_trace", &sa::WalkTest::stopTrace)
+      .def_property_readonly("falls", [](const sa::WalkTest& t) { return t.sample().falls; })
+      .def_property_readonly("pose", [](const sa::WalkTest& t) { return t.sample().torso; })
+      .def("robot", &sa::WalkTest::robot, py::keep_alive<0, 1>());
+
+  m.def("reference_gait", [] { return PyGait{sa::referenceGait()}; },
+        "simswift's reference walk as a gait(command, sensors, joints)");
+  m.def(
+      "plot_trace",
+      [](const std::string& csv, const std::string& png) {
+        std::string message;
+        if (!sa::plotTrace(csv, png, &message)) throw std::runtime_error(message);
+      },
+      py::arg("csv_path"), py::arg("png_path"), "Plots a WalkTest trace to a PNG with gnuplot (RuntimeError if it cannot).");
 }

@@ -71,5 +71,5 @@ fi
 for example in walk_test team_glue; do
   cmake -S "examples/$example" -B "$tmp/$example-build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
   cmake --build "$tmp/$example-build" -j"$jobs"
-  (cd "$tmp/$example-build" && ctest --output-on-failure --no-tests=error -j"$jobs")
+  (cd "$tmp/$example-build" && LD_LIBRARY_PATH="$prefix/lib" ctest --output-on-failure --no-tests=error -j"$jobs")
 done

@@ -4,6 +4,7 @@
 #include <yaml-cpp/depthguard.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -54,6 +55,43 @@ size_t countNodes(const YAML::Node& n, size_t limit, std::unordered_map<size_t, 
   }
   if (keyed) seen[static_cast<size_t>(m.pos)] = total;
   return total;
+}
+
+// Optimal-string-alignment distance (insertions, deletions, substitutions
+// and swaps of two neighbours, each 1) between two keys, stopping early
+// once every path is past `limit` (the result is then limit + 1).
+size_t editDistance(const std::string& a, const std::string& b, size_t limit) {
+  if ((a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) > limit) return limit + 1;
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t row_min = d[i][0];
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);  // two neighbours swapped
+      row_min = std::min(row_min, d[i][j]);
+    }
+    if (row_min > limit) return limit + 1;
+  }
+  return d[a.size()][b.size()];
+}
+
+// Whether `written` looks like a misspelling of the valid key `valid`: the
+// same but for letter case, or a few edits away: none for keys of up to 3
+// letters (one edit makes another key: x / y), 1 up to 7 letters with the
+// first letter right (name / game are two keys), 2 beyond.
+bool nearMiss(const std::string& written, const std::string& valid) {
+  if (written == valid || written.size() > 200) return false;
+  std::string lw = written, lv = valid;
+  for (char& c : lw) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (char& c : lv) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lw == lv) return true;
+  if (valid.size() <= 3 || (valid.size() <= 7 && lw[0] != lv[0])) return false;
+  const size_t limit = valid.size() <= 7 ? 1 : 2;
+  return editDistance(lw, lv, limit) <= limit;
 }
 
 }  // namespace
@@ -146,6 +184,26 @@ void YamlReader::fail(const std::string& message) const {
                     message);
 }
 
+void YamlReader::missing(const std::string& key, const std::string& message) const {
+  checkMisspelling(key);
+  fail(key, message);
+}
+
+void YamlReader::checkMisspelling(const std::string& key) const {
+  // A misspelling of it (a key nobody asked for yet) is named at its own
+  // line: "missing" at the map's first line would hide the typo.
+  if (node_.IsMap())
+    for (auto it = node_.begin(); it != node_.end(); ++it) {
+      if (!it->first.IsScalar()) continue;
+      const std::string& k = it->first.Scalar();
+      if (std::find(known_.begin(), known_.end(), k) != known_.end() || !nearMiss(k, key)) continue;
+      const YAML::Mark m = it->first.Mark();
+      throw ConfigError(file_ + ":" + std::to_string(m.is_null() ? 1 : m.line + 1) + ": unknown key '" + clip(k) +
+                        "' in " + (path_.empty() ? std::string("<document>") : path_) + " (did you mean " + key +
+                        "? a required key, missing)");
+    }
+}
+
 void YamlReader::checkMap() const {
   // An empty value ("field:" with nothing under it) counts as an empty map.
   if (!node_.IsDefined() || node_.IsNull() || node_.IsMap()) return;
@@ -167,7 +225,7 @@ bool YamlReader::has(const std::string& key) const {
 YAML::Node YamlReader::require(const std::string& key) const {
   checkMap();
   YAML::Node n = get(key);
-  if (!n.IsDefined()) fail(key, "missing required key");
+  if (!n.IsDefined()) missing(key, "missing required key");
   return n;
 }
 
@@ -304,12 +362,15 @@ void YamlReader::finish() const {
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     std::string k = it->first.IsScalar() ? it->first.Scalar() : std::string("?");
     if (std::find(known_.begin(), known_.end(), k) != known_.end()) continue;
-    std::string expected;
-    for (const auto& e : known_) expected += (expected.empty() ? "" : ", ") + e;
+    std::string expected, suggestion;
+    for (const auto& e : known_) {
+      expected += (expected.empty() ? "" : ", ") + e;
+      if (suggestion.empty() && nearMiss(k, e)) suggestion = " (did you mean " + e + "?)";
+    }
     YAML::Mark m = it->first.Mark();
     const std::string where = file_ + ":" + std::to_string(m.is_null() ? 1 : m.line + 1);
     throw ConfigError(where + ": unknown key '" + clip(k) + "' in " +
-                      (path_.empty() ? std::string("<document>") : path_) +
+                      (path_.empty() ? std::string("<document>") : path_) + suggestion +
                       "; expected one of " + (expected.empty() ? "(none)" : expected));
   }
 }

@@ -6,7 +6,10 @@
 //
 // Usage: parse the text, then walk maps with a YamlReader. Each getter
 // records the key it was asked for; `finish()` then rejects any key in the
-// map that nobody asked for (typos such as 'bal' for 'ball').
+// map that nobody asked for (typos such as 'bal' for 'ball': "did you mean
+// ball?"). A required key that is absent while a near miss of it is there
+// is reported as that misspelling at its own line (missing()), not as a
+// missing key at the map's first line.
 //
 //   YAML::Node root = YamlReader::parse(text, "fields/x.yaml");
 //   YamlReader top(root, "fields/x.yaml");
@@ -120,6 +123,17 @@ class YamlReader {
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
   // Same, about this map itself.
   [[noreturn]] void fail(const std::string& message) const;
+  // `key` is absent but needed: a key of this map that nobody asked for and
+  // that looks like a misspelling of it (case, one or two letters) is named
+  // at its own line, "unknown key 'trials_per_positon' in <document> (did
+  // you mean trials_per_position? a required key, missing)"; else fail(key,
+  // message). Required getters call it; so do readers whose key is required
+  // only sometimes.
+  [[noreturn]] void missing(const std::string& key, const std::string& message) const;
+  // The check alone: throws as missing() does if this map holds a
+  // misspelling of `key`, else returns (a key that may be given here or in
+  // an enclosing map).
+  void checkMisspelling(const std::string& key) const;
 
   const YAML::Node& node() const { return node_; }
   const std::string& file() const { return file_; }

@@ -10,8 +10,8 @@
 //
 // Units, as the NAO reports them (NAOqi / LoLA): angles rad, angular rates
 // rad/s, accelerations m/s^2, FSR kg (force / g), centre of pressure m,
-// sonar m, temperatures deg C, currents A, battery charge 0..1. Frames: NAO
-// torso axes (x forward, y left, z up).
+// sonar m, temperatures deg C, currents A, battery charge 0..1; the inertial
+// slots with the V5's signs and raw counts (Inertial.hpp). NAO torso axes.
 #pragma once
 
 #include <cstddef>

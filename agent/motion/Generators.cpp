@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agent/libagent/Inertial.hpp"
 #include "agent/motion/JointLimits.hpp"
 #include "agent/motion/Kinematics.hpp"
 #include "agent/motion/Walk2014Generator.hpp"
@@ -333,9 +334,10 @@ double KickGenerator::phaseDuration(int phase) const {
 }
 
 void KickGenerator::tick(const libagent::SensorValues& sensors, double dt, libagent::JointValues& out) {
-  const float* s = sensors.sensors;
-  gyro_x_ = 0.8 * gyro_x_ + 0.2 * s[S::InertialSensor_GyrX];
-  gyro_y_ = 0.8 * gyro_y_ + 0.2 * s[S::InertialSensor_GyrY];
+  // Roll and pitch rates, rad/s, right-handed (agent/libagent/Inertial.hpp).
+  const libagent::inertial::BodyRates w = libagent::inertial::bodyRates(sensors.sensors);
+  gyro_x_ = 0.8 * gyro_x_ + 0.2 * w.x;
+  gyro_y_ = 0.8 * gyro_y_ + 0.2 * w.y;
   if (started_ && !done()) {
     t_ += dt;
     const double d = phaseDuration(phase_);

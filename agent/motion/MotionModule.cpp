@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agent/libagent/Inertial.hpp"
+
 namespace agent::motion {
 
 namespace J = libagent::Joints;
@@ -40,8 +42,11 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
   const float* s = sensors.sensors;
   const double ax = s[S::InertialSensor_AngleX], ay = s[S::InertialSensor_AngleY];
   const double tilt = std::max(std::fabs(ax), std::fabs(ay));
-  const double rate = std::sqrt(s[S::InertialSensor_GyrX] * s[S::InertialSensor_GyrX] +
-                                s[S::InertialSensor_GyrY] * s[S::InertialSensor_GyrY]);
+  // Roll and pitch rate magnitude, rad/s, from the calibrated GyroscopeX/Y
+  // (agent/libagent/Inertial.hpp); float arithmetic as the slots.
+  const libagent::inertial::BodyRates w = libagent::inertial::bodyRates(s);
+  const float wx = static_cast<float>(w.x), wy = static_cast<float>(w.y);
+  const double rate = std::sqrt(wx * wx + wy * wy);
   const FootPressure feet = footPressure(s);
   lifted_time_ = feet.total < cfg_.lifted_weight ? lifted_time_ + dt : 0.0;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agent/libagent/Inertial.hpp"
 #include "agent/motion/Kinematics.hpp"
 
 namespace agent::motion {
@@ -44,14 +45,16 @@ double smoothBlend(double f) {
 }  // namespace
 
 double headingRate(const float* s) {
-  // Body rates (GyroscopeX/Y/Z) to the rate of the Euler yaw of
-  // R = Rz(yaw) Ry(pitch) Rx(roll), with roll = AngleX and pitch = AngleY.
-  // The walk rolls and pitches the torso by a few degrees every step; the
-  // bare GyroscopeZ then misreads the heading rate by a few mrad/s.
+  // Body rates (right-handed, from GyroscopeX/Y/Z with the V5's signs: its
+  // GyroscopeZ reads anti-clockwise yaw negative) to the rate of the Euler
+  // yaw of R = Rz(yaw) Ry(pitch) Rx(roll), with roll = AngleX and pitch =
+  // AngleY. The walk rolls and pitches the torso by a few degrees every
+  // step; the bare yaw rate then misreads the heading rate by a few mrad/s.
+  const libagent::inertial::BodyRates w = libagent::inertial::bodyRates(s);
   const double roll = s[S::InertialSensor_AngleX], pitch = s[S::InertialSensor_AngleY];
   const double c = std::cos(pitch);
-  if (!(std::fabs(c) > 0.3)) return s[S::InertialSensor_GyroscopeZ];  // lying down: not walking anyway
-  return (std::sin(roll) * s[S::InertialSensor_GyroscopeY] + std::cos(roll) * s[S::InertialSensor_GyroscopeZ]) / c;
+  if (!(std::fabs(c) > 0.3)) return w.z;  // lying down: not walking anyway
+  return (std::sin(roll) * w.y + std::cos(roll) * w.z) / c;
 }
 
 WalkSpeed ellipsoidClamp(const WalkSpeed& cmd, const WalkConfig& cfg) {
@@ -175,8 +178,11 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
   odo_ = WalkSpeed{};
   const float* s = sensors.sensors;
   const double f = cfg_.gyro_filter;
-  gyro_x_ = f * gyro_x_ + (1 - f) * s[S::InertialSensor_GyrX];
-  gyro_y_ = f * gyro_y_ + (1 - f) * s[S::InertialSensor_GyrY];
+  // Roll and pitch rates in rad/s from the calibrated GyroscopeX/Y (the raw
+  // GyrX/GyrY counts' sign is not settled: agent/libagent/Inertial.hpp).
+  const libagent::inertial::BodyRates w = libagent::inertial::bodyRates(s);
+  gyro_x_ = f * gyro_x_ + (1 - f) * w.x;
+  gyro_y_ = f * gyro_y_ + (1 - f) * w.y;
 
   switch (state_) {
     case State::Standing:

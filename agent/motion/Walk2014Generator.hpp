@@ -47,9 +47,9 @@ struct FootPressure {
 };
 FootPressure footPressure(const float* sensors);
 
-// Rate of change of the torso's heading (rad/s, the Euler yaw of
-// Rz(yaw) Ry(AngleY) Rx(AngleX)) from the gyro's body rates and the
-// inertial board's AngleX / AngleY.
+// Rate of change of the torso's heading (rad/s, anti-clockwise positive: the
+// Euler yaw of Rz(yaw) Ry(AngleY) Rx(AngleX)) from the body rates (GyroscopeX/
+// Y/Z with the V5's signs: libagent/Inertial.hpp) and AngleX / AngleY.
 double headingRate(const float* sensors);
 
 // Decides when the swing foot has taken the weight: the lateral CoP has

@@ -66,8 +66,8 @@ struct WalkConfig {
 
   // --- Gyro balance feedback on the support ankle
   double gyro_filter = 0.8;        // filtered = f * filtered + (1 - f) * gyro
-  double gyro_pitch_gain = 1.0 / 25.0;  // rad of ankle pitch per rad/s of GyrY
-  double gyro_roll_gain = 1.0 / 25.0;   // rad of ankle roll per rad/s of GyrX
+  double gyro_pitch_gain = 1.0 / 25.0;  // rad of ankle pitch per rad/s of GyroscopeY (pitch rate)
+  double gyro_roll_gain = 1.0 / 25.0;   // rad of ankle roll per rad/s of GyroscopeX (roll rate)
 
   // --- Arms
   double arm_swing = 0.006;        // rad of shoulder pitch per mm of the opposite foot's x

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "agent/libagent/Inertial.hpp"
+
 
 namespace agent::program {
 
@@ -39,8 +41,10 @@ void ScriptedMotion::tick(const agent::libagent::SensorValues& sensors, int64_t 
   out = cmd_;
   if (ankle_gain_ != 0) {
     namespace J = agent::libagent::Joints;
-    // First-order low pass, 0.2 per 10 ms tick (time constant ~45 ms).
-    gyro_filtered_ += 0.2f * (sensors.sensors[agent::libagent::Sensors::InertialSensor_GyroscopeY] - gyro_filtered_);
+    // First-order low pass, 0.2 per 10 ms tick (time constant ~45 ms), of the
+    // pitch rate (GyroscopeY, rad/s, right-handed: agent/libagent/Inertial.hpp).
+    const float pitch_rate = static_cast<float>(agent::libagent::inertial::bodyRates(sensors.sensors).y);
+    gyro_filtered_ += 0.2f * (pitch_rate - gyro_filtered_);
     const float d = ankle_gain_ * gyro_filtered_;
     if (out.stiffnesses[J::LAnklePitch] > 0) out.angles[J::LAnklePitch] += d;
     if (out.stiffnesses[J::RAnklePitch] > 0) out.angles[J::RAnklePitch] += d;

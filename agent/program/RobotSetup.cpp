@@ -69,7 +69,13 @@ ScriptStep readScriptStep(const YamlReader& r) {
   s.t_s = r.number("t", Range::closed(0, kMaxTime));
   const bool has_joint = r.has("joint");
   const bool has_posture = r.has("posture");
-  if (has_joint == has_posture) r.fail("a script step needs exactly one of 'joint' or 'posture'");
+  if (has_joint == has_posture) {
+    if (!has_joint) {  // neither: a misspelt one is named at its line
+      r.checkMisspelling("joint");
+      r.checkMisspelling("posture");
+    }
+    r.fail("a script step needs exactly one of 'joint' or 'posture'");
+  }
   if (has_joint) {
     const std::string name = r.string("joint");
     s.joint = jointIndex(name);

@@ -58,6 +58,7 @@ struct Libagent {
 using LibagentController = std::function<void(const SensorValues& sensors, JointValues& joints, Libagent& libagent)>;
 
 class Simulation;
+struct SimulationAccess;  // the library's own helpers (sim/api), e.g. the walk test kit
 
 // A handle to robot i of a Simulation (valid while it lives).
 class Robot {
@@ -115,6 +116,7 @@ class Simulation {
 
  private:
   friend class Robot;
+  friend struct SimulationAccess;
   struct Impl;
   explicit Simulation(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;

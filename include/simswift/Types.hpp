@@ -24,6 +24,12 @@ enum Joint : int {
 
 // Sensor indices (libagent's SensorCode order); units: m/s^2, rad/s, rad,
 // FSR kg, centre of pressure m, 0/1 touch, battery 0..1 and A, sonar m.
+// The inertial slots are as a NAO V5 gives them (docs/libagent.md,
+// "Inertial sensors"): GyroscopeX/Y/Z rad/s with GyroscopeZ NEGATIVE for an
+// anti-clockwise turn; AccelerometerX/Y/Z m/s^2 reading -9.81 on Z upright,
+// X > 0 leaning forward, Y > 0 leaning right; AngleX/Y rad (roll right,
+// pitch forward positive); GyrX/GyrY raw counts (134.6 per rad/s) and
+// AccX/Y/Z raw counts (65 per g), GyrRef 0.
 enum Sensor : int {
   AccX = 0, AccY, AccZ, GyrX, GyrY, GyrRef, AngleX, AngleY,
   GyroscopeX, GyroscopeY, GyroscopeZ, AccelerometerX, AccelerometerY, AccelerometerZ,

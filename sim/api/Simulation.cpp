@@ -16,6 +16,7 @@
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/FieldConfig.hpp"
 #include "sim/api/ConfigErrors.hpp"
+#include "sim/api/SimulationAccess.hpp"
 
 namespace simswift::api {
 
@@ -261,5 +262,9 @@ void Robot::teleport(double x, double y, double theta) {
   sim_->impl_->start();
   sim_->impl_->runner.placeRobot(index_, x, y, theta);
 }
+
+// The walk test kit's view of the runner (sim/api/SimulationAccess.hpp).
+const runner::Runner& SimulationAccess::runner(const Simulation& s) { return s.impl_->runner; }
+bool SimulationAccess::started(const Simulation& s) { return s.impl_->started; }
 
 }  // namespace simswift::api

@@ -90,7 +90,7 @@ std::string runSingleTrial(const Experiment& e, const TrialHooks& hooks, int tri
   if (trial < 0 || trial >= e.numTrials())
     throw BatchError("--trial " + std::to_string(trial) + ": the experiment has trials 0.." +
                      std::to_string(e.numTrials() - 1));
-  claimFolder(e, out_dir);
+  const FolderLock lock = claimFolder(e, out_dir);
   runAndWriteTrial(e, hooks, trial, out_dir);
   return readFile(trialFile(out_dir, trial, ".csv"));
 }
@@ -98,7 +98,8 @@ std::string runSingleTrial(const Experiment& e, const TrialHooks& hooks, int tri
 BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchOptions& opt) {
   checkBehaviours(e, hooks);  // before any trial: refuses what this build cannot run
   if (opt.shards < 1 || opt.shard < 1 || opt.shard > opt.shards) throw BatchError("bad shard");
-  claimFolder(e, opt.out_dir);
+  // Held to the end (and by the workers): no other run writes these trials meanwhile.
+  const FolderLock lock = claimFolder(e, opt.out_dir);
 
   BatchOutcome out;
   std::vector<int> todo;

@@ -2,6 +2,7 @@
 // resume, merge and the assembled results folder.
 //
 // Results folder (one per run):
+//   .lock                  flock of the run using the folder, and its pid (ResultsFolder.hpp)
 //   experiment.yaml        the experiment file's text (a rerun must match it)
 //   trials/trial_NNNNNN.csv          one results row, written last (temp + rename):
 //   trials/trial_NNNNNN.tracks.csv   its presence means the trial is done
@@ -53,7 +54,8 @@ struct BatchOutcome {
   std::string message;     // what to tell the user at the end
 };
 
-// Throws ConfigError (behaviours) or BatchError (folder of another experiment, I/O).
+// Throws ConfigError (behaviours), BatchInputError (a folder of another
+// experiment) or BatchError (a folder another run is using, I/O).
 BatchOutcome runBatch(const Experiment& e, const TrialHooks& hooks, const BatchOptions& opt);
 
 // Joins shard folders (same experiment file) into `out`; assembles if every

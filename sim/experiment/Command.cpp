@@ -30,7 +30,8 @@ const char* kExperimentUsage =
     "                     (to debug or repeat one trial; its seed is in results.csv)\n"
     "  --check            validate the file (and that this build runs its behaviours), run nothing\n"
     "\n"
-    "Exit codes: 0 done, 1 a trial or I/O failed, 2 bad command line or file, 130 interrupted.\n";
+    "Exit codes: 0 done; 1 a trial or I/O failed, or another run is using the --out folder;\n"
+    "2 bad command line or file (a folder of another experiment file included); 130 interrupted.\n";
 
 namespace {
 
@@ -134,6 +135,9 @@ int experimentMain(int argc, char** argv, const TrialHooks& hooks) {
     if (o.interrupted) return 130;
     return o.failed ? 1 : 0;
   } catch (const ConfigError& ex) {
+    std::fprintf(stderr, "simswift: %s\n", ex.what());
+    return 2;
+  } catch (const BatchInputError& ex) {  // a folder of another experiment: bad input too
     std::fprintf(stderr, "simswift: %s\n", ex.what());
     return 2;
   } catch (const std::exception& ex) {

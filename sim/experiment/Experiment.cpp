@@ -223,6 +223,8 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
         rob.behaviour = parseBehaviour(def_behaviour);
         rob.behaviour_where = def_where;
       } else {
+        r.checkMisspelling("behaviour");
+        s.checkMisspelling("behaviour");  // the setup's default, misspelt
         r.fail("behaviour", "missing: give the robot (or its setup) a behaviour: findball2016, findball2017, "
                             "striker or script");
       }
@@ -236,7 +238,8 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
       }
       rob.launch = r.has("program") ? readLaunch(r) : def_launch;
       if (rob.behaviour == Behaviour::Script) {
-        if (!r.has("actions")) r.fail("actions", "missing: a script robot needs an actions: list (as in a scenario)");
+        if (!r.has("actions"))
+          r.missing("actions", "missing: a script robot needs an actions: list (as in a scenario)");
         runner::readActions(r, rob.script);
       } else if (r.has("actions")) {
         r.fail("actions", "only a script robot takes actions (this one is " +
@@ -278,7 +281,11 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
     e.base.game = runner::readGame(*g, e.maxRobots());
   }
   top.finish();
-  if (e.numTrials() > 1000000) top.fail("trials_per_position", "more than 10^6 trials");
+  if (e.countTrials() > kMaxTrials)
+    top.fail("trials_per_position", std::to_string(e.setups.size()) + " setups x " + std::to_string(e.balls.size()) +
+                                        " positions x " + std::to_string(e.trials_per_position) + " = " +
+                                        std::to_string(e.countTrials()) + " trials is more than " +
+                                        std::to_string(kMaxTrials));
   return e;
 }
 
@@ -337,9 +344,10 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
     }
     tree.restore();
   }
-  if (e.numTrials() > 1000000)
-    throw ConfigError(source_name + ":" + std::to_string(e.sweep_line) + ": sweep: " + std::to_string(e.numTrials()) +
-                      " trials (cells x trials per cell) is more than 10^6");
+  if (e.countTrials() > kMaxTrials)
+    throw ConfigError(source_name + ":" + std::to_string(e.sweep_line) + ": sweep: " + std::to_string(e.numCells()) +
+                      " cells x " + std::to_string(e.countTrialsPerCell()) + " trials = " +
+                      std::to_string(e.countTrials()) + " trials is more than " + std::to_string(kMaxTrials));
   return e;
 }
 

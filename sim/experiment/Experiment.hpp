@@ -69,6 +69,10 @@
 
 namespace simswift::experiment {
 
+// Trials one experiment file may ask for (cells x setups x positions x
+// trials per position); more is refused when it is loaded.
+constexpr int64_t kMaxTrials = 1000000;
+
 // Behaviours an experiment may name (a scenario's `behaviour:`).
 // Whether this build can run one is the BehaviourFactory's call (TrialHooks).
 enum class Behaviour { FindBall2016, FindBall2017, Striker, Script };
@@ -155,10 +159,15 @@ struct Experiment {
   int numCells() const { return cells.empty() ? 1 : static_cast<int>(cells.size()); }
   // Cell c's experiment (this one without a sweep).
   const Experiment& cell(int c) const { return cells.empty() ? *this : *cells[c]; }
-  int trialsPerCell() const {
-    return static_cast<int>(setups.size() * balls.size()) * trials_per_position;
+  // Counted in 64 bits: a file's product (250 setups x 1000 positions x
+  // 10000 trials) overflows an int before the loader can refuse it.
+  int64_t countTrialsPerCell() const {
+    return static_cast<int64_t>(setups.size()) * static_cast<int64_t>(balls.size()) * trials_per_position;
   }
-  int numTrials() const { return numCells() * trialsPerCell(); }
+  int64_t countTrials() const { return numCells() * countTrialsPerCell(); }
+  // The same as int: a loaded experiment has at most kMaxTrials.
+  int trialsPerCell() const { return static_cast<int>(countTrialsPerCell()); }
+  int numTrials() const { return static_cast<int>(countTrials()); }
   int maxRobots() const;
 
   static Experiment loadFile(const std::string& path);

@@ -34,9 +34,8 @@ const Rgb kColours[] = {{0.90, 0.10, 0.10}, {0.15, 0.35, 0.95}, {1.00, 0.85, 0.1
                         {0.00, 0.85, 0.85}, {1.00, 0.55, 0.00}};
 Rgb colour(size_t i) { return kColours[i % (sizeof kColours / sizeof kColours[0])]; }
 
-// Runs gnuplot on DIR/<name>.gp in DIR (relative names: the script is the
-// same whatever the results folder is called). False with *message if
-// gnuplot is missing or fails.
+}  // namespace
+
 bool runGnuplot(const std::string& dir, const std::string& name, const std::string& what, std::string* message) {
   const std::string base = dir + "/" + name;
   const std::string gp = base + ".gp", gp_name = name + ".gp";
@@ -63,8 +62,6 @@ bool runGnuplot(const std::string& dir, const std::string& name, const std::stri
   unlink((base + ".gnuplot.log").c_str());
   return true;
 }
-
-}  // namespace
 
 void drawRoutes(const Experiment& e, int setup, const std::vector<RouteSamples>& robots, const std::string& png) {
   const FieldConfig& f = e.field;

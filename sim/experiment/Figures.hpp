@@ -38,4 +38,10 @@ bool plotFindTimes(const Experiment& e, int setup, const std::vector<TrialResult
 bool plotSweep(const Experiment& e, const std::vector<CellRow>& rows, int axis, const std::string& dir,
                std::string* message);
 
+// Runs gnuplot on DIR/<name>.gp in DIR (relative names: the script is the
+// same whatever the folder is called). False with *message if gnuplot is
+// missing or fails (`what` names the figure in the message). Also the walk
+// test kit's trace plot (sim/api/WalkTest.cpp).
+bool runGnuplot(const std::string& dir, const std::string& name, const std::string& what, std::string* message);
+
 }  // namespace simswift::experiment

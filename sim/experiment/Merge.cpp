@@ -14,9 +14,10 @@ BatchOutcome mergeRuns(const std::vector<std::string>& dirs, const std::string& 
   const std::string text = readFile(dirs[0] + "/experiment.yaml");
   for (const std::string& d : dirs)
     if (readFile(d + "/experiment.yaml") != text)
-      throw BatchError(d + "/experiment.yaml differs from " + dirs[0] + "/experiment.yaml: not shards of one experiment");
+      throw BatchInputError(d + "/experiment.yaml differs from " + dirs[0] +
+                            "/experiment.yaml: not shards of one experiment");
   const Experiment e = Experiment::parse(text, dirs[0] + "/experiment.yaml");
-  claimFolder(e, out_dir);
+  const FolderLock lock = claimFolder(e, out_dir);
   for (const std::string& d : dirs) {
     for (const std::string& f : listTrialFiles(d + "/trials")) {
       const std::string src = d + "/trials/" + f, dst = out_dir + "/trials/" + f;

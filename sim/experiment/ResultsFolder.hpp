@@ -10,10 +10,39 @@
 
 namespace simswift::experiment {
 
-// Creates dir/trials and claims the folder for `e`: its text is written
-// once to dir/experiment.yaml, then must match (BatchError if not).
-// Removes temporary files of writers that died mid-write.
-void claimFolder(const Experiment& e, const std::string& dir);
+// Exclusive use of a results folder while it lives: an flock on dir/.lock
+// (the file holds the holder's pid, for the message of a refused run). The
+// batch's forked workers inherit it, so the folder stays locked until the
+// last of them has ended (a worker outliving its batch included); launched
+// robot programs do not (close-on-exec).
+class FolderLock {
+ public:
+  FolderLock() = default;
+  // Throws BatchError naming the folder and the holder's pid when another
+  // process holds it. A holder whose run has ended (its pid is gone) but
+  // whose workers are still ending is waited for, up to kWorkerEndWait_s.
+  explicit FolderLock(const std::string& dir);
+  FolderLock(FolderLock&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
+  FolderLock& operator=(FolderLock&& o) noexcept;
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+  ~FolderLock();
+
+  // s: how long a refused run waits for a dead run's workers to end. They
+  // get SIGKILL from the kernel when their batch dies (PR_SET_PDEATHSIG):
+  // gone in milliseconds unless the machine is swamped.
+  static constexpr double kWorkerEndWait_s = 5.0;
+
+ private:
+  int fd_ = -1;
+};
+
+// Creates dir/trials, locks the folder (FolderLock) and claims it for `e`:
+// its text is written once to dir/experiment.yaml, then must match
+// (BatchInputError naming the folder and the first differing line if not).
+// Removes temporary files of writers that died mid-write. Keep the lock
+// for as long as the folder is written.
+[[nodiscard]] FolderLock claimFolder(const Experiment& e, const std::string& dir);
 
 // A trial is done once its results row (trial_NNNNNN.csv, written last) is there.
 bool trialDone(const std::string& dir, int trial);

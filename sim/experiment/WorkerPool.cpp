@@ -9,6 +9,7 @@
 #include <map>
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -42,8 +43,13 @@ void onSignal(int) { g_stop = 1; }
   int code = 0;
   try {
     if (private_shm) {
+      const pid_t parent = getppid();
       const std::string err = enterPrivateShm();
       if (!err.empty()) throw BatchError("a private /dev/shm for the trial: " + err);
+      // New credentials may clear the parent-death signal: set it again
+      // (and end if the batch died meanwhile).
+      prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (getppid() != parent) _exit(1);
     }
     runAndWriteTrial(e, hooks, t, dir);
   } catch (const ConfigError& ex) {
@@ -102,9 +108,18 @@ WorkerRun runWorkers(const Experiment& e, const TrialHooks& hooks, const std::st
   while ((next < todo.size() && !g_stop) || !running.empty()) {
     while (!g_stop && next < todo.size() && static_cast<int>(running.size()) < jobs) {
       const int t = todo[next++];
+      const pid_t parent = getpid();
       const pid_t pid = fork();
       if (pid < 0) throw BatchError(std::string("fork: ") + std::strerror(errno));
-      if (pid == 0) workerMain(e, hooks, dir, t, private_shm);
+      if (pid == 0) {
+        // The batch killed (kill -9 included): the worker goes too, and with
+        // it the programs it launched (their own PR_SET_PDEATHSIG,
+        // ProgramProcess.cpp). A batch that died before the prctl: we are
+        // already an orphan, so end now.
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent) _exit(1);
+        workerMain(e, hooks, dir, t, private_shm);
+      }
       running[pid] = t;
     }
     if (running.empty()) break;

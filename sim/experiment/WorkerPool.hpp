@@ -8,7 +8,9 @@
 //
 // Ctrl-C / SIGTERM: no further trial is launched, running ones end (they
 // get the terminal's SIGINT too; a signal to the parent alone is passed
-// on), every finished trial is kept.
+// on), every finished trial is kept. kill -9 of the parent alone: the
+// kernel kills every worker (PR_SET_PDEATHSIG) and so the robot programs
+// it launched (theirs, ProgramProcess.cpp); none runs on beside a resume.
 #pragma once
 
 #include <string>

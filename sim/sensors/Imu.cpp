@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agent/libagent/Inertial.hpp"
+
 namespace simswift::sensors {
+
+namespace la = agent::libagent;
 
 Eigen::Vector2d torsoRollPitch(const Eigen::Matrix3d& r) {
   // Row 2 of R holds the world-z components of the torso's axes.
@@ -12,16 +16,40 @@ Eigen::Vector2d torsoRollPitch(const Eigen::Matrix3d& r) {
   return {roll, pitch};
 }
 
-Eigen::Vector3d naoAccelerometer(const Eigen::Matrix3d& torso_to_world,
-                                 const Eigen::Vector3d& a_world, double gravity) {
+Eigen::Vector3d specificForce(const Eigen::Matrix3d& torso_to_world, const Eigen::Vector3d& a_world,
+                              double gravity) {
   const Eigen::Vector3d g_world(0, 0, -gravity);
-  return torso_to_world.transpose() * (g_world - a_world);
+  return torso_to_world.transpose() * (a_world - g_world);
 }
 
-ImuTruth ImuModel::update(const Eigen::Matrix3d& torso_to_world, const Eigen::Vector3d& omega_world,
-                          const Eigen::Vector3d& point_velocity_world, double dt, double gravity) {
+void writeV5InertialSlots(const ImuSample& m, int gyr_raw_sign, int acc_raw_sign, float* s) {
+  namespace S = la::Sensors;
+  namespace in = la::inertial;
+  // The calibrated values (rad/s, m/s^2) with the V5's signs.
+  double gyroscope[3], accelerometer[3];
+  for (int k = 0; k < 3; ++k) {
+    gyroscope[k] = in::kGyroscopeSign[k] * m.gyro[k];
+    accelerometer[k] = in::kAccelerometerSign[k] * m.specific_force[k];
+  }
+  for (int k = 0; k < 3; ++k) {
+    s[S::InertialSensor_GyroscopeX + k] = static_cast<float>(gyroscope[k]);
+    s[S::InertialSensor_AccelerometerX + k] = static_cast<float>(accelerometer[k]);
+    // The legacy raw accelerometer (counts) beside the m/s^2 values.
+    s[S::InertialSensor_AccX + k] =
+        static_cast<float>(acc_raw_sign * in::kAccCountsPerMetrePerSecondSquared * accelerometer[k]);
+  }
+  // The legacy raw gyrometer (counts): X and Y only, as on every NAO.
+  s[S::InertialSensor_GyrX] = static_cast<float>(gyr_raw_sign * in::kGyrCountsPerRadPerSecond * gyroscope[0]);
+  s[S::InertialSensor_GyrY] = static_cast<float>(gyr_raw_sign * in::kGyrCountsPerRadPerSecond * gyroscope[1]);
+  s[S::InertialSensor_GyrRef] = 0.0f;
+  s[S::InertialSensor_AngleX] = static_cast<float>(m.angle_x);
+  s[S::InertialSensor_AngleY] = static_cast<float>(m.angle_y);
+}
+
+ImuSample ImuModel::update(const Eigen::Matrix3d& torso_to_world, const Eigen::Vector3d& omega_world,
+                           const Eigen::Vector3d& point_velocity_world, double dt, double gravity) {
   if (!has_history_) reset(torso_to_world, point_velocity_world);
-  ImuTruth t;
+  ImuSample t;
   Eigen::Vector3d a_world = Eigen::Vector3d::Zero();
   if (dt > 0) a_world = (point_velocity_world - prev_velocity_) / dt;
   if (primed_ && dt > 0) {
@@ -37,7 +65,7 @@ ImuTruth ImuModel::update(const Eigen::Matrix3d& torso_to_world, const Eigen::Ve
   prev_velocity_ = point_velocity_world;
   primed_ = true;
 
-  t.accel = naoAccelerometer(torso_to_world, a_world, gravity);
+  t.specific_force = specificForce(torso_to_world, a_world, gravity);
   const Eigen::Vector2d rp = torsoRollPitch(torso_to_world);
   t.angle_x = rp.x();
   t.angle_y = rp.y();

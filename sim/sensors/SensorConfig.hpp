@@ -32,6 +32,13 @@ struct SensorConfig {
   NoiseSpec encoder{0.0, 0.0};   // rad, before quantisation (the MRE's own noise
                                  // is below one count, so quantisation is the error)
 
+  // ---- The V5's legacy raw inertial values, GyrX/GyrY and AccX/Y/Z (counts;
+  // agent/libagent/Inertial.hpp): their sign against GyroscopeX/Y and
+  // AccelerometerX/Y/Z is not settled by a public source. +1 (default) = the
+  // same sign as the calibrated values, -1 = the opposite.
+  int gyr_raw_sign = +1;
+  int acc_raw_sign = +1;
+
   // ---- Joint encoders: the NAO V5 reads joint angles with 12-bit magnetic
   // rotary encoders on the joint axis, 4096 counts per turn.
   double encoder_step = 2.0 * M_PI / 4096.0;  // rad per count; <= 0 = no quantisation
@@ -76,6 +83,11 @@ struct SensorConfig {
     nonneg("fsr.sigma", fsr.sigma);
     nonneg("sonar.sigma", sonar.sigma);
     nonneg("encoder.sigma", encoder.sigma);
+    auto sign = [&](const char* field, int v) {
+      if (v != 1 && v != -1) fail(field, "must be +1 or -1, got " + std::to_string(v));
+    };
+    sign("gyr_raw_sign", gyr_raw_sign);
+    sign("acc_raw_sign", acc_raw_sign);
     if (!std::isfinite(encoder_step)) fail("encoder_step", "must be finite");
     positive("fsr_max", fsr_max);
     nonneg("fsr_unloaded", fsr_unloaded);

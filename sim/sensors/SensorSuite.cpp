@@ -139,30 +139,19 @@ void SensorSuite::updateImu(const World& world, double dt) {
   const RobotBody& body = world.robot(robot_);
   const int torso = body.model().rootLink();
   const Eigen::Isometry3d pose = body.linkPose(torso);
-  const ImuTruth t = imu_.update(pose.linear(), body.linkAngularVelocity(torso),
-                                 body.linkLinearVelocity(torso, accelerometerPoint()), dt,
-                                 world.config().gravity);
+  const ImuSample t = imu_.update(pose.linear(), body.linkAngularVelocity(torso),
+                                  body.linkLinearVelocity(torso, accelerometerPoint()), dt,
+                                  world.config().gravity);
+  // Noise in the sensors' own axes, before the V5's signs and scales.
   const bool on = config_.noise;
-  Eigen::Vector3d gyro, acc;
+  ImuSample m;
   for (int k = 0; k < 3; ++k) {
-    gyro[k] = gyro_noise_.perturb(t.gyro[k], config_.gyro.sigma, config_.gyro.bias, on);
-    acc[k] = accel_noise_.perturb(t.accel[k], config_.accel.sigma, config_.accel.bias, on);
+    m.gyro[k] = gyro_noise_.perturb(t.gyro[k], config_.gyro.sigma, config_.gyro.bias, on);
+    m.specific_force[k] = accel_noise_.perturb(t.specific_force[k], config_.accel.sigma, config_.accel.bias, on);
   }
-  const double ax = angle_noise_.perturb(t.angle_x, config_.angle.sigma, config_.angle.bias, on);
-  const double ay = angle_noise_.perturb(t.angle_y, config_.angle.sigma, config_.angle.bias, on);
-
-  // The Acc*/Gyr* and Accelerometer*/Gyroscope* slots carry the same
-  // samples (the NAO V5 reports both in SI units); GyrRef is unused.
-  auto& s = reading_.sensors;
-  s[S::InertialSensor_AccX] = s[S::InertialSensor_AccelerometerX] = static_cast<float>(acc.x());
-  s[S::InertialSensor_AccY] = s[S::InertialSensor_AccelerometerY] = static_cast<float>(acc.y());
-  s[S::InertialSensor_AccZ] = s[S::InertialSensor_AccelerometerZ] = static_cast<float>(acc.z());
-  s[S::InertialSensor_GyrX] = s[S::InertialSensor_GyroscopeX] = static_cast<float>(gyro.x());
-  s[S::InertialSensor_GyrY] = s[S::InertialSensor_GyroscopeY] = static_cast<float>(gyro.y());
-  s[S::InertialSensor_GyroscopeZ] = static_cast<float>(gyro.z());
-  s[S::InertialSensor_GyrRef] = 0.0f;
-  s[S::InertialSensor_AngleX] = static_cast<float>(ax);
-  s[S::InertialSensor_AngleY] = static_cast<float>(ay);
+  m.angle_x = angle_noise_.perturb(t.angle_x, config_.angle.sigma, config_.angle.bias, on);
+  m.angle_y = angle_noise_.perturb(t.angle_y, config_.angle.sigma, config_.angle.bias, on);
+  writeV5InertialSlots(m, config_.gyr_raw_sign, config_.acc_raw_sign, reading_.sensors.data());
 }
 
 void SensorSuite::updateFeet(const World& world) {

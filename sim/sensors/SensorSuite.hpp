@@ -1,8 +1,8 @@
 // All non-camera sensors of one simulated NAO, computed from the ODE world
 // once per 10 ms tick (call update() right after World::step()). The output
 // is in libagent order (agent/libagent/AgentShared.hpp) and units: rad,
-// rad/s, m/s^2, N (FSRs; copyToAgent() converts them to the NAO's kg), m,
-// deg C, A.
+// rad/s, m/s^2 (inertial slots as a V5 gives them: Imu.hpp), N (FSRs;
+// copyToAgent() converts them to the NAO's kg), m, deg C, A.
 //
 // Per-sensor models and conventions live beside their code: Imu.hpp (axes
 // and signs), Fsr.hpp, JointEncoders.hpp, Sonar.hpp, Buttons.hpp,
@@ -39,8 +39,8 @@ struct SensorReading {
 };
 
 // Copies a reading into a libagent sensor slot, in the NAO's units: the
-// FSRs go from N to kg (la::kFsrNewtonsPerKilogram), all else is already
-// as the NAO reports it. The slot's stiffnesses are left as they are (the
+// FSRs go from N to kg (la::kFsrNewtonsPerKilogram), all else (the inertial
+// slots too) is already as the NAO reports it. The slot's stiffnesses are left as they are (the
 // bridge echoes the commanded ones).
 void copyToAgent(const SensorReading& reading, la::SensorValues& out);
 

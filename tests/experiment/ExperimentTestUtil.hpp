@@ -4,10 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -54,6 +59,55 @@ inline simswift::experiment::BatchOutcome runInto(const simswift::experiment::Ex
   o.shards = shards;
   o.progress = simswift::experiment::BatchOptions::Progress::None;
   return simswift::experiment::runBatch(e, simswift::experiment::behaviourHooks(), o);
+}
+
+// /proc/<pid>/stat's state letter and parent pid; false if there is no such process.
+inline bool procStat(pid_t pid, char* state, pid_t* ppid) {
+  const std::string stat = readAll("/proc/" + std::to_string(pid) + "/stat");
+  const size_t paren = stat.rfind(')');  // the command may hold spaces and parentheses
+  if (paren == std::string::npos) return false;
+  std::istringstream in(stat.substr(paren + 1));
+  long parent = 0;
+  in >> *state >> parent;
+  *ppid = static_cast<pid_t>(parent);
+  return static_cast<bool>(in);
+}
+
+// Alive: there, and not a zombie (an orphan's zombie waits for a reaper that
+// a container's pid 1 may never be).
+inline bool processAlive(pid_t pid) {
+  char state = 0;
+  pid_t ppid = 0;
+  return procStat(pid, &state, &ppid) && state != 'Z';
+}
+
+// The live processes whose parent is `pid`.
+inline std::vector<pid_t> childrenOf(pid_t pid) {
+  std::vector<pid_t> out;
+  for (const auto& p : std::filesystem::directory_iterator("/proc")) {
+    const std::string name = p.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    char state = 0;
+    pid_t ppid = 0;
+    const pid_t child = static_cast<pid_t>(std::stol(name));
+    if (procStat(child, &state, &ppid) && ppid == pid && state != 'Z') out.push_back(child);
+  }
+  return out;
+}
+
+// Waits until every process in `pids` has ended, up to `seconds` (wall
+// clock); returns those still alive.
+inline std::vector<pid_t> stillAliveAfter(const std::vector<pid_t>& pids, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  std::vector<pid_t> alive;
+  do {
+    alive.clear();
+    for (pid_t p : pids)
+      if (processAlive(p)) alive.push_back(p);
+    if (alive.empty()) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  } while (std::chrono::steady_clock::now() < deadline);
+  return alive;
 }
 
 inline std::string simswiftBinary() { return std::string(SIMSWIFT_BINARY_DIR) + "/simswift"; }

@@ -19,6 +19,7 @@
 
 #include "sim/experiment/Batch.hpp"
 #include "sim/experiment/Report.hpp"
+#include "sim/experiment/ResultsFolder.hpp"
 #include "sim/experiment/Trial.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
 
@@ -53,6 +54,48 @@ std::vector<std::string> split(const std::string& s, char sep) {
   while (std::getline(in, cur, sep)) out.push_back(cur);
   if (!s.empty() && s.back() == sep) out.push_back("");
   return out;
+}
+
+// tinyExperiment without its found ball: the robot never finds position 2,
+// so every trial runs its whole time limit (3600 s simulated: tens of
+// seconds of wall clock, far longer than the tests below wait).
+std::string neverFound(int trials) {
+  std::string s = exptest::tinyExperiment(trials, 3600.0);
+  const std::string found = "  - {position: 1, x: 0.7, y: 0.0}\n";
+  s.erase(s.find(found), found.size());
+  return s;
+}
+
+// `simswift experiment FILE --out OUT ARGS... --progress none` in its own
+// process group (for the cleanup only), stderr into `err`.
+pid_t startBatch(const std::string& file, const std::string& out, std::vector<std::string> args,
+                 const std::string& err) {
+  const std::string bin = exptest::simswiftBinary();
+  std::vector<std::string> all = {bin, "experiment", file, "--out", out, "--progress", "none"};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setpgid(0, 0);
+    if (!freopen(err.c_str(), "w", stderr)) _exit(126);
+    execv(bin.c_str(), argv.data());
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  return pid;
+}
+
+// Waits up to `seconds` for `n` live children of `pid` (its workers).
+std::vector<pid_t> waitForWorkers(pid_t pid, size_t n, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  std::vector<pid_t> w = exptest::childrenOf(pid);
+  while (w.size() < n && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    w = exptest::childrenOf(pid);
+  }
+  return w;
 }
 
 std::string trim(const std::string& s) {
@@ -184,6 +227,138 @@ TEST(Batch, KillMinus9ThenResumeEqualsUninterruptedRun) {
   const Experiment e = Experiment::loadFile(file);
   ASSERT_TRUE(runInto(e, clean, 2).assembled);
   expectSameResults(clean, out);
+}
+
+// kill -9 of the batch's own process alone (not its group, as `kill -9
+// <pid>` does): its workers die with it (PR_SET_PDEATHSIG), and the folder
+// is free at once for a resume. Before issue 34 they ran on under pid 1,
+// and a resume ran their trials a second time beside them.
+TEST(Batch, KillMinus9OfTheBatchAloneEndsItsWorkers) {
+  const std::string dir = exptest::freshDir("orphans");
+  const std::string file = dir + "/long.yaml", out = dir + "/out";
+  exptest::writeAll(file, neverFound(2));
+  const pid_t pid = startBatch(file, out, {"--jobs", "2"}, dir + "/err.txt");
+  ASSERT_GT(pid, 0);
+  const std::vector<pid_t> workers = waitForWorkers(pid, 2, 60);
+  ASSERT_EQ(workers.size(), 2u) << "the batch did not start two workers within 60 s: " << readAll(dir + "/err.txt");
+  kill(pid, SIGKILL);  // the batch alone
+  waitpid(pid, nullptr, 0);
+  // The kernel kills them as their parent exits: milliseconds; 5 s is slack
+  // for a loaded machine (a trial runs far longer).
+  const std::vector<pid_t> left = exptest::stillAliveAfter(workers, 5.0);
+  EXPECT_TRUE(left.empty()) << left.size() << " worker(s) outlived their killed batch, e.g. pid " << left[0];
+  kill(-pid, SIGKILL);  // whatever is left of the group: the test's own cleanup
+  EXPECT_FALSE(exptest::fileExists(out + "/results.csv"));
+  if (left.empty()) {
+    EXPECT_NO_THROW(FolderLock{out}) << "the folder is still locked after its run and workers died";
+  }
+}
+
+// Two runs of the same shard into one folder at once: the second is refused
+// before it runs anything, naming the folder and the first run's pid (exit
+// code 1, as an I/O failure: the same command succeeds once the first run
+// has ended). Before issue 34 both ran every trial and both exited 0.
+TEST(Batch, ASecondRunIntoAFolderInUseIsRefusedNamingTheHolder) {
+  const std::string dir = exptest::freshDir("busy");
+  const std::string file = dir + "/long.yaml", out = dir + "/out";
+  exptest::writeAll(file, neverFound(2));
+  const pid_t first = startBatch(file, out, {"--jobs", "1", "--shard", "1/2"}, dir + "/first.txt");
+  ASSERT_GT(first, 0);
+  ASSERT_EQ(waitForWorkers(first, 1, 60).size(), 1u) << "no worker within 60 s: " << readAll(dir + "/first.txt");
+  const pid_t second = startBatch(file, out, {"--jobs", "1", "--shard", "1/2"}, dir + "/second.txt");
+  ASSERT_GT(second, 0);
+  int status = 0;
+  pid_t ended = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while ((ended = waitpid(second, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  if (ended == 0) {
+    kill(-second, SIGKILL);
+    waitpid(second, nullptr, 0);
+  }
+  EXPECT_TRUE(exptest::processAlive(first)) << "the first run ended: " << readAll(dir + "/first.txt");
+  kill(-first, SIGKILL);
+  waitpid(first, nullptr, 0);
+  ASSERT_EQ(ended, second) << "the second run was still running after 30 s (it ran the first run's trials)";
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const std::string err = readAll(dir + "/second.txt");
+  EXPECT_NE(err.find(out + " is in use by another simswift run (pid " + std::to_string(first) + ")"), std::string::npos)
+      << err;
+  EXPECT_FALSE(exptest::fileExists(trialFile(out, 0, ".csv")));
+}
+
+// The lock in one process: a second claim on a held folder is refused with
+// this process's pid; released, the folder can be claimed again.
+TEST(Batch, AFolderLockIsExclusiveUntilReleased) {
+  const std::string dir = exptest::freshDir("lock");
+  const Experiment e = Experiment::parse(exptest::tinyExperiment(1), "tiny.yaml");
+  {
+    const FolderLock held = claimFolder(e, dir);
+    try {
+      const FolderLock again = claimFolder(e, dir);
+      ADD_FAILURE() << "claimed twice";
+    } catch (const BatchError& err) {
+      EXPECT_EQ(std::string(err.what()).rfind(dir + " is in use by another simswift run (pid " +
+                                                  std::to_string(getpid()) + ")", 0),
+                0u)
+          << err.what();
+    }
+  }
+  EXPECT_NO_THROW(FolderLock{dir});
+}
+
+// A run killed with kill -9 leaves its folder locked only while its workers
+// are still dying (they inherited the lock): the next run waits for them
+// (here a "worker" that ends 0.5 s after its run died) instead of refusing.
+TEST(Batch, ALockHeldByADeadRunsLastWorkerIsWaitedFor) {
+  const std::string dir = exptest::freshDir("dying");
+  int started[2];
+  ASSERT_EQ(pipe(started), 0);
+  const pid_t run = fork();
+  ASSERT_GE(run, 0);
+  if (run == 0) {
+    const FolderLock held(dir);
+    if (fork() == 0) {  // the worker: holds the inherited lock a little longer
+      const char c = 'w';
+      if (write(started[1], &c, 1) != 1) _exit(1);
+      usleep(500000);
+      _exit(0);
+    }
+    _exit(0);  // the run dies first
+  }
+  close(started[1]);
+  char c = 0;
+  ASSERT_EQ(read(started[0], &c, 1), 1);
+  close(started[0]);
+  waitpid(run, nullptr, 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_NO_THROW(FolderLock{dir});
+  const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_GT(waited, 0.1) << "the lock was free at once: the worker did not hold it";
+  EXPECT_LT(waited, FolderLock::kWorkerEndWait_s);
+}
+
+// Rerunning into a folder of another experiment file is bad input (exit 2,
+// as a bad file), and the message names the folder and the first
+// difference. It was exit 1 before issue 34.
+TEST(Batch, AFolderOfAnotherExperimentIsRefusedAsBadInput) {
+  const std::string dir = exptest::freshDir("other");
+  const std::string out = dir + "/out", file = dir + "/tiny.yaml";
+  { const FolderLock claimed = claimFolder(Experiment::parse(exptest::tinyExperiment(2), "first.yaml"), out); }
+  exptest::writeAll(file, exptest::tinyExperiment(1));
+  const std::string cmd = exptest::simswiftBinary() + " experiment '" + file + "' --out '" + out +
+                          "' --progress none 2> '" + dir + "/err.txt'";
+  const int rc = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+  const std::string err = readAll(dir + "/err.txt");
+  EXPECT_NE(err.find(out + " holds results of a different experiment file: " + out + "/experiment.yaml differs from " +
+                     file + " (first at line 4: 'trials_per_position: 2' in " + out +
+                     "/experiment.yaml, 'trials_per_position: 1' in " + file + ")"),
+            std::string::npos)
+      << err;
+  EXPECT_FALSE(exptest::fileExists(trialFile(out, 0, ".csv")));
 }
 
 // report.md's table rows recomputed here from results.csv: tests, found,

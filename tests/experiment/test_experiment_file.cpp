@@ -97,6 +97,38 @@ TEST(ExperimentFile, MissingFields) {
               "missing");  // line 11: the line above went
 }
 
+// A misspelt key is named at its own line with the key it resembles, not
+// reported as a missing key at the map's first line (issue 34 item 5): a
+// required one (top level and in a robot), the setup's default behaviour
+// (it was "missing" at the robot's line), one required only for a script
+// robot, and an optional one.
+TEST(ExperimentFile, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
+  auto expectExactly = [](const std::string& text, const std::string& want) {
+    const std::string msg = errorOf(text);
+    EXPECT_EQ(msg, want) << text;
+  };
+  expectExactly(replaced(kGood, "trials_per_position: 1", "trials_per_positon: 1"),
+                "bad.yaml:4: unknown key 'trials_per_positon' in <document> (did you mean trials_per_position? a "
+                "required key, missing)");
+  expectExactly(replaced(kGood, "player: 3, x: -1.0, y: 1.0, theta: 0.0", "player: 3, x: -1.0, y: 1.0, Theta: 0.0"),
+                "bad.yaml:13: unknown key 'Theta' in setups[0].robots[1] (did you mean theta? a required key, "
+                "missing)");
+  expectExactly(replaced(kGood, "    behaviour: script\n", "    behavoiur: script\n"),
+                "bad.yaml:10: unknown key 'behavoiur' in setups[0] (did you mean behaviour? a required key, "
+                "missing)");
+  const std::string robot0 = "theta: 0.0, actions: [{t: 0, action: stand}]}\n      - {team: 19, player: 3";
+  const std::string no_actions = replaced(kGood, robot0, "theta: 0.0, acitons: [{t: 0, action: stand}]}\n"
+                                                         "      - {team: 19, player: 3");
+  expectExactly(no_actions, "bad.yaml:12: unknown key 'acitons' in setups[0].robots[0] (did you mean actions? a "
+                            "required key, missing)");
+  const std::string msg = errorOf(replaced(kGood, "found: {distance: 0.3}", "found: {distnace: 0.3}"));
+  EXPECT_EQ(msg.rfind("bad.yaml:5: unknown key 'distnace' in found (did you mean distance?); expected one of ", 0),
+            0u) << msg;
+  // Short keys get no guess (x / y are both keys): still "missing".
+  expectError(replaced(kGood, "player: 3, x: -1.0, y: 1.0", "player: 3, z: -1.0, y: 1.0"),
+              "bad.yaml:13: setups[0].robots[1].x", "missing required key");
+}
+
 TEST(ExperimentFile, ZeroTimeLimit) {
   expectError(replaced(kGood, "time_limit: 10", "time_limit: 0"), "bad.yaml:3: time_limit", "must be > 0");
 }

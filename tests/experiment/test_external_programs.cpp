@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "ExperimentTestUtil.hpp"
 #include "sim/experiment/Batch.hpp"
@@ -186,4 +187,47 @@ TEST(ExternalExperiment, KillMinus9LeavesNothingAndResumeEqualsOneWorker) {
   EXPECT_EQ(readAll(out + "/results.csv"), readAll(d + "/one/results.csv"));
   EXPECT_FALSE(readAll(d + "/one/results.csv").empty());
   EXPECT_EQ(shmObjects("1069"), 0);
+}
+
+// kill -9 of the batch's own process alone (not its group): its workers die
+// with it, and their launched programs with them (PR_SET_PDEATHSIG on each
+// level). Before issue 34 the workers, and so their simswift-agents, ran on
+// under pid 1.
+TEST(ExternalExperiment, KillMinus9OfTheBatchAloneEndsWorkersAndPrograms) {
+  const std::string d = exptest::freshDir("alone");
+  std::string text = tinyLaunched(2, 3600.0);  // position 2 is never found: 3600 s simulated
+  const std::string found = "  - {position: 1, x: 0.7, y: 0.0}\n";
+  text.erase(text.find(found), found.size());  // so every trial runs far longer than this test waits
+  exptest::writeAll(d + "/k.yaml", text);
+  const std::string out = d + "/out";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    setpgid(0, 0);  // for the cleanup only
+    const std::string bin = exptest::simswiftBinary();
+    if (!freopen("/dev/null", "w", stderr)) _exit(126);
+    execl(bin.c_str(), bin.c_str(), "experiment", (d + "/k.yaml").c_str(), "--out", out.c_str(), "--jobs", "2",
+          "--progress", "none", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  // Once a program runs (it has written its setup file), the workers are known.
+  const auto deadline = Clock::now() + std::chrono::seconds(60);
+  while (!exptest::fileExists(out + "/trials/0/t97p2.robot.yaml") && Clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // its simswift-agent started
+  const std::vector<pid_t> workers = exptest::childrenOf(pid);
+  ASSERT_FALSE(workers.empty()) << "no worker";
+  const int programs = processesMentioning(out + "/trials");
+  kill(pid, SIGKILL);  // the batch alone
+  waitpid(pid, nullptr, 0);
+  const std::vector<pid_t> left = exptest::stillAliveAfter(workers, 5.0);
+  const auto gone = Clock::now() + std::chrono::seconds(5);
+  while (processesMentioning(out + "/trials") > 0 && Clock::now() < gone)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const int programs_left = processesMentioning(out + "/trials");
+  kill(-pid, SIGKILL);  // the test's own cleanup of anything left (the programs go with their workers)
+  EXPECT_GT(programs, 0) << "no launched program was running: the test proves nothing about them";
+  EXPECT_TRUE(left.empty()) << left.size() << " worker(s) outlived their killed batch";
+  EXPECT_EQ(programs_left, 0) << "a launched program outlived its batch";
 }

@@ -123,6 +123,29 @@ TEST(InputLimits, OversizeAndBinaryExperimentFilesAreRefusedWithTheirLine) {
   EXPECT_NE(msg.find("/scenarios:1: is a directory"), std::string::npos) << msg;
 }
 
+// setups x positions x trials_per_position counted in 64 bits (issue 34
+// item 3): 250 x 1000 x 10000 = 2.5e9 wrapped to a negative int and passed
+// the 10^6 check; 250 x 1000 x 4 = 10^6 exactly is the largest accepted.
+TEST(InputLimits, TrialCountsBeyondAnIntAreRefusedAtTheirKey) {
+  auto file = [](int trials) {
+    std::ostringstream s;
+    s << "name: huge\nseed: 1\ntime_limit: 10\ntrials_per_position: " << trials << "\nballs:\n";  // line 4
+    for (int k = 0; k < 1000; ++k)  // a 40 x 25 grid, 0.2 m apart (m, field frame)
+      s << "  - {position: " << k + 1 << ", x: " << -4.0 + 0.2 * (k % 40) << ", y: " << -2.5 + 0.2 * (k / 40) << "}\n";
+    s << "setups:\n";
+    for (int k = 0; k < 250; ++k)  // the robot beyond the grid's last row (y = 2.3 m)
+      s << "  - {name: s" << k << ", behaviour: script, robots: [{team: 19, player: 2, x: 0, y: 3.2, theta: 0, "
+        << "actions: [{t: 0, action: stand}]}]}\n";
+    return s.str();
+  };
+  const std::string msg = errorOf(file(10000));
+  EXPECT_EQ(msg, "bad.yaml:4: trials_per_position: 250 setups x 1000 positions x 10000 = 2500000000 trials is more "
+                 "than 1000000") << msg;
+  const Experiment e = Experiment::parse(file(4), "ok.yaml");
+  EXPECT_EQ(e.numTrials(), 1000000);
+  EXPECT_EQ(e.countTrials(), kMaxTrials);
+}
+
 TEST(InputLimits, ShippedInputsStillLoad) {
   const fs::path src = SIMSWIFT_SOURCE_DIR;
   EXPECT_NO_THROW(RobotModel::loadUrdf((src / "models" / "nao_v5.urdf").string()));

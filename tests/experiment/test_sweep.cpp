@@ -273,7 +273,7 @@ TEST(Sweep, BadSweepsAreRefusedAtTheirLine) {
   std::string sixty = "[0";
   for (int i = 1; i < 60; ++i) sixty += ", " + std::to_string(i);
   expectError(exptest::tinyExperiment(10000) + "sweep:\n  team_comms.delay_ms: " + sixty + "]\n", "bad.yaml:16: sweep",
-              "1200000 trials (cells x trials per cell) is more than 10^6");
+              "60 cells x 20000 trials = 1200000 trials is more than 1000000");
   // 11 x 11 x 11 = 1331 cells.
   const std::string eleven = "[0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1]";
   expectError(kTiny + "sweep:\n  team_comms.loss: " + eleven + "\n  vision.ball.p_near: " + eleven +

@@ -7,18 +7,18 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "sim/runner/HeadingDrift.hpp"
-#include "sim/runner/StanceSlip.hpp"
+#include "sim/api/WalkSampling.hpp"
+#include "simswift/WalkTest.hpp"
 #include "tests/runner/motion_harness.hpp"
 
 using agent::blackboard::ActionType;
 using motion_test::MotionHarness;
 using motion_test::Pose2;
-using motion_test::wrapAngle;
 
 namespace {
 
-// Displacement from a to b in a's heading frame (m): forward, left.
+// Displacement from a to b in a's heading frame (m): forward, left (the
+// odometry checks; the walk's achieved figures come from the kit's meter).
 void relative(const Pose2& a, const Pose2& b, double* fwd, double* left) {
   const double c = std::cos(a.theta), s = std::sin(a.theta);
   const double dx = b.x - a.x, dy = b.y - a.y;
@@ -27,16 +27,20 @@ void relative(const Pose2& a, const Pose2& b, double* fwd, double* left) {
 }
 
 // Walks at the command (mm/s, rad/s) for 2 s to reach speed, then `seconds`
-// more, measured: the displacement over those seconds in the heading frame
-// at their start (m). False if the robot fell.
-bool walkMeasured(MotionHarness& h, double forward, double left, double turn, double seconds, double* fwd,
-                  double* lft) {
+// more, measured by the walk test kit's meter (include/simswift/WalkTest.hpp:
+// achieved mm/s and rad/s in the heading frame at the window's start, heading
+// slope, stance slip). *ok: false if the robot fell.
+simswift::WalkFigures walkMeasured(MotionHarness& h, double forward, double left, double turn, double seconds,
+                                   bool* ok) {
   h.request(ActionType::WALK, forward, left, turn);
-  bool ok = h.run(2.0);
-  const Pose2 p0 = h.pose();
-  ok = h.run(seconds) && ok;
-  relative(p0, h.pose(), fwd, lft);
-  return ok;
+  *ok = h.run(2.0);
+  simswift::WalkMeter meter;
+  meter.begin(simswift::api::walkSample(h.runner(), 0), {forward, left, turn});
+  for (long i = 0; i < std::lround(seconds / 0.01); ++i) {
+    *ok = h.run(0.01) && *ok;
+    meter.add(simswift::api::walkSample(h.runner(), 0));
+  }
+  return meter.figures();
 }
 
 }  // namespace
@@ -56,13 +60,13 @@ TEST(MotionPhysics, WalkForwardFullSpeed) {
   MotionHarness h(11, -4.0, 0.0, 0.0);
   h.request(ActionType::STAND);
   ASSERT_TRUE(h.run(1.0));
-  double fwd, left;
-  const bool ok = walkMeasured(h, 300, 0, 0, 20.0, &fwd, &left);
+  bool ok;
+  const simswift::WalkFigures f = walkMeasured(h, 300, 0, 0, 20.0, &ok);
   std::printf("[motion] forward 300 mm/s x 20 s: %.0f mm/s (%.0f %%), drift %.0f mm (%.0f %% of distance)\n",
-              fwd / 20 * 1000, fwd / 20 / 0.3 * 100, left * 1000, std::fabs(left / fwd) * 100);
+              f.forward, f.forward_ratio * 100, f.left * 20, std::fabs(f.left / f.forward) * 100);
   EXPECT_TRUE(ok) << "fell";
-  EXPECT_GE(fwd / 20.0, 0.9 * 0.3);
-  EXPECT_LE(std::fabs(left), 0.1 * std::fabs(fwd));
+  EXPECT_GE(f.forward_ratio, 0.9) << f.summary();
+  EXPECT_LE(std::fabs(f.left), 0.1 * std::fabs(f.forward)) << f.summary();
   EXPECT_EQ(h.checked().limit_violations, 0);
   EXPECT_EQ(h.checked().speed_violations, 0);
 }
@@ -72,30 +76,47 @@ TEST(MotionPhysics, SideStepFullSpeed) {
   MotionHarness h(12);
   h.request(ActionType::STAND);
   ASSERT_TRUE(h.run(1.0));
-  double fwd, left;
-  const bool ok = walkMeasured(h, 0, 200, 0, 8.0, &fwd, &left);
-  std::printf("[motion] left 200 mm/s x 8 s: %.0f mm/s (%.0f %%), forward drift %.0f mm\n", left / 8 * 1000,
-              left / 8 / 0.2 * 100, fwd * 1000);
+  bool ok;
+  const simswift::WalkFigures f = walkMeasured(h, 0, 200, 0, 8.0, &ok);
+  std::printf("[motion] left 200 mm/s x 8 s: %.0f mm/s (%.0f %%), forward drift %.0f mm\n", f.left,
+              f.left_ratio * 100, f.forward * 8);
   EXPECT_TRUE(ok) << "fell";
-  EXPECT_GE(left / 8.0, 0.85 * 0.2);
+  EXPECT_GE(f.left_ratio, 0.85) << f.summary();
 }
 
+// The turn's odometry too: the program's (gyro heading rate while stepping)
+// and an unchanged rUNSWift 2017/2018 MotionOdometry's gyro turn, -0.01 x
+// GyroscopeZ per 10 ms frame (before its 0.95 pessimism), read from the slots
+// the body published: both must turn the way the robot turns (the V5's
+// GyroscopeZ is negative for an anti-clockwise turn; agent/libagent/Inertial.hpp).
 TEST(MotionPhysics, TurnInPlaceFullSpeed) {
   MotionHarness h(13);
   h.request(ActionType::STAND);
   ASSERT_TRUE(h.run(1.0));
   h.request(ActionType::WALK, 0, 0, 0.8);
   bool ok = h.run(2.0);
+  simswift::WalkMeter meter;
+  meter.begin(simswift::api::walkSample(h.runner(), 0), {0, 0, 0.8});
   double turned = 0, last = h.pose().theta;
+  double odometry = 0, odometry_last = h.state().odometry.theta, runswift = 0;  // rad
   for (int i = 0; i < 800; ++i) {
     ok = h.run(0.01) && ok;
+    meter.add(simswift::api::walkSample(h.runner(), 0));
     const double th = h.pose().theta;
     turned += wrapAngle(th - last);
     last = th;
+    odometry += wrapAngle(h.state().odometry.theta - odometry_last);
+    odometry_last = h.state().odometry.theta;
+    runswift += -0.01 * h.checked().last_sensed.sensors[agent::libagent::Sensors::InertialSensor_GyroscopeZ];
   }
-  std::printf("[motion] turn 0.8 rad/s x 8 s: %.3f rad/s (%.0f %%)\n", turned / 8, turned / 8 / 0.8 * 100);
+  const simswift::WalkFigures f = meter.figures();
+  std::printf("[motion] turn 0.8 rad/s x 8 s: %.3f rad/s (%.0f %%); odometry %.3f of it, rUNSWift's gyro "
+              "odometry %.3f of it\n",
+              f.turn, f.turn_ratio * 100, odometry / turned, runswift / turned);
   EXPECT_TRUE(ok) << "fell";
-  EXPECT_GE(turned / 8.0, 0.85 * 0.8);
+  EXPECT_GE(f.turn_ratio, 0.85) << f.summary();
+  EXPECT_NEAR(odometry / turned, 1.0, 0.03);
+  EXPECT_NEAR(runswift / turned, 1.0, 0.05);
 }
 
 // A new random command every 2 s (seeded) for 60 s: no fall.
@@ -190,31 +211,20 @@ TEST(MotionPhysics, OdometryAfterThreeMetres) {
 TEST(MotionPhysics, WalkSlowForwardAndCombined) {
   for (uint64_t seed : {21, 22}) {
     MotionHarness h(seed);
-    double fwd, left;
-    const bool ok = walkMeasured(h, 100, 0, 0, 8.0, &fwd, &left);
+    bool ok;
+    const simswift::WalkFigures f = walkMeasured(h, 100, 0, 0, 8.0, &ok);
     std::printf("[motion] forward 100 mm/s x 8 s, seed %llu: %.0f %%\n", static_cast<unsigned long long>(seed),
-                fwd / 8 / 0.1 * 100);
+                f.forward_ratio * 100);
     EXPECT_TRUE(ok);
-    EXPECT_GE(fwd / 8.0, 0.9 * 0.1) << "seed " << seed;
+    EXPECT_GE(f.forward_ratio, 0.9) << "seed " << seed;
   }
   for (uint64_t seed : {23, 24}) {
     MotionHarness h(seed);
-    h.request(ActionType::WALK, 200, 100, 0);
-    bool ok = h.run(2.0);
-    const Pose2 p0 = h.pose();
-    // Heading every tick (unwrapped, rad) for its least-squares slope.
-    double turned = 0, last = p0.theta;
-    simswift::runner::HeadingDrift drift;
-    for (int i = 1; i <= 1000; ++i) {
-      ok = h.run(0.01) && ok;
-      const double th = h.pose().theta;
-      turned += wrapAngle(th - last);
-      last = th;
-      drift.add(i * 0.01, turned);
-    }
-    const double slope = drift.slope();
-    double fwd, left;
-    relative(p0, h.pose(), &fwd, &left);
+    // The heading every tick (unwrapped, rad) for its least-squares slope: the meter's.
+    bool ok;
+    const simswift::WalkFigures f = walkMeasured(h, 200, 100, 0, 10.0, &ok);
+    const double slope = f.heading_slope, turned = f.turn * 10;  // rad/s, rad
+    const double fwd = f.forward * 10 / 1000, left = f.left * 10 / 1000;  // m
     std::printf(
         "[motion] forward 200 + left 100 mm/s x 10 s, seed %llu: forward %.2f, left %.2f, drift %.1f mrad/s "
         "(least-squares slope %.1f mrad/s)\n",
@@ -245,20 +255,21 @@ TEST(MotionPhysics, JointsHoldAndSolesStickOverA20sWalk) {
     MotionHarness h(seed, -3.5, 0.0, 0.0);
     h.request(ActionType::WALK, 300, 0, 0);
     bool ok = h.run(2.0);
-    simswift::runner::StanceSlip slip;
+    simswift::WalkMeter meter;  // the stance slip: the walk test kit's
+    meter.begin(simswift::api::walkSample(h.runner(), 0), {300, 0, 0});
     double separation = 0;  // m
     for (int i = 0; i < 2000; ++i) {
       ok = h.run(0.01) && ok;
       separation = std::max(separation, h.runner().world().robot(0).anchorSeparation());
-      slip.tick(h.runner().world());
+      meter.add(simswift::api::walkSample(h.runner(), 0));
     }
+    const simswift::WalkFigures slip = meter.figures();
     std::printf("[motion] 20 s walk, seed %llu: hinge anchors apart <= %.2f mm; stance slip mean %.2f, max %.2f mm "
-                "over %zu steps\n",
-                static_cast<unsigned long long>(seed), separation * 1000, slip.mean() * 1000, slip.max() * 1000,
-                slip.perStep().size());
+                "over %d steps\n",
+                static_cast<unsigned long long>(seed), separation * 1000, slip.slip_mean, slip.slip_max, slip.stances);
     EXPECT_TRUE(ok) << "fell";
     EXPECT_LT(separation, 0.0005) << "seed " << seed;
-    EXPECT_LT(slip.mean(), 0.002) << "seed " << seed;
-    EXPECT_GT(slip.perStep().size(), 60u);  // about 4 steps per second
+    EXPECT_LT(slip.slip_mean, 2.0) << "seed " << seed;  // mm
+    EXPECT_GT(slip.stances, 60);  // about 4 steps per second
   }
 }

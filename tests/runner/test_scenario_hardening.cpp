@@ -119,3 +119,17 @@ TEST(ScenarioHardening, OversizeAndBinaryFilesAreRefusedWithTheirLine) {
   text.insert(text.find("duration"), std::string("x\0", 2));  // line 3
   expectRefused(text, "s.yaml:3: contains a NUL byte");
 }
+
+// A misspelt key is named at its own line with the key it resembles (issue
+// 34 item 5): a robot's required team (it was "missing" at the robot's first
+// line), a required key of a timed action, and an optional key.
+TEST(ScenarioHardening, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
+  EXPECT_EQ(errorOf("robots:\n  - player: 1\n    taem: 0\n"),
+            "s.yaml:3: unknown key 'taem' in robots[0] (did you mean team? a required key, missing)");
+  EXPECT_EQ(errorOf("robots:\n  - team: 0\n    player: 1\n    actions:\n      - {time: 1, action: stand}\n"
+                    "      - {t: 2, action: stand}\n"),
+            "s.yaml:5: robots[0].actions[0].t: missing required key");  // 1 letter: no guess
+  const std::string opt = errorOf("duraton: 5\nrobots:\n  - {team: 0, player: 1}\n");
+  EXPECT_EQ(opt.rfind("s.yaml:1: unknown key 'duraton' in <document> (did you mean duration?); expected one of ", 0), 0u)
+      << opt;
+}

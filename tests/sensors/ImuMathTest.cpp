@@ -1,5 +1,6 @@
-// IMU conventions: NAO accelerometer sign, roll/pitch signs, finite
-// differencing.
+// IMU physics: specific force (what an ideal accelerometer measures),
+// roll/pitch signs, finite differencing. The V5's slot signs and units are
+// InertialSlotsTest's.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,28 +12,29 @@ using Eigen::AngleAxisd;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-TEST(ImuMath, UprightAtRestReadsMinusG) {
-  const Vector3d a = naoAccelerometer(Matrix3d::Identity(), Vector3d::Zero(), 9.81);
+TEST(ImuMath, UprightAtRestFeelsPlusG) {
+  const Vector3d a = specificForce(Matrix3d::Identity(), Vector3d::Zero(), 9.81);
   EXPECT_NEAR(a.x(), 0, 1e-12);
   EXPECT_NEAR(a.y(), 0, 1e-12);
-  EXPECT_NEAR(a.z(), -9.81, 1e-12);
+  EXPECT_NEAR(a.z(), 9.81, 1e-12);
 }
 
 TEST(ImuMath, FreeFallReadsZero) {
-  const Vector3d a = naoAccelerometer(Matrix3d::Identity(), Vector3d(0, 0, -9.81), 9.81);
+  const Vector3d a = specificForce(Matrix3d::Identity(), Vector3d(0, 0, -9.81), 9.81);
   EXPECT_NEAR(a.norm(), 0, 1e-12);
 }
 
-TEST(ImuMath, LeaningForwardGivesPositivePitchAndAccX) {
+TEST(ImuMath, LeaningForwardGivesPositivePitch) {
   const Matrix3d r = AngleAxisd(0.3, Vector3d::UnitY()).toRotationMatrix();
   const Eigen::Vector2d rp = torsoRollPitch(r);
   EXPECT_NEAR(rp.y(), 0.3, 1e-12);
   EXPECT_NEAR(rp.x(), 0.0, 1e-12);
   // The torso's z axis tips toward world +x: the top leans forward.
   EXPECT_GT((r * Vector3d::UnitZ()).x(), 0);
-  const Vector3d a = naoAccelerometer(r, Vector3d::Zero(), 9.81);
-  EXPECT_NEAR(a.x(), 9.81 * std::sin(0.3), 1e-9);
-  EXPECT_NEAR(a.z(), -9.81 * std::cos(0.3), 1e-9);
+  // Gravity's reaction leans back in torso axes: -x and +z.
+  const Vector3d a = specificForce(r, Vector3d::Zero(), 9.81);
+  EXPECT_NEAR(a.x(), -9.81 * std::sin(0.3), 1e-9);
+  EXPECT_NEAR(a.z(), 9.81 * std::cos(0.3), 1e-9);
 }
 
 TEST(ImuMath, LeaningRightGivesPositiveRoll) {
@@ -78,19 +80,19 @@ TEST(ImuMath, ModelDifferencesVelocityAndOrientation) {
   // First tick after a reset: the instantaneous angular velocity. World
   // rotation about +x seen from a torso facing +y is about torso -y.
   // Accelerating at 2 m/s^2 along world +x while facing world +y: the torso
-  // feels it on its -y axis; the NAO sign flips it to +y.
-  const ImuTruth t = m.update(yaw90, Vector3d(0.5, 0, 0), Vector3d(0.02, 0, 0), 0.01, 9.81);
-  EXPECT_NEAR(t.accel.y(), 2.0, 1e-9);
-  EXPECT_NEAR(t.accel.x(), 0.0, 1e-9);
-  EXPECT_NEAR(t.accel.z(), -9.81, 1e-9);
+  // feels it on its -y axis.
+  const ImuSample t = m.update(yaw90, Vector3d(0.5, 0, 0), Vector3d(0.02, 0, 0), 0.01, 9.81);
+  EXPECT_NEAR(t.specific_force.y(), -2.0, 1e-9);
+  EXPECT_NEAR(t.specific_force.x(), 0.0, 1e-9);
+  EXPECT_NEAR(t.specific_force.z(), 9.81, 1e-9);
   EXPECT_NEAR(t.gyro.y(), -0.5, 1e-12);
   EXPECT_NEAR(t.gyro.x(), 0.0, 1e-12);
   // Next tick: the torso turned 0.005 rad about world +x in 10 ms: the gyro
   // reads the tick's mean rate, 0.5 rad/s about torso -y, whatever the
   // instantaneous value passed in. Constant velocity: no acceleration.
   const Matrix3d turned = AngleAxisd(0.005, Vector3d::UnitX()).toRotationMatrix() * yaw90;
-  const ImuTruth t2 = m.update(turned, Vector3d(9, 9, 9), Vector3d(0.02, 0, 0), 0.01, 9.81);
-  EXPECT_NEAR(t2.accel.y(), 0.0, 0.01);
+  const ImuSample t2 = m.update(turned, Vector3d(9, 9, 9), Vector3d(0.02, 0, 0), 0.01, 9.81);
+  EXPECT_NEAR(t2.specific_force.y(), 0.0, 0.01);
   EXPECT_NEAR(t2.gyro.y(), -0.5, 1e-9);
   EXPECT_NEAR(t2.gyro.x(), 0.0, 1e-9);
   EXPECT_NEAR(t2.gyro.z(), 0.0, 1e-9);
@@ -98,6 +100,6 @@ TEST(ImuMath, ModelDifferencesVelocityAndOrientation) {
 
 TEST(ImuMath, FirstUpdateWithoutResetHasNoSpike) {
   ImuModel m;
-  const ImuTruth t = m.update(Matrix3d::Identity(), Vector3d::Zero(), Vector3d(3, 0, 0), 0.01, 9.81);
-  EXPECT_NEAR(t.accel.x(), 0.0, 1e-12);
+  const ImuSample t = m.update(Matrix3d::Identity(), Vector3d::Zero(), Vector3d(3, 0, 0), 0.01, 9.81);
+  EXPECT_NEAR(t.specific_force.x(), 0.0, 1e-12);
 }

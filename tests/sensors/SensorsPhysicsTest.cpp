@@ -1,11 +1,16 @@
 // Sensors read from the ODE world: a standing robot (FSRs carry its weight,
 // the accelerometer reads gravity with the NAO's sign, the gyro is still),
-// limp robots falling forward and sideways (AngleY / AngleX), sonar echoes
-// from a goal post and from nothing, determinism of the noise.
+// robots falling forward, backward and sideways and lying there (AngleY /
+// AngleX, the gyro's and the accelerometer's V5 signs), a robot turned both
+// ways (GyroscopeZ's V5 sign), sonar echoes from a goal post and from
+// nothing, determinism of the noise.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
+#include "agent/libagent/Inertial.hpp"
 #include "agent/program/Postures.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/sensors/SensorSuite.hpp"
@@ -14,6 +19,7 @@
 using namespace simswift;
 using namespace simswift::sensors;
 namespace S = agent::libagent::Sensors;
+namespace in = agent::libagent::inertial;
 
 namespace {
 
@@ -77,7 +83,7 @@ TEST(SensorsPhysics, StandingRobotFeelsItsWeightAndGravity) {
     w.step();
     suite.update(w);
     const SensorReading& r = suite.reading();
-    const double accz = r.sensors[S::InertialSensor_AccZ];
+    const double accz = r.sensors[S::InertialSensor_AccelerometerZ];
     const Eigen::Vector3d g(r.sensors[S::InertialSensor_GyroscopeX], r.sensors[S::InertialSensor_GyroscopeY],
                             r.sensors[S::InertialSensor_GyroscopeZ]);
     sample_fsr = std::max(sample_fsr, std::abs(fsrSum(r) - weight) / weight);
@@ -97,14 +103,15 @@ TEST(SensorsPhysics, StandingRobotFeelsItsWeightAndGravity) {
     worst_angle = std::max({worst_angle, std::abs(double(r.sensors[S::InertialSensor_AngleX])),
                             std::abs(double(r.sensors[S::InertialSensor_AngleY]))});
     sum_accz += accz;
-    // Both IMU slot families carry the same sample; GyrRef is unused.
-    ASSERT_EQ(r.sensors[S::InertialSensor_AccZ], r.sensors[S::InertialSensor_AccelerometerZ]);
-    ASSERT_EQ(r.sensors[S::InertialSensor_GyrY], r.sensors[S::InertialSensor_GyroscopeY]);
+    // The raw slots carry the same sample in counts; GyrRef is unused.
+    ASSERT_NEAR(r.sensors[S::InertialSensor_AccZ], accz * in::kAccCountsPerMetrePerSecondSquared, 1e-3);
+    ASSERT_NEAR(r.sensors[S::InertialSensor_GyrY],
+                r.sensors[S::InertialSensor_GyroscopeY] * in::kGyrCountsPerRadPerSecond, 1e-3);
     ASSERT_EQ(r.sensors[S::InertialSensor_GyrRef], 0.0f);
   }
   const SensorReading& r = suite.reading();
-  std::printf("standing 60 s: weight %.2f N; worst 100 ms mean: FSR error %.2f%%, |AccZ+9.81| %.3f, "
-              "|gyro| %.4f rad/s; worst sample: FSR %.2f%%, AccZ %.3f, gyro %.4f; mean AccZ %.4f; "
+  std::printf("standing 60 s: weight %.2f N; worst 100 ms mean: FSR error %.2f%%, |AccelerometerZ+9.81| %.3f, "
+              "|gyro| %.4f rad/s; worst sample: FSR %.2f%%, AccelerometerZ %.3f, gyro %.4f; mean %.4f; "
               "worst |dz| %.2f mm, worst |angle| %.4f rad\n",
               weight, 100 * worst_fsr, worst_accz, worst_gyro, 100 * sample_fsr, sample_accz, sample_gyro,
               sum_accz / ticks, 1000 * worst_dz, worst_angle);
@@ -155,10 +162,14 @@ TEST(SensorsPhysics, StandingRobotFeelsItsWeightAndGravity) {
 
 namespace {
 // A robot given a push (m/s, world, at 0.4 m height, growing with height
-// like a topple about the feet); returns (AngleX, AngleY) and the torso
-// height after 3 s.
+// like a topple about the feet); returns (AngleX, AngleY), the torso height
+// and the inertial slots after 3 s, and the fastest roll and pitch rates on
+// the way down (GyroscopeX / GyroscopeY, rad/s, signed).
 struct Fall {
   double angle_x, angle_y, torso_z;
+  std::array<float, agent::libagent::kNumSensors> lying;
+  double peak_roll_rate = 0, peak_pitch_rate = 0;
+  double worst_raw_gyr = 0;  // rad/s: |DEG2RAD(GyrX or GyrY) / 2.35 - GyroscopeX or Y| (rUNSWift's conversion)
 };
 Fall pushedFall(const Eigen::Vector3d& push, float stiffness) {
   World w(FieldConfig::spl2017());
@@ -175,12 +186,49 @@ Fall pushedFall(const Eigen::Vector3d& push, float stiffness) {
     dBodySetLinearVel(body.body(l), v.x(), v.y(), v.z());
   }
   suite.reset(w);
+  Fall f{};
   for (int k = 0; k < 300; ++k) {
     w.step();
     suite.update(w);
+    const auto& s = suite.reading().sensors;
+    const double gx = s[S::InertialSensor_GyroscopeX], gy = s[S::InertialSensor_GyroscopeY];
+    if (std::fabs(gx) > std::fabs(f.peak_roll_rate)) f.peak_roll_rate = gx;
+    if (std::fabs(gy) > std::fabs(f.peak_pitch_rate)) f.peak_pitch_rate = gy;
+    for (int axis = 0; axis < 2; ++axis) {
+      const double raw = s[S::InertialSensor_GyrX + axis] * M_PI / 180.0 / 2.35;  // rUNSWift's FilteredTouch
+      f.worst_raw_gyr = std::max(f.worst_raw_gyr, std::fabs(raw - s[S::InertialSensor_GyroscopeX + axis]));
+    }
   }
   const auto& s = suite.reading().sensors;
-  return {s[S::InertialSensor_AngleX], s[S::InertialSensor_AngleY], torsoZ(w, i)};
+  f.angle_x = s[S::InertialSensor_AngleX];
+  f.angle_y = s[S::InertialSensor_AngleY];
+  f.torso_z = torsoZ(w, i);
+  std::copy(s.begin(), s.end(), f.lying.begin());
+  return f;
+}
+
+// Lying still: the accelerometer reads gravity with the V5's signs, i.e.
+// AccelerometerX = g sin AngleY, AccelerometerY = g sin AngleX (face down
+// AccelerometerX ~ +g, on the back ~ -g, on the right side AccelerometerY ~
+// +g) and the rest of g on Z (its sign tells whether the torso's z axis
+// points up or down: AngleX / AngleY cannot), and the raw AccX/Y/Z are the
+// same in counts (65 per g).
+void expectLyingAccelerometer(const Fall& f) {
+  const double g = 9.81;
+  const double x = f.lying[S::InertialSensor_AccelerometerX], y = f.lying[S::InertialSensor_AccelerometerY],
+               z = f.lying[S::InertialSensor_AccelerometerZ];
+  std::printf("  lying: Accelerometer (%.2f, %.2f, %.2f) m/s^2, Acc (%.1f, %.1f, %.1f) counts; "
+              "peak roll rate %.2f, pitch rate %.2f rad/s\n",
+              x, y, z, f.lying[S::InertialSensor_AccX], f.lying[S::InertialSensor_AccY],
+              f.lying[S::InertialSensor_AccZ], f.peak_roll_rate, f.peak_pitch_rate);
+  EXPECT_NEAR(x, g * std::sin(f.angle_y), 1.0);
+  EXPECT_NEAR(y, g * std::sin(f.angle_x), 1.0);
+  const double sx = std::sin(f.angle_x), sy = std::sin(f.angle_y);
+  EXPECT_NEAR(std::fabs(z), g * std::sqrt(std::max(0.0, 1 - sx * sx - sy * sy)), 1.0);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(f.lying[S::InertialSensor_AccX + k],
+                f.lying[S::InertialSensor_AccelerometerX + k] * in::kAccCountsPerMetrePerSecondSquared, 1e-3);
+  EXPECT_LT(f.worst_raw_gyr, 1e-4);
 }
 }  // namespace
 
@@ -190,6 +238,9 @@ TEST(SensorsPhysics, LimpRobotFallingForwardReadsPositiveAngleY) {
   EXPECT_GT(f.angle_y, 0.5);
   EXPECT_LT(std::abs(f.angle_x), 0.5);
   EXPECT_LT(f.torso_z, 0.2);  // collapsed within 3 s
+  EXPECT_GT(f.peak_pitch_rate, 1.0);  // pitching forward: GyroscopeY > 0
+  EXPECT_GT(f.lying[S::InertialSensor_AccelerometerX], 4.0);  // face down: toward +g
+  expectLyingAccelerometer(f);
 }
 
 TEST(SensorsPhysics, LimpRobotFallingBackwardReadsNegativeAngleY) {
@@ -197,6 +248,9 @@ TEST(SensorsPhysics, LimpRobotFallingBackwardReadsNegativeAngleY) {
   std::printf("backward fall: AngleX %.3f AngleY %.3f torso z %.3f m\n", f.angle_x, f.angle_y, f.torso_z);
   EXPECT_LT(f.angle_y, -0.5);
   EXPECT_LT(f.torso_z, 0.2);
+  EXPECT_LT(f.peak_pitch_rate, -1.0);  // pitching backward: GyroscopeY < 0
+  EXPECT_LT(f.lying[S::InertialSensor_AccelerometerX], -4.0);  // on the back: toward -g
+  expectLyingAccelerometer(f);
 }
 
 // A limp NAO folds at the knees and sits back whichever way it is pushed,
@@ -207,6 +261,9 @@ TEST(SensorsPhysics, RobotFallingToItsRightReadsPositiveAngleX) {
   EXPECT_GT(f.angle_x, 1.0);
   EXPECT_LT(std::abs(f.angle_y), 0.5);
   EXPECT_LT(f.torso_z, 0.2);
+  EXPECT_GT(f.peak_roll_rate, 1.0);  // rolling to its right: GyroscopeX > 0
+  EXPECT_GT(f.lying[S::InertialSensor_AccelerometerY], 4.0);  // on its right side: toward +g
+  expectLyingAccelerometer(f);
 }
 
 TEST(SensorsPhysics, RobotFallingToItsLeftReadsNegativeAngleX) {
@@ -215,6 +272,58 @@ TEST(SensorsPhysics, RobotFallingToItsLeftReadsNegativeAngleX) {
   EXPECT_LT(f.angle_x, -1.0);
   EXPECT_LT(std::abs(f.angle_y), 0.5);
   EXPECT_LT(f.torso_z, 0.2);
+  EXPECT_LT(f.peak_roll_rate, -1.0);
+  EXPECT_LT(f.lying[S::InertialSensor_AccelerometerY], -4.0);
+  expectLyingAccelerometer(f);
+}
+
+// A standing robot lifted 5 cm (so the soles' friction does not brake it)
+// and spun about the vertical: the V5 reads an anti-clockwise turn as a
+// NEGATIVE GyroscopeZ, a clockwise one as positive; rUNSWift's odometry turn
+// per 10 ms frame, -0.01 * GyroscopeZ, has the turn's sign.
+TEST(SensorsPhysics, RobotTurnedBothWaysReadsTheV5GyroscopeZ) {
+  for (double rate : {1.0, -1.0}) {
+    World w(FieldConfig::spl2017());
+    w.placeBall(-3, 2);
+    const int i = addRobot(w, 0, 0, 0.4, 1.0f);
+    SensorConfig c;
+    c.noise = false;
+    SensorSuite suite(w, i, c);
+    for (int k = 0; k < 50; ++k) {
+      w.step();
+      suite.update(w);
+    }
+    const RobotBody& body = w.robot(i);
+    const Eigen::Vector3d centre = body.linkPose(body.model().rootLink()).translation();
+    const Eigen::Vector3d omega(0, 0, rate);
+    for (int l = 0; l < static_cast<int>(body.model().links().size()); ++l) {
+      const dReal* p = dBodyGetPosition(body.body(l));
+      const Eigen::Vector3d at(p[0], p[1], p[2] + 0.05);
+      const Eigen::Vector3d v = omega.cross(at - centre);
+      dBodySetPosition(body.body(l), at.x(), at.y(), at.z());
+      dBodySetLinearVel(body.body(l), v.x(), v.y(), v.z());
+      dBodySetAngularVel(body.body(l), 0, 0, rate);
+    }
+    suite.reset(w);
+    double turned_by_odometry = 0;  // rad, rUNSWift's MotionOdometry sum (without its 0.95)
+    for (int k = 0; k < 3; ++k) {
+      w.step();
+      suite.update(w);
+      turned_by_odometry += -0.01 * suite.reading().sensors[S::InertialSensor_GyroscopeZ];
+    }
+    const auto& s = suite.reading().sensors;
+    std::printf("turned at %+.1f rad/s: GyroscopeX/Y/Z (%.3f, %.3f, %.3f) rad/s, GyrX/Y (%.2f, %.2f), "
+                "AccelerometerZ %.2f\n",
+                rate, s[S::InertialSensor_GyroscopeX], s[S::InertialSensor_GyroscopeY],
+                s[S::InertialSensor_GyroscopeZ], s[S::InertialSensor_GyrX], s[S::InertialSensor_GyrY],
+                s[S::InertialSensor_AccelerometerZ]);
+    EXPECT_NEAR(s[S::InertialSensor_GyroscopeZ], -rate, 0.05) << rate;
+    EXPECT_NEAR(turned_by_odometry, 0.03 * rate, 0.002) << rate;
+    EXPECT_NEAR(s[S::InertialSensor_GyroscopeX], 0.0, 0.05);
+    EXPECT_NEAR(s[S::InertialSensor_GyroscopeY], 0.0, 0.05);
+    EXPECT_NEAR(in::bodyRates(s.data()).z, rate, 0.05);  // the robot code's reader
+    EXPECT_NEAR(s[S::InertialSensor_AccelerometerZ], 0.0, 1.0);  // lifted: falling freely
+  }
 }
 
 namespace {
@@ -339,7 +448,8 @@ TEST(SensorsPhysics, NoiseIsPerRobotDeterministicAndOptional) {
   ASSERT_EQ(one.first.size(), two.first.size());
   double largest = 0;
   for (size_t k = 0; k < one.first.size(); ++k) {
-    EXPECT_NEAR(one.first[k], two.first[k], 1e-5) << "sample " << k;  // float rounding only
+    // Float rounding only (relative: the raw slots are in counts, up to ~65).
+    EXPECT_NEAR(one.first[k], two.first[k], 1e-5 * std::max(1.0, std::fabs(one.second[k]))) << "sample " << k;
     largest = std::max(largest, std::abs(one.first[k]));
   }
   EXPECT_GT(largest, 0.005);  // the noisy suite is noisy

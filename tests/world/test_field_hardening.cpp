@@ -64,3 +64,15 @@ TEST(FieldHardening, DirectoryIsNotAFieldFile) {
     EXPECT_NE(std::string(e.what()).find("fields:1: is a directory"), std::string::npos) << e.what();
   }
 }
+
+// A misspelt key is named at its own line with the key it resembles (issue
+// 34 item 5): the required field: map (it was "missing" at the document's
+// first line), an optional key, and a line's required from: in a list.
+TEST(FieldHardening, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
+  EXPECT_EQ(errorOf("# a field\nfeild:\n  length: 9.0\n"),
+            "f.yaml:2: unknown key 'feild' in <document> (did you mean field? a required key, missing)");
+  const std::string opt = errorOf("field:\n  length: 9.0\n  widht: 6.0\n");
+  EXPECT_EQ(opt.rfind("f.yaml:3: unknown key 'widht' in field (did you mean width?); expected one of ", 0), 0u) << opt;
+  EXPECT_EQ(errorOf("field:\n  lines:\n    - {name: b, From: [0, 0], to: [0, 1]}\n"),
+            "f.yaml:3: unknown key 'From' in field.lines[0] (did you mean from? a required key, missing)");
+}
