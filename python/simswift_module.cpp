@@ -1,7 +1,8 @@
 // Python bindings of the public API (include/simswift/): `import simswift`.
 //
 //   sim = simswift.Simulation("scenarios/walk_one.yaml")
-//   sim.step(); sim.run(2.0)
+//   sim.step(); sim.run(2.0); sim.run(5.0, until=lambda sim: sim.robot(0).fallen)
+//   b = sim.ball                      # .present, .x .y .z (m), .vx .vy .vz (m/s)
 //   s = sim.robot(0).sensors          # named numpy arrays: fsr (8, kg),
 //   s.fsr.sum(), s.gyroscope, ...     # gyroscope, accelerometer, joint_angles, ...
 //   sim.robot(0).set_controller(lambda s, j: ...)   # j.angles / j.stiffnesses (numpy, in place)
@@ -104,6 +105,15 @@ PYBIND11_MODULE(simswift, m) {
       .def_readonly("z", &sa::Pose::z)
       .def_readonly("theta", &sa::Pose::theta);
 
+  py::class_<sa::BallState>(m, "Ball")  // m and m/s, field frame
+      .def_readonly("present", &sa::BallState::present)
+      .def_readonly("x", &sa::BallState::x)
+      .def_readonly("y", &sa::BallState::y)
+      .def_readonly("z", &sa::BallState::z)
+      .def_readonly("vx", &sa::BallState::vx)
+      .def_readonly("vy", &sa::BallState::vy)
+      .def_readonly("vz", &sa::BallState::vz);
+
   py::class_<sa::Robot>(m, "Robot")
       .def_property_readonly("index", &sa::Robot::index)
       .def_property_readonly("sensors", [](const sa::Robot& r) { return PySensors(r.sensors()); })
@@ -142,16 +152,22 @@ PYBIND11_MODULE(simswift, m) {
       .def_static("from_yaml", &sa::Simulation::fromYaml, py::arg("text"), py::arg("name") = "<yaml>",
                   py::arg("base_dir") = ".")
       .def("step", &sa::Simulation::step)
-      .def("run", [](sa::Simulation& s, double seconds) { return s.run(seconds); }, py::arg("seconds"))
+      // until(sim) is called after each tick; a true value stops the run.
+      .def(
+          "run",
+          [](py::object self, double seconds, py::object until) {
+            sa::Simulation& s = self.cast<sa::Simulation&>();
+            if (until.is_none()) return s.run(seconds);
+            return s.run(seconds, [&](const sa::Simulation&) { return py::bool_(until(self)).cast<bool>(); });
+          },
+          py::arg("seconds"), py::arg("until") = py::none(),
+          "Steps for `seconds` of simulated time, or until until(sim) is true; returns the seconds stepped.")
       .def("robot", &sa::Simulation::robot, py::arg("index"), py::keep_alive<0, 1>())
       .def_property_readonly("num_robots", &sa::Simulation::numRobots)
       .def_property_readonly("time", &sa::Simulation::time)
       .def_property_readonly("ticks", &sa::Simulation::ticks)
       .def_property_readonly("state_hash", &sa::Simulation::stateHash)
-      .def_property_readonly("ball", [](const sa::Simulation& s) {
-        const sa::BallState b = s.ball();
-        return py::make_tuple(b.present, b.x, b.y, b.z);
-      })
+      .def_property_readonly("ball", &sa::Simulation::ball)
       .def("place_ball", &sa::Simulation::placeBall, py::arg("x"), py::arg("y"));
 
   m.def(

@@ -1,27 +1,75 @@
 #!/usr/bin/env bash
-# The installed package as a team uses it: install a built tree into a
-# temporary prefix, compile every installed header on its own, then
-# configure, build and run examples/walk_test against the package
-# (find_package(simswift 0.2)).
-#   scripts/test-package.sh [build-dir] [jobs]
+# The package as a team gets it (docs/library.md):
+#  1. from an empty build folder, configure with the documented preset
+#     (`cmake --preset library`: the library, its Python module and the two
+#     programs; no tests, benchmarks or tools), build it (timed), install it
+#     into a temporary prefix, then MOVE the prefix: the data must be found
+#     relative to the installed library, wherever it lands;
+#  2. compile every installed header on its own, and after a team's
+#     rUNSWift-style macros and globals (examples/team_glue/team/defs.hpp);
+#  3. load a shipped scenario from the moved prefix with its `simswift`
+#     program and with its Python module (PYTHONPATH into the prefix, run
+#     from /, so neither the build tree nor the working folder can help);
+#  4. configure, build and run examples/walk_test and examples/team_glue
+#     against the moved package (find_package(simswift 0.2)).
+#   scripts/test-package.sh [build-dir] [jobs]   (build-dir: default build-package; emptied first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build="${1:-build}"
+src="$PWD"
+build="${1:-build-package}"
 jobs="${2:-$(nproc)}"
-prefix="$(mktemp -d)"
-trap 'rm -rf "$prefix"' EXIT
-cmake --install "$build" --prefix "$prefix" >/dev/null
-check_header() {  # include-dir header-as-included
-  echo "#include \"$2\"" | g++ -std=c++17 -fsyntax-only -Wall -I"$1" -x c++ - \
-    || { echo "installed header $2 does not compile on its own" >&2; exit 1; }
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+
+rm -rf "$build"
+t0=$SECONDS
+cmake --preset library -B "$build" >/dev/null
+cmake --build "$build" -j"$jobs" >/dev/null
+echo "test-package.sh: library-only build from an empty folder: $((SECONDS - t0)) s with -j$jobs" >&2
+cmake --install "$build" --prefix "$tmp/first" >/dev/null
+mv "$tmp/first" "$tmp/moved"
+prefix="$tmp/moved"
+
+check_header() {  # include-dir header-as-included [prelude]
+  { [ -n "${3:-}" ] && echo "#include \"$3\""; echo "#include \"$2\""; } |
+    g++ -std=c++17 -fsyntax-only -Wall -I"$1" -I"$src/examples/team_glue" -x c++ - \
+    || { echo "installed header $2 does not compile${3:+ after $3}" >&2; exit 1; }
 }
 for h in "$prefix"/include/simswift/*.hpp; do
   check_header "$prefix/include" "simswift/$(basename "$h")"
+  check_header "$prefix/include" "simswift/$(basename "$h")" team/defs.hpp
 done
 agent_inc="$prefix/include/simswift-agent"
 while IFS= read -r h; do
   check_header "$agent_inc" "${h#"$agent_inc"/}"
 done < <(find "$agent_inc" -name '*.hpp' | sort)
-cmake -S examples/walk_test -B "$prefix/example-build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
-cmake --build "$prefix/example-build" -j"$jobs"
-(cd "$prefix/example-build" && LD_LIBRARY_PATH="$prefix/lib" ctest --output-on-failure --no-tests=error -j"$jobs")
+
+# The data from the moved prefix: the program, then the Python module.
+scenario="$prefix/share/simswift/scenarios/stand_one.yaml"
+(cd / && "$prefix/bin/simswift" run "$scenario" --check >/dev/null)
+# The interpreter the module was built for (CMakeLists.txt prefers /usr/bin/python3).
+python="$(sed -n 's/^_\{0,1\}Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt" | head -n1)"
+if [ -d "$prefix/lib/python3/dist-packages" ]; then
+  (cd / && PYTHONPATH="$prefix/lib/python3/dist-packages" "$python" - "$scenario" "$prefix" <<'PY'
+import sys
+import simswift
+scenario, prefix = sys.argv[1], sys.argv[2]
+assert simswift.__file__.startswith(prefix), simswift.__file__
+sim = simswift.Simulation(scenario)
+sim.run(0.5)
+assert sim.ticks == 50, sim.ticks
+assert not sim.robot(0).fallen
+fsr = float(sim.robot(0).sensors.fsr.sum())
+assert 0.8 * 5.305 < fsr < 1.2 * 5.305, fsr  # kg: the NAO V5's mass (Aldebaran's datasheet)
+print(f"python from the moved prefix: {scenario} ran 0.5 s, FSR sum {fsr:.2f} kg", file=sys.stderr)
+PY
+  )
+else
+  echo "test-package.sh: no Python module installed (pybind11 not found): skipped the Python check" >&2
+fi
+
+for example in walk_test team_glue; do
+  cmake -S "examples/$example" -B "$tmp/$example-build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+  cmake --build "$tmp/$example-build" -j"$jobs"
+  (cd "$tmp/$example-build" && LD_LIBRARY_PATH="$prefix/lib" ctest --output-on-failure --no-tests=error -j"$jobs")
+done

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs every test, then the sanitizer builds (what CI runs via
-# .ci/run). Three build folders, run one after the other:
+# .ci/run). Three build folders, run one after the other (and the package
+# test's build-package/, see scripts/test-package.sh):
 #   build/       Release, the whole suite (incl. the loader mutation fuzzer)
 #   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer: the suite
 #                minus the heavy physics statistics (ASAN_EXCLUDE below)
@@ -22,9 +23,11 @@ stamp "Release build"
 (cd build && ctest --output-on-failure -j"$jobs" --timeout 900)
 stamp "Release suite"
 
-# The installed package as a team uses it (headers, examples/walk_test).
-scripts/test-package.sh build "$jobs"
-stamp "installed package: headers and examples/walk_test"
+# The package as a team gets it: the library-only build (cmake --preset
+# library) from an empty build-package/, installed and moved; headers (also
+# after rUNSWift-style macros), Python and the examples against it.
+scripts/test-package.sh build-package "$jobs"
+stamp "installed package: library-only build, headers, Python, examples"
 
 [ "${SIMSWIFT_SKIP_SANITIZERS:-0}" = 1 ] && exit 0
 

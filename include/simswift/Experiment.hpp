@@ -4,8 +4,11 @@
 // results table (results.csv).
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "simswift/Errors.hpp"
 
 namespace simswift::api {
 
@@ -21,7 +24,7 @@ struct ResultsTable {
   std::string out_dir;                         // where report.md and the rest are
 };
 
-// Throws ConfigError (the file) or std::runtime_error (a trial's process or
+// Throws ConfigError (Errors.hpp: the file) or std::runtime_error (a trial's process or
 // the results folder failed).
 ResultsTable runExperiment(const std::string& file, const ExperimentOptions& options = {});
 

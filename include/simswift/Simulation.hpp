@@ -13,9 +13,17 @@
 //   EXPECT_GT(sim.robot(0).pose().x, 0.5);
 //
 // Robots without a controller run what their scenario says (the builtin
-// reference program, a launched program, ...). Errors: ConfigError (bad
-// scenario: file, line, key), std::logic_error (misuse, e.g. a controller
-// set after the first step), std::runtime_error (a run that fails).
+// reference program, a launched program, ...). Errors: ConfigError
+// (Errors.hpp: a bad scenario, model or field: file, line, key),
+// std::logic_error (misuse, e.g. a controller set after the first step),
+// std::runtime_error (a run that fails).
+//
+// Before the first step every call is valid: the queries answer from the
+// scenario and start nothing (time 0, ticks 0, pose and ball as placed,
+// fallen false, falls 0, stateHash 0), except sensors(), which exist only
+// once a tick has run (std::logic_error); placeBall, push and teleport
+// start the simulation as step() does. A start that fails (a missing model:
+// ConfigError) fails the same way on every later call.
 #pragma once
 
 #include <cstdint>
@@ -24,19 +32,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "simswift/Errors.hpp"
 #include "simswift/Types.hpp"
 
 namespace simswift::api {
-
-// A configuration error, split into where and what:
-//   file "walk.yaml", line 7, key "robots[1].team", what() the whole message.
-struct ConfigError : std::runtime_error {
-  ConfigError(const std::string& message, std::string file_, int line_, std::string key_)
-      : std::runtime_error(message), file(std::move(file_)), line(line_), key(std::move(key_)) {}
-  std::string file;
-  int line = 0;      // 0 if the message names none
-  std::string key;   // dotted key path ("" if none)
-};
 
 // Called once per tick on the simulator's thread with the sensors of this
 // tick; `joints` arrives holding the previous command and is sent as this
@@ -65,7 +64,8 @@ struct SimulationAccess;  // the library's own helpers (sim/api), e.g. the walk 
 class Robot {
  public:
   int index() const { return index_; }
-  // The sensors its program read this tick (the libagent block's slot).
+  // The sensors its program read this tick (the libagent block's slot);
+  // std::logic_error before the first step.
   SensorValues sensors() const;
   // Before the first step: drive this robot from `c` instead of its
   // scenario program.
@@ -76,7 +76,7 @@ class Robot {
   // Hold these joint commands (a controller that repeats them); before the
   // first step, or later for a robot already driven by setJoints.
   void setJoints(const JointValues& joints);
-  Pose pose() const;         // ground truth, field frame
+  Pose pose() const;         // ground truth, field frame (before the first step: as placed, z 0)
   bool fallen() const;       // on the ground now (the runner's fall detector)
   int falls() const;         // falls so far
   void push(double jx, double jy);  // impulse N*s at the torso's centre of mass (field axes), now
@@ -109,9 +109,9 @@ class Simulation {
   int64_t ticks() const;
   int numRobots() const;
   Robot robot(int i);      // throws std::out_of_range
-  BallState ball() const;
+  BallState ball() const;              // before the first step: as placed, at rest
   void placeBall(double x, double y);  // at rest on the carpet, m
-  uint64_t stateHash() const;          // the World's (the same as `simswift run --print-hash-every`)
+  uint64_t stateHash() const;          // the World's (the same as `simswift run --print-hash-every`); 0 before the first step
   double duration() const;             // the scenario's duration, s
 
  private:

@@ -1,6 +1,7 @@
 """The Python bindings (python/simswift_module.cpp): a standing robot's FSRs
 sum to its mass, a 2-trial experiment's table, and bad arguments raise
 Python exceptions naming file, line and key (never a crash)."""
+import math
 import os
 import pathlib
 
@@ -79,3 +80,51 @@ def test_bad_arguments_raise_python_exceptions():
         sim.robot(0).set_joints(np.zeros(3), np.zeros(25))
     with pytest.raises(TypeError):
         sim.run("ten")
+
+
+def test_run_stops_when_until_is_true():
+    # Issue 34: `until` was dropped (a TypeError), so run() always ran the full time.
+    sim = simswift.Simulation.from_yaml(ONE_ROBOT, "until.yaml", str(SOURCE))
+    seen = []
+
+    def until(s):
+        seen.append(s.ticks)
+        return s.ticks >= 30
+
+    assert sim.run(2.0, until=until) == pytest.approx(0.30, abs=1e-9)  # s: 30 ticks of 10 ms
+    assert sim.ticks == 30 and seen == list(range(1, 31))
+    assert sim.run(0.5) == pytest.approx(0.5, abs=1e-9)  # without it: the full time
+    assert sim.ticks == 80
+
+
+def test_ball_carries_its_velocity():
+    # Issue 34: `ball` gave (present, x, y, z) and dropped the velocity. A
+    # ball placed 0.04 m into the left post of the positive-x goal (post
+    # centre (4.5, 0.8) m, radius 0.05 m; ball radius 0.05 m) is pushed out:
+    # over each tick its position changes by its velocity times 10 ms.
+    sim = simswift.Simulation.from_yaml(ONE_ROBOT, "ball.yaml", str(SOURCE))
+    before = sim.ball  # before the first step: as placed, at rest
+    assert before.present and (before.x, before.y, before.vx, before.vy, before.vz) == (0.0, 0.0, 0.0, 0.0, 0.0)
+    sim.place_ball(4.5, 0.74)
+    sim.run(0.05)
+    a = sim.ball
+    sim.step()
+    b = sim.ball
+    assert math.hypot(b.vx, b.vy) > 0.1  # m/s: it moves
+    # Finite differences over one tick against the reported velocity (the
+    # mean of the two ends; 0.05 m/s allows the carpet's friction and a bounce).
+    assert (b.x - a.x) / 0.01 == pytest.approx((a.vx + b.vx) / 2, abs=0.05)
+    assert (b.y - a.y) / 0.01 == pytest.approx((a.vy + b.vy) / 2, abs=0.05)
+    assert (b.z - a.z) / 0.01 == pytest.approx((a.vz + b.vz) / 2, abs=0.05)
+
+
+def test_queries_before_the_first_step_answer_or_raise():
+    # Issue 34: sim.robot(0).fallen before the first step killed the interpreter (SIGSEGV).
+    sim = simswift.Simulation.from_yaml(ONE_ROBOT, "first.yaml", str(SOURCE))
+    r = sim.robot(0)
+    assert r.fallen is False and r.falls == 0
+    assert (r.pose.x, r.pose.y) == (0.0, 0.0)
+    with pytest.raises(RuntimeError, match="sensors\\(\\) before the first step"):
+        r.sensors
+    sim.step()
+    assert r.sensors.fsr.shape == (8,)

@@ -14,6 +14,7 @@
 #include "agent/program/MotionGenerator.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/Scenario.hpp"
+#include "sim/world/FieldConfig.hpp"
 #include "sim/api/ConfigErrors.hpp"
 #include "sim/api/SimulationAccess.hpp"
 
@@ -80,18 +81,38 @@ ConfigError configError(const std::exception& e) {
   return ConfigError(m, "", 0, "");
 }
 
+// The simulator's errors for a bad scenario, model or field (its own
+// ConfigError, ModelError) as the API's ConfigError, for every call that
+// reads a file or starts the simulation.
+template <class F>
+auto translated(F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const simswift::ConfigError& e) {
+    throw configError(e);
+  } catch (const simswift::ModelError& e) {
+    throw configError(e);
+  }
+}
+
 struct Simulation::Impl {
   explicit Impl(runner::Scenario sc) : runner(std::move(sc)) {}
   runner::Runner runner;
   std::vector<std::shared_ptr<JointValues>> held;  // setJoints' commands, by robot (null: none)
   std::vector<std::shared_ptr<agent::program::LibagentIO>> io;  // libagent controllers' extras, by robot
-  bool started = false;
+  bool begun = false;    // start() was called (a controller is too late from here on)
+  bool started = false;  // ... and succeeded
+  // Builds the world and starts the programs. A start that fails throws the
+  // same error again on every later call (Runner::start keeps it).
   void start() {
     if (started) return;
-    // Controllers and every builtin program on this thread, right after the
-    // tick is posted (Runner::setThreading): no thread hand-over per tick.
-    runner.setThreading(agent::program::Threading::Inline);
-    runner.start();
+    if (!begun) {
+      begun = true;
+      // Controllers and every builtin program on this thread, right after the
+      // tick is posted (Runner::setThreading): no thread hand-over per tick.
+      runner.setThreading(agent::program::Threading::Inline);
+    }
+    translated([&] { runner.start(); });
     for (size_t i = 0; i < io.size(); ++i)
       if (io[i]) runner.program(static_cast<int>(i))->setLibagentIO(io[i]);
     started = true;
@@ -107,29 +128,19 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 Simulation::~Simulation() = default;
 
 Simulation Simulation::fromScenario(const std::string& path) {
-  try {
-    return Simulation(std::make_unique<Impl>(runner::Scenario::loadFile(path)));
-  } catch (const simswift::ConfigError& e) {
-    throw configError(e);
-  }
+  return translated([&] { return Simulation(std::make_unique<Impl>(runner::Scenario::loadFile(path))); });
 }
 
 Simulation Simulation::fromYaml(const std::string& text, const std::string& name, const std::string& base_dir) {
-  try {
+  return translated([&] {
     runner::Scenario sc = runner::Scenario::parse(text, name);
     if (!base_dir.empty()) sc.base_dir = base_dir;
     return Simulation(std::make_unique<Impl>(std::move(sc)));
-  } catch (const simswift::ConfigError& e) {
-    throw configError(e);
-  }
+  });
 }
 
 void Simulation::step() {
-  try {
-    impl_->start();
-  } catch (const simswift::ConfigError& e) {
-    throw configError(e);
-  }
+  impl_->start();
   impl_->runner.tick();
 }
 
@@ -159,27 +170,38 @@ Robot Simulation::robot(int i) {
 
 BallState Simulation::ball() const {
   BallState b;
-  if (!impl_->started || !impl_->runner.world().hasBall()) return b;
+  if (!impl_->started) {  // as the scenario places it: at rest on the carpet
+    const runner::Scenario& sc = impl_->runner.scenario();
+    if (sc.no_ball) return b;
+    b.present = true;
+    if (sc.ball) b.x = sc.ball->first, b.y = sc.ball->second;  // default: the centre spot
+    b.z = translated([&] { return FieldConfig::loadYaml(sc.fieldFile()).ball.diameter / 2; });
+    return b;
+  }
+  if (!impl_->runner.world().hasBall()) return b;
   const Eigen::Vector3d p = impl_->runner.world().ballPosition(), v = impl_->runner.world().ballVelocity();
   b = {true, p.x(), p.y(), p.z(), v.x(), v.y(), v.z()};
   return b;
 }
 
 void Simulation::placeBall(double x, double y) {
-  impl_->start();
+  impl_->start();  // throws ConfigError (translated) if the simulation cannot start
   impl_->runner.world().placeBall(x, y);
 }
 
 uint64_t Simulation::stateHash() const { return impl_->started ? impl_->runner.world().stateHash() : 0; }
 
 SensorValues Robot::sensors() const {
+  if (!sim_->impl_->started)
+    throw std::logic_error("robot " + std::to_string(index_) +
+                           ": sensors() before the first step(): a robot's sensors are read at each tick");
   SensorValues s;
   std::memcpy(&s, &sim_->impl_->runner.lastSensors(index_), sizeof s);
   return s;
 }
 
 void Robot::setController(Controller c) {
-  if (sim_->impl_->started)
+  if (sim_->impl_->begun)
     throw std::logic_error("robot " + std::to_string(index_) + ": setController before the first step");
   if (!c) throw std::invalid_argument("robot " + std::to_string(index_) + ": setController: empty controller");
   if (sim_->impl_->runner.scenario().robots[index_].program != runner::RobotSpec::Program::Builtin)
@@ -203,7 +225,7 @@ void Robot::setJoints(const JointValues& joints) {
     *held = joints;
     return;
   }
-  if (sim_->impl_->started)
+  if (sim_->impl_->begun)
     throw std::logic_error("robot " + std::to_string(index_) +
                            ": setJoints before the first step (then any time), or setController");
   held = std::make_shared<JointValues>(joints);
@@ -227,8 +249,9 @@ Pose Robot::pose() const {
   return p;
 }
 
-bool Robot::fallen() const { return sim_->impl_->runner.robotFall(index_).fallen; }
-int Robot::falls() const { return sim_->impl_->runner.robotFall(index_).falls; }
+// Before the first step: up, no falls (every scenario posture starts upright).
+bool Robot::fallen() const { return sim_->impl_->started && sim_->impl_->runner.robotFall(index_).fallen; }
+int Robot::falls() const { return sim_->impl_->started ? sim_->impl_->runner.robotFall(index_).falls : 0; }
 
 void Robot::push(double jx, double jy) {
   sim_->impl_->start();

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 namespace simswift::runner {
 
@@ -157,7 +158,7 @@ std::string ProgramProcess::endedMessage() {
   std::string m = "robot " + robot_ + ": its program (pid " + std::to_string(pid_) + ") " +
                   (how ? *how : std::string("is still running")) + "; log " + log_path_;
   const std::string last = tail(log_path_, 8);
-  if (!last.empty()) m += ", last lines:\n" + last;
+  m += last.empty() ? " (empty)" : ", last lines:\n" + last;
   return m;
 }
 
@@ -183,27 +184,35 @@ void ProgramProcess::stop() {
 
 std::string ProgramProcess::tail(const std::string& path, int lines) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
+  if (!in || lines <= 0) return "";
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
-  const std::streamoff from = std::max<std::streamoff>(0, size - 4096);
+  if (size <= 0) return "";  // empty (a program that died before writing), or unreadable
+  const std::streamoff from = std::max<std::streamoff>(0, size - kTailBytes);
   in.seekg(from);
   std::string text(static_cast<size_t>(size - from), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  while (!text.empty() && text.back() == '\n') text.pop_back();
-  size_t pos = text.size();
-  for (int k = 0; k < lines && pos != std::string::npos && pos > 0; ++k) pos = text.rfind('\n', pos - 1);
-  std::string out = pos == std::string::npos ? text : text.substr(pos + 1);
-  std::string indented;
-  size_t start = 0;
-  while (start <= out.size() && !out.empty()) {
-    const size_t nl = out.find('\n', start);
-    indented += "  | " + out.substr(start, nl == std::string::npos ? std::string::npos : nl - start) + "\n";
+  text.resize(static_cast<size_t>(std::max<std::streamsize>(0, in.gcount())));
+  // Its lines, oldest first; the window's first line is cut if the window
+  // starts inside the file. Trailing blank lines are not shown.
+  std::vector<std::string> all;
+  for (size_t start = 0;;) {
+    const size_t nl = text.find('\n', start);
+    all.push_back(text.substr(start, nl == std::string::npos ? std::string::npos : nl - start));
     if (nl == std::string::npos) break;
     start = nl + 1;
   }
-  if (!indented.empty()) indented.pop_back();
-  return indented;
+  const bool first_cut = from > 0;
+  while (!all.empty() && all.back().empty()) all.pop_back();
+  const size_t first = all.size() > static_cast<size_t>(lines) ? all.size() - static_cast<size_t>(lines) : 0;
+  std::string out;
+  for (size_t i = first; i < all.size(); ++i) {
+    const std::string& l = all[i];
+    const bool cut = (i == 0 && first_cut) || l.size() > kTailLineChars;
+    out += (out.empty() ? "  | " : "\n  | ") + std::string(cut ? "..." : "") +
+           (l.size() > kTailLineChars ? l.substr(l.size() - kTailLineChars) : l);
+  }
+  return out;
 }
 
 }  // namespace simswift::runner

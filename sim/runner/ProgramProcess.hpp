@@ -53,12 +53,17 @@ class ProgramProcess {
   // "killed by signal 11 (Segmentation fault)". Non-blocking (reaps).
   std::optional<std::string> ended();
   // The run's error for a program that ended early: robot, how it ended,
-  // the log's path and its last lines.
+  // the log's path and its last lines ("(empty)" if it wrote nothing).
   std::string endedMessage();
   // SIGTERM to its group, SIGKILL after the grace, reaped. Idempotent.
   void stop();
 
-  // The log's last `lines` lines (at most 4 KiB read).
+  // The log's last `lines` lines, each indented "  | " (at most the last
+  // kTailBytes of the file read; a line longer than kTailLineChars, or cut
+  // by that window, shows its end after "..."); "" for an empty or missing
+  // log or one of blank lines.
+  static constexpr long kTailBytes = 4096;
+  static constexpr size_t kTailLineChars = 240;
   static std::string tail(const std::string& path, int lines);
   // Replaces {name} by values[name]; an unknown {name} is an error naming it.
   static std::string fill(const std::string& text, const std::map<std::string, std::string>& values);

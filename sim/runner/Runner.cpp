@@ -153,16 +153,24 @@ std::vector<double> Runner::modelPosture(const ap::JointArray& angles) const {
 // The composition root, in stages: the world, then one body (World robot,
 // SensorSuite, BodyHost) per robot, the builtin robots' programs, the game
 // and team network around them, the cameras and the vision oracle.
+// A start that failed (a missing model, a program that cannot start) leaves
+// the runner half built: every later start() or tick() throws the same error.
 void Runner::start() {
+  if (start_error_) std::rethrow_exception(start_error_);
   if (started_) return;
   started_ = true;
-  buildWorld();
-  buildHosts();
-  buildPrograms();
-  buildTeamAndGame();
-  if (scenario_.camera.any()) startCameras();
-  buildVision();
-  launchPrograms();
+  try {
+    buildWorld();
+    buildHosts();
+    buildPrograms();
+    buildTeamAndGame();
+    if (scenario_.camera.any()) startCameras();
+    buildVision();
+    launchPrograms();
+  } catch (...) {
+    start_error_ = std::current_exception();
+    throw;
+  }
   wall_start_ = Clock::now();
 }
 
@@ -584,7 +592,7 @@ void Runner::captureViews(int64_t t_us) {
 }
 
 void Runner::tick() {
-  if (!started_) start();
+  start();  // idempotent; rethrows a failed start
   if (stopped_) throw RunnerError("tick after shutdown");
   applyCommands();
   applyPushes();
@@ -670,7 +678,7 @@ RunStats Runner::stats() const {
 }
 
 void Runner::placeRobot(int i, double x, double y, double theta) {
-  if (!started_) start();
+  start();
   if (i < 0 || i >= numRobots()) throw RunnerError("placeRobot: no robot " + std::to_string(i));
   world_->placeRobot(i, x, y, theta, modelPosture(ap::postureAngles(ap::Posture::Stand)));
   robots_[i]->sensors->reset(*world_);

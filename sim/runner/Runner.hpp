@@ -59,6 +59,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <exception>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -274,6 +275,7 @@ class Runner {
   std::vector<std::unique_ptr<Robot>> robots_;
   agent::program::Threading threading_ = agent::program::Threading::Named;
   bool started_ = false;
+  std::exception_ptr start_error_;  // what a failed start() threw (rethrown by start() and tick())
   bool stopped_ = false;
   int64_t last_frame_ = -1;
   std::unique_ptr<vision::VisionOracle> vision_;  // observations in every camera frame

@@ -1,6 +1,7 @@
 #include "sim/runner/Scenario.hpp"
 
 #include <dlfcn.h>
+#include <link.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +19,10 @@
 #include "agent/program/RobotSetup.hpp"
 #include "sim/world/ConfigError.hpp"
 
-#ifndef SIMSWIFT_INSTALL_DATADIR
-#define SIMSWIFT_INSTALL_DATADIR "/usr/local/share/simswift"
+// The data folder's path below an install prefix (CMAKE_INSTALL_DATADIR,
+// relative), the same in the build tree's staged copy (CMakeLists.txt).
+#ifndef SIMSWIFT_DATA_SUBDIR
+#define SIMSWIFT_DATA_SUBDIR "share/simswift"
 #endif
 
 namespace simswift::runner {
@@ -28,31 +31,50 @@ namespace al = agent::libagent;
 using agent::program::Posture;
 using agent::program::ScriptStep;
 
-std::vector<std::string> dataDirs() {
-  std::vector<std::string> dirs;
-  if (const char* env = std::getenv("SIMSWIFT_DATA_DIR"); env && *env) dirs.push_back(env);
-  // Beside the executable: <prefix>/bin/simswift -> <prefix>/share/simswift
-  // (installed), build/simswift or build/tests/test_x -> build/share/simswift
-  // (the build tree's staged copy, see CMakeLists.txt).
+namespace {
+
+// The file holding this code: libsimswift.so for the library and the Python
+// module (which loads it), or the executable that links the simulator
+// statically (simswift, the tests). Symlinks and "..", as a loader's
+// $ORIGIN search path leaves them, resolved.
+std::filesystem::path codeFile() {
   std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    dirs.push_back((exe.parent_path().parent_path() / "share" / "simswift").string());
-    dirs.push_back((exe.parent_path() / "share" / "simswift").string());
-  }
-  // Beside the library holding this code when it is libsimswift.so
-  // (<prefix>/lib/libsimswift.so -> <prefix>/share/simswift), wherever the
-  // package was installed; build/libsimswift.so -> build/share/simswift.
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&dataDirs), &info) && info.dli_fname) {
-    const std::filesystem::path lib = std::filesystem::absolute(info.dli_fname, ec);
-    if (!ec) dirs.push_back((lib.parent_path().parent_path() / "share" / "simswift").string());
-    if (!ec) dirs.push_back((lib.parent_path() / "share" / "simswift").string());
-    if (!ec && lib.parent_path().filename() != "lib")  // lib/<multiarch>/libsimswift.so
-      dirs.push_back((lib.parent_path().parent_path().parent_path() / "share" / "simswift").string());
+  link_map* map = nullptr;
+  std::filesystem::path file;
+  if (dladdr1(reinterpret_cast<void*>(&dataDirs), &info, reinterpret_cast<void**>(&map), RTLD_DL_LINKMAP) &&
+      map && map->l_name && *map->l_name)
+    file = map->l_name;  // a shared library
+  else
+    file = std::filesystem::read_symlink("/proc/self/exe", ec);  // the executable itself
+  if (file.empty()) return {};
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(file, ec);
+  return ec ? std::filesystem::absolute(file, ec).lexically_normal() : canonical;
+}
+
+}  // namespace
+
+// The one rule (docs/library.md, "Where the data is"): $SIMSWIFT_DATA_DIR if
+// set, else the nearest share/simswift beside the code's file: in its
+// folder, its parent or its grandparent. Installed anywhere (and moved):
+// <prefix>/lib/libsimswift.so, <prefix>/lib/<multiarch>/libsimswift.so and
+// <prefix>/bin/simswift find <prefix>/share/simswift; in the build tree
+// build/libsimswift.so, build/simswift and build/tests/test_x find the
+// staged copy build/share/simswift. Nothing compiled in, nothing from the
+// working folder or the Python interpreter's.
+std::vector<std::string> dataDirs() {
+  if (const char* env = std::getenv("SIMSWIFT_DATA_DIR"); env && *env) return {env};
+  const std::filesystem::path code = codeFile();
+  if (code.empty()) return {};
+  std::vector<std::string> candidates;
+  std::error_code ec;
+  for (std::filesystem::path dir = code.parent_path(); candidates.size() < 3; dir = dir.parent_path()) {
+    const std::filesystem::path c = dir / SIMSWIFT_DATA_SUBDIR;
+    if (std::filesystem::is_directory(c, ec)) return {c.string()};
+    candidates.push_back(c.string());
+    if (dir == dir.parent_path()) break;
   }
-  dirs.push_back(SIMSWIFT_INSTALL_DATADIR);
-  return dirs;
+  return candidates;  // none exists: the error lists where it looked
 }
 
 // Sane ranges for scenario values (SI units unless noted).

@@ -235,8 +235,10 @@ uint64_t programSeed(uint64_t seed, int index);
 agent::program::RobotSetup robotSetup(const Scenario& sc, int index);
 
 // Where relative model/field paths resolve after the scenario's folder:
-// $SIMSWIFT_DATA_DIR, <exe>/../share/simswift, <exe>/share/simswift (the
-// build tree's staged copy), then the install prefix's share/simswift.
+// $SIMSWIFT_DATA_DIR if set, else the nearest share/simswift in the folder of
+// the file holding this code (libsimswift.so, or the executable linking it
+// statically), its parent or its grandparent (docs/library.md). One folder
+// when found; the candidates tried when none exists.
 std::vector<std::string> dataDirs();
 
 }  // namespace simswift::runner

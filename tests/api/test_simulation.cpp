@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -188,4 +189,84 @@ TEST(Simulation, BadScenariosThrowWithFileLineAndKey) {
   } catch (const simswift::api::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("/no/such/scenario.yaml"), std::string::npos) << e.what();
   }
+}
+
+// Every call is valid before the first step: queries answer from the
+// scenario (and start nothing, so a controller can still be set after
+// them); what only a tick produces (the sensors) throws std::logic_error
+// naming the call. Issue 34: fallen(), falls() and sensors() crashed here.
+TEST(Simulation, CallsBeforeTheFirstStepAnswerFromTheScenarioOrThrowAClearError) {
+  simswift::Simulation sim = simswift::Simulation::fromYaml(
+      "duration: 4\nseed: 9\nball: {x: 1.5, y: -0.5}\nrobots:\n  - {team: 86, player: 1, x: -1.0, y: 1.0, theta: 0.5}\n",
+      "before.yaml", SIMSWIFT_SOURCE_DIR);
+  EXPECT_FALSE(sim.robot(0).fallen());  // every scenario posture starts upright
+  EXPECT_EQ(sim.robot(0).falls(), 0);
+  try {
+    sim.robot(0).sensors();
+    ADD_FAILURE() << "sensors() before the first step answered";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("robot 0: sensors() before the first step"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(sim.robot(0).pose().x, -1.0);
+  EXPECT_EQ(sim.robot(0).pose().theta, 0.5);
+  const simswift::BallState placed = sim.ball();
+  EXPECT_TRUE(placed.present);
+  EXPECT_EQ(placed.x, 1.5);
+  EXPECT_EQ(placed.y, -0.5);
+  EXPECT_EQ(placed.vx, 0.0);
+  EXPECT_EQ(sim.stateHash(), 0u);  // no world yet (documented)
+  EXPECT_EQ(sim.ticks(), 0);
+  EXPECT_EQ(sim.time(), 0.0);
+  // Nothing above started the simulation.
+  EXPECT_NO_THROW(sim.robot(0).setController([](const simswift::SensorValues&, simswift::JointValues&) {}));
+  sim.step();
+  EXPECT_EQ(sim.ticks(), 1);
+  // The ball as the scenario placed it is where the world put it (z: its
+  // radius, 0.05 m on the SPL 2017 field; 1 mm: one tick of settling).
+  EXPECT_NEAR(sim.ball().x, placed.x, 1e-3);
+  EXPECT_NEAR(sim.ball().z, placed.z, 1e-3);
+  EXPECT_NEAR(placed.z, 0.05, 1e-9);
+  EXPECT_NO_THROW(sim.robot(0).sensors());  // read at the tick
+  // `ball: none`: no ball before and after.
+  simswift::Simulation none = simswift::Simulation::fromYaml(
+      "duration: 1\nball: none\nrobots:\n  - {team: 86, player: 1, x: 0.0, y: 1.0}\n", "none.yaml",
+      SIMSWIFT_SOURCE_DIR);
+  EXPECT_FALSE(none.ball().present);
+}
+
+// A first step that fails (a missing model) fails the same way on every
+// later call, and the calls that start the simulation (placeBall, push,
+// teleport) throw the API's ConfigError with file, line and key. Issue 34:
+// the second step said "setThreading: the runner has already started", and
+// the others threw the simulator's internal error type.
+TEST(Simulation, AFailedStartIsReportedAgainAndAsTheApisConfigError) {
+  auto bad = [] {
+    return simswift::Simulation::fromYaml(
+        "duration: 1\nmodel: models/no_such_robot.urdf\nrobots:\n  - {team: 86, player: 1, x: 0.0, y: 1.0}\n",
+        "model.yaml", SIMSWIFT_SOURCE_DIR);
+  };
+  auto expectModelError = [](const std::function<void()>& call, const char* what) {
+    try {
+      call();
+      ADD_FAILURE() << what << ": no error";
+    } catch (const simswift::api::ConfigError& e) {
+      EXPECT_EQ(e.file, "model.yaml") << what;
+      EXPECT_EQ(e.line, 2) << what;
+      EXPECT_EQ(e.key, "model") << what;
+      EXPECT_NE(std::string(e.what()).find("no_such_robot.urdf' not found"), std::string::npos) << e.what();
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << what << ": not the API's ConfigError: " << e.what();
+    }
+  };
+  simswift::Simulation sim = bad();
+  expectModelError([&] { sim.step(); }, "first step");
+  expectModelError([&] { sim.step(); }, "second step");
+  expectModelError([&] { sim.run(1.0); }, "run after a failed step");
+  simswift::Simulation a = bad();
+  expectModelError([&] { a.placeBall(1.0, 0.0); }, "placeBall");
+  simswift::Simulation b = bad();
+  expectModelError([&] { b.robot(0).push(1.0, 0.0); }, "push");
+  simswift::Simulation c = bad();
+  expectModelError([&] { c.robot(0).teleport(1.0, 0.0, 0.0); }, "teleport");
 }

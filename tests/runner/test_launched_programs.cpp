@@ -115,6 +115,52 @@ TEST(ProgramProcess, EndedSaysHowAndStopEscalatesToSigkill) {
   EXPECT_NE(readFile(d + "/b.log").find("seen"), std::string::npos);  // env reached it
 }
 
+// The crash report's log lines (issue 37: an empty log threw
+// basic_string::substr out of the report): an empty log, a missing one and
+// one of blank lines give none; the last lines without a final newline; one
+// huge line (10 MB, no newline) gives its end, at most kTailLineChars (240)
+// characters of it after "...".
+TEST(ProgramProcess, TheLogsLastLinesForAnEmptyLogNoFinalNewlineAndOneHugeLine) {
+  const std::string d = tempDir("tail");
+  std::ofstream(d + "/empty.log");
+  EXPECT_EQ(ProgramProcess::tail(d + "/empty.log", 8), "");
+  EXPECT_EQ(ProgramProcess::tail(d + "/missing.log", 8), "");
+  std::ofstream(d + "/blank.log") << "\n\n\n";
+  EXPECT_EQ(ProgramProcess::tail(d + "/blank.log", 8), "");
+  std::ofstream(d + "/open.log") << "one\ntwo\nthree";
+  EXPECT_EQ(ProgramProcess::tail(d + "/open.log", 2), "  | two\n  | three");
+  EXPECT_EQ(ProgramProcess::tail(d + "/open.log", 8), "  | one\n  | two\n  | three");
+  std::ofstream(d + "/x.log") << "x";
+  EXPECT_EQ(ProgramProcess::tail(d + "/x.log", 8), "  | x");
+  {
+    std::ofstream huge(d + "/huge.log");
+    huge << std::string(10 << 20, 'a') << "the end";
+  }
+  const std::string t = ProgramProcess::tail(d + "/huge.log", 8);
+  EXPECT_EQ(t.rfind("  | ...", 0), 0u) << t.substr(0, 80);
+  EXPECT_EQ(t.size(), std::string("  | ...").size() + 240) << t.size();
+  EXPECT_EQ(t.substr(t.size() - 7), "the end");
+  // A long line among short ones: shortened alone.
+  std::ofstream(d + "/mixed.log") << "first\n" << std::string(1000, 'b') << "\nlast\n";
+  const std::string m = ProgramProcess::tail(d + "/mixed.log", 8);
+  EXPECT_EQ(m, "  | first\n  | ..." + std::string(240, 'b') + "\n  | last");
+}
+
+// Issue 37: a program that dies before writing a byte (`kill -SEGV $$`)
+// ended the run with "basic_string::substr: __pos (which is 1) > this->size()
+// (which is 0)"; its report names the robot, the signal and the log.
+TEST(ProgramProcess, AProgramThatDiesBeforeWritingIsReportedWithItsSignal) {
+  const std::string d = tempDir("silent");
+  ProgramProcess p("t1p1", {"sh", "-c", "kill -SEGV $$"}, d, {}, d + "/silent.log", 1);
+  const auto t0 = Clock::now();
+  while (!p.ended() && Clock::now() - t0 < std::chrono::seconds(10)) usleep(1000);
+  ASSERT_EQ(p.ended().value_or(""), "killed by signal 11 (Segmentation fault)");
+  std::string m;
+  ASSERT_NO_THROW(m = p.endedMessage());
+  EXPECT_EQ(m, "robot t1p1: its program (pid " + std::to_string(p.pid()) +
+                   ") killed by signal 11 (Segmentation fault); log " + d + "/silent.log (empty)");
+}
+
 TEST(RobotSetup, TheConfigFileReadsBackToTheSameSetup) {
   ap::RobotSetup s;
   s.team = 19;
@@ -256,6 +302,24 @@ TEST(LaunchedPrograms, ACrashEndsTheRunAtOnceNamingSignalAndLog) {
   }
   }
   EXPECT_FALSE(fs::exists("/dev/shm/libagent-memory925"));  // 84 x 11 + 1: removed with the host
+}
+
+// The same through a run, as the issue reproduced it: the run ends with a
+// ProgramError naming the robot and the signal.
+TEST(LaunchedPrograms, AProgramThatDiesBeforeWritingEndsTheRunNamingRobotAndSignal) {
+  const std::string d = tempDir("silent_run");
+  Runner r(Scenario::parse("duration: 10\nprogram_logs: " + d + "\nrobots:\n"
+                           "  - {team: 84, player: 2, program: {command: [sh, -c, \"kill -SEGV $$\"]}}\n",
+                           d + "/s.yaml"));
+  try {
+    for (int k = 0; k < 1000; ++k) r.tick();
+    FAIL() << "the run did not end";
+  } catch (const ProgramError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("robot t84p2: its program"), std::string::npos) << m;
+    EXPECT_NE(m.find("killed by signal 11 (Segmentation fault)"), std::string::npos) << m;
+    EXPECT_NE(m.find(d + "/t84p2.log (empty)"), std::string::npos) << m;
+  }
 }
 
 TEST(LaunchedPrograms, BadProgramValuesNameFileLineAndKey) {
