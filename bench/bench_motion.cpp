@@ -28,6 +28,7 @@
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/behaviour/RequestedBehaviour.hpp"
 #include "sim/runner/HeadingDrift.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/StanceSlip.hpp"
 
@@ -45,8 +46,8 @@ struct Rig {
             "bench_motion")) {
     auto b = std::make_unique<agent::behaviour::RequestedBehaviour>();
     behaviour = b->mailbox();
-    runner.setBehaviour(0, std::move(b));
-    runner.setThreading(agent::program::Threading::Inline);  // as the experiment runs programs
+    runner.programs().setBehaviour(0, std::move(b));
+    runner.programs().setThreading(agent::program::Threading::Inline);  // as the experiment runs programs
     runner.start();
     torso = runner.world().robot(0).model().rootLink();
   }

@@ -17,6 +17,7 @@
 
 #include "BenchResults.hpp"
 #include "BenchSetup.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/vision/VisionOracle.hpp"
 
@@ -46,7 +47,7 @@ Walking walking(double sim_s) {
           "  - {team: 1, player: 1, x: 1.5, y: -0.5, theta: 3.14159, " + walk + "}\n",
       "bench_vision");
   runner::Runner r(sc);
-  r.setThreading(agent::program::Threading::Inline);
+  r.programs().setThreading(agent::program::Threading::Inline);
   r.start();
   vision::VisionOracle extra(r.world().field(), sc.vision, sc.seed);
   extra.setTeams({0, 0, 1}, {0, 0, 1});

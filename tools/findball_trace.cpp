@@ -15,6 +15,7 @@
 
 #include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/program/RobotProgram.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Experiment.hpp"
 #include "sim/experiment/Trial.hpp"
@@ -63,7 +64,7 @@ int main(int argc, char** argv) {
     if ((tick - play) % step != 0) continue;
     for (int i = 0; i < n; ++i) {
       const auto p = run.world().robot(i).torsoPose();
-      const agent::blackboard::FindBallInfo fb = run.program(i)->board().findball.read();
+      const agent::blackboard::FindBallInfo fb = run.programs().program(i)->board().findball.read();
       std::printf("%7.2f p%d true (%6.0f,%6.0f,%5.2f) est (%6.0f,%6.0f,%5.2f) err %4.0f %-14s seg %2d pt (%5.0f,%5.0f) |",
                   clock, setup.robots[i].player, p.x * 1000, p.y * 1000, p.heading, fb.pose_x, fb.pose_y,
                   fb.pose_theta, std::hypot(p.x * 1000 - fb.pose_x, p.y * 1000 - fb.pose_y), fb.activity,

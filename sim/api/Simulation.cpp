@@ -1,6 +1,7 @@
 // The public API (include/simswift/Simulation.hpp) over the Runner: one
-// Runner per Simulation, started at the first step; controllers are Motion
-// generators run inline on the simulator's thread, so a controller's robot
+// Runner per Simulation, started at the first step; controllers are the
+// program side's ApiController (sim/programs), Motion steps run inline on
+// the simulator's thread, so a controller's robot
 // goes through the same libagent block, in the same tick stage, as every
 // other robot program (the same commands give the same state hash).
 #include "simswift/Simulation.hpp"
@@ -11,7 +12,7 @@
 #include <regex>
 
 #include "agent/libagent/AgentShared.hpp"
-#include "agent/program/MotionGenerator.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/api/ConfigErrors.hpp"
@@ -34,27 +35,6 @@ static_assert(sameIndex(Sonar, al::Sensors::US) && sameIndex(RFsrRearRight, al::
               sameIndex(ChestButton, al::Sensors::ChestBoard_Button) &&
               sameIndex(BatteryCharge, al::Sensors::Battery_Charge));
 
-namespace {
-
-// The controller as the program's Motion step.
-class ControllerMotion : public agent::framework::MotionGenerator {
- public:
-  explicit ControllerMotion(Controller c) : c_(std::move(c)) {}
-  void tick(const al::SensorValues& sensors, int64_t, al::JointValues& out) override {
-    SensorValues s;
-    std::memcpy(&s, &sensors, sizeof s);
-    JointValues j;
-    std::memcpy(&j, &out, sizeof j);
-    c_(s, j);
-    std::memcpy(&out, &j, sizeof j);
-  }
-
- private:
-  Controller c_;
-};
-
-}  // namespace
-
 ConfigError configError(const std::exception& e) {
   const std::string m = e.what();
   static const std::regex form(R"(^(.*?):(\d+): ([^: ][^:]*): )");
@@ -73,8 +53,8 @@ struct Simulation::Impl {
   void start() {
     if (started) return;
     // Controllers and every builtin program on this thread, right after the
-    // tick is posted (Runner::setThreading): no thread hand-over per tick.
-    runner.setThreading(agent::program::Threading::Inline);
+    // tick is posted (Programs::setThreading): no thread hand-over per tick.
+    runner.programs().setThreading(agent::program::Threading::Inline);
     runner.start();
     started = true;
   }
@@ -166,7 +146,16 @@ void Robot::setController(Controller c) {
   if (sim_->impl_->runner.scenario().robots[index_].program != runner::RobotSpec::Program::Builtin)
     throw std::logic_error("robot " + std::to_string(index_) +
                            ": its scenario runs an external program; a controller needs program: builtin");
-  sim_->impl_->runner.setMotionGenerator(index_, std::make_unique<ControllerMotion>(std::move(c)));
+  // The public types are libagent 2017's layout (checked above).
+  sim_->impl_->runner.programs().setController(index_, [c = std::move(c)](const al::SensorValues& sensors,
+                                                                           al::JointValues& out) {
+    SensorValues s;
+    std::memcpy(&s, &sensors, sizeof s);
+    JointValues j;
+    std::memcpy(&j, &out, sizeof j);
+    c(s, j);
+    std::memcpy(&out, &j, sizeof j);
+  });
 }
 
 void Robot::setJoints(const JointValues& joints) {

@@ -380,7 +380,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
     rs.x = r.x;
     rs.y = r.y;
     rs.theta = r.theta;
-    rs.posture = agent::program::Posture::Stand;
+    rs.posture = agent::nao::Posture::Stand;
     rs.program = r.launch.launched() ? runner::RobotSpec::Program::External : runner::RobotSpec::Program::Builtin;
     rs.launch = r.launch;
     sc.robots.push_back(std::move(rs));

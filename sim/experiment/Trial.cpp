@@ -8,6 +8,7 @@
 
 #include "agent/libagent/SharedNames.hpp"
 #include "sim/experiment/Csv.hpp"
+#include "sim/programs/Programs.hpp"
 
 namespace simswift::experiment {
 
@@ -124,7 +125,7 @@ std::unique_ptr<runner::Runner> startRunner(const Experiment& e, const TrialSpec
   auto run = std::make_unique<runner::Runner>(sc);
   // The robot programs' steps on this thread: no hand-over between threads
   // (the same results as named threads; two trials per two cores keep both busy).
-  run->setThreading(agent::program::Threading::Inline);
+  run->programs().setThreading(agent::program::Threading::Inline);
   hooks.behaviours->attach(e, t, *run);
   run->start();  // the t = 0 penalties: the GameController's placer takes the robots to the sideline
   // ... and the experiment puts them on their start poses, penalised, as

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "agent/program/RobotProgram.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Experiment.hpp"
 #include "sim/experiment/Trial.hpp"
@@ -40,7 +41,7 @@ TEST(HalfwayEntryPhysics, RobotsEnteringBesideTheHalfwayLineKeepTheirSide) {
     if (since < per_s || since % 10 != 0) continue;
     for (int i = 0; i < n; ++i) {
       const auto truth = run.world().robot(i).torsoPose();  // m
-      const agent::blackboard::FieldPose est = run.program(i)->board().localisation.read().pose;  // mm
+      const agent::blackboard::FieldPose est = run.programs().program(i)->board().localisation.read().pose;  // mm
       const double err = std::hypot(truth.x * 1000 - est.x, truth.y * 1000 - est.y);
       ASSERT_LT(err, 400) << "player " << setup.robots[i].player << " at " << since * kTickSeconds << " s: true ("
                           << truth.x << ", " << truth.y << ") m, believed (" << est.x << ", " << est.y << ") mm";

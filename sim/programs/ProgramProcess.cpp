@@ -1,4 +1,4 @@
-#include "sim/runner/ProgramProcess.hpp"
+#include "sim/programs/ProgramProcess.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <thread>
 
-namespace simswift::runner {
+namespace simswift::programs {
 
 namespace fs = std::filesystem;
 
@@ -206,4 +206,4 @@ std::string ProgramProcess::tail(const std::string& path, int lines) {
   return indented;
 }
 
-}  // namespace simswift::runner
+}  // namespace simswift::programs
