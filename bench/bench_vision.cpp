@@ -52,7 +52,7 @@ Walking walking(double sim_s) {
   vision::VisionOracle extra(r.world().field(), sc.vision, sc.seed);
   extra.setTeams({0, 0, 1}, {0, 0, 1});
   agent::libagent::CameraFrame f{};
-  const int64_t ticks = static_cast<int64_t>(std::llround(sim_s / kTickSeconds));
+  const int64_t ticks = agent::nao::ticksIn(sim_s);
   int64_t last = -1, frames = 0;
   double oracle_s = 0;
   int64_t obs = 0;

@@ -95,7 +95,7 @@ void Simulation::step() {
 }
 
 double Simulation::run(double seconds, const std::function<bool(const Simulation&)>& until) {
-  const int64_t n = std::llround(seconds / agent::nao::kMotionTickSeconds);
+  const int64_t n = agent::nao::ticksIn(seconds);
   int64_t k = 0;
   for (; k < n; ++k) {
     step();

@@ -405,7 +405,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   return sc;
 }
 
-int64_t playTick(const Experiment& e) { return std::max<int64_t>(1, std::llround(e.start.penalised / kTickSeconds)); }
+int64_t playTick(const Experiment& e) { return std::max<int64_t>(1, agent::nao::ticksIn(e.start.penalised)); }
 
 }  // namespace simswift::experiment
 

@@ -502,16 +502,16 @@ void Runner::placeRobot(int i, double x, double y, double theta) {
 RunStats Runner::run(const RunOptions& opt) {
   if (opt.realtime) setFreeRunning(true);
   start();
-  const int64_t total = static_cast<int64_t>(std::llround(scenario_.duration / kTickSeconds));
+  const int64_t total = agent::nao::ticksIn(scenario_.duration);
   const int64_t progress_every =
-      opt.progress && opt.progress_every_s > 0 ? std::max<int64_t>(1, std::llround(opt.progress_every_s / kTickSeconds)) : 0;
+      opt.progress && opt.progress_every_s > 0 ? std::max<int64_t>(1, agent::nao::ticksIn(opt.progress_every_s)) : 0;
   wall_start_ = Clock::now();
   while (world_->tick() < total) {
     tick();
     const int64_t t = world_->tick();
     // The first tick may have waited for external programs to start: the
     // wall clock (pacing, real-time factor) counts from its end.
-    if (t == 1) wall_start_ = Clock::now() - std::chrono::milliseconds(10);
+    if (t == 1) wall_start_ = Clock::now() - std::chrono::microseconds(agent::nao::kMotionTickUs);
     if (opt.print_hash_every > 0 && t % opt.print_hash_every == 0)
       std::printf("tick %lld hash %s\n", static_cast<long long>(t), hashHex(world_->stateHash()).c_str());
     if (progress_every && t % progress_every == 0 && t < total) {
@@ -521,7 +521,7 @@ RunStats Runner::run(const RunOptions& opt) {
     }
     if (opt.realtime) {
       // Pacing only: sleep until the wall clock catches up with simulated time.
-      std::this_thread::sleep_until(wall_start_ + std::chrono::microseconds(t * 10000));
+      std::this_thread::sleep_until(wall_start_ + std::chrono::microseconds(t * agent::nao::kMotionTickUs));
     }
   }
   const RunStats s = stats();
