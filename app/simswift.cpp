@@ -26,6 +26,7 @@
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Command.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace {
@@ -255,7 +256,7 @@ int main(int argc, char** argv) {
 
   try {
     Runner runner(sc);
-    if (inline_programs) runner.setThreading(agent::program::Threading::Inline);
+    if (inline_programs) runner.programs().setThreading(agent::program::Threading::Inline);
     if (findball_dir) {
       sim::views::FindBallRecorderConfig fc;
       fc.dir = *findball_dir;
@@ -265,7 +266,7 @@ int main(int argc, char** argv) {
     try {
       const RunStats stats = runner.run(opt);
       std::printf("%s\n%s", stats.summary().c_str(), stats.robotLines().c_str());
-      for (const std::string& log : runner.programLogs()) std::printf("  program log %s\n", log.c_str());
+      for (const std::string& log : runner.programs().logs()) std::printf("  program log %s\n", log.c_str());
       std::fflush(stdout);
     } catch (const WatchdogError& e) {
       // The silent robot thread cannot be joined; remove the named objects

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     world.setBallVelocity({-0.5, 0.1, 0});
     RobotCameras cams(world);
     auto images = std::make_unique<agent::libagent::CameraImages>();
-    const int64_t ticks = static_cast<int64_t>(std::llround(sim_seconds / kTickSeconds));
+    const int64_t ticks = agent::nao::ticksIn(sim_seconds);
     int64_t next_frame = 0, rendered = 0;
     const auto t0 = Clock::now();
     for (int64_t t = 0; t < ticks; ++t) {

@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
         Cell c;
         for (int s = first_seed; s < first_seed + seeds; ++s) {
           simswift::runner::Runner r(simswift::runner::Scenario::parse(fh::scenario(robots, kind, pos, s, 180), "bench"));
-          r.setThreading(agent::program::Threading::Inline);
+          r.programs().setThreading(agent::program::Threading::Inline);
           const fh::FindTimes t = fh::timeToFind(r, 180.0);
           std::printf("  %s robots %d position %d seed %d: %s  (falls %d)\n", kind, robots, pos, s,
                       t.truth ? (std::to_string(*t.truth) + " s").c_str() : "not found", r.stats().falls);

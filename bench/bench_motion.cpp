@@ -31,6 +31,7 @@
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/behaviour/RequestedBehaviour.hpp"
 #include "sim/api/WalkSampling.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "simswift/WalkTest.hpp"
 
@@ -47,8 +48,8 @@ struct Rig {
             "bench_motion")) {
     auto b = std::make_unique<agent::behaviour::RequestedBehaviour>();
     behaviour = b->mailbox();
-    runner.setBehaviour(0, std::move(b));
-    runner.setThreading(agent::program::Threading::Inline);  // as the experiment runs programs
+    runner.programs().setBehaviour(0, std::move(b));
+    runner.programs().setThreading(agent::program::Threading::Inline);  // as the experiment runs programs
     runner.start();
   }
   void walk(double f, double l, double t) {

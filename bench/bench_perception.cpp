@@ -25,6 +25,7 @@
 #include <time.h>
 
 #include "BenchResults.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace {
@@ -70,7 +71,7 @@ agent::program::Threading g_threading = agent::program::Threading::Inline;
 // Wall and CPU (this process, all threads) seconds of `seconds` simulated.
 void timeRun(int robots, uint64_t seed, double seconds, double* wall, double* cpu) {
   Runner r(Scenario::parse(scenario(robots, seed, seconds), "bench_perception"));
-  r.setThreading(g_threading);
+  r.programs().setThreading(g_threading);
   r.start();
   const auto w0 = std::chrono::steady_clock::now();
   const double c0 = cpuSeconds();
@@ -142,13 +143,13 @@ int main(int argc, char** argv) {
   int frames_seen = 0;
   for (int s = 1; s <= seeds; ++s) {
     Runner r(Scenario::parse(scenario(1, s, 60.0), "bench_perception"));
-    r.setThreading(g_threading);
+    r.programs().setThreading(g_threading);
     r.start();
     std::vector<double> mine;
     for (int64_t i = 1; i <= 6000; ++i) {
       r.tick();
       if (i < 500 || i % 10 != 0) continue;
-      const auto est = r.program(0)->board().localisation.read();
+      const auto est = r.programs().program(0)->board().localisation.read();
       const auto t = r.world().robot(0).torsoPose();
       const double e = std::hypot(est.pose.x - 1000 * t.x, est.pose.y - 1000 * t.y);
       const double dh = t.heading - est.pose.theta;
@@ -156,7 +157,7 @@ int main(int argc, char** argv) {
       mine.push_back(e);
       head.push_back(std::fabs(std::atan2(std::sin(dh), std::cos(dh))));
     }
-    frames_seen += r.program(0)->board().vision.read().num_features;
+    frames_seen += r.programs().program(0)->board().vision.read().num_features;
     double m = 0;
     for (double e : mine) m += e;
     seed_means.push_back(m / mine.size());

@@ -17,6 +17,7 @@
 
 #include "BenchResults.hpp"
 #include "BenchSetup.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/vision/VisionOracle.hpp"
 
@@ -46,12 +47,12 @@ Walking walking(double sim_s) {
           "  - {team: 1, player: 1, x: 1.5, y: -0.5, theta: 3.14159, " + walk + "}\n",
       "bench_vision");
   runner::Runner r(sc);
-  r.setThreading(agent::program::Threading::Inline);
+  r.programs().setThreading(agent::program::Threading::Inline);
   r.start();
   vision::VisionOracle extra(r.world().field(), sc.vision, sc.seed);
   extra.setTeams({0, 0, 1}, {0, 0, 1});
   agent::libagent::CameraFrame f{};
-  const int64_t ticks = static_cast<int64_t>(std::llround(sim_s / kTickSeconds));
+  const int64_t ticks = agent::nao::ticksIn(sim_s);
   int64_t last = -1, frames = 0;
   double oracle_s = 0;
   int64_t obs = 0;

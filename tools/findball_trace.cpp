@@ -15,6 +15,7 @@
 
 #include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/program/RobotProgram.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Experiment.hpp"
 #include "sim/experiment/Trial.hpp"
@@ -39,8 +40,8 @@ int main(int argc, char** argv) {
   std::printf("# trial %d setup %s ball %d (%.2f, %.2f) seed %llu\n", t.index, setup.name.c_str(), t.ball + 1,
               e.balls[t.ball].x, e.balls[t.ball].y, static_cast<unsigned long long>(t.seed));
   const int64_t play = playTick(e);
-  const int64_t limit = play + std::llround(e.time_limit / kTickSeconds);
-  const int64_t step = std::max<int64_t>(1, std::llround(every / kTickSeconds));
+  const int64_t limit = play + agent::nao::ticksIn(e.time_limit);
+  const int64_t step = std::max<int64_t>(1, agent::nao::ticksIn(every));
   std::vector<int> contacts(n, 0), falls(n, 0);
   while (run.ticks() < limit) {
     run.tick();
@@ -63,7 +64,7 @@ int main(int argc, char** argv) {
     if ((tick - play) % step != 0) continue;
     for (int i = 0; i < n; ++i) {
       const auto p = run.world().robot(i).torsoPose();
-      const agent::blackboard::FindBallInfo fb = run.program(i)->board().findball.read();
+      const agent::blackboard::FindBallInfo fb = run.programs().program(i)->board().findball.read();
       std::printf("%7.2f p%d true (%6.0f,%6.0f,%5.2f) est (%6.0f,%6.0f,%5.2f) err %4.0f %-14s seg %2d pt (%5.0f,%5.0f) |",
                   clock, setup.robots[i].player, p.x * 1000, p.y * 1000, p.heading, fb.pose_x, fb.pose_y,
                   fb.pose_theta, std::hypot(p.x * 1000 - fb.pose_x, p.y * 1000 - fb.pose_y), fb.activity,

@@ -12,7 +12,7 @@
 //
 //   auto b = std::make_unique<agent::behaviour::RequestedBehaviour>();
 //   std::shared_ptr<agent::behaviour::MotionRequestMailbox> box = b->mailbox();
-//   runner.setBehaviour(0, std::move(b));   // sim/runner/Runner.hpp
+//   runner.programs().setBehaviour(0, std::move(b));   // sim/programs/Programs.hpp
 //   box->set([](agent::blackboard::MotionRequest& r) { r.body.type = WALK; ...; ++r.sequence; });
 //
 // It reads no other section: unlike the scenario's action script it does

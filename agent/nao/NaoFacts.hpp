@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "agent/libagent/AgentShared.hpp"
@@ -63,8 +64,12 @@ constexpr double kCameraRateHz = kCameraFramesPerSecond;  // Hz
 // The DCM's cycle: sensors in, joint commands out, and the Motion thread's
 // tick (rUNSWift 2017 release, robot/libagent). The one home of the 10 ms tick for robot code
 // and simulator alike.
+// The tick belongs to the body's interface: this is libagent's on the V5
+// (a V6 over LoLA runs 12 ms; docs/architecture.md).
 constexpr int64_t kMotionTickUs = 10000;                        // us (100 Hz)
 constexpr double kMotionTickSeconds = kMotionTickUs * 1e-6;     // s
+// Whole ticks in `seconds` s, rounded to the nearest (durations, time limits).
+inline int64_t ticksIn(double seconds) { return std::llround(seconds / kMotionTickSeconds); }
 
 // ---------------------------------------------------------------- FSRs
 // Order as in libagent: FrontLeft, FrontRight, RearLeft, RearRight.

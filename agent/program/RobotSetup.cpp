@@ -59,11 +59,6 @@ ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::Mot
   return pc;
 }
 
-const std::vector<std::string>& postureNames() {
-  static const std::vector<std::string> names = {"stand", "crouch", "limp", "zero"};
-  return names;
-}
-
 ScriptStep readScriptStep(const YamlReader& r) {
   ScriptStep s;
   s.t_s = r.number("t", Range::closed(0, kMaxTime));

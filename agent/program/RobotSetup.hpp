@@ -56,12 +56,10 @@ struct RobotSetup {
 // the Motion module (a test's generator). `motion_config` is the Motion
 // module's configuration (ProgramConfig::motion: walk, kick, get-ups; the
 // behaviour plans with its walk's top speeds); the simulator's runner takes
-// a test's through Runner::setMotionConfig.
+// a test's through Programs::setMotionConfig (sim/programs).
 ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::MotionGenerator> motion = nullptr,
                              const motion::MotionConfig& motion_config = motion::MotionConfig());
 
-// The posture names the files use.
-const std::vector<std::string>& postureNames();
 // One `script:` entry: {t, joint, angle[, duration, stiffness]} or {t, posture}.
 ScriptStep readScriptStep(const config::YamlReader& r);
 

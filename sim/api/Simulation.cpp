@@ -1,6 +1,7 @@
 // The public API (include/simswift/Simulation.hpp) over the Runner: one
-// Runner per Simulation, started at the first step; controllers are Motion
-// generators run inline on the simulator's thread, so a controller's robot
+// Runner per Simulation, started at the first step; controllers are the
+// program side's ApiController (sim/programs), Motion steps run inline on
+// the simulator's thread, so a controller's robot
 // goes through the same libagent block, in the same tick stage, as every
 // other robot program (the same commands give the same state hash).
 #include "simswift/Simulation.hpp"
@@ -11,7 +12,7 @@
 #include <regex>
 
 #include "agent/libagent/AgentShared.hpp"
-#include "agent/program/MotionGenerator.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/FieldConfig.hpp"
@@ -35,41 +36,6 @@ static_assert(sameIndex(RHand, al::Joints::RHand) && sameIndex(LKneePitch, al::J
 static_assert(sameIndex(Sonar, al::Sensors::US) && sameIndex(RFsrRearRight, al::Sensors::RFoot_FSR_RearRight) &&
               sameIndex(ChestButton, al::Sensors::ChestBoard_Button) &&
               sameIndex(BatteryCharge, al::Sensors::Battery_Charge));
-
-namespace {
-
-// The controller as the program's Motion step; a libagent controller also
-// sees `standing` and the buttons and sends STIFFEN through the program
-// (RobotProgram::setLibagentIO), as an external program does in the block.
-class ControllerMotion : public agent::framework::MotionGenerator {
- public:
-  explicit ControllerMotion(Controller c) : c_(std::move(c)) {}
-  ControllerMotion(LibagentController c, std::shared_ptr<agent::program::LibagentIO> io)
-      : lc_(std::move(c)), io_(std::move(io)) {}
-  void tick(const al::SensorValues& sensors, int64_t, al::JointValues& out) override {
-    SensorValues s;
-    std::memcpy(&s, &sensors, sizeof s);
-    JointValues j;
-    std::memcpy(&j, &out, sizeof j);
-    if (lc_) {
-      Libagent l;
-      l.standing = io_->standing;
-      l.buttons = io_->buttons;
-      lc_(s, j, l);
-      io_->stiffen = l.stiffen;
-    } else {
-      c_(s, j);
-    }
-    std::memcpy(&out, &j, sizeof j);
-  }
-
- private:
-  Controller c_;
-  LibagentController lc_;
-  std::shared_ptr<agent::program::LibagentIO> io_;
-};
-
-}  // namespace
 
 ConfigError configError(const std::exception& e) {
   const std::string m = e.what();
@@ -99,7 +65,6 @@ struct Simulation::Impl {
   explicit Impl(runner::Scenario sc) : runner(std::move(sc)) {}
   runner::Runner runner;
   std::vector<std::shared_ptr<JointValues>> held;  // setJoints' commands, by robot (null: none)
-  std::vector<std::shared_ptr<agent::program::LibagentIO>> io;  // libagent controllers' extras, by robot
   bool begun = false;    // start() was called (a controller is too late from here on)
   bool started = false;  // ... and succeeded
   // Builds the world and starts the programs. A start that fails throws the
@@ -109,19 +74,16 @@ struct Simulation::Impl {
     if (!begun) {
       begun = true;
       // Controllers and every builtin program on this thread, right after the
-      // tick is posted (Runner::setThreading): no thread hand-over per tick.
-      runner.setThreading(agent::program::Threading::Inline);
+      // tick is posted (Programs::setThreading): no thread hand-over per tick.
+      runner.programs().setThreading(agent::program::Threading::Inline);
     }
     translated([&] { runner.start(); });
-    for (size_t i = 0; i < io.size(); ++i)
-      if (io[i]) runner.program(static_cast<int>(i))->setLibagentIO(io[i]);
     started = true;
   }
 };
 
 Simulation::Simulation(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {
   impl_->held.resize(impl_->runner.scenario().robots.size());
-  impl_->io.resize(impl_->held.size());
 }
 Simulation::Simulation(Simulation&&) noexcept = default;
 Simulation& Simulation::operator=(Simulation&&) noexcept = default;
@@ -145,7 +107,7 @@ void Simulation::step() {
 }
 
 double Simulation::run(double seconds, const std::function<bool(const Simulation&)>& until) {
-  const int64_t n = std::llround(seconds / agent::nao::kMotionTickSeconds);
+  const int64_t n = agent::nao::ticksIn(seconds);
   int64_t k = 0;
   for (; k < n; ++k) {
     step();
@@ -207,16 +169,37 @@ void Robot::setController(Controller c) {
   if (sim_->impl_->runner.scenario().robots[index_].program != runner::RobotSpec::Program::Builtin)
     throw std::logic_error("robot " + std::to_string(index_) +
                            ": its scenario runs an external program; a controller needs program: builtin");
-  sim_->impl_->runner.setMotionGenerator(index_, std::make_unique<ControllerMotion>(std::move(c)));
-  sim_->impl_->io[index_].reset();
+  // The public types are libagent 2017's layout (checked above).
+  sim_->impl_->runner.programs().setController(index_, [c = std::move(c)](const al::SensorValues& sensors,
+                                                                           al::JointValues& out) {
+    SensorValues s;
+    std::memcpy(&s, &sensors, sizeof s);
+    JointValues j;
+    std::memcpy(&j, &out, sizeof j);
+    c(s, j);
+    std::memcpy(&out, &j, sizeof j);
+  });
 }
 
+// The libagent controller also sees `standing` and the buttons and sends
+// STIFFEN through the program, as an external program does in the block.
 void Robot::setController(LibagentController c) {
   if (!c) throw std::invalid_argument("robot " + std::to_string(index_) + ": setController: empty controller");
-  auto io = std::make_shared<agent::program::LibagentIO>();
   setController([](const SensorValues&, JointValues&) {});  // the same checks, then replaced
-  sim_->impl_->runner.setMotionGenerator(index_, std::make_unique<ControllerMotion>(std::move(c), io));
-  sim_->impl_->io[index_] = std::move(io);
+  sim_->impl_->runner.programs().setLibagentController(
+      index_, [c = std::move(c)](const al::SensorValues& sensors, al::JointValues& out,
+                                 programs::LibagentExtras& io) {
+        SensorValues s;
+        std::memcpy(&s, &sensors, sizeof s);
+        JointValues j;
+        std::memcpy(&j, &out, sizeof j);
+        Libagent l;
+        l.standing = io.standing;
+        l.buttons = io.buttons;
+        c(s, j, l);
+        io.stiffen = l.stiffen;
+        std::memcpy(&out, &j, sizeof j);
+      });
 }
 
 void Robot::setJoints(const JointValues& joints) {

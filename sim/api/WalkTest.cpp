@@ -18,8 +18,8 @@
 #include <unistd.h>
 
 #include "agent/libagent/AgentShared.hpp"
-#include "agent/motion/Walk2014Generator.hpp"
 #include "agent/nao/NaoFacts.hpp"
+#include "sim/programs/ReferenceWalk.hpp"
 #include "sim/api/SimulationAccess.hpp"
 #include "sim/api/WalkSampling.hpp"
 #include "sim/experiment/Figures.hpp"
@@ -188,7 +188,7 @@ void WalkTest::command(const WalkCommand& c) { impl_->command = c; }
 WalkCommand WalkTest::command() const { return impl_->command; }
 
 void WalkTest::run(double seconds) {
-  const long n = std::lround(seconds / agent::nao::kMotionTickSeconds);
+  const long n = agent::nao::ticksIn(seconds);
   for (long k = 0; k < n; ++k) {
     impl_->sim.step();
     if (impl_->trace.is_open()) impl_->row();
@@ -201,7 +201,7 @@ WalkFigures WalkTest::walk(const WalkCommand& c, double settle, double window) {
   run(settle);
   WalkMeter meter;
   meter.begin(sample(), c);
-  const long n = std::lround(window / agent::nao::kMotionTickSeconds);
+  const long n = agent::nao::ticksIn(window);
   for (long k = 0; k < n; ++k) {
     run(agent::nao::kMotionTickSeconds);
     meter.add(sample());
@@ -336,14 +336,13 @@ bool plotTrace(const std::string& csv_path, const std::string& png_path, std::st
 // --- the reference walk ------------------------------------------------------
 
 Gait referenceGait() {
-  auto walk = std::make_shared<agent::motion::Walk2014Generator>();
+  programs::ReferenceWalkStep walk = programs::referenceWalk();
   return [walk](const WalkCommand& c, const SensorValues& s, JointValues& j) {
     agent::libagent::SensorValues in;
     agent::libagent::JointValues out;
     std::memcpy(&in, &s, sizeof in);
     std::memcpy(&out, &j, sizeof out);
-    walk->setRequest(c.walk, {c.forward, c.left, c.turn});
-    walk->tick(in, agent::nao::kMotionTickSeconds, out);
+    walk(c.walk, c.forward, c.left, c.turn, in, out);
     std::memcpy(&j, &out, sizeof j);
   };
 }

@@ -52,7 +52,7 @@
 #include "agent/libagent/CameraImages.hpp"
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/libagent/SimExtension.hpp"
-#include "agent/program/Postures.hpp"
+#include "agent/nao/Postures.hpp"
 #include "sim/bridge/Cleanup.hpp"
 #include "sim/bridge/LibagentBehaviour.hpp"
 #include "sim/bridge/Releases.hpp"
@@ -87,7 +87,7 @@ class BodyHost {
   // writes one. Throws BridgeError (bad team/player, objects owned by a
   // live simulator, system errors).
   BodyHost(int team, int player, Mode mode,
-           const agent::libagent::JointValues& initial = agent::program::postureCommand(agent::program::Posture::Stand),
+           const agent::libagent::JointValues& initial = agent::nao::postureCommand(agent::nao::Posture::Stand),
            const BodyHostOptions& options = {});
   ~BodyHost();  // unlinks the named objects
   BodyHost(const BodyHost&) = delete;

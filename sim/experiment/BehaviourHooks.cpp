@@ -1,12 +1,12 @@
 #include "sim/experiment/BehaviourHooks.hpp"
 
-#include "agent/behaviour/BehaviourYaml.hpp"
+#include "sim/programs/ProgramSpec.hpp"
 
 namespace simswift::experiment {
 
 void RobotBehaviours::check(const Experiment&, const ExperimentRobot& r) const {
   if (r.behaviour == Behaviour::Script) return;
-  agent::behaviour::behaviourFromText(behaviourName(r.behaviour), r.config_yaml, r.behaviour_where);
+  programs::checkBehaviour(behaviourName(r.behaviour), r.config_yaml, r.behaviour_where);
 }
 
 void RobotBehaviours::configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const {
@@ -14,8 +14,7 @@ void RobotBehaviours::configure(const Experiment& e, const TrialSpec& t, runner:
   for (size_t i = 0; i < s.robots.size() && i < sc.robots.size(); ++i) {
     const ExperimentRobot& r = s.robots[i];
     if (r.behaviour == Behaviour::Script) continue;  // its actions are already set
-    sc.robots[i].behaviour = agent::behaviour::behaviourFromText(behaviourName(r.behaviour), r.config_yaml,
-                                                                 r.behaviour_where, &sc.robots[i].behaviour_yaml);
+    programs::setBehaviour(sc.robots[i], behaviourName(r.behaviour), r.config_yaml, r.behaviour_where);
   }
 }
 

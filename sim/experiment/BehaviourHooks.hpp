@@ -1,6 +1,7 @@
 // The behaviours of agent/behaviour in experiments: findball2016,
 // findball2017 and striker become the trial scenario's robot `behaviour:`
-// (sim/runner/BehaviourYaml: the robot's config overrides parsed there, so
+// (through the program side, sim/programs/ProgramSpec.hpp: the robot's
+// config overrides parsed by agent/behaviour/BehaviourYaml, so
 // a bad override is refused before any trial, naming the behaviour's file
 // and line). Script robots keep their actions. The trial's start (penalised
 // at the start poses, then PLAYING) is runTrial's, the same for every

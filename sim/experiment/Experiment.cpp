@@ -388,7 +388,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
     rs.x = r.x;
     rs.y = r.y;
     rs.theta = r.theta;
-    rs.posture = agent::program::Posture::Stand;
+    rs.posture = agent::nao::Posture::Stand;
     rs.program = r.launch.launched() ? runner::RobotSpec::Program::External : runner::RobotSpec::Program::Builtin;
     rs.launch = r.launch;
     sc.robots.push_back(std::move(rs));
@@ -413,7 +413,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   return sc;
 }
 
-int64_t playTick(const Experiment& e) { return std::max<int64_t>(1, std::llround(e.start.penalised / kTickSeconds)); }
+int64_t playTick(const Experiment& e) { return std::max<int64_t>(1, agent::nao::ticksIn(e.start.penalised)); }
 
 }  // namespace simswift::experiment
 

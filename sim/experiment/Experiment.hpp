@@ -38,7 +38,7 @@
 //       config: {...}              # default behaviour overrides (opaque)
 //       program: {command: [simswift-agent, --config, "{config}"]}   # optional, also
 //                                  # per robot: a program launched fresh for every
-//                                  # trial (sim/runner/ProgramProcess.hpp; default builtin)
+//                                  # trial (sim/programs/ProgramProcess.hpp; default builtin)
 //       robots:                    # table 5.1: SPL team and player numbers, start poses
 //         - {team: 19, player: 2, x: -3.25, y: 3.0, theta: -1.5708}
 //         - {team: 19, player: 3, x: -2.0, y: -3.0, theta: 1.5708, behaviour: script,
@@ -92,7 +92,7 @@ struct ExperimentRobot {
   std::string config_yaml;  // behaviour overrides, opaque (YAML flow text; "" = none)
   runner::RobotSpec script;  // behaviour script: its actions (the scenario's actions: list)
   // program: builtin (default) or {command: [...]}: a program simswift
-  // starts fresh for every trial (sim/runner/ProgramProcess.hpp), given the
+  // starts fresh for every trial (sim/programs/ProgramProcess.hpp), given the
   // robot's setup in its {config} file.
   runner::LaunchSpec launch;
   std::string where;         // "file:line: setups[0].robots[1]" for later errors

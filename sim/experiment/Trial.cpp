@@ -8,6 +8,7 @@
 
 #include "agent/libagent/SharedNames.hpp"
 #include "sim/experiment/Csv.hpp"
+#include "sim/programs/Programs.hpp"
 
 namespace simswift::experiment {
 
@@ -124,7 +125,7 @@ std::unique_ptr<runner::Runner> startRunner(const Experiment& e, const TrialSpec
   auto run = std::make_unique<runner::Runner>(sc);
   // The robot programs' steps on this thread: no hand-over between threads
   // (the same results as named threads; two trials per two cores keep both busy).
-  run->setThreading(agent::program::Threading::Inline);
+  run->programs().setThreading(agent::program::Threading::Inline);
   hooks.behaviours->attach(e, t, *run);
   run->start();  // the t = 0 penalties: the GameController's placer takes the robots to the sideline
   // ... and the experiment puts them on their start poses, penalised, as
@@ -144,9 +145,9 @@ void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& 
   World& w = run.world();
 
   const int64_t play = playTick(e);  // PLAYING from the end of this tick: the trial's clock starts
-  const int64_t limit = play + std::llround(e.time_limit / kTickSeconds);
-  const int64_t track_every = std::max<int64_t>(1, std::llround(e.track_every / kTickSeconds));
-  const int64_t sideline_ticks = std::max<int64_t>(1, std::llround(e.fallen.sideline_after / kTickSeconds));
+  const int64_t limit = play + agent::nao::ticksIn(e.time_limit);
+  const int64_t track_every = std::max<int64_t>(1, agent::nao::ticksIn(e.track_every));
+  const int64_t sideline_ticks = std::max<int64_t>(1, agent::nao::ticksIn(e.fallen.sideline_after));
   auto clock = [&](int64_t tick) { return static_cast<double>(tick - play) * kTickSeconds; };  // s since PLAYING
   std::vector<int64_t> down_since(n, -1);  // tick the robot went down, -1 = up
   std::vector<runner::FallDetector> down(n);

@@ -8,9 +8,10 @@
 #include <sstream>
 #include <thread>
 
-#include "agent/behaviour/BehaviourModule.hpp"
 #include "agent/libagent/SharedNames.hpp"
+#include "agent/nao/Postures.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/vision/VisionOracle.hpp"
 #include "sim/runner/Tracer.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
@@ -29,47 +30,15 @@ class OverviewCamera {};
 namespace simswift::runner {
 
 namespace al = agent::libagent;
-namespace ap = agent::program;
-namespace ab = agent::behaviour;
+namespace an = agent::nao;
 using agent::libagent::SyncMode;
 using Clock = std::chrono::steady_clock;
 
-Runner::Runner(Scenario scenario) : scenario_(std::move(scenario)) {}
+Runner::Runner(Scenario scenario)
+    : scenario_(std::move(scenario)),
+      programs_(std::make_unique<programs::Programs>(static_cast<int>(scenario_.robots.size()))) {}
 
 Runner::~Runner() { shutdown(); }
-
-// Robot `robot`'s entry for an override given before start() (robots are
-// created in start(); overrides wait in scenario order until then).
-Runner::Robot& Runner::overrideSlot(int robot, const char* what) {
-  if (started_) throw RunnerError(std::string(what) + ": the runner has already started");
-  if (robot < 0 || robot >= static_cast<int>(scenario_.robots.size()))
-    throw RunnerError(std::string(what) + ": no robot " + std::to_string(robot));
-  if (robots_.empty()) {
-    robots_.resize(scenario_.robots.size());
-    for (auto& r : robots_) r = std::make_unique<Robot>();
-  }
-  return *robots_[robot];
-}
-
-void Runner::setMotionGenerator(int robot, std::unique_ptr<agent::framework::MotionGenerator> motion) {
-  overrideSlot(robot, "setMotionGenerator").motion_override = std::move(motion);
-}
-
-void Runner::setBehaviour(int robot, std::unique_ptr<agent::framework::Module> behaviour) {
-  overrideSlot(robot, "setBehaviour").behaviour_override = std::move(behaviour);
-}
-
-void Runner::setMotionConfig(int robot, const agent::motion::MotionConfig& config) {
-  overrideSlot(robot, "setMotionConfig").motion_config = config;
-}
-
-void Runner::setPerceptionStep(int robot, std::unique_ptr<agent::framework::PerceptionStep> perception) {
-  overrideSlot(robot, "setPerceptionStep").perception_override = std::move(perception);
-}
-
-void Runner::setStepHook(int robot, std::function<void(agent::framework::ThreadId)> hook) {
-  overrideSlot(robot, "setStepHook").step_hook = std::move(hook);
-}
 
 bool Runner::camerasAvailable() {
 #ifdef SIMSWIFT_HAVE_CAMERAS
@@ -146,13 +115,13 @@ std::string Runner::finishOverview() {
   return overview_message_;
 }
 
-std::vector<double> Runner::modelPosture(const ap::JointArray& angles) const {
+std::vector<double> Runner::modelPosture(const an::JointArray& angles) const {
   return nao_->posture(angles);
 }
 
 // The composition root, in stages: the world, then one body (World robot,
-// SensorSuite, BodyHost) per robot, the builtin robots' programs, the game
-// and team network around them, the cameras and the vision oracle.
+// SensorSuite, BodyHost) per robot, what drives each body (sim/programs),
+// the game and team network around them, the cameras and the vision oracle.
 // A start that failed (a missing model, a program that cannot start) leaves
 // the runner half built: every later start() or tick() throws the same error.
 void Runner::start() {
@@ -162,11 +131,10 @@ void Runner::start() {
   try {
     buildWorld();
     buildHosts();
-    buildPrograms();
+    attachPrograms();
     buildTeamAndGame();
     if (scenario_.camera.any()) startCameras();
     buildVision();
-    launchPrograms();
   } catch (...) {
     start_error_ = std::current_exception();
     throw;
@@ -217,10 +185,8 @@ void Runner::buildHosts() {
   // a NAO libagent can drive (ModelError "file:line: missing joint ..." if not).
   nao_ = std::make_unique<NaoBinding>(*model_);
   const sensors::SensorConfig sc = sensorConfig();
-  if (robots_.empty()) {
-    robots_.resize(scenario_.robots.size());
-    for (auto& r : robots_) r = std::make_unique<Robot>();
-  }
+  robots_.resize(scenario_.robots.size());
+  for (auto& r : robots_) r = std::make_unique<Robot>();
   // Objects a killed run left: this run's robots take theirs over (a
   // waiting program may hold them open); other robots' are left to
   // `simswift clean`, so a run never removes objects it does not use (two
@@ -230,9 +196,9 @@ void Runner::buildHosts() {
     r.spec = scenario_.robots[i];
     r.tag = al::robotTag(r.spec.team, r.spec.player);
     const int index = world_->addRobot(model_, r.spec.x, r.spec.y, r.spec.theta,
-                                       modelPosture(ap::postureAngles(r.spec.posture)));
+                                       modelPosture(an::postureAngles(r.spec.posture)));
     r.sensors = std::make_unique<sensors::SensorSuite>(*world_, index, sc);
-    const al::JointValues initial = ap::postureCommand(r.spec.posture);
+    const al::JointValues initial = an::postureCommand(r.spec.posture);
     const bool external = r.spec.program == RobotSpec::Program::External;
     bridge::BodyHostOptions ho;
     ho.bare_names = r.spec.bare_names;
@@ -246,46 +212,6 @@ void Runner::buildHosts() {
     if (external && free_running_) r.host->setSync(SyncMode::FreeRunning);
     r.latched = r.host->readActuators();  // what the body gets before any command (limp or stiff start)
     r.ext = r.host->extension();  // game state + team link, beside the block
-  }
-}
-
-// Each builtin robot's program, connected to its host and started (its
-// threads wait for their first tick). External robots bring their own.
-void Runner::buildPrograms() {
-  for (size_t i = 0; i < robots_.size(); ++i) {
-    Robot& r = *robots_[i];
-    const bool external = r.spec.program == RobotSpec::Program::External;
-    if (!external) {
-      // The robot program: the standard modules composed from the robot's
-      // setup (agent/program/RobotSetup.hpp: the same for a launched
-      // simswift-agent), Motion replaced by a test's generator if it set one,
-      // the Motion module configured by a test's MotionConfig if it set one.
-      if (r.behaviour_override && r.motion_override)
-        throw RunnerError("robot " + std::to_string(i) +
-                          ": setBehaviour and setMotionGenerator both given (the generator would leave the "
-                          "behaviour's motion request unread)");
-      ap::ProgramConfig pc =
-          ap::composeProgram(robotSetup(scenario_, static_cast<int>(i)), std::move(r.motion_override),
-                             r.motion_config ? *r.motion_config : agent::motion::MotionConfig());
-      if (r.behaviour_override) {
-        // A test's behaviour in the behaviour slot: it replaces the
-        // scenario's behaviour, actions or held posture, and the standard
-        // Motion module follows its requests.
-        pc.behaviour = std::move(r.behaviour_override);
-        pc.actions.clear();
-        pc.motion_generator.reset();
-      }
-      pc.perception_step = std::move(r.perception_override);
-      pc.step_hook = std::move(r.step_hook);
-      // The game state and team link reach the program's modules. A test's
-      // PerceptionStep that talks to the extension objects itself (through
-      // extensions(i)) keeps them to itself: two readers would split the inbox.
-      if (!pc.perception_step) pc.extensions = r.ext;
-      al::AgentConnection conn = r.host->connect();
-      conn.setImages(r.images);
-      r.program = std::make_unique<ap::RobotProgram>(std::move(conn), std::move(pc));
-      r.program->start(threading_);
-    }
   }
 }
 
@@ -304,7 +230,7 @@ void Runner::buildTeamAndGame() {
     links_.push_back(&r->ext->team);
   }
   game_ = std::make_unique<game::GameController>(scenario_.game, ids);
-  placer_ = std::make_unique<game::PenaltyPlacer>(modelPosture(ap::postureAngles(ap::Posture::Stand)));
+  placer_ = std::make_unique<game::PenaltyPlacer>(modelPosture(an::postureAngles(an::Posture::Stand)));
   if (scenario_.game.udp.on) {
     try {
       gc_udp_ = std::make_unique<game::GameControllerUdp>(scenario_.game.udp);
@@ -335,103 +261,15 @@ void Runner::setFreeRunning(bool on) {
       r->host->setSync(on ? SyncMode::FreeRunning : SyncMode::LockStep);
 }
 
-// An external robot's first answer: its program may start before or after
-// the simulator, so this waits up to attach_timeout (wall clock: only how
-// long to wait for another process, never simulation).
-void Runner::waitForFirstAnswer(Robot& r) {
-  const auto wait = [&r](double slice) { return r.host->waitAnswer(slice); };
-  if (r.process) {
-    if (!waitRobot(r, scenario_.attach_timeout_s, wait))
-      throw ProgramError("robot " + r.tag + ": its program (pid " + std::to_string(r.process->pid()) +
-                             ") did not answer on " + r.host->memoryName() + " within attach_timeout " +
-                             formatNumber("%g", scenario_.attach_timeout_s) + " s; log " + r.process->logPath(),
-                         r.tag + ": program did not attach within " + formatNumber("%g", scenario_.attach_timeout_s) +
-                             " s");
-    return;
-  }
-  if (!r.host->waitAnswer(0.5)) {
-    std::fprintf(stderr,
-                 "waiting for robot %s on %s: start its libagent robot program (or `simswift-agent --team %d "
-                 "--player %d%s`)\n",
-                 r.tag.c_str(), r.host->memoryName().c_str(), r.spec.team, r.spec.player,
-                 r.spec.bare_names ? " --bare" : "");
-    if (!r.host->waitAnswer(scenario_.attach_timeout_s)) {
-      std::ostringstream m;
-      m << "robot " << r.tag << ": no robot program answered on " << r.host->memoryName() << " within "
-        << scenario_.attach_timeout_s << " s (program: external: start one, e.g. simswift-agent --team "
-        << r.spec.team << " --player " << r.spec.player
-        << "; a program still running from an earlier run holds that run's removed objects and never "
-           "answers here: restart it)";
-      throw RunnerError(m.str());
-    }
-  }
-}
-
-// A launched program is checked between slices of 50 ms (wall clock), so a
-// crash ends the run within a slice, never a hang.
-bool Runner::waitRobot(Robot& r, double timeout_s, const std::function<bool(double)>& wait) {
-  if (!r.process) return wait(timeout_s);
-  constexpr double kSlice = 0.05;  // s
-  for (double waited = 0; waited < timeout_s; waited += kSlice) {
-    if (wait(std::min(kSlice, timeout_s - waited))) return true;
-    checkProcess(r);
-  }
-  return false;
-}
-
-void Runner::checkProcess(Robot& r) {
-  if (r.process && r.process->ended())
-    throw ProgramError(r.process->endedMessage(), r.tag + ": program " + *r.process->ended());
-}
-
-// Each launched robot's program: started with its names, seed and setup
-// filled into its command, its output in program_logs/<tag>.log. It
-// attaches by name like any external program (the first tick waits).
-void Runner::launchPrograms() {
-  for (size_t i = 0; i < robots_.size(); ++i) {
-    Robot& r = *robots_[i];
-    if (!r.spec.launch.launched()) continue;
-    const std::filesystem::path logs(scenario_.program_logs);
-    std::error_code ec;
-    std::filesystem::create_directories(logs, ec);
-    if (ec) throw RunnerError("program_logs: cannot create " + logs.string() + ": " + ec.message());
-    const std::string config = (logs / (r.tag + ".robot.yaml")).string();
-    {
-      std::ofstream out(config);
-      out << ap::robotSetupYaml(robotSetup(scenario_, static_cast<int>(i)));
-      if (!out) throw RunnerError("program_logs: cannot write " + config);
-    }
-    const al::RobotNames& names = r.host->names();
-    // The release's N: the memory name's digits (none for the bare names).
-    const std::string number = names.memory.substr(std::string(al::kMemoryName).size());
-    const std::map<std::string, std::string> values = {
-        {"team", std::to_string(r.spec.team)},
-        {"player", std::to_string(r.spec.player)},
-        {"number", number},
-        {"memory", names.memory},
-        {"semaphore", names.semaphore},
-        {"extension", names.extension},
-        {"seed", std::to_string(programSeed(scenario_.seed, static_cast<int>(i)))},
-        {"config", std::filesystem::absolute(config).string()}};
-    std::vector<std::string> argv;
-    for (const std::string& a : r.spec.launch.command) argv.push_back(ProgramProcess::fill(a, values));
-    argv[0] = ProgramProcess::resolveCommand(argv[0], scenario_.base_dir);
-    std::vector<std::pair<std::string, std::string>> env;
-    for (const auto& [k, v] : r.spec.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
-    try {
-      r.process = std::make_unique<ProgramProcess>(r.tag, argv, ProgramProcess::fill(r.spec.launch.cwd, values), env,
-                                                   (logs / (r.tag + ".log")).string(), r.spec.launch.stop_grace_s);
-    } catch (const std::runtime_error& e) {
-      throw ProgramError(e.what(), r.tag + ": program could not be started");
-    }
-  }
-}
-
-std::vector<std::string> Runner::programLogs() const {
-  std::vector<std::string> out;
-  for (const auto& r : robots_)
-    if (r && r->process) out.push_back(r->tag + ": " + r->process->logPath());
-  return out;
+// Each robot's driver (sim/programs): a builtin program composed and
+// started (its threads, or its inline steps, wait for the first tick), a
+// launched program's process started with its {config} file, an external
+// program awaited at the first tick.
+void Runner::attachPrograms() {
+  std::vector<programs::RobotSlot> slots;
+  for (size_t i = 0; i < robots_.size(); ++i)
+    slots.push_back({static_cast<int>(i), robots_[i]->tag, &robots_[i]->spec, robots_[i]->host.get()});
+  programs_->build(scenario_, slots);
 }
 
 // The watchdog ends a run only when it is on and no debugger is attached: a
@@ -440,31 +278,13 @@ std::vector<std::string> Runner::programLogs() const {
 double Runner::watchdogWait() const { return scenario_.watchdog_s > 0 ? scenario_.watchdog_s : 1.0; }
 bool Runner::watchdogArmed() const { return scenario_.watchdog_s > 0 && !tracerAttached(); }
 
-void Runner::setThreading(ap::Threading threading) {
-  if (started_) throw RunnerError("setThreading: the runner has already started");
-  threading_ = threading;
-}
-
-bool Runner::runsInline(const Robot& r) const {
-  return r.program && r.program->threading() == ap::Threading::Inline;
-}
-
-// Inline: the builtin program's step for the tick (motion) or frame just
-// posted, here on the simulator's thread; its answer is then waiting. A step
-// that throws ends the run at once (a thread would have gone silent).
-void Runner::stepInline(Robot& r, bool motion) {
-  if (motion ? r.program->stepMotion() : r.program->stepPerception()) return;
-  const std::string error = r.program->error();
-  throw WatchdogError("robot " + r.tag + ": " + (motion ? "motion" : "perception") + " step " +
-                      (error.empty() ? "found nothing posted (inline)" : "failed: " + error) + " (tick " +
-                      std::to_string(world_->tick()) + ")");
-}
-
-void Runner::watchdogFail(const Robot& r, const char* thread) const {
+void Runner::watchdogFail(int i, const char* thread) const {
+  const Robot& r = *robots_[i];
+  const std::string error = programs_->driver(i).error();
   std::ostringstream m;
   m << "robot " << r.tag << ": " << thread << " thread did not answer within " << scenario_.watchdog_s << " s (tick "
     << world_->tick() << ", sim " << formatNumber("%.2f", world_->time()) << " s)";
-  if (r.program && !r.program->error().empty()) m << ": " << r.program->error();
+  if (!error.empty()) m << ": " << error;
   throw WatchdogError(m.str());
 }
 
@@ -522,17 +342,22 @@ void Runner::publishSensors(int64_t tick, int64_t t_us) {
   for (auto& r : robots_) r->host->publishSensors(r->values, t_us, tick);
 }
 
+// What the body side posted, answered through the robot's driver (inline:
+// its step runs here); the watchdog ends the run if no answer comes.
+void Runner::awaitAnswer(int i, bool motion) {
+  using Step = programs::ProgramDriver::Step;
+  programs::ProgramDriver& d = programs_->driver(i);
+  const Step step = motion ? Step::Motion : Step::Perception;
+  d.posted(step, world_->tick());
+  while (!d.await(step, watchdogWait()))
+    if (watchdogArmed()) watchdogFail(i, motion ? "motion" : "perception");
+}
+
 void Runner::awaitMotion() {
-  for (auto& rp : robots_) {
-    Robot& r = *rp;
-    const bool external = r.spec.program == RobotSpec::Program::External;
-    if (external && !r.attached) {
-      waitForFirstAnswer(r);
-    } else if (r.host->sync() == SyncMode::LockStep) {
-      if (runsInline(r)) stepInline(r, true);
-      while (!waitRobot(r, watchdogWait(), [&r](double s) { return r.host->waitAnswer(s); }))
-        if (watchdogArmed()) watchdogFail(r, "motion");
-    }
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    Robot& r = *robots_[i];
+    const bool answered = !r.attached && programs_->driver(static_cast<int>(i)).attach();
+    if (!answered && r.host->sync() == SyncMode::LockStep) awaitAnswer(static_cast<int>(i), true);
     if (!r.attached) {
       r.attached = true;
       r.perception = r.host->hasPerception();
@@ -578,13 +403,8 @@ void Runner::cameraFrame(int64_t t_us) {
     }
   }
   if (any)
-    for (auto& r : robots_)
-      if (r->perception) {
-        if (runsInline(*r)) stepInline(*r, false);
-        Robot& rr = *r;
-        while (!waitRobot(rr, watchdogWait(), [&rr](double s) { return rr.host->waitPerceptionDone(s); }))
-          if (watchdogArmed()) watchdogFail(rr, "perception");
-      }
+    for (size_t i = 0; i < robots_.size(); ++i)
+      if (robots_[i]->perception) awaitAnswer(static_cast<int>(i), false);
 }
 
 void Runner::captureViews(int64_t t_us) {
@@ -620,10 +440,13 @@ void Runner::captureFindBallView(int64_t t_us) {
     }
     findball_view_ = std::make_unique<sim::views::FindBallRecorder>(*findball_view_config_, tags, players);
   }
-  std::vector<agent::blackboard::FindBallInfo> infos(robots_.size());
-  for (size_t i = 0; i < robots_.size(); ++i)
-    if (robots_[i]->program) infos[i] = robots_[i]->program->board().findball.read();
-  findball_view_->maybeCapture(t_us, infos);
+  // What each robot's program shows of its search (the observer hook).
+  std::vector<std::optional<sim::views::FindBallViewData>> views(robots_.size());
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    sim::views::FindBallViewData d;
+    if (programs_->driver(static_cast<int>(i)).findBallView(d)) views[i] = std::move(d);
+  }
+  findball_view_->maybeCapture(t_us, views);
 }
 
 void Runner::teamAndGame(int64_t t_us) {
@@ -680,23 +503,23 @@ RunStats Runner::stats() const {
 void Runner::placeRobot(int i, double x, double y, double theta) {
   start();
   if (i < 0 || i >= numRobots()) throw RunnerError("placeRobot: no robot " + std::to_string(i));
-  world_->placeRobot(i, x, y, theta, modelPosture(ap::postureAngles(ap::Posture::Stand)));
+  world_->placeRobot(i, x, y, theta, modelPosture(an::postureAngles(an::Posture::Stand)));
   robots_[i]->sensors->reset(*world_);
 }
 
 RunStats Runner::run(const RunOptions& opt) {
   if (opt.realtime) setFreeRunning(true);
   start();
-  const int64_t total = static_cast<int64_t>(std::llround(scenario_.duration / kTickSeconds));
+  const int64_t total = agent::nao::ticksIn(scenario_.duration);
   const int64_t progress_every =
-      opt.progress && opt.progress_every_s > 0 ? std::max<int64_t>(1, std::llround(opt.progress_every_s / kTickSeconds)) : 0;
+      opt.progress && opt.progress_every_s > 0 ? std::max<int64_t>(1, agent::nao::ticksIn(opt.progress_every_s)) : 0;
   wall_start_ = Clock::now();
   while (world_->tick() < total) {
     tick();
     const int64_t t = world_->tick();
     // The first tick may have waited for external programs to start: the
     // wall clock (pacing, real-time factor) counts from its end.
-    if (t == 1) wall_start_ = Clock::now() - std::chrono::milliseconds(10);
+    if (t == 1) wall_start_ = Clock::now() - std::chrono::microseconds(agent::nao::kMotionTickUs);
     if (opt.print_hash_every > 0 && t % opt.print_hash_every == 0)
       std::printf("tick %lld hash %s\n", static_cast<long long>(t), hashHex(world_->stateHash()).c_str());
     if (progress_every && t % progress_every == 0 && t < total) {
@@ -706,7 +529,7 @@ RunStats Runner::run(const RunOptions& opt) {
     }
     if (opt.realtime) {
       // Pacing only: sleep until the wall clock catches up with simulated time.
-      std::this_thread::sleep_until(wall_start_ + std::chrono::microseconds(t * 10000));
+      std::this_thread::sleep_until(wall_start_ + std::chrono::microseconds(t * agent::nao::kMotionTickUs));
     }
   }
   const RunStats s = stats();
@@ -724,16 +547,11 @@ void Runner::shutdown() {
   stopped_ = true;
   for (auto& r : robots_)
     if (r && r->host) r->host->shutdown();
-  // Launched programs see `shutdown` (simswift-agent exits); any other gets
-  // SIGTERM, then SIGKILL after its stop_grace. Reaped before the hosts
-  // remove their objects.
-  for (auto& r : robots_)
-    if (r && r->process) r->process->stop();
-  // The programs stay (threads joined) until the Runner goes: their
-  // Blackboards and steps can still be read after run(). A program is
-  // destroyed before its host (Robot's member order).
-  for (auto& r : robots_)
-    if (r && r->program) r->program->join();
+  // Launched programs stopped and reaped before the hosts remove their
+  // objects; builtin threads joined. The drivers stay until the Runner goes
+  // (their programs can still be read after run()); they are destroyed
+  // before the hosts (member order).
+  programs_->shutdown();
 }
 
 }  // namespace simswift::runner

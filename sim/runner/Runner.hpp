@@ -1,7 +1,10 @@
 // The lock-step runner: one World, one BodyHost + SensorSuite per robot, and
-// the robot programs' threads (builtin: in this process; external: another
-// process attached by name, started by hand or launched by the runner:
-// ProgramProcess.hpp). Each 10 ms tick runs these stages, in this
+// per robot the driver of whatever runs its body (sim/programs/
+// ProgramDriver.hpp, the one seam to the robot program: builtin in this
+// process, on its threads or inline; external, attached by name, started by
+// hand or launched by the runner; the public API's controller). The Runner
+// knows nothing of the robot program beyond that interface and reads none
+// of its state. Each tick (kTickSeconds, the body's cycle) runs these stages, in this
 // order (Runner::tick; this is the one place the order is written down):
 //   1. applyCommands      every robot's command latched last tick goes to its
 //                         servos (and sonar mode): a command written during
@@ -14,12 +17,13 @@
 //   6. publishSensors     scenario buttons, sensors read from the new state,
 //                         each robot's slot written and its tick posted
 //                         (the body side of libagent: sim/bridge/BodyHost)
-//   7. awaitMotion        every robot's Motion answers (inline: a builtin
-//                         program's Motion step runs here, robot by robot,
-//                         on this thread; the first tick waits
-//                         attach_timeout for external programs; then the
-//                         wall-clock watchdog; free-running external robots
-//                         are not waited for)
+//   7. awaitMotion        every robot's Motion answers through its driver
+//                         (inline: a builtin program's Motion step runs
+//                         here, robot by robot, on this thread; the first
+//                         tick attaches: external programs are waited for
+//                         up to attach_timeout; then the wall-clock
+//                         watchdog; free-running external robots are not
+//                         waited for)
 //   8. latchActuators     each robot's command (or libagent's own: limp, the
 //                         sit), applied in stage 1 of the next tick
 //   9. updateFalls        fall bookkeeping (statistics only)
@@ -33,13 +37,14 @@
 //                         with game: {udp: on} the SPL GameController packet
 //                         sent every 500 ms and robots' return packets
 //                         counted (never acted on: sim/game/GameControllerUdp)
-//  12. captureViews       FindBall view frames, if asked (drawing only)
+//  12. captureViews       FindBall view frames, if asked (drawing only; the
+//                         data from each driver's observer hook)
 // Robot threads run only inside stages 6-7 and 10, and the runner reads
 // nothing of theirs until all have answered, so the outcome does not depend
 // on thread timing: the same scenario and seed give the same state hash.
 // Builtin programs run either on their own named threads (the default; gdb,
-// `simswift run`) or inline (setThreading: no threads, no hand-over; the
-// experiment and the benchmarks): the same steps in the same order, the
+// `simswift run`) or inline (programs().setThreading: no threads, no
+// hand-over; the experiment and the benchmarks): the same steps in the same order, the
 // same hash (tests/runner/test_determinism.cpp).
 //
 // A robot program answers a tick the way libagent's clients do (it writes a
@@ -67,14 +72,13 @@
 #include <vector>
 
 #include "agent/libagent/SimExtensions.hpp"
-#include "agent/program/MotionGenerator.hpp"
-#include "agent/program/RobotProgram.hpp"
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/game/GameControllerUdp.hpp"
 #include "sim/game/Sideline.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/network/TeamNetwork.hpp"
+#include "sim/runner/Errors.hpp"
 #include "sim/runner/FallDetector.hpp"
 #include "sim/runner/RunStats.hpp"
 #include "sim/runner/Scenario.hpp"
@@ -92,23 +96,11 @@ namespace simswift::vision {
 class VisionOracle;
 }
 
-namespace simswift::runner {
+namespace simswift::programs {
+class Programs;
+}
 
-struct WatchdogError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-struct RunnerError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-// A launched robot program ended, crashed or could not be started: the
-// message names the robot, how it ended and its log's last lines.
-struct ProgramError : RunnerError {
-  ProgramError(const std::string& message, std::string brief_)
-      : RunnerError(message), brief(std::move(brief_)) {}
-  // The same in one line without pids or paths ("t19p2: program killed by
-  // signal 11 (Segmentation fault)"): what a results file may keep.
-  std::string brief;
-};
+namespace simswift::runner {
 
 struct RunOptions {
   bool realtime = false;        // pace with the wall clock; external robots free-running
@@ -125,32 +117,14 @@ class Runner {
   Runner(const Runner&) = delete;
   Runner& operator=(const Runner&) = delete;
 
-  // Before start(): replace a builtin robot's Motion step (robot index in
-  // scenario order), e.g. a test's motion generator.
-  void setMotionGenerator(int robot, std::unique_ptr<agent::framework::MotionGenerator> motion);
-  // Before start(): give a builtin robot this behaviour module (the
-  // Perception thread's behaviour slot, agent/program/ModuleOrder.cpp; e.g.
-  // agent/behaviour/RequestedBehaviour.hpp, through which a test, bench or
-  // tool plays Behaviour). It replaces the scenario robot's behaviour,
-  // action script or held posture; Motion is then the standard Motion module
-  // (MotionThreadModule, with setMotionConfig's configuration), reading the
-  // motion request the behaviour writes. start() throws RunnerError if the
-  // robot also has a setMotionGenerator (nothing would read the request).
-  void setBehaviour(int robot, std::unique_ptr<agent::framework::Module> behaviour);
-  // Before start(): a builtin robot's Motion module configuration
-  // (ProgramConfig::motion: walk, kick, get-ups, fall handling; default
-  // agent::motion::MotionConfig()).
-  void setMotionConfig(int robot, const agent::motion::MotionConfig& config);
-  // Before start(): replace a builtin robot's Perception step.
-  void setPerceptionStep(int robot, std::unique_ptr<agent::framework::PerceptionStep> perception);
-  // Before start(): a hook each of a builtin robot's threads calls before
-  // every step (ProgramConfig::step_hook; tests jitter thread timing with it).
-  void setStepHook(int robot, std::function<void(agent::framework::ThreadId)> hook);
-
-  // Before start(): builtin programs on named threads (default) or inline
-  // on the runner's thread (see the top of this file).
-  void setThreading(agent::program::Threading threading);
-  agent::program::Threading threading() const { return threading_; }
+  // The program side (sim/programs/Programs.hpp): what runs each robot's
+  // body. Before start(): a builtin robot's test overrides (Motion step,
+  // behaviour, Motion configuration, Perception step, step hook), threading
+  // and the public API's controllers; after: each builtin robot's
+  // RobotProgram (tests and benchmarks read its Blackboard between ticks)
+  // and the launched programs' logs.
+  programs::Programs& programs() { return *programs_; }
+  const programs::Programs& programs() const { return *programs_; }
   // Builds the world, the robots' hosts and programs, the game and team
   // network, the cameras and the vision oracle (the build stages below).
   void start();
@@ -170,9 +144,6 @@ class Runner {
   bridge::BodyHost& host(int i) { return *robots_[i]->host; }
   const sensors::SensorSuite& sensors(int i) const { return *robots_[i]->sensors; }
   int64_t ticks() const { return world_ ? world_->tick() : 0; }
-  // Robot i's builtin program (null for an external one); read its
-  // Blackboard between ticks (tests, benchmarks).
-  agent::program::RobotProgram* program(int i) const { return robots_[i]->program.get(); }
   RunStats stats() const;  // so far
   // Robot i's sensor values as published this tick (what its program read).
   const agent::libagent::SensorValues& lastSensors(int i) const { return robots_[i]->values; }
@@ -208,13 +179,11 @@ class Runner {
   const game::GameController& gameController() const { return *game_; }
   // The UDP GameController (null unless the scenario's game: has udp: on).
   const game::GameControllerUdp* gameControllerUdp() const { return gc_udp_.get(); }
-  // FindBall view frames (`--findball-view DIR`): every robot whose behaviour
-  // publishes findball gets a PNG per 1/rate_hz s of simulated time, drawn
-  // from its Blackboard between ticks; run() assembles the videos.
+  // FindBall view frames (`--findball-view DIR`): every robot whose program
+  // shows a search (ProgramDriver::findBallView, the observer hook) gets a
+  // PNG per 1/rate_hz s of simulated time; run() assembles the videos.
   void setFindBallView(const sim::views::FindBallRecorderConfig& c) { findball_view_config_ = c; }
   int64_t findBallViewFrames() const { return findball_view_ ? findball_view_->frames() : 0; }
-  // Launched programs' log files, in scenario order ("t19p2: simswift-logs/t19p2.log").
-  std::vector<std::string> programLogs() const;
   // After run(): the overview video line (empty if no overview).
   const std::string& overviewMessage() const { return overview_message_; }
   // Ends the overview (assembles the video) and returns its message; run() calls it.
@@ -226,14 +195,8 @@ class Runner {
     std::string tag;
     std::unique_ptr<bridge::BodyHost> host;
     std::unique_ptr<sensors::SensorSuite> sensors;
-    std::unique_ptr<agent::framework::MotionGenerator> motion_override;
-    std::unique_ptr<agent::framework::Module> behaviour_override;
-    std::optional<agent::motion::MotionConfig> motion_config;
-    std::unique_ptr<agent::framework::PerceptionStep> perception_override;
-    std::function<void(agent::framework::ThreadId)> step_hook;
     // Camera images (set up by the host when rendering).
     agent::libagent::CameraImages* images = nullptr;
-    std::unique_ptr<agent::program::RobotProgram> program;  // builtin only
     agent::libagent::SensorValues values{};
     agent::libagent::ActuatorCommand latched;
     bool perception = false;
@@ -242,29 +205,22 @@ class Runner {
     double last_robot_contact_s = -1e9;  // s (world time) this robot last touched another robot
     size_t next_push = 0;  // next of spec.pushes to apply
     agent::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
-    std::unique_ptr<ProgramProcess> process;  // a launched program (program: {command: ...})
   };
 
   // Build stages (start(), in this order).
   void buildWorld();        // model, field, World, ball
   void buildHosts();        // per robot: World body, SensorSuite, BodyHost
-  void buildPrograms();     // per builtin robot: its RobotProgram, started
+  void attachPrograms();    // per robot: its program driver (sim/programs), from the scenario
   void buildTeamAndGame();  // TeamNetwork, GameController (and its UDP sender), the t = 0 game state
   void startCameras();      // if the scenario renders
   void buildVision();       // the vision oracle
-  void launchPrograms();    // per launched robot: its process, with its {config} file
   sensors::SensorConfig sensorConfig() const;
 
-  Robot& overrideSlot(int robot, const char* what);
-  std::vector<double> modelPosture(const agent::program::JointArray& angles) const;
-  void waitForFirstAnswer(Robot& r);
-  // Waits on `wait(slice_s)` up to timeout_s; a launched program that ends
-  // meanwhile ends the run at once (ProgramError). False on timeout.
-  bool waitRobot(Robot& r, double timeout_s, const std::function<bool(double)>& wait);
-  void checkProcess(Robot& r);
-  bool runsInline(const Robot& r) const;
-  void stepInline(Robot& r, bool motion);
-  [[noreturn]] void watchdogFail(const Robot& r, const char* thread) const;
+  std::vector<double> modelPosture(const agent::nao::JointArray& angles) const;
+  // Robot i's answer to what its body side posted (a tick or a camera
+  // frame), through its driver: the watchdog ends the run if none comes.
+  void awaitAnswer(int i, bool motion);
+  [[noreturn]] void watchdogFail(int i, const char* thread) const;
   double watchdogWait() const;  // s per wait
   bool watchdogArmed() const;   // on, and no debugger attached
 
@@ -273,7 +229,7 @@ class Runner {
   std::unique_ptr<NaoBinding> nao_;  // the model's libagent joints (checked in buildHosts)
   std::unique_ptr<World> world_;
   std::vector<std::unique_ptr<Robot>> robots_;
-  agent::program::Threading threading_ = agent::program::Threading::Named;
+  std::unique_ptr<programs::Programs> programs_;  // one driver per robot (destroyed before robots_)
   bool started_ = false;
   std::exception_ptr start_error_;  // what a failed start() threw (rethrown by start() and tick())
   bool stopped_ = false;

@@ -14,9 +14,6 @@
 
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/nao/NaoFacts.hpp"
-#include "agent/motion/ActionYaml.hpp"
-#include "agent/behaviour/BehaviourYaml.hpp"
-#include "agent/program/RobotSetup.hpp"
 #include "sim/world/ConfigError.hpp"
 
 // The data folder's path below an install prefix (CMAKE_INSTALL_DATADIR,
@@ -28,8 +25,7 @@
 namespace simswift::runner {
 
 namespace al = agent::libagent;
-using agent::program::Posture;
-using agent::program::ScriptStep;
+using programs::ProgramProcess;
 
 namespace {
 
@@ -157,7 +153,7 @@ void readAction(const YamlReader& r, RobotSpec& rs) {
     r.finish();
     return;
   }
-  rs.actions.push_back(agent::motion::readBodyAction(r, t));
+  programs::readBodyAction(r, t, rs);
 }
 
 // One entry of a robot's `buttons:` list.
@@ -329,24 +325,6 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
 }
 
 uint64_t programSeed(uint64_t seed, int index) { return seed * 1000003ULL + static_cast<uint64_t>(index); }
-
-agent::program::RobotSetup robotSetup(const Scenario& sc, int index) {
-  const RobotSpec& r = sc.robots[index];
-  agent::program::RobotSetup s;
-  s.team = r.team;
-  s.player = r.player;
-  s.seed = programSeed(sc.seed, index);
-  if (r.behaviour) s.start = agent::blackboard::FieldPose{r.x * 1000.0, r.y * 1000.0, r.theta};
-  s.behaviour = r.behaviour;
-  s.behaviour_yaml = r.behaviour_yaml;
-  s.actions = r.actions;
-  // Pushes only: a NONE step keeps the script's STAND (the body is pushed,
-  // the Motion module runs).
-  if (!r.behaviour && s.actions.empty() && !r.pushes.empty()) s.actions.push_back({});
-  s.posture = r.posture;
-  s.script = r.script;
-  return s;
-}
 
 void readActions(const YamlReader& robot, RobotSpec& rs) {
   for (const YamlReader& a : robot.list("actions")) readAction(a, rs);
@@ -540,7 +518,7 @@ void readPlacement(const YamlReader& r, RobotSpec& rs) {
   rs.x = r.number("x", 0.0, pos);
   rs.y = r.number("y", 0.0, pos);
   rs.theta = r.number("theta", 0.0, Range::closed(-limits::kMaxHeading, limits::kMaxHeading));
-  rs.posture = *agent::program::parsePosture(r.choice("posture", "stand", agent::program::postureNames()));
+  rs.posture = *agent::nao::parsePosture(r.choice("posture", "stand", agent::nao::postureNames()));
 }
 
 // script, buttons and actions: what the robot is told to do over time;
@@ -550,7 +528,7 @@ void readTimedLists(const YamlReader& r, RobotSpec& rs) {
     if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
       r.fail("script", "an external robot runs its own program; a script needs program: builtin (or a "
                        "launched program, which gets it in its {config} file)");
-    for (const YamlReader& s : r.list("script")) rs.script.push_back(agent::program::readScriptStep(s));
+    for (const YamlReader& s : r.list("script")) programs::readScriptStep(s, rs);
   }
   if (r.has("buttons"))
     for (const YamlReader& b : r.list("buttons")) rs.buttons.push_back(readButton(b));
@@ -579,9 +557,9 @@ void readRobotBehaviour(const YamlReader& r, RobotSpec& rs) {
   if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
     r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin (or a "
                         "launched program, which gets it in its {config} file)");
-  rs.behaviour = agent::behaviour::readBehaviour(r, &rs.behaviour_yaml);
+  programs::readBehaviour(r, rs);
   if (rs.behaviour && !rs.actions.empty())
-    r.fail("actions", std::string("a robot with behaviour ") + agent::behaviour::behaviourKindName(rs.behaviour->kind) +
+    r.fail("actions", std::string("a robot with behaviour ") + programs::behaviourName(rs) +
                           " takes no body actions (pushes only); use behaviour: script");
   if (rs.behaviour && !rs.script.empty()) r.fail("script", "a robot with a behaviour takes no joint script");
 }

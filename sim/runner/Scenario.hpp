@@ -24,7 +24,7 @@
 //     - {team: 19, player: 1, x: -1.0, y: 0.0, theta: 0.0,  # m, m, rad (field frame)
 //        colour: blue,                 # side of the match (blue or red), see below
 //        names: simulation,            # libagent names: simulation (N = team x 11 + player) or bare
-//        posture: stand, program: builtin,   # or external, or {command: [...]} (ProgramProcess.hpp)
+//        posture: stand, program: builtin,   # or external, or {command: [...]} (sim/programs/ProgramProcess.hpp)
 //        script: [{t: 2.0, joint: HeadYaw, angle: 0.5, duration: 0.5}],
 //        buttons: [{t: 3.0, button: chest, duration: 0.1}],
 //        actions: [{t: 1.0, action: walk, forward: 300, left: 0, turn: 0},  # mm/s, rad/s
@@ -34,7 +34,7 @@
 //      kick, getup_front, getup_back, dead, crouch, limp, none.
 //      behaviour: findball2017 | findball2016 | striker | script (default), or a map
 //        {kind: findball2017, strategy: {distributed: off}, ...} overriding
-//        agent/behaviour/BehaviourConfig.hpp's fields (sim/runner/BehaviourYaml.hpp).
+//        agent/behaviour/BehaviourConfig.hpp's fields (agent/behaviour/BehaviourYaml.hpp).
 //        script runs the actions list; the others run agent/behaviour, the
 //        localisation starting at the scenario's pose (a known start, as on a
 //        test field where the team places its robots).
@@ -69,16 +69,13 @@
 #include <string>
 #include <vector>
 
-#include "agent/behaviour/BehaviourConfig.hpp"
-#include "agent/motion/ActionScript.hpp"
-#include "agent/program/MotionGenerator.hpp"
-#include "agent/program/Postures.hpp"
-#include "agent/program/RobotSetup.hpp"
+#include "agent/nao/Postures.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/bridge/LibagentBehaviour.hpp"
 #include "sim/bridge/Releases.hpp"
 #include "sim/network/TeamNetwork.hpp"
-#include "sim/runner/ProgramProcess.hpp"
+#include "sim/programs/ProgramProcess.hpp"
+#include "sim/programs/ProgramSpec.hpp"
 #include "sim/sensors/Buttons.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
@@ -96,7 +93,12 @@ namespace simswift::runner {
 
 enum class TeamColour : int { Blue = 0, Red = 1 };
 
-struct RobotSpec {
+using programs::LaunchSpec;
+
+// One robot: the body's fields here, the program's part (script, actions,
+// behaviour: what a program simswift composes or configures is set up
+// with) in programs::ProgramPart, read by sim/programs' readers.
+struct RobotSpec : programs::ProgramPart {
   int line = 0;  // of the robot's entry in the scenario file (for errors)
   int team = 0;    // SPL team number
   int player = 1;
@@ -108,26 +110,17 @@ struct RobotSpec {
   bridge::StartMode start = bridge::StartMode::Stiff;
   bridge::Release release = bridge::Release::R2017;
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
-  agent::program::Posture posture = agent::program::Posture::Stand;
+  agent::nao::Posture posture = agent::nao::Posture::Stand;
   // builtin: agent/'s program in this process; external: a program
   // attached by name (started by hand, or by simswift when `launch` has a
-  // command: sim/runner/ProgramProcess.hpp).
+  // command: sim/programs/ProgramProcess.hpp). What drives the body either
+  // way: sim/programs/ProgramDriver.hpp.
   enum class Program { Builtin, External } program = Program::Builtin;
   LaunchSpec launch;
-  std::vector<agent::program::ScriptStep> script;
-  // Body actions over time, run by the Motion module (agent/motion), e.g.
-  //   actions: [{t: 1, action: walk, forward: 300, left: 0, turn: 0},
-  //             {t: 6, action: kick, foot: right, power: 1, direction: 0},
-  //             {t: 9, push: {x: 2.5, y: 0}}]
-  // forward/left mm/s, turn rad/s, direction rad; a push is an impulse of
-  // (x, y) N*s (field frame) at the torso's centre of mass at time t
-  // (simulator side, World::applyImpulse): 1 N*s changes the 5.3 kg NAO's
-  // CoM velocity by 0.19 m/s; about 3.5 N*s topples a standing NAO.
-  std::vector<agent::motion::ActionStep> actions;
-  // behaviour: the robot code's behaviour (agent/behaviour); empty = script
-  // (the actions above).
-  std::optional<agent::behaviour::BehaviourConfig> behaviour;
-  std::string behaviour_yaml;  // the same as flow YAML (a launched program's {config} file)
+  // Pushes from the actions list, e.g. {t: 9, push: {x: 2.5, y: 0}}: an
+  // impulse of (x, y) N*s (field frame) at the torso's centre of mass at
+  // time t (simulator side, World::applyImpulse): 1 N*s changes the 5.3 kg
+  // NAO's CoM velocity by 0.19 m/s; about 3.5 N*s topples a standing NAO.
   struct Push { double t_s = 0, jx = 0, jy = 0; };  // s, N*s, N*s
   std::vector<Push> pushes;
   // Touch sensors pressed by the scenario (any program), e.g.
@@ -228,11 +221,6 @@ game::GameConfig readGame(const YamlReader& r, int num_robots);
 // The seed of robot `index`'s program (its filters' random source) in a
 // run with seed `seed`: one derivation for builtin and launched programs.
 uint64_t programSeed(uint64_t seed, int index);
-
-// What robot `index` of `sc` is set up with (agent/program/RobotSetup.hpp):
-// what a builtin program is composed from and what a launched program's
-// {config} file holds.
-agent::program::RobotSetup robotSetup(const Scenario& sc, int index);
 
 // Where relative model/field paths resolve after the scenario's folder:
 // $SIMSWIFT_DATA_DIR if set, else the nearest share/simswift in the folder of

@@ -1,24 +1,20 @@
 // FindBall view frames during a run (`simswift run S.yaml --findball-view DIR
 // [--findball-view-rate HZ]`): at a fixed rate of simulated time, one PNG per
 // robot whose behaviour publishes the Blackboard's findball section, drawn
-// from that section alone (what the robot itself believes: its pose, its
+// from that section alone (the program side's observer hook gives it) (what the robot itself believes: its pose, its
 // team distribution, its search point, teammates and the points their
 // packets name) -- DIR/<robot tag>/findball_<frame:06d>.png; at the end each
 // robot's frames become DIR/<robot tag>.mp4 (sim/video, if ffmpeg is there).
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "agent/blackboard/FindBallInfo.hpp"
 #include "sim/views/FindBallView.hpp"
 
 namespace sim::views {
-
-// The view of one robot's findball section (field mm, rad).
-FindBallViewData viewFromInfo(const agent::blackboard::FindBallInfo& fb, int player, const std::string& tag,
-                              double field_length = agent::field::kLength, double field_width = agent::field::kWidth);
 
 struct FindBallRecorderConfig {
   std::string dir;       // output folder (created)
@@ -30,10 +26,11 @@ class FindBallRecorder {
  public:
   // tags / players: by robot index (e.g. "t19p2", 2).
   FindBallRecorder(const FindBallRecorderConfig& c, std::vector<std::string> tags, std::vector<int> players);
-  // At simulated time t_us: if a frame is due, writes one PNG per robot with
-  // an active section (infos by robot index; inactive ones are skipped).
-  // Throws std::runtime_error if a PNG cannot be written.
-  void maybeCapture(int64_t t_us, const std::vector<agent::blackboard::FindBallInfo>& infos);
+  // At simulated time t_us: if a frame is due, writes one PNG per robot
+  // that shows a search (views by robot index, filled by the program side's
+  // observer hook, sim/programs/FindBallObserver.hpp; empty ones are
+  // skipped). Throws std::runtime_error if a PNG cannot be written.
+  void maybeCapture(int64_t t_us, const std::vector<std::optional<FindBallViewData>>& views);
   // Assembles the videos; one message line per robot.
   std::string finish();
   int64_t frames() const { return frames_; }  // PNGs written

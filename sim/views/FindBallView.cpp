@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "agent/behaviour/PositionalDistribution.hpp"
 #include "agent/nao/NaoFacts.hpp"
 
 namespace sim::views {
@@ -163,65 +162,6 @@ bool FindBallView::writePng(const FindBallViewData& d, const std::string& path,
   if (st != CAIRO_STATUS_SUCCESS)
     return fail("FindBallView: cannot write " + path + ": " + cairo_status_to_string(st));
   return true;
-}
-
-void setDistribution(FindBallViewData& d, const agent::behaviour::PositionalDistribution& p) {
-  d.field_length = p.length();
-  d.field_width = p.width();
-  d.columns = p.columns();
-  d.rows = p.rows();
-  d.probabilities = p.probabilities();
-}
-
-ViewRobot viewRobot(const agent::blackboard::FindBallTeammate& t) {
-  ViewRobot r;
-  r.player = t.player;
-  r.x = t.x;
-  r.y = t.y;
-  r.theta = t.theta;
-  r.has_target = t.has_target;
-  r.target_x = t.target_x;
-  r.target_y = t.target_y;
-  return r;
-}
-
-}  // namespace sim::views
-
-#include "agent/behaviour/Behaviour.hpp"
-#include "agent/behaviour/BehaviourModule.hpp"
-
-namespace sim::views {
-
-FindBallViewData robotView(const agent::behaviour::BehaviourInputs& in,
-                           const agent::behaviour::Behaviour& behaviour) {
-  using namespace agent::behaviour;
-  FindBallViewData d;
-  const BehaviourConfig& c = behaviour.config();
-  if (const FindBallResult* fb = behaviour.findBall()) {
-    setDistribution(d, fb->distribution);
-  } else {
-    setDistribution(d, PositionalDistribution::fromConfig(c.grid, c.field));
-  }
-  ViewRobot self;
-  self.player = in.player;
-  self.x = in.self.pose.x;
-  self.y = in.self.pose.y;
-  self.theta = in.self.pose.theta;
-  self.self = true;
-  const bool has = c.kind == BehaviourKind::FINDBALL_2016 || behaviour.searchSegment() >= 0;
-  if (has) {
-    self.has_target = true;
-    self.target_x = behaviour.searchPoint().x;
-    self.target_y = behaviour.searchPoint().y;
-  }
-  d.robots.push_back(self);
-  // Teammates through the findball section's conversion (BehaviourModule).
-  for (const Teammate& t : in.teammates) d.robots.push_back(viewRobot(findBallTeammate(t)));
-  char caption[96];
-  std::snprintf(caption, sizeof caption, "t=%.1f s  robot %d  %s", in.time, in.player,
-                behaviourKindName(c.kind));
-  d.caption = caption;
-  return d;
 }
 
 }  // namespace sim::views

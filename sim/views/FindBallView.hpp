@@ -4,7 +4,8 @@
 // circle with a short heading line, its chosen search point as a ring, and
 // an arrow from robot to point. Drawn with Cairo, written as PNG.
 //
-// Takes plain data (so it can draw one robot's view or the team's); units
+// Takes plain data (so it can draw one robot's view or the team's; the
+// program side fills it: sim/programs/FindBallObserver.hpp); units
 // mm and rad, field frame (origin at the centre spot, x toward the opponent
 // goal, y left). Image: x to the right, field +y up.
 #pragma once
@@ -12,12 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/field/FieldFacts.hpp"
-
-namespace agent::behaviour {
-class PositionalDistribution;
-}
 
 namespace sim::views {
 
@@ -70,26 +66,5 @@ class FindBallView {
  private:
   double scale_;  // px per mm
 };
-
-// Copies a distribution's grid and probabilities into the view data.
-void setDistribution(FindBallViewData& d, const agent::behaviour::PositionalDistribution& p);
-// A teammate from the Blackboard's findball section, as drawn.
-ViewRobot viewRobot(const agent::blackboard::FindBallTeammate& t);
-
-}  // namespace sim::views
-
-namespace agent::behaviour {
-struct BehaviourInputs;
-class Behaviour;
-}  // namespace agent::behaviour
-
-namespace sim::views {
-
-// One robot's view, as the thesis's tab shows it: the distribution its
-// FindBall class produced (team distribution for 2017), itself and its
-// search point, its teammates and the points their packets name.
-// The 2016 behaviour has no distribution: drawn uniform.
-FindBallViewData robotView(const agent::behaviour::BehaviourInputs& in,
-                           const agent::behaviour::Behaviour& behaviour);
 
 }  // namespace sim::views

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sim/game/Sideline.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace findball_harness {
@@ -67,7 +68,7 @@ struct Found {
 inline Found foundBy(simswift::runner::Runner& r, int i) {
   Found f;
   f.robot = i;
-  const auto& board = r.program(i)->board();
+  const auto& board = r.programs().program(i)->board();
   const agent::blackboard::FrameInfo frame = board.frame.read();
   bool detected = false;
   for (int k = 0; k < frame.num_observations; ++k)
@@ -97,7 +98,7 @@ inline FindTimes timeToFind(simswift::runner::Runner& r, double limit) {
   int64_t last_frame = -1;
   while (r.ticks() < end && !t.both()) {
     r.tick();
-    const int64_t frame = r.program(0)->board().frame.read().frame_index;
+    const int64_t frame = r.programs().program(0)->board().frame.read().frame_index;
     if (frame == last_frame) continue;  // a new camera frame only
     last_frame = frame;
     for (int i = 0; i < r.numRobots(); ++i) {

@@ -79,14 +79,14 @@ TEST(BehaviourScenario, ErrorsNameFileLineAndField) {
 TEST(BehaviourScenario, ModuleOrderAndPayloadBetweenTeammates) {
   Runner r(Scenario::parse(findball_harness::scenario(2, "findball2017", 0, 331, 3), "two.yaml"));
   r.start();
-  const std::string order = r.program(0)->schedule().describe();
+  const std::string order = r.programs().program(0)->schedule().describe();
   const size_t recv = order.find("team receive"), beh = order.find("behaviour"), send = order.find("team send");
   ASSERT_NE(beh, std::string::npos) << order;
   EXPECT_LT(recv, beh) << order;
   EXPECT_LT(beh, send) << order;
   while (r.ticks() < 300) r.tick();
   for (int i = 0; i < 2; ++i) {
-    const agent::blackboard::FindBallInfo fb = r.program(i)->board().findball.read();
+    const agent::blackboard::FindBallInfo fb = r.programs().program(i)->board().findball.read();
     EXPECT_TRUE(fb.active);
     EXPECT_EQ(fb.team.size(), 9u);
     EXPECT_FALSE(fb.payload.empty());
@@ -94,10 +94,10 @@ TEST(BehaviourScenario, ModuleOrderAndPayloadBetweenTeammates) {
     EXPECT_EQ(fb.teammates[0].player, i == 0 ? 3 : 2);
     EXPECT_TRUE(fb.teammates[0].has_target) << "the teammate's packet names its search point";
     // The teammate's decoded segment is the one it is heading to.
-    const agent::blackboard::FindBallInfo other = r.program(1 - i)->board().findball.read();
+    const agent::blackboard::FindBallInfo other = r.programs().program(1 - i)->board().findball.read();
     EXPECT_EQ(fb.teammates[0].segment, other.segment);
   }
-  EXPECT_EQ(r.program(0)->board().team.read().malformed, 0);
+  EXPECT_EQ(r.programs().program(0)->board().team.read().malformed, 0);
 }
 
 TEST(BehaviourScenario, ShippedFindBallScenariosLoad) {

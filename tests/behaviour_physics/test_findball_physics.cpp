@@ -53,13 +53,13 @@ TEST(FindBall2017ThreeRobots, ChosenSegmentsDifferInMostFrames) {
   int64_t frames = 0, distinct = 0, last = -1;
   while (r.ticks() < 6000) {
     r.tick();
-    const int64_t f = r.program(0)->board().frame.read().frame_index;
+    const int64_t f = r.programs().program(0)->board().frame.read().frame_index;
     if (f == last) continue;
     last = f;
     int seg[3];
     bool all = true;
     for (int i = 0; i < 3; ++i) {
-      seg[i] = r.program(i)->board().findball.read().segment;
+      seg[i] = r.programs().program(i)->board().findball.read().segment;
       all = all && seg[i] >= 0;
     }
     if (!all) continue;
@@ -82,7 +82,7 @@ TEST(FindBall2017Penalty, PenaltyResetsTheDistributionStopsTheRobotAndReleases) 
                    "game:\n  penalties: [{t: 15, robot: 0, penalty: player_pushing, duration: 10}]\n"),
       "pen.yaml"));
   r.start();
-  auto fb = [&] { return r.program(0)->board().findball.read(); };
+  auto fb = [&] { return r.programs().program(0)->board().findball.read(); };
   auto uniform = [](const bb::FindBallInfo& f) {
     for (double p : f.local)
       if (std::fabs(p - 1.0 / f.local.size()) > 1e-9) return false;
@@ -93,18 +93,18 @@ TEST(FindBall2017Penalty, PenaltyResetsTheDistributionStopsTheRobotAndReleases) 
   EXPECT_FALSE(uniform(before)) << "15 s of search should have shaped the distribution";
   EXPECT_EQ(before.resets, 0);
   while (r.ticks() < 1600) r.tick();  // 16 s: penalised, at the sideline
-  EXPECT_TRUE(r.program(0)->board().game.read().penalised);
+  EXPECT_TRUE(r.programs().program(0)->board().game.read().penalised);
   EXPECT_TRUE(uniform(fb()));
   EXPECT_EQ(fb().resets, 1);
   EXPECT_STREQ(fb().activity, "penalised");
-  EXPECT_EQ(r.program(0)->board().motion_request.read().body.type, bb::ActionType::STAND);
+  EXPECT_EQ(r.programs().program(0)->board().motion_request.read().body.type, bb::ActionType::STAND);
   const simswift::game::PlanarPose p0 = simswift::game::robotPose(r.world(), 0);
   while (r.ticks() < 2450) r.tick();  // 24.5 s: still penalised
   EXPECT_TRUE(uniform(fb()));
   const simswift::game::PlanarPose p1 = simswift::game::robotPose(r.world(), 0);
   EXPECT_LT(std::hypot(p1.x - p0.x, p1.y - p0.y), 0.08);  // m: standing (the walk would cover 2 m)
   while (r.ticks() < 3100) r.tick();  // 31 s: released at 25 s
-  EXPECT_FALSE(r.program(0)->board().game.read().penalised);
+  EXPECT_FALSE(r.programs().program(0)->board().game.read().penalised);
   EXPECT_STRNE(fb().activity, "penalised");
   const simswift::game::PlanarPose p2 = simswift::game::robotPose(r.world(), 0);
   EXPECT_GT(std::hypot(p2.x - p1.x, p2.y - p1.y), 0.3);  // m: searching again

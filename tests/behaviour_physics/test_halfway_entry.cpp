@@ -15,6 +15,7 @@
 #include <string>
 
 #include "agent/program/RobotProgram.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Experiment.hpp"
 #include "sim/experiment/Trial.hpp"
@@ -33,14 +34,14 @@ TEST(HalfwayEntryPhysics, RobotsEnteringBesideTheHalfwayLineKeepTheirSide) {
   runner::Runner& run = *owned;
   const int n = static_cast<int>(setup.robots.size());
   const int64_t play = playTick(e);
-  const int64_t per_s = std::llround(1.0 / kTickSeconds);
+  const int64_t per_s = agent::nao::ticksIn(1.0);
   while (run.ticks() < play + 5 * per_s) {
     run.tick();
     const int64_t since = run.ticks() - play;
     if (since < per_s || since % 10 != 0) continue;
     for (int i = 0; i < n; ++i) {
       const auto truth = run.world().robot(i).torsoPose();  // m
-      const agent::blackboard::FieldPose est = run.program(i)->board().localisation.read().pose;  // mm
+      const agent::blackboard::FieldPose est = run.programs().program(i)->board().localisation.read().pose;  // mm
       const double err = std::hypot(truth.x * 1000 - est.x, truth.y * 1000 - est.y);
       ASSERT_LT(err, 400) << "player " << setup.robots[i].player << " at " << since * kTickSeconds << " s: true ("
                           << truth.x << ", " << truth.y << ") m, believed (" << est.x << ", " << est.y << ") mm";

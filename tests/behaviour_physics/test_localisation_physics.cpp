@@ -28,6 +28,7 @@
 #include <string>
 
 #include "sim/game/Sideline.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 using simswift::runner::Runner;
@@ -74,7 +75,7 @@ TEST_P(LocalisationPhysics, ConvergesDetectsATeleportAndRejectsTheMirror) {
   const uint64_t seed = GetParam();
   Runner r(Scenario::parse(scenario(seed), "localisation.yaml"));
   r.start();
-  auto& board = r.program(0)->board();
+  auto& board = r.programs().program(0)->board();
   int64_t last_frame = -1;
   std::optional<double> first_error;   // mm, at the first frame
   std::optional<double> converged_at;  // s: from here on (until the teleport) within tolerance

@@ -21,7 +21,7 @@
 #include "sim/bridge/BodyHost.hpp"
 
 namespace al = agent::libagent;
-namespace ap = agent::program;
+namespace an = agent::nao;  // the named postures (agent/nao/Postures.hpp, via BodyHost.hpp)
 namespace bridge = simswift::bridge;
 using simswift::bridge::BodyHost;
 using simswift::bridge::BridgeError;
@@ -34,7 +34,7 @@ TEST(BodyHost, SensorsAndActuatorsRoundTrip) {
   // Until the program writes, the body reads the initial (stand) command.
   EXPECT_FALSE(host.answered());
   EXPECT_EQ(host.readActuators().joints.angles[al::Joints::LKneePitch],
-            ap::postureAngles(ap::Posture::Stand)[al::Joints::LKneePitch]);
+            an::postureAngles(an::Posture::Stand)[al::Joints::LKneePitch]);
 
   al::SensorValues v{};
   v.sensors[al::Sensors::InertialSensor_AccZ] = -9.81f;
@@ -166,7 +166,7 @@ TEST(BodyHost, ContactLostSitsDownAsLibagentAndStaysLimpUntilStiffened) {
   BodyHost host(5, 1, BodyHost::Mode::InProcess);
   host.setSync(al::SyncMode::FreeRunning);
   al::AgentConnection conn = host.connect();
-  const al::JointValues stand = ap::postureCommand(ap::Posture::Stand);
+  const al::JointValues stand = an::postureCommand(an::Posture::Stand);
   al::SensorValues v{};
   for (int j = 0; j < al::kNumJoints; ++j) v.joints.angles[j] = stand.angles[j];
   EXPECT_TRUE(host.publishSensors(v, 10000, 1));
@@ -251,7 +251,7 @@ TEST(BodyHost, NamedObjectsAre0600AndRemovedOnDestructionAndASecondSimulatorName
   {
     simswift::bridge::BodyHostOptions o;
     o.images = true;
-    BodyHost host(91, 5, BodyHost::Mode::Named, ap::postureCommand(ap::Posture::Stand), o);
+    BodyHost host(91, 5, BodyHost::Mode::Named, an::postureCommand(an::Posture::Stand), o);
     EXPECT_EQ(host.memoryName(), n.memory);
     mode_t mode = 0;
     for (const std::string& f : {shmFile(n.memory), shmFile(n.extension), shmFile(n.images)}) {

@@ -17,6 +17,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "sim/programs/Programs.hpp"
 #include "sim/experiment/Batch.hpp"
 #include "sim/experiment/Report.hpp"
 #include "sim/experiment/ResultsFolder.hpp"
@@ -523,7 +524,7 @@ TEST(Batch, TrialsStartPenalisedThenPlay) {
     mutable std::vector<agent::blackboard::GameInfo> seen;  // per call (tick of play)
     mutable std::vector<double> x;                          // robot 0's torso x (m)
     int finder(const Experiment&, runner::Runner& r) const override {
-      seen.push_back(r.program(0)->board().game.read());
+      seen.push_back(r.programs().program(0)->board().game.read());
       x.push_back(r.stats().robots[0].x);
       return -1;
     }

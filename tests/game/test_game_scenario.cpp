@@ -8,6 +8,7 @@
 #include "agent/comms/GameStateReader.hpp"
 #include "agent/comms/TeamReceiver.hpp"
 #include "agent/comms/TeamSender.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "tests/support/ConfigErrors.hpp"
 
@@ -119,7 +120,7 @@ TEST(GameScenario, RunCarriesPacketsAndPenalties) {
   for (int i = 0; i < 3; ++i) {
     auto p = std::make_unique<TeamPerception>(&r, i, s.robots[i].team, s.robots[i].player);
     code.push_back(p.get());
-    r.setPerceptionStep(i, std::move(p));
+    r.programs().setPerceptionStep(i, std::move(p));
   }
   r.start();
   auto pose = [&](int i) { return simswift::game::robotPose(r.world(), i); };
@@ -166,7 +167,7 @@ std::vector<int64_t> heardCounts(uint64_t seed) {
   for (int i = 0; i < 3; ++i) {
     auto p = std::make_unique<TeamPerception>(&r, i, s.robots[i].team, s.robots[i].player);
     code.push_back(p.get());
-    r.setPerceptionStep(i, std::move(p));
+    r.programs().setPerceptionStep(i, std::move(p));
   }
   r.start();
   while (r.ticks() < 300) r.tick();

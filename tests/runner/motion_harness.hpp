@@ -22,6 +22,7 @@
 #include "agent/behaviour/RequestedBehaviour.hpp"
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/program/StandardModules.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace motion_test {
@@ -67,19 +68,19 @@ struct Pose2 {
 class MotionHarness {
  public:
   // A scenario with one robot at (x, y, theta) standing; noise on, seeded.
-  // `cfg` configures its Motion module (Runner::setMotionConfig).
+  // `cfg` configures its Motion module (Programs::setMotionConfig).
   explicit MotionHarness(uint64_t seed = 1, double x = -3.0, double y = 0.0, double theta = 0.0,
                          const std::string& extra_yaml = "",
                          const agent::motion::MotionConfig& cfg = agent::motion::MotionConfig())
       : runner_(makeScenario(seed, x, y, theta, extra_yaml)) {
     auto b = std::make_unique<agent::behaviour::RequestedBehaviour>();
     mailbox_ = b->mailbox();
-    runner_.setBehaviour(0, std::move(b));
-    runner_.setMotionConfig(0, cfg);
-    runner_.setThreading(agent::program::Threading::Inline);  // deterministic, no hand-over
+    runner_.programs().setBehaviour(0, std::move(b));
+    runner_.programs().setMotionConfig(0, cfg);
+    runner_.programs().setThreading(agent::program::Threading::Inline);  // deterministic, no hand-over
     runner_.start();
     auto* m = dynamic_cast<agent::program::MotionThreadModule*>(
-        runner_.program(0)->schedule().find("motion"));
+        runner_.programs().program(0)->schedule().find("motion"));
     if (!m) throw std::logic_error("motion_test: the robot program runs no Motion module");
     motion_ = &m->motion();
   }
@@ -136,7 +137,7 @@ class MotionHarness {
   }
 
   // The program's Motion section after the last tick (its Blackboard).
-  agent::blackboard::MotionState state() const { return runner_.program(0)->board().motion.read(); }
+  agent::blackboard::MotionState state() const { return runner_.programs().program(0)->board().motion.read(); }
   // The program's Motion module (its MotionThreadModule's), for what the
   // Motion section does not publish: mode(), getupAttempts(). Read between ticks.
   const agent::motion::MotionModule& motion() const { return *motion_; }

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "agent/framework/ModuleSchedule.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "tests/support/HashText.hpp"
 
@@ -60,14 +61,14 @@ class Jitter {
 uint64_t runHash(bool jitter, uint64_t jitter_seed,
                  agent::program::Threading threading = agent::program::Threading::Named) {
   Runner runner(Scenario::parse(kScenario, "determinism.yaml"));
-  runner.setThreading(threading);
+  runner.programs().setThreading(threading);
   if (jitter) {
     // Each thread sleeps before every step (Motion up to 300 us, Perception
     // up to 2 ms); each Jitter is used by one thread only.
     for (int i = 0; i < static_cast<int>(runner.scenario().robots.size()); ++i) {
       auto motion = std::make_shared<Jitter>(jitter_seed * 10 + i, 300);
       auto perception = std::make_shared<Jitter>(jitter_seed * 100 + i, 2000);
-      runner.setStepHook(i, [motion, perception](agent::framework::ThreadId t) {
+      runner.programs().setStepHook(i, [motion, perception](agent::framework::ThreadId t) {
         (t == agent::framework::ThreadId::Motion ? motion : perception)->sleep();
       });
     }
@@ -113,11 +114,11 @@ TEST(Determinism, InlineAndNamedThreadsGiveTheSameHashWithBehaviourAndTeamComms)
   int64_t frames[2];
   for (int k = 0; k < 2; ++k) {
     Runner runner(Scenario::parse(scenario, "behaviour.yaml"));
-    runner.setThreading(k ? agent::program::Threading::Inline : agent::program::Threading::Named);
+    runner.programs().setThreading(k ? agent::program::Threading::Inline : agent::program::Threading::Named);
     RunOptions opt;
     opt.progress = false;
     hashes[k] = runner.run(opt).hash;
-    frames[k] = runner.program(0)->perceptionFrames();
+    frames[k] = runner.programs().program(0)->perceptionFrames();
   }
   EXPECT_EQ(hashes[1], hashes[0]) << "named " << hashLiteral(hashes[0]) << ", inline " << hashLiteral(hashes[1]);
   EXPECT_EQ(frames[1], frames[0]);

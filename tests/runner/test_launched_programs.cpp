@@ -15,7 +15,8 @@
 
 #include "agent/behaviour/BehaviourYaml.hpp"
 #include "agent/program/RobotSetup.hpp"
-#include "sim/runner/ProgramProcess.hpp"
+#include "sim/programs/ProgramProcess.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "tests/support/ConfigErrors.hpp"
 
@@ -23,7 +24,7 @@ namespace ap = agent::program;
 namespace fs = std::filesystem;
 using simswift::ConfigError;
 using simswift::runner::ProgramError;
-using simswift::runner::ProgramProcess;
+using simswift::programs::ProgramProcess;
 using simswift::runner::RunOptions;
 using simswift::runner::Runner;
 using simswift::runner::Scenario;
@@ -262,8 +263,8 @@ TEST(LaunchedPrograms, SimswiftAgentGivesTheBuiltinProgramsHash) {
         d + "/l.yaml"));
     const simswift::runner::RunStats st = r.run(quiet());
     launched = st.hash;
-    ASSERT_EQ(r.programLogs().size(), 2u);
-    EXPECT_EQ(r.programLogs()[0], "t83p2: " + d + "/logs_l/t83p2.log");
+    ASSERT_EQ(r.programs().logs().size(), 2u);
+    EXPECT_EQ(r.programs().logs()[0], "t83p2: " + d + "/logs_l/t83p2.log");
   }
   EXPECT_EQ(builtin, launched);
   EXPECT_NE(readFile(d + "/logs_l/t83p3.robot.yaml").find("distributed: off"), std::string::npos);

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace al = agent::libagent;
@@ -105,7 +106,7 @@ TEST(Runner, WatchdogNamesTheRobotAndThreadInsteadOfHanging) {
   std::string message;
   {
     Runner r(s);
-    r.setMotionGenerator(0, std::make_unique<HangingMotion>(&release));
+    r.programs().setMotionGenerator(0, std::make_unique<HangingMotion>(&release));
     try {
       r.run(quiet());
     } catch (const WatchdogError& e) {
@@ -135,8 +136,8 @@ struct ThrowingMotion : agent::framework::MotionGenerator {
 TEST(Runner, InlineStepThatThrowsEndsTheRunNamingTheRobot) {
   Scenario s = Scenario::parse("duration: 5\nwatchdog: 30\nrobots:\n  - {team: 1, player: 2, x: 1.0}\n", "test.yaml");
   Runner r(s);
-  r.setThreading(ap::Threading::Inline);
-  r.setMotionGenerator(0, std::make_unique<ThrowingMotion>());
+  r.programs().setThreading(ap::Threading::Inline);
+  r.programs().setMotionGenerator(0, std::make_unique<ThrowingMotion>());
   std::string message;
   try {
     r.run(quiet());

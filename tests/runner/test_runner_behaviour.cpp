@@ -1,6 +1,6 @@
 // A test's behaviour in a builtin robot's production schedule
-// (Runner::setBehaviour with agent/behaviour/RequestedBehaviour.hpp), its
-// Motion module's configuration (Runner::setMotionConfig) and the command
+// (Programs::setBehaviour with agent/behaviour/RequestedBehaviour.hpp), its
+// Motion module's configuration (Programs::setMotionConfig) and the command
 // the simulator latched (Runner::lastCommand): what the Motion physics
 // tests, bench_motion and the tuning tools are built on.
 #include <gtest/gtest.h>
@@ -10,6 +10,7 @@
 
 #include "agent/behaviour/RequestedBehaviour.hpp"
 #include "agent/program/StandardModules.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace ab = agent::behaviour;
@@ -40,10 +41,10 @@ struct RequestedRobot {
   Runner runner{standingRobot()};
   std::shared_ptr<ab::MotionRequestMailbox> box;
   RequestedRobot() {
-    runner.setThreading(ap::Threading::Inline);
+    runner.programs().setThreading(ap::Threading::Inline);
     auto b = std::make_unique<ab::RequestedBehaviour>();
     box = b->mailbox();
-    runner.setBehaviour(0, std::move(b));
+    runner.programs().setBehaviour(0, std::move(b));
     runner.start();
   }
 };
@@ -58,10 +59,10 @@ struct NoMotion : agent::framework::MotionGenerator {
 // thread; Motion is the standard Motion module, not the posture generator.
 TEST(RunnerBehaviour, RunsInTheBehaviourSlotWithTheStandardMotionModule) {
   Runner r(standingRobot());
-  r.setThreading(ap::Threading::Inline);
-  r.setBehaviour(0, std::make_unique<ab::RequestedBehaviour>());
+  r.programs().setThreading(ap::Threading::Inline);
+  r.programs().setBehaviour(0, std::make_unique<ab::RequestedBehaviour>());
   r.start();
-  const auto& schedule = r.program(0)->schedule();
+  const auto& schedule = r.programs().program(0)->schedule();
   const std::string order = schedule.describe();
   EXPECT_NE(order.find("behaviour (requested)"), std::string::npos) << order;
   EXPECT_NE(dynamic_cast<ap::MotionThreadModule*>(schedule.find("motion")), nullptr) << order;
@@ -86,7 +87,7 @@ TEST(RunnerBehaviour, ARequestReachesMotionThroughTheBlackboardWithinFiveTicks) 
     requestWalk(*box, 100.0f + k);
     const int64_t want = box->latest().sequence;
     int ticks = 0;
-    while (r.program(0)->board().motion.read().request_sequence != want && ticks < 10) {
+    while (r.programs().program(0)->board().motion.read().request_sequence != want && ticks < 10) {
       r.tick();
       ++ticks;
     }
@@ -94,7 +95,7 @@ TEST(RunnerBehaviour, ARequestReachesMotionThroughTheBlackboardWithinFiveTicks) 
     EXPECT_LE(ticks, 5) << "request " << k;
     seen_min = std::min(seen_min, ticks);
     seen_max = std::max(seen_max, ticks);
-    EXPECT_EQ(r.program(0)->board().motion_request.read().body.forward, 100.0f + k);
+    EXPECT_EQ(r.programs().program(0)->board().motion_request.read().body.forward, 100.0f + k);
     for (int i = 0; i < 7 + k; ++i) r.tick();
   }
   EXPECT_EQ(seen_min, 2);  // every phase was met
@@ -110,14 +111,14 @@ TEST(RunnerBehaviour, LastCommandIsWhatTheProgramSent) {
   requestWalk(*box, 200.0f);
   for (int i = 0; i < 150; ++i) {
     r.tick();
-    const bb::ActuatorRequest sent = r.program(0)->board().actuators.read();
+    const bb::ActuatorRequest sent = r.programs().program(0)->board().actuators.read();
     const agent::libagent::ActuatorCommand& got = r.lastCommand(0);
     for (int j = 0; j < agent::libagent::kNumJoints; ++j) {
       ASSERT_EQ(got.joints.angles[j], sent.joints.angles[j]) << "tick " << i << " joint " << j;
       ASSERT_EQ(got.joints.stiffnesses[j], sent.joints.stiffnesses[j]) << "tick " << i << " joint " << j;
     }
   }
-  EXPECT_EQ(r.program(0)->board().motion.read().active, bb::ActionType::WALK);
+  EXPECT_EQ(r.programs().program(0)->board().motion.read().active, bb::ActionType::WALK);
 }
 
 // The test's MotionConfig is the Motion module's.
@@ -126,11 +127,11 @@ TEST(RunnerBehaviour, MotionConfigReachesTheMotionModule) {
   cfg.max_getup_attempts = 2;
   cfg.kick.ankle_roll_margin = -1.0;
   Runner r(standingRobot());
-  r.setThreading(ap::Threading::Inline);
-  r.setBehaviour(0, std::make_unique<ab::RequestedBehaviour>());
-  r.setMotionConfig(0, cfg);
+  r.programs().setThreading(ap::Threading::Inline);
+  r.programs().setBehaviour(0, std::make_unique<ab::RequestedBehaviour>());
+  r.programs().setMotionConfig(0, cfg);
   r.start();
-  auto* m = dynamic_cast<ap::MotionThreadModule*>(r.program(0)->schedule().find("motion"));
+  auto* m = dynamic_cast<ap::MotionThreadModule*>(r.programs().program(0)->schedule().find("motion"));
   ASSERT_NE(m, nullptr);
   EXPECT_EQ(m->motion().config().max_getup_attempts, 2);
   EXPECT_EQ(m->motion().config().kick.ankle_roll_margin, -1.0);
@@ -140,9 +141,9 @@ TEST(RunnerBehaviour, MotionConfigReachesTheMotionModule) {
 // request unread: start() says so.
 TEST(RunnerBehaviour, BehaviourWithAMotionGeneratorIsAnError) {
   Runner r(standingRobot());
-  r.setThreading(ap::Threading::Inline);
-  r.setBehaviour(0, std::make_unique<ab::RequestedBehaviour>());
-  r.setMotionGenerator(0, std::make_unique<NoMotion>());
+  r.programs().setThreading(ap::Threading::Inline);
+  r.programs().setBehaviour(0, std::make_unique<ab::RequestedBehaviour>());
+  r.programs().setMotionGenerator(0, std::make_unique<NoMotion>());
   try {
     r.start();
     FAIL() << "no error";

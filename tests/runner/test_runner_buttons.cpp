@@ -5,6 +5,7 @@
 #include <mutex>
 #include <vector>
 
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace al = agent::libagent;
@@ -39,7 +40,7 @@ TEST(RunnerButtons, ScenarioPressesReachTheRobotAtTheirTimes) {
       "test.yaml");
   std::vector<int64_t> chest, head;
   Runner r(s);
-  r.setMotionGenerator(0, std::make_unique<RecordingMotion>(&chest, &head));
+  r.programs().setMotionGenerator(0, std::make_unique<RecordingMotion>(&chest, &head));
   RunOptions o;
   o.progress = false;
   r.run(o);

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/world/ConfigError.hpp"
 
@@ -108,7 +109,7 @@ TEST(RunnerCamera, PerceptionThreadSeesImages) {
   Runner runner(sc);
   auto probe = std::make_unique<ImageProbe>();
   ImageProbe* p = probe.get();
-  runner.setPerceptionStep(0, std::move(probe));
+  runner.programs().setPerceptionStep(0, std::move(probe));
   runner.run(quiet());
   // 0.3 s: frames 0..9.
   EXPECT_EQ(p->frames_seen.load(), 10);
@@ -124,7 +125,7 @@ TEST(RunnerCamera, NoRenderingUnlessAsked) {
   Runner runner(sc);
   auto probe = std::make_unique<ImageProbe>();
   ImageProbe* p = probe.get();
-  runner.setPerceptionStep(0, std::move(probe));
+  runner.programs().setPerceptionStep(0, std::move(probe));
   runner.run(quiet());
   EXPECT_EQ(p->frames_seen.load(), 4);  // frames 0..3 (frame 3 at t = 0.1 s)
   EXPECT_EQ(p->valid_frames.load(), 0);

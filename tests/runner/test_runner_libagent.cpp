@@ -23,6 +23,7 @@
 
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/libagent/SimExtension.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace al = agent::libagent;
@@ -201,7 +202,7 @@ TEST(LibagentClient, LockStepMoveSameHashStartedBeforeOrAfterAndInProcess) {
   RunStats inproc;
   {
     Runner r(robotScenario(ticks / 100.0, team, player, "builtin"));
-    r.setMotionGenerator(0, std::make_unique<SameMoves>());
+    r.programs().setMotionGenerator(0, std::make_unique<SameMoves>());
     inproc = r.run(quiet());
   }
   EXPECT_EQ(before.ticks, ticks);
@@ -432,7 +433,7 @@ TEST(SimswiftAgent, ExternalProgramReadsTheGameStateAndTalksToItsTeammate) {
       << line;
   EXPECT_EQ(malformed, 0);
   EXPECT_GE(received, 5);  // the builtin teammate's packets (5 Hz for 2 s)
-  const agent::blackboard::TeamInfo mate = r.program(1)->board().team.read();
+  const agent::blackboard::TeamInfo mate = r.programs().program(1)->board().team.read();
   EXPECT_TRUE(mate.mates[1].valid) << "the builtin teammate heard nothing from the external player";
   EXPECT_GE(mate.received, 10);  // the external player's, 5 Hz for 3 s
 }

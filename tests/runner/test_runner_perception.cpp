@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "sim/game/Sideline.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
 using simswift::runner::Runner;
@@ -22,7 +23,7 @@ TEST(RunnerPerception, EveryRobotGetsThirtyFramesASecondWithoutImages) {
   while (r.ticks() < 200) r.tick();
   // Frames where floor(t * 30) advances: 0..60 over ticks 0.01 .. 2.00 s.
   for (int i = 0; i < 2; ++i) {
-    EXPECT_EQ(r.program(i)->perceptionFrames(), 61) << i;
+    EXPECT_EQ(r.programs().program(i)->perceptionFrames(), 61) << i;
     EXPECT_EQ(r.images(i), nullptr);
   }
 }
@@ -33,19 +34,19 @@ TEST(RunnerPerception, ScriptedRobotStandsWhilePenalisedAndWalksWhenReleased) {
                            "game:\n  penalties: [{t: 2.0, robot: 0, penalty: player_pushing, duration: 2.0}]\n",
                            "pen.yaml"));
   r.start();
-  auto body = [&] { return r.program(0)->board().motion_request.read().body.type; };
+  auto body = [&] { return r.programs().program(0)->board().motion_request.read().body.type; };
   auto x = [&] { return simswift::game::robotPose(r.world(), 0).x; };
   while (r.ticks() < 190) r.tick();  // walking before the penalty
   EXPECT_EQ(body(), bb::ActionType::WALK);
   while (r.ticks() < 230) r.tick();  // 2.3 s: penalised, placed at the sideline
-  EXPECT_TRUE(r.program(0)->board().game.read().penalised);
+  EXPECT_TRUE(r.programs().program(0)->board().game.read().penalised);
   EXPECT_EQ(body(), bb::ActionType::STAND);
   const double x_pen = x();
   while (r.ticks() < 390) r.tick();  // still penalised at 3.9 s: it has not walked
   EXPECT_EQ(body(), bb::ActionType::STAND);
   EXPECT_NEAR(x(), x_pen, 0.08);  // m: the walk stopping, not walking on (200 mm/s would be 0.3 m)
   while (r.ticks() < 600) r.tick();  // released at 4 s
-  EXPECT_FALSE(r.program(0)->board().game.read().penalised);
+  EXPECT_FALSE(r.programs().program(0)->board().game.read().penalised);
   EXPECT_EQ(body(), bb::ActionType::WALK);
 }
 
@@ -57,8 +58,8 @@ TEST(RunnerPerception, TeammatesHearEachOther) {
                            "team.yaml"));
   r.start();
   while (r.ticks() < 200) r.tick();
-  const bb::TeamInfo a = r.program(0)->board().team.read(), b = r.program(1)->board().team.read();
-  const bb::TeamInfo c = r.program(2)->board().team.read();
+  const bb::TeamInfo a = r.programs().program(0)->board().team.read(), b = r.programs().program(1)->board().team.read();
+  const bb::TeamInfo c = r.programs().program(2)->board().team.read();
   EXPECT_TRUE(a.mates[3].valid);
   EXPECT_TRUE(b.mates[1].valid);
   EXPECT_GE(a.received, 8);  // 5 Hz for 2 s

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "sim/programs/FindBallObserver.hpp"
 #include "sim/views/FindBallRecorder.hpp"
 
 using sim::views::FindBallView;
@@ -30,12 +31,15 @@ TEST(FindBallRecorder, FramesAtTheRateFromTheSection) {
   c.dir = dir;
   c.rate_hz = 2;
   sim::views::FindBallRecorder rec(c, {"t19p2", "t19p3"}, {2, 3});
-  for (int64_t t_us = 0; t_us <= 1000000; t_us += 10000) rec.maybeCapture(t_us, {on, off});
+  // What the program side's observer hook gives for the two sections.
+  const std::vector<std::optional<sim::views::FindBallViewData>> views = {
+      simswift::programs::observedView(on, 2, "t19p2"), simswift::programs::observedView(off, 3, "t19p3")};
+  for (int64_t t_us = 0; t_us <= 1000000; t_us += 10000) rec.maybeCapture(t_us, views);
   EXPECT_EQ(rec.frames(), 3);  // t = 0, 0.5, 1.0 s
   EXPECT_TRUE(std::filesystem::exists(dir + "/t19p2/findball_000002.png"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/t19p3"));
 
-  const sim::views::FindBallViewData d = sim::views::viewFromInfo(on, 2, "t19p2");
+  const sim::views::FindBallViewData d = simswift::programs::viewFromInfo(on, 2, "t19p2");
   cairo_surface_t* s = cairo_image_surface_create_from_png((dir + "/t19p2/findball_000001.png").c_str());
   ASSERT_EQ(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
   FindBallView view;

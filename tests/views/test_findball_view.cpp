@@ -8,6 +8,7 @@
 #include <string>
 
 #include "agent/behaviour/PositionalDistribution.hpp"
+#include "sim/programs/FindBallObserver.hpp"
 #include "sim/views/FindBallView.hpp"
 
 using sim::views::FindBallView;
@@ -50,7 +51,7 @@ FindBallViewData sampleData() {
   agent::behaviour::PositionalDistribution p;  // 3 x 3 over 9000 x 6000
   p.set({0.05, 0.05, 0.60, 0.05, 0.05, 0.05, 0.05, 0.05, 0.05});
   FindBallViewData d;
-  sim::views::setDistribution(d, p);
+  simswift::programs::setDistribution(d, p);
   sim::views::ViewRobot self;
   self.player = 2;
   self.x = -2000;

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "sim/programs/FindBallObserver.hpp"
 #include "sim/views/FindBallView.hpp"
 #include "tests/agent/behaviour/KinematicWorld.hpp"
 
@@ -31,7 +32,7 @@ TEST(FindBallViewRun, FramesFromThreeSearchingRobots) {
     for (size_t i = 0; i < w.robots.size(); ++i) {
       const auto& r = w.robots[i];
       const BehaviourInputs in = w.inputsFor(r);
-      const auto d = sim::views::robotView(in, *r.behaviour);
+      const auto d = simswift::programs::robotView(in, *r.behaviour);
       ASSERT_EQ(d.robots.size(), 3u);
       char name[64];
       std::snprintf(name, sizeof name, "/robot%d_%04d.png", r.player, frames);

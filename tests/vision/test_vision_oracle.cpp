@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "agent/program/Postures.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/vision/VisionOracle.hpp"
@@ -593,7 +594,7 @@ TEST(VisionRunner, PerceptionThreadReceivesObservations) {
       "vision_runner.yaml");
   runner::Runner r(sc);
   auto p = std::make_shared<ProbeCounts>();
-  r.setPerceptionStep(0, std::make_unique<BallProbe>(p));
+  r.programs().setPerceptionStep(0, std::make_unique<BallProbe>(p));
   runner::RunOptions opt;
   opt.progress = false;
   r.run(opt);
@@ -631,7 +632,7 @@ RunRecord runRecorded(uint64_t seed, bool vision_on) {
       "vision_det.yaml");
   runner::Runner r(sc);
   auto seen = std::make_shared<std::vector<al::Observation>>();
-  r.setPerceptionStep(0, std::make_unique<Recorder>(seen));
+  r.programs().setPerceptionStep(0, std::make_unique<Recorder>(seen));
   runner::RunOptions opt;
   opt.progress = false;
   const runner::RunStats s = r.run(opt);

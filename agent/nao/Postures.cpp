@@ -1,6 +1,6 @@
-#include "agent/program/Postures.hpp"
+#include "agent/nao/Postures.hpp"
 
-namespace agent::program {
+namespace agent::nao {
 
 namespace J = agent::libagent::Joints;
 
@@ -80,4 +80,9 @@ int jointIndex(const std::string& name) {
   return -1;
 }
 
-}  // namespace agent::program
+const std::vector<std::string>& postureNames() {
+  static const std::vector<std::string> names = {"stand", "crouch", "limp", "zero"};
+  return names;
+}
+
+}  // namespace agent::nao

@@ -1,4 +1,4 @@
-#include "sim/runner/ProgramProcess.hpp"
+#include "sim/programs/ProgramProcess.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-namespace simswift::runner {
+namespace simswift::programs {
 
 namespace fs = std::filesystem;
 
@@ -215,4 +215,4 @@ std::string ProgramProcess::tail(const std::string& path, int lines) {
   return out;
 }
 
-}  // namespace simswift::runner
+}  // namespace simswift::programs

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace simswift::runner {
+namespace simswift::programs {
 
 struct LaunchSpec {
   std::vector<std::string> command;  // argv (placeholders allowed); empty = not launched
@@ -80,4 +80,4 @@ class ProgramProcess {
   std::optional<std::string> how_;
 };
 
-}  // namespace simswift::runner
+}  // namespace simswift::programs

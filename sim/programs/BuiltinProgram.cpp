@@ -1,0 +1,82 @@
+#include "sim/programs/BuiltinProgram.hpp"
+
+#include "sim/bridge/BodyHost.hpp"
+#include "sim/programs/FindBallObserver.hpp"
+#include "sim/runner/Errors.hpp"
+#include "sim/runner/Scenario.hpp"
+
+namespace simswift::programs {
+
+namespace al = agent::libagent;
+namespace ap = agent::program;
+
+BuiltinProgram::BuiltinProgram(RobotSlot slot, ap::ProgramConfig config, ap::Threading threading)
+    : ProgramDriver(std::move(slot)) {
+  al::AgentConnection conn = slot_.host->connect();
+  conn.setImages(slot_.host->images());
+  program_ = std::make_unique<ap::RobotProgram>(std::move(conn), std::move(config));
+  program_->start(threading);
+}
+
+bool BuiltinProgram::findBallView(sim::views::FindBallViewData& out) const {
+  const agent::blackboard::FindBallInfo info = program_->board().findball.read();
+  if (!info.active) return false;
+  out = viewFromInfo(info, slot_.spec->player, slot_.tag);
+  return true;
+}
+
+ThreadedProgram::ThreadedProgram(RobotSlot slot, ap::ProgramConfig config)
+    : BuiltinProgram(std::move(slot), std::move(config), ap::Threading::Named) {}
+
+InlineProgram::InlineProgram(RobotSlot slot, ap::ProgramConfig config)
+    : BuiltinProgram(std::move(slot), std::move(config), ap::Threading::Inline) {}
+
+void InlineProgram::posted(Step step, int64_t tick) {
+  const bool motion = step == Step::Motion;
+  if (motion ? program_->stepMotion() : program_->stepPerception()) return;
+  const std::string error = program_->error();
+  throw runner::WatchdogError("robot " + slot_.tag + ": " + (motion ? "motion" : "perception") + " step " +
+                              (error.empty() ? "found nothing posted (inline)" : "failed: " + error) + " (tick " +
+                              std::to_string(tick) + ")");
+}
+
+namespace {
+
+// The controller as the program's Motion step (the public API's types are
+// libagent 2017's layout: sim/api/Simulation.cpp adapts them).
+class ControllerMotion : public agent::framework::MotionGenerator {
+ public:
+  explicit ControllerMotion(RawController c) : c_(std::move(c)) {}
+  void tick(const al::SensorValues& sensors, int64_t, al::JointValues& out) override { c_(sensors, out); }
+
+ private:
+  RawController c_;
+};
+
+// The libagent controller: the extras the program filled for this step.
+class LibagentControllerMotion : public agent::framework::MotionGenerator {
+ public:
+  LibagentControllerMotion(RawLibagentController c, std::shared_ptr<LibagentExtras> io)
+      : c_(std::move(c)), io_(std::move(io)) {}
+  void tick(const al::SensorValues& sensors, int64_t, al::JointValues& out) override { c_(sensors, out, *io_); }
+
+ private:
+  RawLibagentController c_;
+  std::shared_ptr<LibagentExtras> io_;
+};
+
+}  // namespace
+
+ApiController::ApiController(RobotSlot slot, ap::ProgramConfig config)
+    : InlineProgram(std::move(slot), std::move(config)) {}
+
+std::unique_ptr<agent::framework::MotionGenerator> ApiController::motionStep(RawController c) {
+  return std::make_unique<ControllerMotion>(std::move(c));
+}
+
+std::unique_ptr<agent::framework::MotionGenerator> ApiController::motionStep(RawLibagentController c,
+                                                                              std::shared_ptr<LibagentExtras> io) {
+  return std::make_unique<LibagentControllerMotion>(std::move(c), std::move(io));
+}
+
+}  // namespace simswift::programs

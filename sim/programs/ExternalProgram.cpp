@@ -1,0 +1,69 @@
+#include "sim/programs/ExternalProgram.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "sim/bridge/BodyHost.hpp"
+#include "sim/runner/Errors.hpp"
+#include "sim/runner/RunStats.hpp"
+#include "sim/runner/Scenario.hpp"
+
+namespace simswift::programs {
+
+using runner::ProgramError;
+using runner::RunnerError;
+
+ExternalProgram::ExternalProgram(RobotSlot slot, double attach_timeout_s)
+    : ProgramDriver(std::move(slot)), attach_timeout_s_(attach_timeout_s) {}
+
+bool ExternalProgram::attach() {
+  bridge::BodyHost& host = *slot_.host;
+  const runner::RobotSpec& spec = *slot_.spec;
+  if (host.waitAnswer(0.5)) return true;
+  std::fprintf(stderr,
+               "waiting for robot %s on %s: start its libagent robot program (or `simswift-agent --team %d "
+               "--player %d%s`)\n",
+               slot_.tag.c_str(), host.memoryName().c_str(), spec.team, spec.player,
+               spec.bare_names ? " --bare" : "");
+  if (!host.waitAnswer(attach_timeout_s_)) {
+    std::ostringstream m;
+    m << "robot " << slot_.tag << ": no robot program answered on " << host.memoryName() << " within "
+      << attach_timeout_s_ << " s (program: external: start one, e.g. simswift-agent --team " << spec.team
+      << " --player " << spec.player
+      << "; a program still running from an earlier run holds that run's removed objects and never "
+         "answers here: restart it)";
+    throw RunnerError(m.str());
+  }
+  return true;
+}
+
+LaunchedProgram::LaunchedProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ProgramProcess> process)
+    : ExternalProgram(std::move(slot), attach_timeout_s), process_(std::move(process)) {}
+
+bool LaunchedProgram::attach() {
+  if (!awaitChecked(Step::Motion, attach_timeout_s_))
+    throw ProgramError("robot " + slot_.tag + ": its program (pid " + std::to_string(process_->pid()) +
+                           ") did not answer on " + slot_.host->memoryName() + " within attach_timeout " +
+                           runner::formatNumber("%g", attach_timeout_s_) + " s; log " + process_->logPath(),
+                       slot_.tag + ": program did not attach within " +
+                           runner::formatNumber("%g", attach_timeout_s_) + " s");
+  return true;
+}
+
+bool LaunchedProgram::await(Step step, double timeout_s) { return awaitChecked(step, timeout_s); }
+
+bool LaunchedProgram::awaitChecked(Step step, double timeout_s) {
+  constexpr double kSlice = 0.05;  // s
+  for (double waited = 0; waited < timeout_s; waited += kSlice) {
+    if (ProgramDriver::await(step, std::min(kSlice, timeout_s - waited))) return true;
+    check();
+  }
+  return false;
+}
+
+void LaunchedProgram::check() {
+  if (process_->ended()) throw ProgramError(process_->endedMessage(), slot_.tag + ": program " + *process_->ended());
+}
+
+}  // namespace simswift::programs

@@ -1,0 +1,43 @@
+// A robot program in another process, attached to its body by name (the
+// libagent block in named shared memory): started by hand (ExternalProgram,
+// `program: external`) or by simswift (LaunchedProgram, `program: {command:
+// [...]}`: ProgramProcess.hpp). Either may start before or after the
+// simulator: the first tick waits up to the scenario's attach_timeout.
+#pragma once
+
+#include <memory>
+
+#include "sim/programs/ProgramDriver.hpp"
+#include "sim/programs/ProgramProcess.hpp"
+
+namespace simswift::programs {
+
+class ExternalProgram : public ProgramDriver {
+ public:
+  // attach_timeout_s: wall-clock s to wait for the first answer.
+  ExternalProgram(RobotSlot slot, double attach_timeout_s);
+  // Waits for the first answer; on a terminal, says after 0.5 s what to start.
+  bool attach() override;
+
+ protected:
+  double attach_timeout_s_;
+};
+
+class LaunchedProgram final : public ExternalProgram {
+ public:
+  // Starts `process` (already spawned: the factory fills its command).
+  LaunchedProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ProgramProcess> process);
+  bool attach() override;
+  // In slices of 50 ms (wall clock), checking the process between them, so
+  // a crash ends the run within a slice (ProgramError), never a hang.
+  bool await(Step step, double timeout_s) override;
+  void stop() override { process_->stop(); }
+  std::string log() const override { return slot_.tag + ": " + process_->logPath(); }
+
+ private:
+  bool awaitChecked(Step step, double timeout_s);
+  void check();
+  std::unique_ptr<ProgramProcess> process_;
+};
+
+}  // namespace simswift::programs

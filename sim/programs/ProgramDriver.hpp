@@ -1,0 +1,86 @@
+// The seam between the simulator and the robot program: one interface for
+// whatever drives a robot's body (the model: MuJoCo's mjcb_control, the
+// callback that computes a body's controls each step, and SimRobot's device
+// boundary). The Runner sees a robot program only through it; every
+// implementation and their factory (Programs.hpp) live in sim/programs, the
+// only folder of sim/ that may include the robot program (agent/program,
+// behaviour, motion, blackboard, ...; the build refuses any other).
+//
+// Each tick the body side posts the robot's sensors (sim/bridge/BodyHost)
+// and the Runner asks the driver for the answer; each camera frame the same
+// with the frame. The five implementations:
+//   ThreadedProgram   builtin, on its own named Motion and Perception threads
+//   InlineProgram     builtin, its steps run on the simulator's thread
+//   ApiController     the public API's controller as an inline program's Motion step
+//   ExternalProgram   a program started by hand, attached by name
+//   LaunchedProgram   a program simswift starts itself (program: {command})
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+
+#include "sim/views/FindBallView.hpp"
+
+namespace simswift::bridge {
+class BodyHost;
+}
+namespace simswift::runner {
+struct RobotSpec;
+}
+
+namespace simswift::programs {
+
+// One robot as its program driver sees it (built by the Runner with the bodies).
+struct RobotSlot {
+  int index = 0;                            // scenario order
+  std::string tag;                          // "t19p2"
+  const runner::RobotSpec* spec = nullptr;  // the scenario's entry
+  bridge::BodyHost* host = nullptr;         // the body side of its libagent block
+};
+
+class ProgramDriver {
+ public:
+  enum class Step { Motion, Perception };  // a tick, a camera frame
+
+  virtual ~ProgramDriver() = default;
+  ProgramDriver(const ProgramDriver&) = delete;
+  ProgramDriver& operator=(const ProgramDriver&) = delete;
+
+  // The first attach (tick stage 7 of the robot's first tick). True: this
+  // waited for the program's first answer itself (an external program, up
+  // to the scenario's attach_timeout, wall clock; throws RunnerError or
+  // ProgramError if none came); false: the first tick is answered as every
+  // other (a builtin program is there from the start).
+  virtual bool attach() { return false; }
+  // The body side has posted a tick or a camera frame: a program that runs
+  // on the simulator's thread takes its step now (tick: for messages).
+  // Throws WatchdogError if that step fails.
+  virtual void posted(Step /*step*/, int64_t /*tick*/) {}
+  // Waits up to timeout_s (wall clock) for the answer to what was posted;
+  // false on timeout. Throws ProgramError if a launched program ended.
+  virtual bool await(Step step, double timeout_s);
+  // Why the program went silent, for the watchdog's message (a builtin
+  // thread's exception); empty if not known.
+  virtual std::string error() const { return {}; }
+  // After the body side's shutdown: a launched program is stopped
+  // (SIGTERM, then SIGKILL after its stop_grace) and reaped.
+  virtual void stop() {}
+  // After every driver's stop(): builtin threads joined. The program stays
+  // readable until the driver goes.
+  virtual void join() {}
+  // Its log file ("t19p2: simswift-logs/t19p2.log"); empty if none.
+  virtual std::string log() const { return {}; }
+  // The observer hook: the robot's FindBall search as the FindBall view
+  // draws it (what the robot itself believes), filled by the program side
+  // between ticks. False: nothing to show (no search published).
+  virtual bool findBallView(sim::views::FindBallViewData& /*out*/) const { return false; }
+
+  const RobotSlot& slot() const { return slot_; }
+
+ protected:
+  explicit ProgramDriver(RobotSlot slot) : slot_(std::move(slot)) {}
+  RobotSlot slot_;
+};
+
+}  // namespace simswift::programs

@@ -1,0 +1,192 @@
+#include "sim/programs/Programs.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "agent/libagent/SharedNames.hpp"
+#include "agent/program/RobotSetup.hpp"
+#include "sim/bridge/BodyHost.hpp"
+#include "sim/programs/ExternalProgram.hpp"
+#include "sim/programs/ProgramSpec.hpp"
+#include "sim/runner/Errors.hpp"
+#include "sim/runner/Scenario.hpp"
+
+namespace simswift::programs {
+
+namespace al = agent::libagent;
+namespace ap = agent::program;
+using runner::ProgramError;
+using runner::RobotSpec;
+using runner::RunnerError;
+
+Programs::Programs(int num_robots) : robots_(static_cast<size_t>(num_robots)) {}
+
+// Drivers go before anything they point into (the Runner's hosts outlive them).
+Programs::~Programs() = default;
+
+// Robot `robot`'s entry for an override given before the start.
+Programs::Robot& Programs::overrideSlot(int robot, const char* what) {
+  if (built_) throw RunnerError(std::string(what) + ": the runner has already started");
+  if (robot < 0 || robot >= size()) throw RunnerError(std::string(what) + ": no robot " + std::to_string(robot));
+  return robots_[robot];
+}
+
+void Programs::setMotionGenerator(int robot, std::unique_ptr<agent::framework::MotionGenerator> motion) {
+  overrideSlot(robot, "setMotionGenerator").motion_override = std::move(motion);
+}
+
+void Programs::setBehaviour(int robot, std::unique_ptr<agent::framework::Module> behaviour) {
+  overrideSlot(robot, "setBehaviour").behaviour_override = std::move(behaviour);
+}
+
+void Programs::setMotionConfig(int robot, const agent::motion::MotionConfig& config) {
+  overrideSlot(robot, "setMotionConfig").motion_config = config;
+}
+
+void Programs::setPerceptionStep(int robot, std::unique_ptr<agent::framework::PerceptionStep> perception) {
+  overrideSlot(robot, "setPerceptionStep").perception_override = std::move(perception);
+}
+
+void Programs::setStepHook(int robot, std::function<void(agent::framework::ThreadId)> hook) {
+  overrideSlot(robot, "setStepHook").step_hook = std::move(hook);
+}
+
+void Programs::setController(int robot, RawController controller) {
+  Robot& r = overrideSlot(robot, "setController");
+  r.controller = std::move(controller);
+  r.libagent_controller = nullptr;
+}
+
+void Programs::setLibagentController(int robot, RawLibagentController controller) {
+  Robot& r = overrideSlot(robot, "setLibagentController");
+  r.libagent_controller = std::move(controller);
+  r.controller = nullptr;
+}
+
+void Programs::setThreading(ap::Threading threading) {
+  if (built_) throw RunnerError("setThreading: the runner has already started");
+  threading_ = threading;
+}
+
+void Programs::build(const runner::Scenario& sc, const std::vector<RobotSlot>& slots) {
+  if (built_) return;
+  built_ = true;
+  for (const RobotSlot& slot : slots) {
+    Robot& r = robots_[slot.index];
+    const RobotSpec& spec = *slot.spec;
+    if (spec.program == RobotSpec::Program::Builtin) {
+      r.driver = makeBuiltin(sc, slot, r);
+      // Before the first Motion step: the program fills the extras each step.
+      if (r.libagent_io) program(slot.index)->setLibagentIO(r.libagent_io);
+    } else if (spec.launch.launched()) {
+      r.driver = makeLaunched(sc, slot);
+    } else {
+      r.driver = std::make_unique<ExternalProgram>(slot, sc.attach_timeout_s);
+    }
+  }
+}
+
+// The robot program: the standard modules composed from the robot's setup
+// (agent/program/RobotSetup.hpp: the same for a launched simswift-agent),
+// Motion replaced by a test's generator or the API's controller if one was
+// set, the Motion module configured by a test's MotionConfig if one was set.
+std::unique_ptr<ProgramDriver> Programs::makeBuiltin(const runner::Scenario& sc, const RobotSlot& slot, Robot& r) {
+  if (r.behaviour_override && r.motion_override)
+    throw RunnerError("robot " + std::to_string(slot.index) +
+                      ": setBehaviour and setMotionGenerator both given (the generator would leave the "
+                      "behaviour's motion request unread)");
+  std::unique_ptr<agent::framework::MotionGenerator> motion = std::move(r.motion_override);
+  const bool api = r.controller || r.libagent_controller;
+  if (r.controller) motion = ApiController::motionStep(std::move(r.controller));
+  if (r.libagent_controller) {
+    r.libagent_io = std::make_shared<LibagentExtras>();
+    motion = ApiController::motionStep(std::move(r.libagent_controller), r.libagent_io);
+  }
+  ap::ProgramConfig pc = ap::composeProgram(robotSetup(sc, slot.index), std::move(motion),
+                                            r.motion_config ? *r.motion_config : agent::motion::MotionConfig());
+  if (r.behaviour_override) {
+    // A test's behaviour in the behaviour slot: it replaces the scenario's
+    // behaviour, actions or held posture, and the standard Motion module
+    // follows its requests.
+    pc.behaviour = std::move(r.behaviour_override);
+    pc.actions.clear();
+    pc.motion_generator.reset();
+  }
+  pc.perception_step = std::move(r.perception_override);
+  pc.step_hook = std::move(r.step_hook);
+  // The game state and team link reach the program's modules. A test's
+  // PerceptionStep that talks to the extension objects itself (through
+  // Runner::extensions(i)) keeps them to itself: two readers would split the inbox.
+  if (!pc.perception_step) pc.extensions = slot.host->extension();
+  if (api) return std::make_unique<ApiController>(slot, std::move(pc));
+  if (threading_ == ap::Threading::Inline) return std::make_unique<InlineProgram>(slot, std::move(pc));
+  return std::make_unique<ThreadedProgram>(slot, std::move(pc));
+}
+
+// A launched robot's program: started with its names, seed and setup
+// filled into its command, its output in program_logs/<tag>.log. It
+// attaches by name like any external program (the first tick waits).
+std::unique_ptr<ProgramDriver> Programs::makeLaunched(const runner::Scenario& sc, const RobotSlot& slot) {
+  const RobotSpec& spec = *slot.spec;
+  const std::filesystem::path logs(sc.program_logs);
+  std::error_code ec;
+  std::filesystem::create_directories(logs, ec);
+  if (ec) throw RunnerError("program_logs: cannot create " + logs.string() + ": " + ec.message());
+  const std::string config = (logs / (slot.tag + ".robot.yaml")).string();
+  {
+    std::ofstream out(config);
+    out << ap::robotSetupYaml(robotSetup(sc, slot.index));
+    if (!out) throw RunnerError("program_logs: cannot write " + config);
+  }
+  const al::RobotNames& names = slot.host->names();
+  // The release's N: the memory name's digits (none for the bare names).
+  const std::string number = names.memory.substr(std::string(al::kMemoryName).size());
+  const std::map<std::string, std::string> values = {
+      {"team", std::to_string(spec.team)},
+      {"player", std::to_string(spec.player)},
+      {"number", number},
+      {"memory", names.memory},
+      {"semaphore", names.semaphore},
+      {"extension", names.extension},
+      {"seed", std::to_string(runner::programSeed(sc.seed, slot.index))},
+      {"config", std::filesystem::absolute(config).string()}};
+  std::vector<std::string> argv;
+  for (const std::string& a : spec.launch.command) argv.push_back(ProgramProcess::fill(a, values));
+  argv[0] = ProgramProcess::resolveCommand(argv[0], sc.base_dir);
+  std::vector<std::pair<std::string, std::string>> env;
+  for (const auto& [k, v] : spec.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
+  std::unique_ptr<ProgramProcess> process;
+  try {
+    process = std::make_unique<ProgramProcess>(slot.tag, argv, ProgramProcess::fill(spec.launch.cwd, values), env,
+                                               (logs / (slot.tag + ".log")).string(), spec.launch.stop_grace_s);
+  } catch (const std::runtime_error& e) {
+    throw ProgramError(e.what(), slot.tag + ": program could not be started");
+  }
+  return std::make_unique<LaunchedProgram>(slot, sc.attach_timeout_s, std::move(process));
+}
+
+ap::RobotProgram* Programs::program(int i) const {
+  if (i < 0 || i >= size() || !robots_[i].driver) return nullptr;
+  auto* b = dynamic_cast<BuiltinProgram*>(robots_[i].driver.get());
+  return b ? &b->program() : nullptr;
+}
+
+std::vector<std::string> Programs::logs() const {
+  std::vector<std::string> out;
+  for (const Robot& r : robots_)
+    if (r.driver && !r.driver->log().empty()) out.push_back(r.driver->log());
+  return out;
+}
+
+// Launched programs see `shutdown` (simswift-agent exits); any other gets
+// SIGTERM, then SIGKILL after its stop_grace. Reaped before the hosts
+// remove their objects. Then builtin threads are joined.
+void Programs::shutdown() {
+  for (Robot& r : robots_)
+    if (r.driver) r.driver->stop();
+  for (Robot& r : robots_)
+    if (r.driver) r.driver->join();
+}
+
+}  // namespace simswift::programs

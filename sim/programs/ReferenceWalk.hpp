@@ -1,0 +1,19 @@
+// The reference robot program's walk (agent/motion/Walk2014Generator) as a
+// bare step, for the public walk test kit's referenceGait()
+// (sim/api/WalkTest.cpp): sim/api may not include the robot program itself.
+#pragma once
+
+#include <functional>
+
+#include "agent/libagent/AgentShared.hpp"
+
+namespace simswift::programs {
+
+// One Motion tick of a fresh walk: the request (mm/s, mm/s, rad/s; walk
+// false: stand), the sensors in, the joint command out.
+using ReferenceWalkStep = std::function<void(bool walk, double forward, double left, double turn,
+                                             const agent::libagent::SensorValues& sensors,
+                                             agent::libagent::JointValues& joints)>;
+ReferenceWalkStep referenceWalk();
+
+}  // namespace simswift::programs
