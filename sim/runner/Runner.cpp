@@ -165,6 +165,8 @@ sensors::SensorConfig Runner::sensorConfig() const {
   sensors::SensorConfig sc;
   sc.seed = scenario_.seed;
   sc.noise = scenario_.noise.on;
+  sc.gyr_raw_sign = scenario_.gyr_raw_sign;
+  sc.acc_raw_sign = scenario_.acc_raw_sign;
   auto off = [](sensors::NoiseSpec& n, bool on) {
     if (!on) n = sensors::NoiseSpec{};
   };

@@ -250,6 +250,20 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
   return g;
 }
 
+// inertial: the raw slots' signs against the calibrated ones (+1 or -1).
+static void readInertial(const YamlReader& top, Scenario& sc) {
+  const std::optional<YamlReader> r = top.optionalMap("inertial");
+  if (!r) return;
+  auto sign = [&](const char* key, int def) {
+    const int v = r->integer(key, def);
+    if (v != 1 && v != -1) r->fail(key, "must be 1 or -1, got " + std::to_string(v));
+    return v;
+  };
+  sc.gyr_raw_sign = sign("gyr_raw_sign", sc.gyr_raw_sign);
+  sc.acc_raw_sign = sign("acc_raw_sign", sc.acc_raw_sign);
+  r->finish();
+}
+
 // noise: on/off, or a map of switches.
 void readNoise(const YamlReader& top, NoiseSwitches& noise) {
   if (!top.has("noise")) return;
@@ -608,6 +622,7 @@ Scenario Scenario::parse(const std::string& text, const std::string& source_name
   sc.source = source_name;
   readRun(top, sc);
   readNoise(top, sc.noise);
+  readInertial(top, sc);
   readPhysics(top, sc);
   const std::optional<YamlReader> overview_reader = readCamera(top, sc.camera);
   readVision(top, sc.vision);

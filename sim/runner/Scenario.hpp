@@ -6,6 +6,9 @@
 //   seed: 1
 //   noise: on                      # or off, or a map of per-sensor switches:
 //                                  # {gyro, accel, angle, fsr, sonar, encoder: on/off}
+//   inertial: {gyr_raw_sign: 1, acc_raw_sign: 1}   # the V5's raw GyrX/Y and AccX/Y/Z against
+//                                  # the calibrated slots: +1 same sign (default), -1 opposite
+//                                  # (no public source settles it: docs/libagent.md, Inertial sensors)
 //   watchdog: 5                    # s of wall clock a robot thread may take, or off
 //   attach_timeout: 30             # s of wall clock to wait for external robots
 //   program_logs: simswift-logs    # folder of launched programs' logs (<tag>.log) and setups
@@ -77,6 +80,7 @@
 #include "sim/programs/ProgramProcess.hpp"
 #include "sim/programs/ProgramSpec.hpp"
 #include "sim/sensors/Buttons.hpp"
+#include "sim/sensors/SensorConfig.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/FieldConfig.hpp"
@@ -166,6 +170,9 @@ struct Scenario {
   double duration = 10.0;   // s
   uint64_t seed = 1;
   NoiseSwitches noise;
+  // `inertial:`; defaults are SensorConfig's (sim/sensors/SensorConfig.hpp).
+  int gyr_raw_sign = sensors::SensorConfig{}.gyr_raw_sign;
+  int acc_raw_sign = sensors::SensorConfig{}.acc_raw_sign;
   double watchdog_s = 5.0;        // wall-clock s per robot thread answer; 0 = off (watchdog: off)
   double attach_timeout_s = 30.0; // wall-clock s to wait for external robots
   std::string program_logs = "simswift-logs";  // launched programs' logs (relative: to the working folder)

@@ -221,3 +221,25 @@ TEST(Runner, FallsAfterTouchingAnotherRobotAreAttributed) {
     for (int i = 0; i < 2; ++i) EXPECT_EQ(st.robots[i].contact_falls, st.robots[i].falls) << i;  // all after the contact
   }
 }
+
+// The scenario's `inertial:` reaches the robot's sensors: with acc_raw_sign
+// -1 a standing robot's raw AccZ has the opposite sign of AccelerometerZ
+// (same sign by default); the calibrated slot is the same either way.
+TEST(Runner, InertialRawSignsReachTheSlots) {
+  auto accZ = [](const std::string& inertial) {
+    Scenario s = Scenario::parse(inertial + "duration: 1\nrobots:\n  - {team: 0, player: 1, x: -1.0}\n", "test.yaml");
+    s.noise.on = false;
+    Runner r(s);
+    r.start();
+    while (r.ticks() < 20) r.tick();
+    const auto& v = r.sensors(0).reading().sensors;
+    return std::make_pair(v[al::Sensors::InertialSensor_AccZ], v[al::Sensors::InertialSensor_AccelerometerZ]);
+  };
+  const auto same = accZ("");
+  const auto flipped = accZ("inertial: {acc_raw_sign: -1}\n");
+  // Upright: AccelerometerZ about -9.81 m/s^2 on the V5 (agent/libagent/Inertial.hpp), raw about 65 counts per g.
+  EXPECT_NEAR(same.second, -9.81, 0.5);
+  EXPECT_NEAR(same.first, -65.0, 4.0);
+  EXPECT_NEAR(flipped.first, 65.0, 4.0);
+  EXPECT_FLOAT_EQ(flipped.second, same.second);
+}

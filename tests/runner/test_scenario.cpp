@@ -123,3 +123,17 @@ TEST(Scenario, LibagentAndClickValuesAreCheckedWithFileLineAndKey) {
     }
   }
 }
+
+// `inertial:` chooses the raw slots' signs (the choice no public source
+// settles, docs/libagent.md); only +1 and -1, named at the key's line.
+TEST(Scenario, InertialRawSignsAreReadAndCheckedAtTheirLine) {
+  const Scenario d = Scenario::parse("robots:\n  - {team: 0, player: 1}\n", "scenario.yaml");
+  EXPECT_EQ(d.gyr_raw_sign, 1);
+  EXPECT_EQ(d.acc_raw_sign, 1);
+  const Scenario s =
+      Scenario::parse("inertial: {gyr_raw_sign: -1}\nrobots:\n  - {team: 0, player: 1}\n", "scenario.yaml");
+  EXPECT_EQ(s.gyr_raw_sign, -1);
+  EXPECT_EQ(s.acc_raw_sign, 1);
+  const std::string bad = errorOf("duration: 2\ninertial:\n  acc_raw_sign: 2\nrobots:\n  - {team: 0, player: 1}\n");
+  EXPECT_NE(bad.find("scenario.yaml:3: inertial.acc_raw_sign: must be 1 or -1, got 2"), std::string::npos) << bad;
+}
