@@ -49,7 +49,9 @@ scenario="$prefix/share/simswift/scenarios/stand_one.yaml"
 (cd / && "$prefix/bin/simswift" run "$scenario" --check >/dev/null)
 # The interpreter the module was built for (CMakeLists.txt prefers /usr/bin/python3).
 python="$(sed -n 's/^_\{0,1\}Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt" | head -n1)"
+example_python=()
 if [ -d "$prefix/lib/python3/dist-packages" ]; then
+  [ -n "$python" ] || { echo "test-package.sh: no Python3_EXECUTABLE in $build/CMakeCache.txt" >&2; exit 1; }
   (cd / && PYTHONPATH="$prefix/lib/python3/dist-packages" "$python" - "$scenario" "$prefix" <<'PY'
 import sys
 import simswift
@@ -65,11 +67,12 @@ print(f"python from the moved prefix: {scenario} ran 0.5 s, FSR sum {fsr:.2f} kg
 PY
   )
 else
-  echo "test-package.sh: no Python module installed (pybind11 not found): skipped the Python check" >&2
+  echo "test-package.sh: no Python module installed (pybind11 not found): skipped the Python checks" >&2
+  example_python=(-DWALK_TEST_PYTHON=OFF)
 fi
 
 for example in walk_test team_glue; do
-  cmake -S "examples/$example" -B "$tmp/$example-build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+  cmake -S "examples/$example" -B "$tmp/$example-build" -DCMAKE_PREFIX_PATH="$prefix" "${example_python[@]}" >/dev/null
   cmake --build "$tmp/$example-build" -j"$jobs"
   (cd "$tmp/$example-build" && LD_LIBRARY_PATH="$prefix/lib" ctest --output-on-failure --no-tests=error -j"$jobs")
 done

@@ -153,6 +153,8 @@ bool plotTrace(const std::string& csv_path, const std::string& png_path, std::st
 
 // simswift's reference walk (its robot code's Walk2014Generator, gains as
 // shipped) as a Gait: a yardstick for a team's own under the same test.
+// Each call makes a fresh walk; copies of one Gait share its walk state, so
+// give each WalkTest its own referenceGait().
 Gait referenceGait();
 
 }  // namespace simswift::api

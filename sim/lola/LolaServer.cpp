@@ -26,8 +26,6 @@ const char* toString(Exchange::Status status) {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 std::string sysError(const std::string& what, const std::string& path) {
   return "LoLA socket " + path + ": " + what + ": " + std::strerror(errno);
 }
@@ -56,7 +54,14 @@ LolaServer::LolaServer(std::string socket_path, DecoderOptions decoder)
   struct stat st{};
   if (lstat(path_.c_str(), &st) == 0) {
     if (!S_ISSOCK(st.st_mode)) throw ServerError("LoLA socket " + path_ + ": exists and is not a socket");
-    ::unlink(path_.c_str());  // a stale socket of an earlier run
+    // A socket someone still listens on is another live server's: refused,
+    // never taken over. One nobody answers is a stale one of an earlier run.
+    const int probe = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    const bool live =
+        probe >= 0 && ::connect(probe, reinterpret_cast<const sockaddr*>(&address), sizeof(address)) == 0;
+    if (probe >= 0) ::close(probe);
+    if (live) throw ServerError("LoLA socket " + path_ + ": another server is listening there");
+    ::unlink(path_.c_str());
   }
   listener_ = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
   if (listener_ < 0) throw ServerError(sysError("socket", path_));
@@ -140,7 +145,20 @@ Exchange LolaServer::exchange(const PacketBytes& packet, std::chrono::millisecon
     return result;
   }
 
-  // Read until the cycle's answer.
+  return readAnswer(result, deadline);
+}
+
+Exchange LolaServer::awaitAnswer(std::chrono::milliseconds timeout) {
+  Exchange result;
+  if (!connected()) {
+    result.status = Exchange::Status::Disconnected;
+    return result;
+  }
+  return readAnswer(result, Clock::now() + timeout);
+}
+
+// Reads until the cycle's answer.
+Exchange LolaServer::readAnswer(Exchange result, Clock::time_point deadline) {
   char buffer[4096];
   for (;;) {
     if (decoder_.hasAnswer()) {

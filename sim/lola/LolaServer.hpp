@@ -29,6 +29,8 @@
 
 namespace simswift::lola {
 
+using Clock = std::chrono::steady_clock;
+
 struct ServerError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -65,7 +67,12 @@ class LolaServer {
   // One cycle: accept a waiting client (the newest), send `packet`, read
   // until the cycle's answer. A client that answered ahead (its answer was
   // already decoded) gets the packet and that answer is returned at once.
+  // A Timeout leaves the packet sent and unanswered: in lock-step the caller
+  // goes on with awaitAnswer() (never a new exchange, whose packet would
+  // take the late answer as its own and lag every later cycle by one).
   Exchange exchange(const PacketBytes& packet, std::chrono::milliseconds timeout);
+  // Reads on for the answer to the packet sent last (after a Timeout).
+  Exchange awaitAnswer(std::chrono::milliseconds timeout);
 
   // Accepts waiting connections without sending anything (newest wins).
   // true if a client is connected afterwards.
@@ -75,6 +82,7 @@ class LolaServer {
 
  private:
   void adopt(int fd);
+  Exchange readAnswer(Exchange result, Clock::time_point deadline);
   std::string path_;
   int listener_ = -1;
   int client_ = -1;

@@ -4,7 +4,8 @@
 // boundary). The Runner sees a robot program only through it; every
 // implementation and their factory (Programs.hpp) live in sim/programs, the
 // only folder of sim/ that may include the robot program (agent/program,
-// behaviour, motion, blackboard, ...; the build refuses any other).
+// behaviour, motion, blackboard, ...; configure refuses a direct include
+// anywhere else: docs/architecture.md says what it does not yet catch).
 //
 // Each tick the body side posts the robot's sensors (sim/bridge/BodyHost)
 // and the Runner asks the driver for the answer; each camera frame the same

@@ -126,11 +126,33 @@ TEST(LolaServer, AClientThatDoesNotAnswerTimesOut) {
   EXPECT_EQ(e.status, Status::Timeout);
   EXPECT_GE(std::chrono::steady_clock::now() - start, 50ms);
   EXPECT_TRUE(server.connected());  // still its client: it may answer late
+  // Lock-step waits on for the same cycle: the late answer is this cycle's,
+  // and the next cycle's packet gets the next answer (no lag of one).
   writeAll(fd, encodeActuatorMap(joints(0.3f, 1.f)));
-  const Exchange late = server.exchange(encodeSensorPacket({}), 1000ms);
+  const Exchange late = server.awaitAnswer(1000ms);
   ASSERT_EQ(late.status, Status::Answered);
   EXPECT_FLOAT_EQ((*late.command.position)[5], 0.3f);
+  PacketBytes first, second;
+  ASSERT_TRUE(readPacket(fd, first));  // the timed-out cycle's packet, sent once
+  writeAll(fd, encodeActuatorMap(joints(0.4f, 1.f)));
+  const Exchange next = server.exchange(encodeSensorPacket({}), 1000ms);
+  ASSERT_EQ(next.status, Status::Answered);
+  EXPECT_FLOAT_EQ((*next.command.position)[5], 0.4f);
+  ASSERT_TRUE(readPacket(fd, second));
   ::close(fd);
+}
+
+TEST(LolaServer, ALiveServersSocketIsRefusedNotTakenOver) {
+  LolaServer first(socketPath("live"));
+  try {
+    LolaServer second(first.path());
+    ADD_FAILURE() << "a second server took over " << first.path();
+  } catch (const ServerError& e) {
+    EXPECT_NE(std::string(e.what()).find("another server is listening there"), std::string::npos) << e.what();
+  }
+  const int fd = connectTo(first.path());  // the first still serves
+  EXPECT_GE(fd, 0);
+  if (fd >= 0) ::close(fd);
 }
 
 TEST(LolaServer, GarbageClosesTheConnectionAndTheClientMayReconnect) {
@@ -238,7 +260,18 @@ TEST(LolaServer, RefusesAPathThatIsNotASocketAndRemovesItsSocket) {
     struct stat st{};
     ASSERT_EQ(::lstat(path.c_str(), &st), 0);
     EXPECT_TRUE(S_ISSOCK(st.st_mode));
-    LolaServer again(path);  // a stale socket is replaced
+  }
+  {  // a stale socket (bound by an earlier run, nobody listening) is replaced
+    const int stale = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+    ASSERT_EQ(::bind(stale, reinterpret_cast<const sockaddr*>(&address), sizeof(address)), 0);
+    ::close(stale);
+    LolaServer again(path);
+    const int fd = connectTo(path);
+    EXPECT_GE(fd, 0);
+    if (fd >= 0) ::close(fd);
   }
   struct stat st{};
   EXPECT_NE(::lstat(path.c_str(), &st), 0);
