@@ -14,6 +14,7 @@
 using agent::blackboard::ActionType;
 using motion_test::MotionHarness;
 using motion_test::Pose2;
+using motion_test::wrapAngle;
 
 namespace {
 
