@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <semaphore.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -535,6 +536,25 @@ double fsrSum(const std::string& text) {
   return at == std::string::npos ? -1 : std::stod(text.substr(at + 11));
 }
 
+// rUNSWift 2016's libagent has one pair of names (/libagent-memory,
+// /libagent-semaphore, no team or player in them): tests that run a 2016
+// robot hold this lock for their whole run, so ctest -j runs them one at a
+// time (each test is its own process).
+class Bare2016NamesLock {
+ public:
+  Bare2016NamesLock() : fd_(::open("/tmp/simswift-test-libagent2016.lock", O_RDWR | O_CREAT | O_CLOEXEC, 0666)) {
+    if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+  }
+  ~Bare2016NamesLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  Bare2016NamesLock(const Bare2016NamesLock&) = delete;
+  Bare2016NamesLock& operator=(const Bare2016NamesLock&) = delete;
+
+ private:
+  int fd_;
+};
+
 }  // namespace
 
 // Each release's client (its own block and names) attaches, runs in
@@ -543,6 +563,7 @@ double fsrSum(const std::string& text) {
 // the objects without O_CREAT, after it (started before, it says why it
 // cannot attach, as on a NAO before libagent is loaded).
 TEST(LibagentReleases, EachReleasesClientAttachesInLockStepAndReadsTheMass) {
+  const Bare2016NamesLock bare_names;
   const int team = 71, player = 3;
   for (int release : {2016, 2017, 2018}) {
     for (bool client_first : {false, true}) {
@@ -711,6 +732,7 @@ TEST(LibagentReleases, AtTheEndAnUnchangedProgramIsNotWokenAndIsNamed) {
 // one), which a double chest click at 1.5 s stiffens instead, `standing`
 // once. Either way the client's stand holds afterwards.
 TEST(LibagentReleases, Release2016And2018LimpStartStiffenAndStandingThroughTheirOwnClients) {
+  const Bare2016NamesLock bare_names;
   namespace J = al::Joints;
   using LB = simswift::bridge::LibagentBehaviour;
   for (int release : {2016, 2018}) {
@@ -768,6 +790,7 @@ TEST(LibagentReleases, Release2016And2018LimpStartStiffenAndStandingThroughTheir
 // 2016 straight to its pose at stiffness 1 (arms there in 100 cycles, the
 // rest in 200); 2018 via the middle pose (200 cycles at 1, 100 at 0.2).
 TEST(LibagentReleases, Release2016And2018StandingThenTheirOwnSitAfterContactLoss) {
+  const Bare2016NamesLock bare_names;
   namespace J = al::Joints;
   using LB = simswift::bridge::LibagentBehaviour;
   for (int release : {2016, 2018}) {
