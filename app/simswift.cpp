@@ -4,6 +4,7 @@
 //   simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]
 //   simswift experiment merge DIR... --out DIR      (sim/experiment/Command.cpp)
 //   simswift clean [--team T --player P]
+//   simswift attach (--team T --player P | --socket PATH) -- COMMAND...
 //   simswift run SCENARIO.yaml [--realtime] [--duration S] [--seed N]
 //                [--no-noise] [--watchdog S|off] [--print-hash-every N]
 //                [--model URDF] [--field YAML]
@@ -14,7 +15,9 @@
 // or bad input file (scenario, model, field: the message names file and line).
 #include <algorithm>
 #include <cstdio>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <cstdint>
 #include <exception>
 #include <filesystem>
@@ -27,6 +30,8 @@
 #include "sim/experiment/Command.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
+#include "sim/programs/ProgramProcess.hpp"
+#include "sim/runner/Bodies.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace {
@@ -36,6 +41,9 @@ const char* kUsage =
     "       simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]   (see experiment --help)\n"
     "       simswift experiment merge DIR... --out DIR\n"
     "       simswift clean [--team T --player P]   remove objects a killed run left in /dev/shm\n"
+    "       simswift attach (--team T --player P | --socket PATH) -- COMMAND...\n"
+    "                      run an unchanged V6 (LoLA) program by hand: its /tmp/robocup is that\n"
+    "                      robot's socket (default /tmp/simswift-lola/t<T>p<P>) in a /tmp of its own\n"
     "       simswift --version | --help\n"
     "\n"
     "Runs a scenario in lock-step with its robot programs and prints\n"
@@ -128,6 +136,38 @@ int cleanMain(int argc, char** argv) {
   return 0;
 }
 
+// simswift attach (--team T --player P | --socket PATH) -- COMMAND...: runs
+// COMMAND (execvp) in a mount namespace of its own where /tmp/robocup is the
+// LoLA robot's socket of a run that has started (docs/lola.md).
+int attachMain(int argc, char** argv) {
+  std::optional<int> team, player;
+  std::string socket;
+  int i = 2;
+  for (; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--") break;
+    if (a == "--team") team = static_cast<int>(numberArg(i, argc, argv, "--team", agent::libagent::kMinTeamNumber,
+                                                      agent::libagent::kMaxTeamNumber));
+    else if (a == "--player") player = static_cast<int>(numberArg(i, argc, argv, "--player", agent::libagent::kMinPlayer,
+                                                                agent::libagent::kMaxPlayer));
+    else if (a == "--socket" && i + 1 < argc) socket = argv[++i];
+    else usageError("attach: unknown argument '" + a + "' (the command goes after --)");
+  }
+  if (i + 1 >= argc) usageError("attach: no command after --");
+  if (socket.empty() && !(team && player)) usageError("attach: give --team and --player, or --socket");
+  if (!socket.empty() && (team || player)) usageError("attach: give --team and --player, or --socket, not both");
+  if (socket.empty()) socket = simswift::runner::defaultLolaSocket(*team, *player, false);
+  const std::string error = simswift::programs::ProgramProcess::enterPrivateRobocup(socket);
+  if (!error.empty()) {
+    std::fprintf(stderr, "simswift attach: %s (start the run first: the robot's socket exists while it runs)\n",
+                 error.c_str());
+    return 1;
+  }
+  execvp(argv[i + 1], argv + i + 1);
+  std::fprintf(stderr, "simswift attach: cannot start '%s': %s\n", argv[i + 1], std::strerror(errno));
+  return 1;
+}
+
 int main(int argc, char** argv) {
   using namespace simswift::runner;
   if (argc < 2) usageError("missing command");
@@ -143,6 +183,7 @@ int main(int argc, char** argv) {
   if (cmd == "experiment")  // the behaviours of agent/behaviour in the trials
     return simswift::experiment::experimentMain(argc - 1, argv + 1, simswift::experiment::behaviourHooks());
   if (cmd == "clean") return cleanMain(argc, argv);
+  if (cmd == "attach") return attachMain(argc, argv);
   if (cmd != "run") usageError("unknown command '" + cmd + "'");
 
   std::string path;

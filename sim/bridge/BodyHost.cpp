@@ -56,9 +56,9 @@ void* openSized(const std::string& name, size_t size, int* fd_out = nullptr) {
 }  // namespace
 
 BodyHost::BodyHost(int team, int player, Mode mode, const al::JointValues& initial, const BodyHostOptions& options)
-    : team_(team),
+    : BodySide(al::robotTag(team, player)),
+      team_(team),
       player_(player),
-      tag_(al::robotTag(team, player)),
       mode_(mode),
       options_(options),
       libagent_(options.start, options.release) {
@@ -379,6 +379,19 @@ void BodyHost::shutdown() {
                    tag_.c_str(), p.name.c_str(), p.pid, names_.memory.c_str());
   }
   sem_post(&ext_->camera.frame_ready);
+}
+
+std::string BodyHost::attachHint() const {
+  return "start its libagent robot program (or `simswift-agent --team " + std::to_string(team_) + " --player " +
+         std::to_string(player_) + (options_.bare_names ? " --bare" : "") + "`)";
+}
+
+// The release's N is the memory name's digits (none for the bare names).
+std::map<std::string, std::string> BodyHost::placeholders() const {
+  return {{"number", names_.memory.substr(std::string(al::kMemoryName).size())},
+          {"memory", names_.memory},
+          {"semaphore", names_.semaphore},
+          {"extension", names_.extension}};
 }
 
 }  // namespace simswift::bridge

@@ -53,6 +53,7 @@
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/libagent/SimExtension.hpp"
 #include "agent/nao/Postures.hpp"
+#include "sim/bridge/BodySide.hpp"
 #include "sim/bridge/Cleanup.hpp"
 #include "sim/bridge/LibagentBehaviour.hpp"
 #include "sim/bridge/Releases.hpp"
@@ -80,7 +81,7 @@ struct BodyHostOptions {
   StartMode start = StartMode::Stiff;    // libagent: start stiff (standing set) or limp
 };
 
-class BodyHost {
+class BodyHost final : public BodySide {
  public:
   enum class Mode { InProcess, Named };
   // `initial` is the command readActuators() returns until the program
@@ -95,8 +96,12 @@ class BodyHost {
 
   int team() const { return team_; }
   int player() const { return player_; }
-  const std::string& tag() const { return tag_; }  // "t19p2"
   Mode mode() const { return mode_; }
+  // BodySide: libagent, the NAO V5.
+  BodyInterface interface() const override { return BodyInterface::Libagent; }
+  const std::string& endpoint() const override { return names_.memory; }
+  std::string attachHint() const override;
+  std::map<std::string, std::string> placeholders() const override;
   const agent::libagent::RobotNames& names() const { return names_; }
   const std::string& memoryName() const { return names_.memory; }
   const std::string& semaphoreName() const { return names_.semaphore; }
@@ -105,42 +110,42 @@ class BodyHost {
   Release release() const { return options_.release; }
   const LibagentBehaviour& libagent() const { return libagent_; }
   bool standing() const;  // the block's `standing` flag
-  SimExtension* extension() { return ext_; }
+  SimExtension* extension() override { return ext_; }
   CameraBlock* camera() { return &ext_->camera; }
   sem_t* tickSemaphore() { return tick_; }
   // The camera images (null unless options.images).
-  agent::libagent::CameraImages* images() { return images_; }
+  agent::libagent::CameraImages* images() override { return images_; }
   // An in-process connection for a builtin robot program (2017 block only).
   agent::libagent::AgentConnection connect();
 
-  void setSync(SyncMode mode);
-  SyncMode sync() const { return sync_; }
+  void setSync(SyncMode mode) override;
+  SyncMode sync() const override { return sync_; }
 
   // Writes sensors (+ sim time, tick, button presses) as the latest slot,
   // then posts the tick semaphore or counts a skipped cycle. Returns true if
   // it posted.
-  bool publishSensors(const SensorValues& values, int64_t sim_time_us, int64_t tick);
+  bool publishSensors(const SensorValues& values, int64_t sim_time_us, int64_t tick) override;
   // True once the program has published a command not yet consumed.
-  bool answered() const;
+  bool answered() const override;
   // Lock-step: waits (wall clock, for the watchdog only) until answered().
   // False on timeout.
-  bool waitAnswer(double timeout_s);
+  bool waitAnswer(double timeout_s) override;
   // The latest command (consumed: lock-step parks actuators_latest), the
   // previous one if none is new, or the safe sit if contact is lost.
-  ActuatorCommand readActuators();
+  ActuatorCommand readActuators() override;
 
   // A simswift-aware program has announced itself (AgentConnection::announce).
   bool clientAnnounced() const { return ext_->client_pid.load() != 0; }
   // 30 Hz camera handshake (only if the program has a Perception thread).
-  bool hasPerception() const { return ext_->camera.consumer.load() != 0; }
-  void publishFrame(const agent::libagent::CameraFrame& frame);
-  bool waitPerceptionDone(double timeout_s);
+  bool hasPerception() const override { return ext_->camera.consumer.load() != 0; }
+  void publishFrame(const agent::libagent::CameraFrame& frame) override;
+  bool waitPerceptionDone(double timeout_s) override;
 
   // Sets shutdown and wakes the program's threads.
-  void shutdown();
+  void shutdown() override;
 
   bool contactLost() const { return contact_lost_; }
-  int64_t skippedCycles() const { return skipped_total_; }
+  int64_t skippedCycles() const override { return skipped_total_; }
   int consecutiveSkipped() const { return skipped_run_; }
   int64_t contactLostEvents() const { return contact_lost_events_; }
   int64_t commandsRead() const { return commands_read_; }
@@ -152,7 +157,6 @@ class BodyHost {
   void releaseNamed();
 
   int team_, player_;
-  std::string tag_;
   Mode mode_;
   BodyHostOptions options_;
   agent::libagent::RobotNames names_;

@@ -79,6 +79,10 @@ extern const std::array<KeySpec, kNumActuatorKeys> kActuatorKeys;
 // The key's index, -1 if LoLA has no such actuator key.
 int actuatorKeyIndex(std::string_view name);
 
+// LoLA's cycle: 83 Hz, one sensor packet every 12 ms (facts.md 9: Aldebaran's
+// NAOqi 2.8 LoLA page; every public client's cycle). The V6 robot's tick.
+constexpr long long kCycleUs = 12000;
+
 // The default socket path every unchanged V6 program opens.
 constexpr std::string_view kDefaultSocketPath = "/tmp/robocup";
 

@@ -12,8 +12,11 @@ namespace ap = agent::program;
 
 BuiltinProgram::BuiltinProgram(RobotSlot slot, ap::ProgramConfig config, ap::Threading threading)
     : ProgramDriver(std::move(slot)) {
-  al::AgentConnection conn = slot_.host->connect();
-  conn.setImages(slot_.host->images());
+  // The builtin program speaks libagent (the scenario refuses it another body).
+  auto* host = dynamic_cast<bridge::BodyHost*>(slot_.host);
+  if (!host) throw runner::RunnerError("robot " + slot_.tag + ": the builtin program needs a libagent body");
+  al::AgentConnection conn = host->connect();
+  conn.setImages(host->images());
   program_ = std::make_unique<ap::RobotProgram>(std::move(conn), std::move(config));
   program_->start(threading);
 }

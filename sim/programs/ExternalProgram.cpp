@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "sim/bridge/BodyHost.hpp"
+#include "sim/bridge/BodySide.hpp"
 #include "sim/runner/Errors.hpp"
 #include "sim/runner/RunStats.hpp"
 #include "sim/runner/Scenario.hpp"
@@ -18,19 +18,14 @@ ExternalProgram::ExternalProgram(RobotSlot slot, double attach_timeout_s)
     : ProgramDriver(std::move(slot)), attach_timeout_s_(attach_timeout_s) {}
 
 bool ExternalProgram::attach() {
-  bridge::BodyHost& host = *slot_.host;
-  const runner::RobotSpec& spec = *slot_.spec;
+  bridge::BodySide& host = *slot_.host;
   if (host.waitAnswer(0.5)) return true;
-  std::fprintf(stderr,
-               "waiting for robot %s on %s: start its libagent robot program (or `simswift-agent --team %d "
-               "--player %d%s`)\n",
-               slot_.tag.c_str(), host.memoryName().c_str(), spec.team, spec.player,
-               spec.bare_names ? " --bare" : "");
+  std::fprintf(stderr, "waiting for robot %s on %s: %s\n", slot_.tag.c_str(), host.endpoint().c_str(),
+               host.attachHint().c_str());
   if (!host.waitAnswer(attach_timeout_s_)) {
     std::ostringstream m;
-    m << "robot " << slot_.tag << ": no robot program answered on " << host.memoryName() << " within "
-      << attach_timeout_s_ << " s (program: external: start one, e.g. simswift-agent --team " << spec.team
-      << " --player " << spec.player
+    m << "robot " << slot_.tag << ": no robot program answered on " << host.endpoint() << " within "
+      << attach_timeout_s_ << " s (program: external: " << host.attachHint()
       << "; a program still running from an earlier run holds that run's removed objects and never "
          "answers here: restart it)";
     throw RunnerError(m.str());
@@ -44,7 +39,7 @@ LaunchedProgram::LaunchedProgram(RobotSlot slot, double attach_timeout_s, std::u
 bool LaunchedProgram::attach() {
   if (!awaitChecked(Step::Motion, attach_timeout_s_))
     throw ProgramError("robot " + slot_.tag + ": its program (pid " + std::to_string(process_->pid()) +
-                           ") did not answer on " + slot_.host->memoryName() + " within attach_timeout " +
+                           ") did not answer on " + slot_.host->endpoint() + " within attach_timeout " +
                            runner::formatNumber("%g", attach_timeout_s_) + " s; log " + process_->logPath(),
                        slot_.tag + ": program did not attach within " +
                            runner::formatNumber("%g", attach_timeout_s_) + " s");

@@ -7,7 +7,7 @@
 // behaviour, motion, blackboard, ...; configure refuses a direct include
 // anywhere else: docs/architecture.md says what it does not yet catch).
 //
-// Each tick the body side posts the robot's sensors (sim/bridge/BodyHost)
+// Each tick the body side posts the robot's sensors (sim/bridge/BodySide.hpp)
 // and the Runner asks the driver for the answer; each camera frame the same
 // with the frame. The five implementations:
 //   ThreadedProgram   builtin, on its own named Motion and Perception threads
@@ -24,7 +24,7 @@
 #include "sim/views/FindBallView.hpp"
 
 namespace simswift::bridge {
-class BodyHost;
+class BodySide;
 }
 namespace simswift::runner {
 struct RobotSpec;
@@ -37,7 +37,7 @@ struct RobotSlot {
   int index = 0;                            // scenario order
   std::string tag;                          // "t19p2"
   const runner::RobotSpec* spec = nullptr;  // the scenario's entry
-  bridge::BodyHost* host = nullptr;         // the body side of its libagent block
+  bridge::BodySide* host = nullptr;         // its body side (libagent's BodyHost, LoLA's LolaBody)
 };
 
 class ProgramDriver {

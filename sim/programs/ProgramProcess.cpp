@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sched.h>
+#include <sys/mount.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -21,6 +23,53 @@ namespace simswift::programs {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Writes `text` to a /proc file (the forked child: syscalls only). False on failure.
+bool writeProc(const char* path, const char* text) {
+  const int fd = open(path, O_WRONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool ok = write(fd, text, std::strlen(text)) == static_cast<ssize_t>(std::strlen(text));
+  close(fd);
+  return ok;
+}
+
+// A user namespace's uid_map / gid_map line mapping `id` to itself.
+std::string selfMap(unsigned id) { return std::to_string(id) + " " + std::to_string(id) + " 1\n"; }
+
+// In the forked child of a LoLA robot's program: a mount namespace of its own
+// (with a user namespace mapping it to itself when it is not root, as
+// sim/experiment/PrivateShm does), a fresh tmpfs on /tmp, and the robot's
+// socket bound onto /tmp/robocup. The socket is opened (O_PATH) inside the
+// new namespace, before the tmpfs hides its path, and bound through
+// /proc/self/fd (a bind source must be a mount of the caller's namespace).
+// Syscalls only: 0, or the errno of the step that failed.
+int privateRobocup(const char* socket_path, const char* uid_map, const char* gid_map) {
+  if (geteuid() != 0 || unshare(CLONE_NEWNS) != 0) {
+    if (unshare(CLONE_NEWUSER | CLONE_NEWNS) != 0) return errno;
+    writeProc("/proc/self/setgroups", "deny");
+    if (!writeProc("/proc/self/uid_map", uid_map) || !writeProc("/proc/self/gid_map", gid_map)) return errno;
+  }
+  if (mount("none", "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return errno;
+  const int socket_fd = open(socket_path, O_PATH | O_CLOEXEC);
+  if (socket_fd < 0) return errno;
+  char source[32] = "/proc/self/fd/";  // + the descriptor's digits, written without allocating
+  char digits[12];
+  int n = 0;
+  for (int v = socket_fd; n == 0 || v > 0; v /= 10) digits[n++] = static_cast<char>('0' + v % 10);
+  size_t at = std::strlen(source);
+  while (n > 0) source[at++] = digits[--n];
+  source[at] = '\0';
+  int err = 0;
+  if (mount("simswift-robocup", "/tmp", "tmpfs", MS_NOSUID | MS_NODEV, "mode=1777") != 0) err = errno;
+  if (err == 0) {
+    const int target = open("/tmp/robocup", O_CREAT | O_WRONLY | O_CLOEXEC, 0600);
+    if (target < 0) err = errno;
+    else close(target);
+  }
+  if (err == 0 && mount(source, "/tmp/robocup", nullptr, MS_BIND, nullptr) != 0) err = errno;
+  close(socket_fd);
+  return err;
+}
 
 std::string describe(int status) {
   if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
@@ -68,7 +117,7 @@ std::string ProgramProcess::resolveCommand(const std::string& name, const std::s
 
 ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>& argv, const std::string& cwd,
                                const std::vector<std::pair<std::string, std::string>>& env, std::string log_path,
-                               double stop_grace_s)
+                               double stop_grace_s, const std::string& robocup_socket)
     : robot_(std::move(robot)), log_path_(std::move(log_path)), stop_grace_s_(stop_grace_s) {
   if (argv.empty()) throw std::runtime_error("robot " + robot_ + ": program: empty command");
   std::error_code ec;
@@ -97,6 +146,7 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
   }
   for (std::string& s : env_strings) envp.push_back(s.data());
   envp.push_back(nullptr);
+  const std::string uid_map = selfMap(geteuid()), gid_map = selfMap(getegid());
   const pid_t parent = getpid();
   pid_ = fork();
   if (pid_ < 0) {
@@ -115,7 +165,9 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
     const int devnull = open("/dev/null", O_RDONLY);
     if (devnull >= 0) dup2(devnull, STDIN_FILENO);
     int err = 0;
-    if (!cwd.empty() && chdir(cwd.c_str()) != 0) err = errno;
+    // Negative: the namespace failed (the parent says so).
+    if (!robocup_socket.empty()) err = -privateRobocup(robocup_socket.c_str(), uid_map.c_str(), gid_map.c_str());
+    if (err == 0 && !cwd.empty() && chdir(cwd.c_str()) != 0) err = errno;
     if (err == 0) {
       execvpe(args[0], args.data(), envp.data());
       err = errno;
@@ -135,12 +187,23 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
     int status = 0;
     waitpid(pid_, &status, 0);
     reaped_ = true;
+    if (err < 0)
+      throw std::runtime_error("robot " + robot_ + ": cannot give its program '" + argv[0] +
+                               "' a private /tmp with /tmp/robocup (mount namespace): " + std::strerror(-err));
     throw std::runtime_error("robot " + robot_ + ": cannot start its program '" + argv[0] + "'" +
                              (cwd.empty() ? "" : " in " + cwd) + ": " + std::strerror(err));
   }
 }
 
 ProgramProcess::~ProgramProcess() { stop(); }
+
+std::string ProgramProcess::enterPrivateRobocup(const std::string& socket_path) {
+  if (access(socket_path.c_str(), F_OK) != 0) return "its LoLA socket " + socket_path + ": " + std::strerror(errno);
+  const std::string uid_map = selfMap(geteuid()), gid_map = selfMap(getegid());
+  const int err = privateRobocup(socket_path.c_str(), uid_map.c_str(), gid_map.c_str());
+  if (err != 0) return std::string("a private /tmp with /tmp/robocup (mount namespace): ") + std::strerror(err);
+  return "";
+}
 
 std::optional<std::string> ProgramProcess::ended() {
   if (how_ || reaped_) return how_;

@@ -6,10 +6,11 @@
 //   program: {command: [simswift-agent, --config, "{config}"],   # argv
 //             cwd: DIR, env: {KEY: VALUE}, stop_grace: 2}
 //
-// Placeholders in the command, cwd and env values: {team}, {player},
-// {number} (libagent's N = team x 11 + player), {memory}, {semaphore} (the
-// robot's libagent object names), {extension} (simswift's extension object),
-// {seed} (the program's seed, as a builtin program gets it), {config} (a
+// Placeholders in the command, cwd and env values: {team}, {player}; for a
+// libagent body {number} (libagent's N = team x 11 + player), {memory},
+// {semaphore} (the robot's libagent object names), {extension} (simswift's
+// extension object); for a LoLA body {socket} (its socket as the program
+// sees it: /tmp/robocup in its own /tmp, below); {seed} (the program's seed, as a builtin program gets it), {config} (a
 // file with the robot's setup as the builtin program gets it:
 // agent/program/RobotSetup.hpp). A relative command path, or a bare name
 // found beside the simswift executable (simswift-agent), resolves against
@@ -38,11 +39,16 @@ class ProgramProcess {
   // Starts `argv` (placeholders already filled) in `cwd` with `env` added,
   // stdout and stderr into `log_path` (created; its folder too). The child
   // leads its own process group and is killed if simswift dies
-  // (PR_SET_PDEATHSIG). Throws std::runtime_error naming the program if the
-  // command cannot be started (not found, not executable: the exec error).
+  // (PR_SET_PDEATHSIG). With `robocup_socket` (a LoLA robot's socket), the
+  // child gets a mount namespace of its own with a fresh /tmp in which
+  // /tmp/robocup is that socket: an unchanged V6 program opens its own
+  // robot, several side by side; the tmpfs goes with the program (also
+  // after kill -9). Throws std::runtime_error naming the program if the
+  // command cannot be started (not found, not executable: the exec error;
+  // the namespace refused: why).
   ProgramProcess(std::string robot, const std::vector<std::string>& argv, const std::string& cwd,
                  const std::vector<std::pair<std::string, std::string>>& env, std::string log_path,
-                 double stop_grace_s);
+                 double stop_grace_s, const std::string& robocup_socket = "");
   ~ProgramProcess();  // stop()
   ProgramProcess(const ProgramProcess&) = delete;
   ProgramProcess& operator=(const ProgramProcess&) = delete;
@@ -67,6 +73,11 @@ class ProgramProcess {
   static std::string tail(const std::string& path, int lines);
   // Replaces {name} by values[name]; an unknown {name} is an error naming it.
   static std::string fill(const std::string& text, const std::map<std::string, std::string>& values);
+  // This process enters what a launched LoLA program gets (above): its own
+  // mount namespace, a fresh /tmp, /tmp/robocup bound to `socket_path`
+  // (`simswift attach`, for a program started by hand). Empty on success,
+  // else why not.
+  static std::string enterPrivateRobocup(const std::string& socket_path);
   // The executable for command[0]: a path with '/' resolves against `base`;
   // a bare name is taken from beside this executable if there, else left to PATH.
   static std::string resolveCommand(const std::string& name, const std::string& base);

@@ -139,18 +139,12 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const runner::Scenario& sc
     out << ap::robotSetupYaml(robotSetup(sc, slot.index));
     if (!out) throw RunnerError("program_logs: cannot write " + config);
   }
-  const al::RobotNames& names = slot.host->names();
-  // The release's N: the memory name's digits (none for the bare names).
-  const std::string number = names.memory.substr(std::string(al::kMemoryName).size());
-  const std::map<std::string, std::string> values = {
-      {"team", std::to_string(spec.team)},
-      {"player", std::to_string(spec.player)},
-      {"number", number},
-      {"memory", names.memory},
-      {"semaphore", names.semaphore},
-      {"extension", names.extension},
-      {"seed", std::to_string(runner::programSeed(sc.seed, slot.index))},
-      {"config", std::filesystem::absolute(config).string()}};
+  // The body's own placeholders (libagent's names, LoLA's socket) and the run's.
+  std::map<std::string, std::string> values = slot.host->placeholders();
+  values.insert({{"team", std::to_string(spec.team)},
+                 {"player", std::to_string(spec.player)},
+                 {"seed", std::to_string(runner::programSeed(sc.seed, slot.index))},
+                 {"config", std::filesystem::absolute(config).string()}});
   std::vector<std::string> argv;
   for (const std::string& a : spec.launch.command) argv.push_back(ProgramProcess::fill(a, values));
   argv[0] = ProgramProcess::resolveCommand(argv[0], sc.base_dir);
@@ -158,8 +152,12 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const runner::Scenario& sc
   for (const auto& [k, v] : spec.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
   std::unique_ptr<ProgramProcess> process;
   try {
+    // A LoLA program sees its robot's socket at /tmp/robocup (its own /tmp).
+    const std::string robocup =
+        slot.host->interface() == bridge::BodyInterface::Lola ? slot.host->endpoint() : std::string();
     process = std::make_unique<ProgramProcess>(slot.tag, argv, ProgramProcess::fill(spec.launch.cwd, values), env,
-                                               (logs / (slot.tag + ".log")).string(), spec.launch.stop_grace_s);
+                                               (logs / (slot.tag + ".log")).string(), spec.launch.stop_grace_s,
+                                               robocup);
   } catch (const std::runtime_error& e) {
     throw ProgramError(e.what(), slot.tag + ": program could not be started");
   }

@@ -12,6 +12,7 @@
 #include "agent/nao/Postures.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
+#include "sim/runner/Bodies.hpp"
 #include "sim/vision/VisionOracle.hpp"
 #include "sim/runner/Tracer.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
@@ -152,6 +153,7 @@ void Runner::buildWorld() {
   wc.substeps = scenario_.substeps;
   wc.solver = scenario_.solver == "quick" ? WorldConfig::Solver::Quick : WorldConfig::Solver::Exact;
   wc.quick_iterations = scenario_.quick_iterations;
+  wc.tick_us = scenario_.tick_us;  // the robots' body cycle (Bodies.hpp)
   world_ = std::make_unique<World>(field, wc);
   if (scenario_.no_ball) world_->removeBall();
   else if (scenario_.ball) world_->placeBall(scenario_.ball->first, scenario_.ball->second);
@@ -179,12 +181,12 @@ sensors::SensorConfig Runner::sensorConfig() const {
   return sc;
 }
 
-// Each robot's body in the world, its SensorSuite and its BodyHost (the body
-// side of libagent: in-process for a builtin program, named shared memory
-// for an external one), in scenario order.
+// Each robot's body in the world, its SensorSuite and its body side
+// (Bodies.hpp: libagent in-process for a builtin program, in named shared
+// memory for an external one; LoLA on its socket), in scenario order.
 void Runner::buildHosts() {
-  // Every robot is attached to libagent through its host: the model must be
-  // a NAO libagent can drive (ModelError "file:line: missing joint ..." if not).
+  // Every robot is attached through its body side: the model must be a NAO
+  // whose 25 joint slots it can drive (ModelError "file:line: missing joint ..." if not).
   nao_ = std::make_unique<NaoBinding>(*model_);
   const sensors::SensorConfig sc = sensorConfig();
   robots_.resize(scenario_.robots.size());
@@ -200,20 +202,12 @@ void Runner::buildHosts() {
     const int index = world_->addRobot(model_, r.spec.x, r.spec.y, r.spec.theta,
                                        modelPosture(an::postureAngles(r.spec.posture)));
     r.sensors = std::make_unique<sensors::SensorSuite>(*world_, index, sc);
-    const al::JointValues initial = an::postureCommand(r.spec.posture);
     const bool external = r.spec.program == RobotSpec::Program::External;
-    bridge::BodyHostOptions ho;
-    ho.bare_names = r.spec.bare_names;
-    ho.release = r.spec.release;
-    ho.start = r.spec.start;
-    ho.images = scenario_.camera.renderRobots();
-    r.host = std::make_unique<bridge::BodyHost>(
-        r.spec.team, r.spec.player, external ? bridge::BodyHost::Mode::Named : bridge::BodyHost::Mode::InProcess,
-        initial, ho);
-    r.images = r.host->images();
-    if (external && free_running_) r.host->setSync(SyncMode::FreeRunning);
-    r.latched = r.host->readActuators();  // what the body gets before any command (limp or stiff start)
-    r.ext = r.host->extension();  // game state + team link, beside the block
+    r.body = makeBody(r.spec, {external, scenario_.camera.renderRobots()});
+    r.images = r.body->images();
+    if (external && free_running_) r.body->setSync(SyncMode::FreeRunning);
+    r.latched = r.body->readActuators();  // what the body gets before any command (limp or stiff start)
+    r.ext = r.body->extension();  // game state + team link, beside the block
   }
 }
 
@@ -256,11 +250,18 @@ void Runner::buildVision() {
   vision_->setTeams(teams, colours);
 }
 
+bridge::BodyHost& Runner::host(int i) {
+  auto* h = dynamic_cast<bridge::BodyHost*>(robots_[i]->body.get());
+  if (!h) throw RunnerError("robot " + robots_[i]->tag + " has a " + bodyInterfaceName(robots_[i]->body->interface()) +
+                            " body, not libagent");
+  return *h;
+}
+
 void Runner::setFreeRunning(bool on) {
   free_running_ = on;
   for (auto& r : robots_)
-    if (r && r->host && r->spec.program == RobotSpec::Program::External)
-      r->host->setSync(on ? SyncMode::FreeRunning : SyncMode::LockStep);
+    if (r && r->body && r->spec.program == RobotSpec::Program::External)
+      r->body->setSync(on ? SyncMode::FreeRunning : SyncMode::LockStep);
 }
 
 // Each robot's driver (sim/programs): a builtin program composed and
@@ -270,7 +271,7 @@ void Runner::setFreeRunning(bool on) {
 void Runner::attachPrograms() {
   std::vector<programs::RobotSlot> slots;
   for (size_t i = 0; i < robots_.size(); ++i)
-    slots.push_back({static_cast<int>(i), robots_[i]->tag, &robots_[i]->spec, robots_[i]->host.get()});
+    slots.push_back({static_cast<int>(i), robots_[i]->tag, &robots_[i]->spec, robots_[i]->body.get()});
   programs_->build(scenario_, slots);
 }
 
@@ -341,7 +342,7 @@ void Runner::publishSensors(int64_t tick, int64_t t_us) {
     sensors::copyToAgent(r.sensors->reading(), r.values);
     for (int j = 0; j < al::kNumJoints; ++j) r.values.joints.stiffnesses[j] = r.latched.joints.stiffnesses[j];
   }
-  for (auto& r : robots_) r->host->publishSensors(r->values, t_us, tick);
+  for (auto& r : robots_) r->body->publishSensors(r->values, t_us, tick);
 }
 
 // What the body side posted, answered through the robot's driver (inline:
@@ -359,16 +360,16 @@ void Runner::awaitMotion() {
   for (size_t i = 0; i < robots_.size(); ++i) {
     Robot& r = *robots_[i];
     const bool answered = !r.attached && programs_->driver(static_cast<int>(i)).attach();
-    if (!answered && r.host->sync() == SyncMode::LockStep) awaitAnswer(static_cast<int>(i), true);
+    if (!answered && r.body->sync() == SyncMode::LockStep) awaitAnswer(static_cast<int>(i), true);
     if (!r.attached) {
       r.attached = true;
-      r.perception = r.host->hasPerception();
+      r.perception = r.body->hasPerception();
     }
   }
 }
 
 void Runner::latchActuators() {
-  for (auto& r : robots_) r->latched = r->host->readActuators();
+  for (auto& r : robots_) r->latched = r->body->readActuators();
 }
 
 void Runner::updateFalls() {
@@ -400,7 +401,7 @@ void Runner::cameraFrame(int64_t t_us) {
     if (r.perception) vision_->fill(*world_, static_cast<int>(i), fr);  // both cameras (sim/vision)
     renderFrame(frame, t_us, fr, r, static_cast<int>(i));
     if (r.perception) {
-      r.host->publishFrame(fr);
+      r.body->publishFrame(fr);
       any = true;
     }
   }
@@ -422,7 +423,7 @@ void Runner::tick() {
   handleWorldEvents();
   captureOverview();
   const int64_t tick = world_->tick();
-  const int64_t t_us = tick * agent::nao::kMotionTickUs;  // exact integer time
+  const int64_t t_us = tick * world_->tickUs();  // exact integer time
   publishSensors(tick, t_us);
   awaitMotion();
   latchActuators();
@@ -484,7 +485,7 @@ RunStats Runner::stats() const {
       s.robots.push_back({scenario_.robots[i].team, scenario_.robots[i].player, t.x, t.y, t.heading,
                           robots_[i]->fall.falls, robots_[i]->fall.fallen, robots_[i]->fall.contact_falls});
     }
-    if (robots_[i]->host) s.skipped_cycles += robots_[i]->host->skippedCycles();
+    if (robots_[i]->body) s.skipped_cycles += robots_[i]->body->skippedCycles();
     if (world_ && static_cast<int>(i) < world_->numRobots()) {
       const ServoCommandStats& c = world_->robot(static_cast<int>(i)).commandStats();
       s.nan_commands += c.nan_commands;
@@ -512,16 +513,16 @@ void Runner::placeRobot(int i, double x, double y, double theta) {
 RunStats Runner::run(const RunOptions& opt) {
   if (opt.realtime) setFreeRunning(true);
   start();
-  const int64_t total = agent::nao::ticksIn(scenario_.duration);
+  const int64_t total = world_->ticksIn(scenario_.duration);
   const int64_t progress_every =
-      opt.progress && opt.progress_every_s > 0 ? std::max<int64_t>(1, agent::nao::ticksIn(opt.progress_every_s)) : 0;
+      opt.progress && opt.progress_every_s > 0 ? std::max<int64_t>(1, world_->ticksIn(opt.progress_every_s)) : 0;
   wall_start_ = Clock::now();
   while (world_->tick() < total) {
     tick();
     const int64_t t = world_->tick();
     // The first tick may have waited for external programs to start: the
     // wall clock (pacing, real-time factor) counts from its end.
-    if (t == 1) wall_start_ = Clock::now() - std::chrono::microseconds(agent::nao::kMotionTickUs);
+    if (t == 1) wall_start_ = Clock::now() - std::chrono::microseconds(world_->tickUs());
     if (opt.print_hash_every > 0 && t % opt.print_hash_every == 0)
       std::printf("tick %lld hash %s\n", static_cast<long long>(t), hashHex(world_->stateHash()).c_str());
     if (progress_every && t % progress_every == 0 && t < total) {
@@ -531,7 +532,7 @@ RunStats Runner::run(const RunOptions& opt) {
     }
     if (opt.realtime) {
       // Pacing only: sleep until the wall clock catches up with simulated time.
-      std::this_thread::sleep_until(wall_start_ + std::chrono::microseconds(t * agent::nao::kMotionTickUs));
+      std::this_thread::sleep_until(wall_start_ + std::chrono::microseconds(t * world_->tickUs()));
     }
   }
   const RunStats s = stats();
@@ -548,7 +549,7 @@ void Runner::shutdown() {
   if (stopped_) return;
   stopped_ = true;
   for (auto& r : robots_)
-    if (r && r->host) r->host->shutdown();
+    if (r && r->body) r->body->shutdown();
   // Launched programs stopped and reaped before the hosts remove their
   // objects; builtin threads joined. The drivers stay until the Runner goes
   // (their programs can still be read after run()); they are destroyed

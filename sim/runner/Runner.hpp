@@ -1,22 +1,24 @@
-// The lock-step runner: one World, one BodyHost + SensorSuite per robot, and
+// The lock-step runner: one World, per robot a SensorSuite and its body side
+// (sim/bridge/BodySide.hpp: libagent for a V5, LoLA for a V6), and
 // per robot the driver of whatever runs its body (sim/programs/
 // ProgramDriver.hpp, the one seam to the robot program: builtin in this
 // process, on its threads or inline; external, attached by name, started by
 // hand or launched by the runner; the public API's controller). The Runner
 // knows nothing of the robot program beyond that interface and reads none
-// of its state. Each tick (kTickSeconds, the body's cycle) runs these stages, in this
+// of its state. Each tick (World::tickUs, the robots' body cycle: 10 ms on the
+// V5, 12 ms on the V6; sim/runner/Bodies.hpp) runs these stages, in this
 // order (Runner::tick; this is the one place the order is written down):
 //   1. applyCommands      every robot's command latched last tick goes to its
 //                         servos (and sonar mode): a command written during
 //                         tick k acts during k+1, as the DCM sends Motion's
 //                         output on its next cycle
 //   2. applyPushes        scenario pushes due by now (World::applyImpulse)
-//   3. World::step        physics advances 10 ms (its own substeps: World.hpp)
+//   3. World::step        physics advances one tick (its own substeps: World.hpp)
 //   4. handleWorldEvents  blow-ups: counted, the robot's sensors restarted
 //   5. captureOverview    the overview camera's frame, if one is due
 //   6. publishSensors     scenario buttons, sensors read from the new state,
 //                         each robot's slot written and its tick posted
-//                         (the body side of libagent: sim/bridge/BodyHost)
+//                         (the body side: sim/bridge/BodySide.hpp)
 //   7. awaitMotion        every robot's Motion answers through its driver
 //                         (inline: a builtin program's Motion step runs
 //                         here, robot by robot, on this thread; the first
@@ -130,7 +132,7 @@ class Runner {
   void start();
   // External robots free-running (see above); RunOptions::realtime sets it.
   void setFreeRunning(bool on);
-  // One 10 ms tick. Throws WatchdogError.
+  // One tick (World::tickUs). Throws WatchdogError.
   void tick();
   // start() if needed, then ticks until the scenario's duration.
   RunStats run(const RunOptions& options = {});
@@ -141,7 +143,10 @@ class Runner {
   World& world() { return *world_; }
   const World& world() const { return *world_; }
   int numRobots() const { return static_cast<int>(robots_.size()); }
-  bridge::BodyHost& host(int i) { return *robots_[i]->host; }
+  // Robot i's body side; host(i): the same as libagent's BodyHost (throws
+  // RunnerError for a robot with another body interface).
+  bridge::BodySide& body(int i) { return *robots_[i]->body; }
+  bridge::BodyHost& host(int i);
   const sensors::SensorSuite& sensors(int i) const { return *robots_[i]->sensors; }
   int64_t ticks() const { return world_ ? world_->tick() : 0; }
   RunStats stats() const;  // so far
@@ -193,7 +198,7 @@ class Runner {
   struct Robot {
     RobotSpec spec;
     std::string tag;
-    std::unique_ptr<bridge::BodyHost> host;
+    std::unique_ptr<bridge::BodySide> body;
     std::unique_ptr<sensors::SensorSuite> sensors;
     // Camera images (set up by the host when rendering).
     agent::libagent::CameraImages* images = nullptr;
@@ -209,7 +214,7 @@ class Runner {
 
   // Build stages (start(), in this order).
   void buildWorld();        // model, field, World, ball
-  void buildHosts();        // per robot: World body, SensorSuite, BodyHost
+  void buildHosts();        // per robot: World body, SensorSuite, body side (Bodies.hpp)
   void attachPrograms();    // per robot: its program driver (sim/programs), from the scenario
   void buildTeamAndGame();  // TeamNetwork, GameController (and its UDP sender), the t = 0 game state
   void startCameras();      // if the scenario renders

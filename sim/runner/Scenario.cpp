@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/runner/Bodies.hpp"
 #include "agent/nao/NaoFacts.hpp"
 #include "sim/world/ConfigError.hpp"
 
@@ -324,10 +325,13 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
     }
   }
   rs.launch.stop_grace_s = p.number("stop_grace", 2.0, Range::closed(0, 60));
-  // Placeholders are checked now, not when the run starts.
+  // Placeholders are checked now, not when the run starts: the run's, and
+  // the body's (BodySide::placeholders: a LoLA body's socket, libagent's names).
   std::map<std::string, std::string> names;
-  for (const char* k : {"team", "player", "number", "memory", "semaphore", "extension", "seed", "config"})
-    names[k] = "x";
+  for (const char* k : {"team", "player", "seed", "config"}) names[k] = "x";
+  if (robot.has("lola")) names["socket"] = "x";
+  else
+    for (const char* k : {"number", "memory", "semaphore", "extension"}) names[k] = "x";
   try {
     for (const std::string& a : rs.launch.command) ProgramProcess::fill(a, names);
     ProgramProcess::fill(rs.launch.cwd, names);
@@ -479,6 +483,7 @@ struct RobotClaims {
   std::set<std::string> memories;                 // libagent memory names in use (releases name differently)
   std::vector<std::pair<int, TeamColour>> teams;  // team number -> colour, in order of appearance
   int bare = 0;                                   // robots with the bare names
+  std::optional<bridge::BodyInterface> body;      // the first robot's body interface
 };
 
 // team, player and colour: one entry per player, two teams, one colour each.
@@ -510,11 +515,39 @@ void readTeamPlayer(const YamlReader& r, RobotSpec& rs, RobotClaims& claims) {
   }
 }
 
+// lola: {socket: PATH}: the NAO V6's LoLA body; every robot of a run ticks
+// alike, so its interface is the first robot's.
+void readLola(const YamlReader& r, RobotSpec& rs, RobotClaims& claims) {
+  const std::optional<YamlReader> l = r.optionalMap("lola");
+  if (l && r.has("libagent"))
+    r.fail("lola", "a robot has one body interface: libagent (the NAO V5) or lola (the NAO V6), not both");
+  rs.body = l ? bridge::BodyInterface::Lola : bridge::BodyInterface::Libagent;
+  if (!claims.body) claims.body = rs.body;
+  if (*claims.body != rs.body) {
+    const int64_t first = bodyCycleUs(*claims.body), here = bodyCycleUs(rs.body);
+    r.fail(l ? "lola" : "team", std::string("every robot of a run ticks alike: robots[0] has a ") +
+                                    bodyInterfaceName(*claims.body) + " body (" + std::to_string(first / 1000) +
+                                    " ms), this one " + bodyInterfaceName(rs.body) + " (" +
+                                    std::to_string(here / 1000) + " ms)");
+  }
+  if (!l) return;
+  rs.lola_socket = l->string("socket", defaultLolaSocket(rs.team, rs.player, rs.bare_names));
+  if (rs.lola_socket.empty() || rs.lola_socket.size() > 107)
+    l->fail("socket", "a Unix socket path has 1..107 characters (got " + std::to_string(rs.lola_socket.size()) + ")");
+  rs.lola_socket = std::filesystem::absolute(rs.lola_socket).lexically_normal().string();
+  l->finish();
+  if (!claims.memories.insert(rs.lola_socket).second) r.fail("lola", "two robots would share " + rs.lola_socket);
+  if (rs.program == RobotSpec::Program::Builtin)
+    r.fail("lola", "the builtin robot program speaks libagent (the NAO V5); a LoLA robot needs a LoLA program: "
+                   "program: external (started by hand) or program: {command: [...]} (its socket: {socket})");
+}
+
 // libagent and names: the release's block and its shared-memory names, no
 // two robots on one name.
 void readNames(const YamlReader& r, RobotSpec& rs, RobotClaims& claims) {
   if (auto l = r.optionalMap("libagent")) readLibagent(*l, rs);
   rs.bare_names = r.choice("names", "simulation", {"simulation", "bare"}) == "bare";
+  if (r.has("lola")) return;  // no libagent names (readLola, after the program)
   if (rs.release == bridge::Release::R2016) {
     if (r.has("names") && !rs.bare_names)
       r.fail("names", "rUNSWift 2016 has only the robot build's names (/libagent-memory): names: bare");
@@ -586,6 +619,7 @@ RobotSpec readRobot(const YamlReader& r, const std::string& base_dir, RobotClaim
   readNames(r, rs, claims);
   readPlacement(r, rs);
   readProgram(r, rs, base_dir);
+  readLola(r, rs, claims);
   readTimedLists(r, rs);
   checkBuiltinRelease(r, rs);
   readRobotBehaviour(r, rs);
@@ -597,6 +631,9 @@ void readRobots(const YamlReader& top, Scenario& sc) {
   RobotClaims claims;
   for (const YamlReader& r : top.list("robots")) sc.robots.push_back(readRobot(r, sc.base_dir, claims));
   if (sc.robots.empty()) top.fail("robots", "a scenario needs at least one robot");
+  sc.tick_us = bodyCycleUs(sc.robots.front().body);
+  // A V6 world gets the V6 body unless the file names a model.
+  if (sc.robots.front().body == bridge::BodyInterface::Lola && !top.has("model")) sc.model_path = "models/nao_v6.urdf";
 }
 
 // Robots on top of one another (the field is not needed for this).

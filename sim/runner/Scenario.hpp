@@ -27,6 +27,9 @@
 //     - {team: 19, player: 1, x: -1.0, y: 0.0, theta: 0.0,  # m, m, rad (field frame)
 //        colour: blue,                 # side of the match (blue or red), see below
 //        names: simulation,            # libagent names: simulation (N = team x 11 + player) or bare
+//        libagent: {release: 2017, start: stiff},  # the body interface: libagent, the NAO V5 (default), or
+//        lola: {socket: /tmp/x.sock},  # LoLA, the NAO V6 (socket default /tmp/simswift-lola/t<T>p<P>;
+//                                      # names: bare serves /tmp/robocup); all robots of a run alike
 //        posture: stand, program: builtin,   # or external, or {command: [...]} (sim/programs/ProgramProcess.hpp)
 //        script: [{t: 2.0, joint: HeadYaw, angle: 0.5, duration: 0.5}],
 //        buttons: [{t: 3.0, button: chest, duration: 0.1}],
@@ -73,6 +76,7 @@
 #include <vector>
 
 #include "agent/nao/Postures.hpp"
+#include "sim/bridge/BodySide.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/bridge/LibagentBehaviour.hpp"
 #include "sim/bridge/Releases.hpp"
@@ -113,6 +117,10 @@ struct RobotSpec : programs::ProgramPart {
   // release's block and names it serves (sim/bridge/Releases.hpp).
   bridge::StartMode start = bridge::StartMode::Stiff;
   bridge::Release release = bridge::Release::R2017;
+  // The body interface (libagent: the NAO V5 at 10 ms; lola: the NAO V6 at
+  // 12 ms, sim/lola/LolaBody.hpp) and, for lola, its socket.
+  bridge::BodyInterface body = bridge::BodyInterface::Libagent;
+  std::string lola_socket;  // absolute path
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
   agent::nao::Posture posture = agent::nao::Posture::Stand;
   // builtin: agent/'s program in this process; external: a program
@@ -188,6 +196,9 @@ struct Scenario {
   bool no_ball = false;                           // `ball: none`
   int ball_line = 0;
   std::vector<RobotSpec> robots;
+  // us per tick: the robots' body interface's cycle (all robots alike;
+  // sim/runner/Bodies.hpp bodyCycleUs), World's tick.
+  int64_t tick_us = agent::nao::kMotionTickUs;
   network::TeamNetworkConfig team_comms;  // team_comms: (defaults: no loss, no delay, no budget)
   game::GameConfig game;                  // game: (default: PLAYING, no penalties)
 

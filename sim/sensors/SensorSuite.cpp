@@ -100,7 +100,7 @@ void SensorSuite::reset(const World& world) {
 void SensorSuite::update(const World& world) {
   // A gap in ticks (or the first call) means the velocity history is stale.
   if (world.tick() != last_tick_ + 1) reset(world);
-  const double dt = kTickSeconds;
+  const double dt = world.tickSeconds();
   last_tick_ = world.tick();
 
   updateJoints(world, dt);

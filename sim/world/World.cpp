@@ -147,6 +147,8 @@ Eigen::Isometry3d planarPose(double x, double y, double theta, double z) {
 World::World(const FieldConfig& field, const WorldConfig& config)
     : impl_(std::make_unique<Impl>()), field_(field), config_(config) {
   if (config_.substeps < 1) throw ConfigError("world: substeps must be >= 1");
+  if (config_.tick_us < 1000 || config_.tick_us > 100000)
+    throw ConfigError("world: tick_us must be in [1000, 100000] (got " + std::to_string(config_.tick_us) + ")");
   if (!(config_.quick_w > 0 && config_.quick_w < 2)) throw ConfigError("world: quick_w must be in (0, 2)");
   if (config_.sole_nx < 1 || config_.sole_ny < 1 || config_.sole_nx * config_.sole_ny > 64)
     throw ConfigError("world: sole_nx x sole_ny must be 1..64 points");
@@ -184,7 +186,7 @@ World::World(const FieldConfig& field, const WorldConfig& config)
   dMassSetSphereTotal(&m, field_.ball.mass, r);
   dBodySetMass(impl_->ball, &m);
   // ODE's damping is a per-step fraction of velocity removed: rate (1/s) * dt.
-  dBodySetLinearDamping(impl_->ball, field_.ball.linear_damping * kTickSeconds / config_.substeps);
+  dBodySetLinearDamping(impl_->ball, field_.ball.linear_damping * tickSeconds() / config_.substeps);
   impl_->ball_geom = dCreateSphere(space_, r);
   dGeomSetBody(impl_->ball_geom, impl_->ball);
   dGeomSetData(impl_->ball_geom, &impl_->ball_tag);
@@ -296,7 +298,7 @@ void World::applyImpulse(int robot, const Eigen::Vector3d& impulse) {
 
 void World::step() {
   const int n = config_.substeps;
-  const double dt = kTickSeconds / n;
+  const double dt = tickSeconds() / n;
   contacts_.clear();
   for (int sub = 0; sub < n; ++sub) {
     checkBlowUps();

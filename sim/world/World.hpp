@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <cmath>
+
 #include "agent/nao/NaoFacts.hpp"
 #include "sim/nao_model/RobotModel.hpp"
 #include "sim/nao_model/RobotBody.hpp"
@@ -20,12 +22,17 @@
 
 namespace simswift {
 
-constexpr double kTickSeconds = agent::nao::kMotionTickSeconds;  // s: the NAO's DCM / Motion cycle
+// s: the NAO V5's DCM / Motion cycle, WorldConfig::tick_us's default (a
+// V6 world ticks at LoLA's 12 ms: sim/runner/Bodies.hpp).
+constexpr double kTickSeconds = agent::nao::kMotionTickSeconds;
 
 struct WorldConfig {
   enum class Solver { Exact, Quick };
   Solver solver = Solver::Quick;     // see World.cpp for why (measured)
-  int substeps = 2;                  // physics steps per 10 ms tick
+  // us per tick: the robots' cycle, their body interface's (libagent on the
+  // V5 10 ms, LoLA on the V6 12 ms; sim/runner/Bodies.hpp bodyCycleUs).
+  int64_t tick_us = agent::nao::kMotionTickUs;
+  int substeps = 2;                  // physics steps per tick
   int quick_iterations = 20;
   double quick_w = 1.7;              // QuickStep's over-relaxation (ODE's default 1.3), see World.cpp
   double erp = 0.8;
@@ -133,7 +140,11 @@ class World {
   // to where it was last placed and an event is recorded; the run goes on.
   void step();
   int64_t tick() const { return tick_; }
-  double time() const { return tick_ * kTickSeconds; }  // s
+  double time() const { return tick_ * tickSeconds(); }  // s
+  int64_t tickUs() const { return config_.tick_us; }    // us per tick (WorldConfig::tick_us)
+  double tickSeconds() const { return config_.tick_us * 1e-6; }
+  // Ticks in `seconds` of simulated time (rounded to the nearest).
+  int64_t ticksIn(double seconds) const { return std::llround(seconds / tickSeconds()); }
 
   const std::vector<LinkContact>& contacts() const { return contacts_; }
   std::vector<WorldEvent> takeEvents();

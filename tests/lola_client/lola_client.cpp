@@ -6,14 +6,17 @@
 // offsets cached from the first), and answers each with Position and
 // Stiffness.
 //
-//   lola-client SOCKET CYCLES [one-map | two-maps | split | limp]
+//   lola-client SOCKET CYCLES [one-map | two-maps | split | limp | hold]
 //
 // Answers (LoLA joint order): Position[i] = 0.01 * i + 0.001 * cycle rad,
-// Stiffness[i] = 0.5 ("limp": Stiffness only, 0). "two-maps" sends Sonar
-// [true, false] in a second map as rUNSWift 2022 does; "split" writes the
-// answer in three pieces 1 ms apart. Prints one line per packet:
-//   packet N Position[10]=... FSR[0]=... Status[0]=... Accelerometer[2]=...
-// Exit 0 after CYCLES answered packets, 1 on any check failing, 2 on bad use.
+// Stiffness[i] = 0.5 ("limp": Stiffness only, 0; "hold": the first packet's
+// Position, Stiffness 1, as a program that stands where it was put).
+// "two-maps" sends Sonar [true, false] in a second map as rUNSWift 2022
+// does; "split" writes the answer in three pieces 1 ms apart. SOCKET "-" is
+// LoLA's own /tmp/robocup. Prints one line per packet:
+//   packet N Position[10]=... FSR[0]=... Status[0]=... Accelerometer[2]=... FSRsum=... Gyroscope[2]=...
+// Exit 0 after CYCLES answered packets (CYCLES 0: until the server closes
+// the socket, after at least one), 1 on any check failing, 2 on bad use.
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <unistd.h>
@@ -118,13 +121,13 @@ float floatAt(const unsigned char* p) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: lola-client SOCKET CYCLES [one-map|two-maps|split|limp]\n");
+    std::fprintf(stderr, "usage: lola-client SOCKET CYCLES [one-map|two-maps|split|limp|hold]\n");
     return 2;
   }
-  const std::string path = argv[1];
+  const std::string path = std::string(argv[1]) == "-" ? "/tmp/robocup" : argv[1];
   const int cycles = std::atoi(argv[2]);
   const std::string mode = argc > 3 ? argv[3] : "one-map";
-  if (mode != "one-map" && mode != "two-maps" && mode != "split" && mode != "limp") {
+  if (mode != "one-map" && mode != "two-maps" && mode != "split" && mode != "limp" && mode != "hold") {
     std::fprintf(stderr, "lola-client: unknown mode %s\n", mode.c_str());
     return 2;
   }
@@ -142,9 +145,13 @@ int main(int argc, char** argv) {
 
   unsigned char first[kPacketBytes];
   std::vector<std::pair<std::size_t, std::size_t>> offsets;
-  for (int cycle = 0; cycle < cycles; ++cycle) {
+  std::vector<float> held;  // "hold": the first packet's Position
+  for (int cycle = 0; cycles == 0 || cycle < cycles; ++cycle) {
     unsigned char packet[kPacketBytes];
-    if (!readAll(fd, packet, kPacketBytes)) fail("the server closed the socket at packet " + std::to_string(cycle));
+    if (!readAll(fd, packet, kPacketBytes)) {
+      if (cycles == 0 && cycle > 0) break;  // the run ended
+      fail("the server closed the socket at packet " + std::to_string(cycle));
+    }
 
     // msgpack-c's reading: one map, the keys in order, lengths and types.
     std::size_t off = 0;
@@ -191,14 +198,22 @@ int main(int argc, char** argv) {
     const float knee = floatAt(packet + offsets[position_first + 10].first);
     if (knee != values["Position"][10]) fail("cached offset and msgpack-c disagree");
 
-    std::printf("packet %d Position[10]=%.6g FSR[0]=%.6g Status[0]=%.0f Accelerometer[2]=%.6g\n", cycle,
-                values["Position"][10], values["FSR"][0], values["Status"][0], values["Accelerometer"][2]);
+    float fsr_sum = 0;
+    for (float f : values["FSR"]) fsr_sum += f;
+    std::printf("packet %d Position[10]=%.6g FSR[0]=%.6g Status[0]=%.0f Accelerometer[2]=%.6g FSRsum=%.6g "
+                "Gyroscope[2]=%.6g\n",
+                cycle, values["Position"][10], values["FSR"][0], values["Status"][0], values["Accelerometer"][2],
+                fsr_sum, values["Gyroscope"][2]);
     std::fflush(stdout);
 
     // The answer.
     std::map<std::string, std::vector<float>> answer;
     if (mode == "limp") {
       answer["Stiffness"] = std::vector<float>(25, 0.f);
+    } else if (mode == "hold") {
+      if (held.empty()) held = values["Position"];
+      answer["Position"] = held;
+      answer["Stiffness"] = std::vector<float>(25, 1.f);
     } else {
       std::vector<float> position(25), stiffness(25, 0.5f);
       for (int i = 0; i < 25; ++i) position[i] = 0.01f * i + 0.001f * cycle;

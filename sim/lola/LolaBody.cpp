@@ -1,0 +1,189 @@
+#include "sim/lola/LolaBody.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "agent/libagent/Inertial.hpp"
+
+namespace simswift::lola {
+
+namespace al = agent::libagent;
+namespace S = al::Sensors;
+using agent::libagent::SyncMode;
+
+namespace {
+
+// LoLA's joint index of each libagent slot, matched by name (Protocol.hpp
+// and agent/libagent/Names.cpp spell them alike).
+std::array<int, al::kNumJoints> jointTable() {
+  std::array<int, al::kNumJoints> table{};
+  for (int j = 0; j < al::kNumJoints; ++j) {
+    table[j] = -1;
+    for (int l = 0; l < kNumJoints; ++l)
+      if (kJointNames[l] == al::Joints::kNames[j]) table[j] = l;
+  }
+  return table;
+}
+const std::array<int, al::kNumJoints> kLolaOfLibagent = jointTable();
+
+// The socket's folder made if missing (the server's bind then says what is wrong).
+const std::string& withFolder(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  return path;
+}
+
+uint8_t status(float temperature, const LolaBodyOptions& o) {
+  if (temperature >= o.status_critical) return 3;
+  if (temperature >= o.status_very_hot) return 2;
+  if (temperature >= o.status_hot) return 1;
+  return 0;
+}
+
+}  // namespace
+
+int lolaJointOf(int libagent_joint) { return kLolaOfLibagent[libagent_joint]; }
+
+SensorPacket toLolaPacket(const al::SensorValues& v, const LolaBodyOptions& options) {
+  SensorPacket p;
+  for (int j = 0; j < al::kNumJoints; ++j) {
+    const int l = kLolaOfLibagent[j];
+    p.position[l] = v.joints.angles[j];
+    p.stiffness[l] = std::max(0.f, v.joints.stiffnesses[j]);  // libagent's -1 (off) is LoLA's 0
+    p.temperature[l] = v.joints.temperatures[j];
+    p.current[l] = v.joints.currents[j];
+    p.status[l] = status(v.joints.temperatures[j], options);
+  }
+  const float* s = v.sensors;
+  // Inertial: the slots hold the V5's signs (agent/libagent/Inertial.hpp);
+  // back to the physical body rate w and specific force f (torso axes, x
+  // forward, y left, z up), then as LoLA gives them: the gyroscope
+  // right-handed, +w (the V6 reverses the V5's Z); the accelerometer -f,
+  // which the real-robot clients (B-Human, HULKs) negate back: an upright
+  // V6 reports (0, 0, -9.81) m/s^2 (facts.md 9, docs/lola.md "Signs").
+  const al::inertial::BodyRates w = al::inertial::bodyRates(s);
+  p.gyroscope = {static_cast<float>(w.x), static_cast<float>(w.y), static_cast<float>(w.z)};
+  for (int a = 0; a < 3; ++a) {
+    const double f = al::inertial::kAccelerometerSign[a] * s[S::InertialSensor_AccelerometerX + a];
+    p.accelerometer[a] = static_cast<float>(-f);
+  }
+  p.angles = {s[S::InertialSensor_AngleX], s[S::InertialSensor_AngleY]};  // same convention on both
+  p.sonar = {v.sonar[0], v.sonar[al::kNumSonars / 2]};  // the first echo of each side, m
+  const int fsr[kNumFsrs] = {S::LFoot_FSR_FrontLeft, S::LFoot_FSR_FrontRight, S::LFoot_FSR_RearLeft,
+                             S::LFoot_FSR_RearRight, S::RFoot_FSR_FrontLeft, S::RFoot_FSR_FrontRight,
+                             S::RFoot_FSR_RearLeft,  S::RFoot_FSR_RearRight};
+  for (int i = 0; i < kNumFsrs; ++i) p.fsr[i] = s[fsr[i]];  // kg, as the V5's slots
+  p.touch[ChestButton] = s[S::ChestBoard_Button];
+  p.touch[HeadFront] = s[S::Head_Touch_Front];
+  p.touch[HeadMiddle] = s[S::Head_Touch_Middle];
+  p.touch[HeadRear] = s[S::Head_Touch_Rear];
+  p.touch[LFootBumperLeft] = s[S::LFoot_Bumper_Left];
+  p.touch[LFootBumperRight] = s[S::LFoot_Bumper_Right];
+  p.touch[RFootBumperLeft] = s[S::RFoot_Bumper_Left];
+  p.touch[RFootBumperRight] = s[S::RFoot_Bumper_Right];
+  // The hands' touch sensors are not simulated (0): nothing touches them.
+  // Battery: charge and current from the battery model; status 0 (not
+  // charging); its temperature is not modelled: an assumed 30 deg C.
+  p.battery = {s[S::Battery_Charge], 0.f, s[S::Battery_Current], 30.f};
+  p.robot_config = options.robot_config;
+  return p;
+}
+
+LolaBody::LolaBody(int team, int player, const al::JointValues& initial, LolaBodyOptions options)
+    : BodySide(al::robotTag(team, player)),
+      options_(std::move(options)),
+      server_(withFolder(options_.socket_path), options_.decoder),
+      ext_(std::make_unique<al::SimExtension>()) {
+  for (int j = 0; j < al::kNumJoints; ++j) position_[kLolaOfLibagent[j]] = initial.angles[j];
+  stiffness_.fill(0.f);  // limp until the program sends Stiffness
+}
+
+LolaBody::~LolaBody() = default;
+
+std::string LolaBody::attachHint() const {
+  return "start its LoLA program so that it connects to " + server_.path() +
+         " (a program that opens /tmp/robocup: `simswift attach` or names: bare)";
+}
+
+// A launched program has /tmp of its own in which /tmp/robocup is this
+// robot's socket (ProgramProcess): {socket} is the path it sees.
+std::map<std::string, std::string> LolaBody::placeholders() const {
+  return {{"socket", std::string(kDefaultSocketPath)}};
+}
+
+bool LolaBody::publishSensors(const al::SensorValues& values, int64_t /*sim_time_us*/, int64_t tick) {
+  tick_ = tick;
+  packet_ = encodeSensorPacket(toLolaPacket(values, options_));
+  sent_ = false;
+  answered_ = false;
+  if (sync_ == SyncMode::LockStep) return true;  // sent while the answer is awaited (waitAnswer)
+  // Free-running: send now; take an answer only if one is already there.
+  const Exchange e = server_.exchange(packet_, std::chrono::milliseconds(0));
+  sent_ = e.status != Exchange::Status::NoClient;
+  take(e);
+  if (!answered_) ++skipped_;
+  return sent_;
+}
+
+bool LolaBody::waitAnswer(double timeout_s) {
+  if (answered_) return true;
+  const Clock::time_point deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_s));
+  while (!answered_) {
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+    if (left.count() <= 0) return false;
+    // Not yet sent (no client, or the last one dropped): send this cycle's
+    // packet to whoever connects. Sent: read on for its answer, never a new
+    // packet (LolaServer::exchange says why).
+    const Exchange e = sent_ ? server_.awaitAnswer(left) : server_.exchange(packet_, left);
+    if (!sent_ && e.status != Exchange::Status::NoClient) sent_ = true;
+    take(e);
+  }
+  return true;
+}
+
+void LolaBody::take(const Exchange& e) {
+  switch (e.status) {
+    case Exchange::Status::Answered:
+      pending_ = e.command;
+      answered_ = true;
+      break;
+    case Exchange::Status::NoClient:
+    case Exchange::Status::Timeout:
+      break;
+    case Exchange::Status::Disconnected:
+    case Exchange::Status::ProtocolError:
+    case Exchange::Status::Stalled:
+      std::fprintf(stderr, "robot %s: LoLA client on %s %s at tick %lld%s%s; waiting for it to connect again\n",
+                   tag_.c_str(), server_.path().c_str(), toString(e.status), static_cast<long long>(tick_),
+                   e.error.empty() ? "" : ": ", e.error.c_str());
+      sent_ = false;  // the next client gets this cycle's packet
+      break;
+  }
+}
+
+al::ActuatorCommand LolaBody::readActuators() {
+  if (answered_) {
+    if (pending_.position) position_ = *pending_.position;
+    if (pending_.stiffness) stiffness_ = *pending_.stiffness;
+    answered_ = false;
+    ++answers_;
+  }
+  al::ActuatorCommand out;
+  for (int j = 0; j < al::kNumJoints; ++j) {
+    const int l = kLolaOfLibagent[j];
+    out.joints.angles[j] = position_[l];
+    out.joints.stiffnesses[j] = stiffness_[l];
+  }
+  return out;
+}
+
+// LoLA has no way to tell a program the robot is going away: its socket is
+// closed (the program's next read ends) when the body goes.
+void LolaBody::shutdown() { server_.dropClient(); }
+
+}  // namespace simswift::lola

@@ -1,0 +1,94 @@
+// The body side of a NAO V6: simswift is the robot's LoLA (docs/lola.md).
+// Per robot one LolaServer on its own socket; each 12 ms tick one 896-byte
+// sensor packet goes out and the program's actuator maps come back.
+//
+// What the body does beyond the bytes (docs/lola.md, "The body"):
+// - Stiffness 0 at start: every joint limp until the program sends
+//   Stiffness (as a V6 after LoLA starts; the public clients all send it
+//   every cycle). A joint holds a Position only with stiffness.
+// - Keys are remembered: a map without Position keeps the last positions,
+//   one without Stiffness the last stiffnesses (LoLA's actuators hold
+//   their value; the Webots controllers do the same).
+// - Lock-step (default): the tick waits for the cycle's answer (the decoder
+//   says which maps make one: ActuatorDecoder.hpp); a program that is slow
+//   or stopped under gdb keeps the run waiting, up to the watchdog.
+//   Free-running (--realtime): nothing waits; each cycle takes an answer
+//   if one has arrived and otherwise keeps the last command (what the
+//   Webots controllers do; real LoLA's behaviour is not public).
+// - A client that disconnects, sends bytes that are not LoLA's or stops
+//   reading is dropped (said once on stderr); the body keeps its last
+//   command and the tick waits for a client to connect again.
+// - Status: from the motor temperature model (ServoParams: the current
+//   limit falls from hot_start), 0 below kStatusHot, then 1, 2 from
+//   hot_start, 3 from hot_end (an assumption: LoLA's thresholds are not public).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include "sim/bridge/BodySide.hpp"
+#include "sim/lola/LolaServer.hpp"
+
+namespace simswift::lola {
+
+struct LolaBodyOptions {
+  std::string socket_path;  // where the program connects (LoLA's own: /tmp/robocup)
+  // Body id, body version, head id, head version (checkRobotConfig).
+  std::array<std::string, 4> robot_config = SensorPacket{}.robot_config;
+  DecoderOptions decoder;
+  // Status thresholds, deg C (Status above).
+  float status_hot = 60.f, status_very_hot = 70.f, status_critical = 90.f;
+};
+
+// The simulator's sensor slot (V5 layout and signs) as LoLA reports it.
+// Pure: tests check each slot's translation.
+SensorPacket toLolaPacket(const agent::libagent::SensorValues& values, const LolaBodyOptions& options);
+// LoLA's joint index of each libagent joint slot (both have 25; LoLA puts the hands last).
+int lolaJointOf(int libagent_joint);
+
+class LolaBody final : public bridge::BodySide {
+ public:
+  // Throws ServerError (socket path taken by a live server, too long, ...).
+  LolaBody(int team, int player, const agent::libagent::JointValues& initial, LolaBodyOptions options);
+  ~LolaBody() override;
+
+  bridge::BodyInterface interface() const override { return bridge::BodyInterface::Lola; }
+  const std::string& endpoint() const override { return server_.path(); }
+  std::string attachHint() const override;
+  std::map<std::string, std::string> placeholders() const override;
+  void setSync(agent::libagent::SyncMode mode) override { sync_ = mode; }
+  agent::libagent::SyncMode sync() const override { return sync_; }
+
+  bool publishSensors(const agent::libagent::SensorValues& values, int64_t sim_time_us, int64_t tick) override;
+  bool answered() const override { return answered_; }
+  bool waitAnswer(double timeout_s) override;
+  agent::libagent::ActuatorCommand readActuators() override;
+  agent::libagent::SimExtension* extension() override { return ext_.get(); }
+  void shutdown() override;
+  int64_t skippedCycles() const override { return skipped_; }
+
+  const LolaServer& server() const { return server_; }
+  int64_t answers() const { return answers_; }
+
+ private:
+  void take(const Exchange& e);  // an exchange's outcome: the answer kept, a dropped client said
+  LolaBodyOptions options_;
+  LolaServer server_;
+  // A LoLA program reads no extension object; the runner still writes the
+  // game state and team link there (nobody reads them: the V6's game state
+  // comes over UDP, issue 33).
+  std::unique_ptr<agent::libagent::SimExtension> ext_;
+  agent::libagent::SyncMode sync_ = agent::libagent::SyncMode::LockStep;
+  PacketBytes packet_{};
+  bool sent_ = false;      // this cycle's packet went out
+  bool answered_ = false;  // and its answer is in `pending_`
+  ActuatorCommand pending_;
+  JointArray position_{};   // rad, LoLA order: what the joints are told to hold
+  JointArray stiffness_{};  // 0..1: 0 at start
+  int64_t skipped_ = 0;
+  int64_t answers_ = 0;
+  int64_t tick_ = 0;
+};
+
+}  // namespace simswift::lola

@@ -1,0 +1,46 @@
+#include "sim/runner/Bodies.hpp"
+
+#include "agent/libagent/SharedNames.hpp"
+#include "agent/nao/NaoFacts.hpp"
+#include "agent/nao/Postures.hpp"
+#include "sim/bridge/BodyHost.hpp"
+#include "sim/lola/LolaBody.hpp"
+#include "sim/runner/Scenario.hpp"
+
+namespace simswift::runner {
+
+const char* bodyInterfaceName(bridge::BodyInterface b) {
+  return b == bridge::BodyInterface::Lola ? "lola" : "libagent";
+}
+
+int64_t bodyCycleUs(bridge::BodyInterface b) {
+  return b == bridge::BodyInterface::Lola ? lola::kCycleUs : agent::nao::kMotionTickUs;
+}
+
+std::string defaultLolaSocket(int team, int player, bool bare) {
+  if (bare) return std::string(lola::kDefaultSocketPath);
+  return "/tmp/simswift-lola/" + agent::libagent::robotTag(team, player);
+}
+
+std::unique_ptr<bridge::BodySide> makeBody(const RobotSpec& spec, const BodyOptions& options) {
+  const agent::libagent::JointValues initial = agent::nao::postureCommand(spec.posture);
+  if (spec.body == bridge::BodyInterface::Lola) {
+    lola::LolaBodyOptions lo;
+    lo.socket_path = spec.lola_socket;
+    try {
+      return std::make_unique<lola::LolaBody>(spec.team, spec.player, initial, lo);
+    } catch (const lola::ServerError& e) {
+      throw bridge::BridgeError("robot " + agent::libagent::robotTag(spec.team, spec.player) + ": " + e.what());
+    }
+  }
+  bridge::BodyHostOptions ho;
+  ho.bare_names = spec.bare_names;
+  ho.release = spec.release;
+  ho.start = spec.start;
+  ho.images = options.images;
+  return std::make_unique<bridge::BodyHost>(
+      spec.team, spec.player, options.named ? bridge::BodyHost::Mode::Named : bridge::BodyHost::Mode::InProcess,
+      initial, ho);
+}
+
+}  // namespace simswift::runner

@@ -1,0 +1,353 @@
+// A NAO V6 robot in a run: the scenario's `lola:` body, the 12 ms tick, the
+// sensor slots as LoLA reports them, and the facts-only LoLA client
+// (tests/lola_client, no simswift header) driving a robot in lock-step,
+// launched by simswift or started by hand, reconnecting, sent garbage.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "agent/libagent/Inertial.hpp"
+#include "sim/lola/LolaBody.hpp"
+#include "sim/nao_model/RobotModel.hpp"
+#include "sim/runner/Bodies.hpp"
+#include "sim/runner/Runner.hpp"
+#include "tests/support/ConfigErrors.hpp"
+
+namespace al = agent::libagent;
+namespace S = al::Sensors;
+using simswift::lola::LolaBody;
+using simswift::lola::LolaBodyOptions;
+using simswift::runner::Runner;
+using simswift::runner::Scenario;
+using simswift::testing::configError;
+
+namespace {
+
+const std::string kClient = std::string(SIMSWIFT_BINARY_DIR) + "/lola-client";
+
+// A socket path of this test process (unique per test and per ctest job).
+std::string socketPath(const std::string& name) {
+  return "/tmp/simswift-test-v6-" + std::to_string(::getpid()) + "-" + name;
+}
+
+Scenario v6Scenario(const std::string& socket, const std::string& program, double duration) {
+  std::ostringstream y;
+  y << "duration: " << duration << "\nseed: 5\nattach_timeout: 20\nrobots:\n"
+    << "  - {team: 19, player: 1, x: -1.0, y: 0.5, lola: {socket: " << socket << "}, program: " << program << "}\n";
+  Scenario sc = Scenario::parse(y.str(), std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/v6_test.yaml");
+  return sc;
+}
+
+pid_t spawnClient(const std::string& socket, int cycles, const std::string& mode, const std::string& log) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) ::dup2(fd, 1);
+    const std::string n = std::to_string(cycles);
+    ::execl(kClient.c_str(), kClient.c_str(), socket.c_str(), n.c_str(), mode.c_str(), nullptr);
+    ::_exit(127);
+  }
+  return pid;
+}
+
+int exitCode(pid_t pid) {
+  int status = 0;
+  if (::waitpid(pid, &status, 0) != pid || !WIFEXITED(status)) return -1;
+  return WEXITSTATUS(status);
+}
+
+std::string lastLine(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last;
+}
+
+// The last `n` packet lines of a lola-client log.
+std::vector<std::string> lastLines(const std::string& path, size_t n) {
+  std::ifstream in(path);
+  std::vector<std::string> all;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("packet ", 0) == 0) all.push_back(line);
+  if (all.size() > n) all.erase(all.begin(), all.end() - static_cast<long>(n));
+  return all;
+}
+
+// The number after `key=` in a lola-client line.
+double field(const std::string& line, const std::string& key) {
+  const size_t at = line.find(key + "=");
+  if (at == std::string::npos) return std::nan("");
+  return std::stod(line.substr(at + key.size() + 1));
+}
+
+simswift::runner::RunOptions quiet() {
+  simswift::runner::RunOptions o;
+  o.progress = false;
+  return o;
+}
+
+}  // namespace
+
+// ---- The scenario's lola: key.
+
+TEST(V6Scenario, LolaBodyTicksAt12msOnTheV6Model) {
+  const Scenario sc = v6Scenario("/tmp/x.sock", "external", 1);
+  ASSERT_EQ(sc.robots.size(), 1u);
+  EXPECT_EQ(sc.robots[0].body, simswift::bridge::BodyInterface::Lola);
+  EXPECT_EQ(sc.tick_us, 12000);
+  EXPECT_EQ(sc.robots[0].lola_socket, "/tmp/x.sock");
+  EXPECT_NE(sc.modelFile().find("nao_v6.urdf"), std::string::npos) << sc.modelFile();
+  const Scenario v5 = Scenario::parse("robots:\n  - {team: 19, player: 1}\n", "v5.yaml");
+  EXPECT_EQ(v5.tick_us, 10000);
+  EXPECT_EQ(v5.robots[0].body, simswift::bridge::BodyInterface::Libagent);
+}
+
+TEST(V6Scenario, DefaultSocketsAndBareNames) {
+  const Scenario sc = Scenario::parse(
+      "robots:\n  - {team: 19, player: 1, y: 1, lola: {}, program: external}\n"
+      "  - {team: 19, player: 2, y: -1, lola: {}, names: bare, program: external}\n",
+      "s.yaml");
+  EXPECT_EQ(sc.robots[0].lola_socket, "/tmp/simswift-lola/t19p1");
+  EXPECT_EQ(sc.robots[1].lola_socket, "/tmp/robocup");  // what an unchanged V6 program opens
+}
+
+TEST(V6Scenario, RefusedWithFileLineAndKey) {
+  // Robots whose cycles differ: the second robot's line and key.
+  std::string e = configError([] {
+    Scenario::parse("robots:\n  - {team: 19, player: 1}\n  - {team: 19, player: 2, lola: {}, program: external}\n",
+                    "mixed.yaml");
+  });
+  EXPECT_NE(e.find("mixed.yaml:3: robots[1].lola: every robot of a run ticks alike"), std::string::npos) << e;
+  EXPECT_NE(e.find("libagent body (10 ms), this one lola (12 ms)"), std::string::npos) << e;
+  e = configError([] {
+    Scenario::parse("robots:\n  - {team: 19, player: 1, lola: {}}\n", "builtin.yaml");
+  });
+  EXPECT_NE(e.find("builtin.yaml:2: robots[0].lola: the builtin robot program speaks libagent"), std::string::npos)
+      << e;
+  e = configError([] {
+    Scenario::parse("robots:\n  - {team: 19, player: 1, lola: {}, libagent: {release: 2017}, program: external}\n",
+                    "both.yaml");
+  });
+  EXPECT_NE(e.find("both.yaml:2: robots[0].lola: a robot has one body interface"), std::string::npos) << e;
+  e = configError([] {
+    Scenario::parse("robots:\n  - {team: 19, player: 1, lola: {sockt: /tmp/a}, program: external}\n", "typo.yaml");
+  });
+  EXPECT_NE(e.find("typo.yaml:2:"), std::string::npos) << e;
+  EXPECT_NE(e.find("socket"), std::string::npos) << e;  // did you mean
+  e = configError([] {
+    Scenario::parse("robots:\n  - {team: 19, player: 1, lola: {socket: /tmp/a}, program: external}\n"
+                    "  - {team: 19, player: 2, lola: {socket: /tmp/a}, program: external}\n",
+                    "shared.yaml");
+  });
+  EXPECT_NE(e.find("shared.yaml:3: robots[1].lola: two robots would share /tmp/a"), std::string::npos) << e;
+}
+
+// ---- The sensor slots as LoLA reports them (pure translation).
+
+TEST(V6Packet, SlotsTranslateWithLolasOrdersAndSigns) {
+  al::SensorValues v{};
+  for (int j = 0; j < al::kNumJoints; ++j) {
+    v.joints.angles[j] = 0.01f * j;
+    v.joints.stiffnesses[j] = j == 0 ? -1.f : 0.5f;
+    v.joints.temperatures[j] = 30.f;
+  }
+  v.joints.temperatures[al::Joints::LKneePitch] = 65.f;   // hot
+  v.joints.temperatures[al::Joints::RKneePitch] = 75.f;   // stiffness reduced
+  v.joints.temperatures[al::Joints::LAnklePitch] = 95.f;  // critical
+  // A V5 turning anti-clockwise at 0.5 rad/s, upright: GyroscopeZ -0.5,
+  // AccelerometerZ -9.81 (agent/libagent/Inertial.hpp); a lean to the left: f.y = -1.
+  v.sensors[S::InertialSensor_GyroscopeZ] = -0.5f;
+  v.sensors[S::InertialSensor_GyroscopeX] = 0.25f;
+  v.sensors[S::InertialSensor_AccelerometerZ] = -9.81f;
+  v.sensors[S::InertialSensor_AccelerometerY] = -1.f;
+  v.sensors[S::InertialSensor_AccelerometerX] = 0.5f;  // f.x = -0.5
+  v.sensors[S::LFoot_FSR_RearRight] = 1.25f;
+  v.sensors[S::RFoot_FSR_FrontLeft] = 0.75f;
+  v.sensors[S::ChestBoard_Button] = 1.f;
+  v.sensors[S::RFoot_Bumper_Right] = 1.f;
+  v.sonar[0] = 0.4f;
+  v.sonar[10] = 1.5f;
+  namespace L = simswift::lola;
+  const L::SensorPacket p = L::toLolaPacket(v, LolaBodyOptions{});
+  // Joint order: the hands last, LHipYawPitch at 7.
+  EXPECT_FLOAT_EQ(p.position[L::LHand], 0.01f * al::Joints::LHand);
+  EXPECT_FLOAT_EQ(p.position[L::RHand], 0.01f * al::Joints::RHand);
+  EXPECT_FLOAT_EQ(p.position[L::LHipYawPitch], 0.01f * al::Joints::LHipYawPitch);
+  EXPECT_FLOAT_EQ(p.position[L::RShoulderPitch], 0.01f * al::Joints::RShoulderPitch);
+  EXPECT_EQ(L::lolaJointOf(al::Joints::LHand), L::LHand);
+  EXPECT_FLOAT_EQ(p.stiffness[L::HeadYaw], 0.f);  // libagent's -1 (off)
+  EXPECT_FLOAT_EQ(p.stiffness[L::HeadPitch], 0.5f);
+  EXPECT_EQ(p.status[L::HeadYaw], 0);
+  EXPECT_EQ(p.status[L::LKneePitch], 1);
+  EXPECT_EQ(p.status[L::RKneePitch], 2);
+  EXPECT_EQ(p.status[L::LAnklePitch], 3);
+  // The V6 gyroscope is right-handed: anti-clockwise positive.
+  EXPECT_FLOAT_EQ(p.gyroscope[2], 0.5f);
+  EXPECT_FLOAT_EQ(p.gyroscope[0], 0.25f);
+  // Accelerometer -f: upright (0, 0, -9.81); f = (-0.5, -1, 9.81).
+  EXPECT_FLOAT_EQ(p.accelerometer[2], -9.81f);
+  EXPECT_FLOAT_EQ(p.accelerometer[1], 1.f);
+  EXPECT_FLOAT_EQ(p.accelerometer[0], 0.5f);
+  EXPECT_FLOAT_EQ(p.fsr[L::LFootRearRight], 1.25f);
+  EXPECT_FLOAT_EQ(p.fsr[L::RFootFrontLeft], 0.75f);
+  EXPECT_FLOAT_EQ(p.touch[L::ChestButton], 1.f);
+  EXPECT_FLOAT_EQ(p.touch[L::RFootBumperRight], 1.f);
+  EXPECT_FLOAT_EQ(p.touch[L::HeadFront], 0.f);
+  EXPECT_FLOAT_EQ(p.sonar[0], 0.4f);
+  EXPECT_FLOAT_EQ(p.sonar[1], 1.5f);
+}
+
+// ---- A V6 robot in a run, driven by the facts-only client.
+
+// Launched by simswift ({socket}): lock-step (one answer per 12 ms tick),
+// standing on held positions, the FSRs the client reads summing to the
+// model's mass.
+TEST(V6Run, LaunchedClientHoldsTheRobotInLockStep) {
+  const std::string socket = socketPath("launched");
+  Scenario sc = v6Scenario(socket, "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 2.0);
+  sc.program_logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid());
+  auto runner = std::make_unique<Runner>(sc);
+  Runner& r = *runner;
+  const simswift::runner::RunStats s = r.run(quiet());
+  EXPECT_EQ(r.world().tickUs(), 12000);
+  EXPECT_EQ(s.ticks, 167);  // 2 s / 12 ms
+  EXPECT_NEAR(s.sim_s, 2.004, 1e-9);
+  auto& body = dynamic_cast<LolaBody&>(r.body(0));
+  EXPECT_EQ(body.answers(), s.ticks) << "lock-step: one answer per tick";
+  EXPECT_EQ(s.skipped_cycles, 0);
+  EXPECT_EQ(s.falls, 0);
+  // What the client read over the last 50 packets (0.6 s): the FSRs sum to
+  // the robot's mass (kg; a standing robot's feet carry all of it) within
+  // 2 %, and upright the accelerometer reads -9.81 m/s^2 on z (LoLA's sign)
+  // within 0.1, averaged (per packet they carry the sensor noise and the
+  // stance's small vibration: about 0.16 kg and 0.45 m/s^2 sd, seed 5).
+  const std::vector<std::string> lines = lastLines(sc.program_logs + "/t19p1.log", 50);
+  ASSERT_EQ(lines.size(), 50u);
+  double fsr = 0, acc = 0;
+  for (const std::string& l : lines) {
+    fsr += field(l, "FSRsum") / lines.size();
+    acc += field(l, "Accelerometer[2]") / lines.size();
+  }
+  const double mass = simswift::RobotModel::loadUrdf(sc.modelFile()).totalMass();
+  EXPECT_NEAR(fsr, mass, 0.02 * mass);
+  EXPECT_NEAR(acc, -9.81, 0.1);
+  EXPECT_EQ(::access(socket.c_str(), F_OK), 0);
+  runner.reset();
+  EXPECT_EQ(::access(socket.c_str(), F_OK), -1) << "the socket is removed with its robot";
+}
+
+// Started by hand (program: external), with the socket's path or through
+// `simswift attach` (the unchanged client opens /tmp/robocup), gives the
+// same state hash as launched.
+TEST(V6Run, HandStartedAndAttachedEqualLaunched) {
+  uint64_t hashes[3];
+  for (int k = 0; k < 3; ++k) {
+    SCOPED_TRACE(k);
+    const std::string socket = socketPath("same" + std::to_string(k));
+    const std::string logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid());
+    Scenario sc = k == 0 ? v6Scenario(socket, "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 1.0)
+                         : v6Scenario(socket, "external", 1.0);
+    sc.program_logs = logs;
+    Runner r(sc);
+    r.start();  // the socket exists from here
+    pid_t pid = -1;
+    if (k == 1) pid = spawnClient(socket, 0, "hold", logs + "/hand.log");
+    if (k == 2) {
+      pid = ::fork();
+      if (pid == 0) {
+        const std::string simswift = std::string(SIMSWIFT_BINARY_DIR) + "/simswift";
+        const int fd = ::open((logs + "/attached.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
+        ::execl(simswift.c_str(), simswift.c_str(), "attach", "--socket", socket.c_str(), "--", kClient.c_str(), "-",
+                "0", "hold", nullptr);
+        ::_exit(127);
+      }
+    }
+    hashes[k] = r.run(quiet()).hash;
+    if (pid > 0) {
+      EXPECT_EQ(exitCode(pid), 0) << lastLine(logs + (k == 1 ? "/hand.log" : "/attached.log"));
+    }
+  }
+  EXPECT_EQ(hashes[0], hashes[1]);
+  EXPECT_EQ(hashes[0], hashes[2]);
+}
+
+// A client that leaves after 20 cycles, one that sends garbage, then one
+// that stays: the run waits for each reconnection and never crashes; every
+// tick gets exactly one answer.
+TEST(V6Run, DisconnectGarbageAndReconnect) {
+  const std::string socket = socketPath("reconnect");
+  const std::string logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid());
+  Scenario sc = v6Scenario(socket, "external", 0.6);  // 50 ticks
+  sc.program_logs = logs;
+  Runner r(sc);
+  std::thread clients([&] {
+    EXPECT_EQ(exitCode(spawnClient(socket, 20, "hold", logs + "/first.log")), 0);
+    // Garbage: bytes that are no msgpack map, after reading one packet.
+    const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    sockaddr_un a{};
+    a.sun_family = AF_UNIX;
+    std::snprintf(a.sun_path, sizeof a.sun_path, "%s", socket.c_str());
+    for (int i = 0; i < 500 && ::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    char packet[896];
+    size_t got = 0;
+    while (got < sizeof packet) {
+      const ssize_t n = ::read(fd, packet + got, sizeof packet - got);
+      if (n <= 0) break;
+      got += static_cast<size_t>(n);
+    }
+    EXPECT_EQ(got, 896u);
+    const char garbage[] = {'\xc1', '\xc1', '\xc1', '\xc1'};  // 0xc1: never used in msgpack
+    EXPECT_EQ(::write(fd, garbage, sizeof garbage), 4);
+    char b;
+    EXPECT_LE(::read(fd, &b, 1), 0) << "the server closes a connection that sent garbage";
+    ::close(fd);
+    EXPECT_EQ(exitCode(spawnClient(socket, 0, "hold", logs + "/second.log")), 0);
+  });
+  const simswift::runner::RunStats s = r.run(quiet());
+  clients.join();
+  EXPECT_EQ(s.ticks, 50);
+  EXPECT_EQ(dynamic_cast<LolaBody&>(r.body(0)).answers(), 50);
+  EXPECT_EQ(dynamic_cast<LolaBody&>(r.body(0)).server().clientsAccepted(), 3);
+}
+
+// Two unchanged clients that both open /tmp/robocup ("-"), launched in one
+// run: each gets its own /tmp in which /tmp/robocup is its robot's socket,
+// and each drives its own robot in lock-step.
+TEST(V6Run, TwoUnchangedProgramsEachOpenTheirOwnRobocup) {
+  const std::string logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid());
+  std::ostringstream y;
+  y << "duration: 0.6\nseed: 3\nattach_timeout: 20\nprogram_logs: " << logs << "/pair\nrobots:\n";
+  for (int p = 1; p <= 2; ++p)
+    y << "  - {team: 19, player: " << p << ", x: -1.0, y: " << (p == 1 ? 1.0 : -1.0) << ", lola: {socket: "
+      << socketPath("pair" + std::to_string(p)) << "}, program: {command: [\"" << kClient
+      << "\", \"-\", \"0\", hold]}}\n";
+  Runner r(Scenario::parse(y.str(), "pair.yaml"));
+  const simswift::runner::RunStats s = r.run(quiet());
+  ASSERT_EQ(s.ticks, 50);
+  for (int i = 0; i < 2; ++i) {
+    auto& body = dynamic_cast<LolaBody&>(r.body(i));
+    EXPECT_EQ(body.answers(), 50) << "robot " << i;
+    EXPECT_EQ(body.server().clientsAccepted(), 1) << "robot " << i;
+    const std::string line = lastLine(logs + "/pair/t19p" + std::to_string(i + 1) + ".log");
+    EXPECT_EQ(line.rfind("packet 49 ", 0), 0u) << line;
+  }
+  struct stat st{};
+  EXPECT_NE(::lstat("/tmp/robocup", &st), 0) << "nothing is made at the machine's /tmp/robocup";
+}
