@@ -125,7 +125,6 @@ bool LolaBody::publishSensors(const al::SensorValues& values, int64_t /*sim_time
   const Exchange e = server_.exchange(packet_, std::chrono::milliseconds(0));
   sent_ = e.status != Exchange::Status::NoClient;
   take(e);
-  if (!answered_) ++skipped_;
   return sent_;
 }
 
@@ -172,6 +171,8 @@ al::ActuatorCommand LolaBody::readActuators() {
     if (pending_.stiffness) stiffness_ = *pending_.stiffness;
     answered_ = false;
     ++answers_;
+  } else if (sync_ == SyncMode::FreeRunning && tick_ > 0) {
+    ++skipped_;  // this tick's answer did not come in time: the last command stays
   }
   al::ActuatorCommand out;
   for (int j = 0; j < al::kNumJoints; ++j) {

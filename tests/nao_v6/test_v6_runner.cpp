@@ -351,3 +351,26 @@ TEST(V6Run, TwoUnchangedProgramsEachOpenTheirOwnRobocup) {
   struct stat st{};
   EXPECT_NE(::lstat("/tmp/robocup", &st), 0) << "nothing is made at the machine's /tmp/robocup";
 }
+
+// --realtime: the run is paced at 12 ms and never waits for the program:
+// each tick's packet goes out on time, an answer that has arrived is taken
+// (the client answers well within a cycle), a missed one keeps the last
+// command and counts as skipped.
+TEST(V6Run, RealtimeSendsEveryCycleAndWaitsForNobody) {
+  const std::string socket = socketPath("realtime");
+  Scenario sc = v6Scenario(socket, "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 0.6);
+  sc.program_logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid()) + "/realtime";
+  Runner r(sc);
+  simswift::runner::RunOptions o = quiet();
+  o.realtime = true;
+  const simswift::runner::RunStats s = r.run(o);
+  EXPECT_EQ(s.ticks, 50);
+  EXPECT_GE(s.wall_s, 0.5) << "paced at 12 ms per tick";
+  auto& body = dynamic_cast<LolaBody&>(r.body(0));
+  EXPECT_EQ(body.answers() + body.skippedCycles(), 50) << "every cycle answered or skipped";
+  EXPECT_GE(body.answers(), 25) << "most answers arrive within their 12 ms cycle";
+  // The client saw a packet every cycle after it connected.
+  const std::string line = lastLine(sc.program_logs + "/t19p1.log");
+  ASSERT_EQ(line.rfind("packet ", 0), 0u) << line;
+  EXPECT_GE(std::stoi(line.substr(7)), 25) << line;
+}
