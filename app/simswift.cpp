@@ -43,7 +43,7 @@ const char* kUsage =
     "       simswift clean [--team T --player P]   remove objects a killed run left in /dev/shm\n"
     "       simswift attach (--team T --player P | --socket PATH) -- COMMAND...\n"
     "                      run an unchanged V6 (LoLA) program by hand: its /tmp/robocup is that\n"
-    "                      robot's socket (default /tmp/simswift-lola/t<T>p<P>) in a /tmp of its own\n"
+    "                      robot's socket (default /tmp/simswift-lola/t<T>p<P>), in a mount namespace of its own\n"
     "       simswift --version | --help\n"
     "\n"
     "Runs a scenario in lock-step with its robot programs and prints\n"

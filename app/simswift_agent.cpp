@@ -11,6 +11,13 @@
 //   simswift-agent --team T --player P [--behaviour NAME] [--config FILE]
 //                  [--seed S] [--start X Y THETA] [--posture NAME]
 //                  [--move JOINT ANGLE [--at S]] [--bare] [--print] [--attach-timeout S]
+//                  [--lola [SOCKET]]
+//
+// --lola: the robot is a NAO V6: Motion talks to its LoLA socket (default
+// /tmp/robocup, what a launched program sees as its robot's: docs/lola.md)
+// instead of libagent's block (agent/program/BodyConnection.hpp); the
+// camera frames, game state and team link still come through simswift's
+// extension object, found by the team and player as on a V5.
 //
 // simswift launches it with `program: {command: [simswift-agent, --config,
 // "{config}"]}`: {config} is the robot's setup as a builtin program gets it,
@@ -49,7 +56,8 @@ const char* kUsage =
     "  --at S               ... at simulated time S s (default 0)\n"
     "  --print              print the sensors, game state and team packet counts\n"
     "                       every 100 ticks (1 s)\n"
-    "  --attach-timeout S   keep trying to attach for S wall-clock seconds (default 10)\n";
+    "  --attach-timeout S   keep trying to attach for S wall-clock seconds (default 10)\n"
+    "  --lola [SOCKET]      a NAO V6: Motion over LoLA's socket (default /tmp/robocup)\n";
 
 [[noreturn]] void usageError(const std::string& msg) {
   std::fprintf(stderr, "simswift-agent: %s\n\n%s", msg.c_str(), kUsage);
@@ -86,6 +94,7 @@ int main(int argc, char** argv) {
   std::string move_joint;
   double move_angle = 0, move_at = 0, attach_timeout = 10;
   bool print = false, bare = false;
+  std::optional<std::string> lola;  // the V6's socket
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&](const char* what) -> const char* {
@@ -117,6 +126,8 @@ int main(int argc, char** argv) {
     } else if (a == "--at") move_at = number(next("--at"), "--at");
     else if (a == "--print") print = true;
     else if (a == "--bare") bare = true;
+    else if (a == "--lola")
+      lola = i + 1 < argc && argv[i + 1][0] != '-' ? std::string(argv[++i]) : std::string(agent::lola::kDefaultSocketPath);
     else if (a == "--attach-timeout") attach_timeout = number(next("--attach-timeout"), "--attach-timeout");
     else if (a == "--help" || a == "-h") {
       std::printf("%s", kUsage);
@@ -167,7 +178,15 @@ int main(int argc, char** argv) {
       // beside the block (filled by the simulator as for builtin robots).
       ap::ProgramConfig pc = ap::composeProgram(setup);
       pc.extensions = conn.extension();
-      ap::RobotProgram program(std::move(conn), std::move(pc));
+      std::unique_ptr<ap::BodyConnection> body;
+      if (lola) {
+        // The V6: the joints over LoLA's socket; the block found above is not used.
+        body = ap::lolaBody(agent::lola::LolaConnection::connect(*lola, attach_timeout), std::move(conn));
+        std::fprintf(stderr, "simswift-agent: connected to LoLA at %s\n", lola->c_str());
+      } else {
+        body = ap::libagentBody(std::move(conn));
+      }
+      ap::RobotProgram program(std::move(body), std::move(pc));
       if (print)
         program.setAfterTick([&program](const al::SensorValues& s, int64_t t_us) {
           if (t_us % 1000000 != 0) return;
@@ -189,6 +208,9 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "simswift-agent: run ended after %lld ticks\n",
                    static_cast<long long>(program.motionTicks()));
       return program.error().empty() ? 0 : 1;
+    } catch (const agent::lola::LolaError& e) {
+      std::fprintf(stderr, "simswift-agent: %s\n", e.what());
+      return 1;
     } catch (const al::AgentError& e) {
       if (std::chrono::steady_clock::now() > deadline) {
         std::fprintf(stderr, "simswift-agent: %s\n", e.what());

@@ -52,6 +52,13 @@ void* mapNamed(const std::string& name, size_t size, bool write, std::string* er
 
 }  // namespace
 
+AgentConnection AgentConnection::extensionOnly(SimExtension* ext) {
+  if (!ext) throw AgentError("AgentConnection: null extension");
+  AgentConnection c;
+  c.ext_ = ext;
+  return c;
+}
+
 AgentConnection::AgentConnection(AgentData* block, sem_t* tick, SimExtension* ext)
     : block_(block), tick_(tick), ext_(ext) {
   if (!block || !tick || !ext) throw AgentError("AgentConnection: null block, tick semaphore or extension");

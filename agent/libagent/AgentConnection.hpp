@@ -49,6 +49,10 @@ class AgentConnection {
  public:
   // In-process: the simulator owns `block`, `tick` and `ext`.
   AgentConnection(AgentData* block, sem_t* tick, SimExtension* ext);
+  // In-process, the extension object alone: the camera frames, game state
+  // and team link of a body whose ticks come another way (LoLA's socket,
+  // agent/lola). Only announce() and the Perception side may be used.
+  static AgentConnection extensionOnly(SimExtension* ext);
 
   // By name (simulation rule: N = team * 11 + player). Throws AgentError
   // with a message saying what to check.

@@ -35,8 +35,11 @@ ProgramConfig shorthand(int team, int player, std::unique_ptr<framework::MotionG
 }
 }  // namespace
 
-RobotProgram::RobotProgram(agent::libagent::AgentConnection connection, ProgramConfig cfg)
+RobotProgram::RobotProgram(std::unique_ptr<BodyConnection> connection, ProgramConfig cfg)
     : conn_(std::move(connection)), tag_(agent::libagent::robotTag(cfg.team, cfg.player)), cfg_(std::move(cfg)) {}
+
+RobotProgram::RobotProgram(agent::libagent::AgentConnection connection, ProgramConfig cfg)
+    : RobotProgram(libagentBody(std::move(connection)), std::move(cfg)) {}
 
 RobotProgram::RobotProgram(agent::libagent::AgentConnection connection, int team, int player,
                            std::unique_ptr<framework::MotionGenerator> motion,
@@ -51,17 +54,17 @@ void RobotProgram::setMotion(std::unique_ptr<framework::MotionGenerator> motion)
 }
 
 void RobotProgram::start(Threading threading) {
-  buildSchedule(cfg_, [this](const blackboard::ActuatorRequest& a) { pending_ = a.joints; }, conn_.images(),
+  buildSchedule(cfg_, [this](const blackboard::ActuatorRequest& a) { pending_ = a.joints; }, conn_->camera().images(),
                 schedule_);
   schedule_.check();  // throws ModuleError before any thread starts
   if (cfg_.extensions) team_link_ = std::make_unique<comms::TeamLinkTransport>(&cfg_.extensions->team);
   // Perception runs at every frame whether or not images are rendered.
-  with_perception_ = conn_.hasCamera();
+  with_perception_ = conn_->camera().hasCamera();
   threading_ = threading;
   // Announce first: the simulator decides whether to send camera frames once
   // Motion has answered its first tick, which may happen as soon as the
   // thread exists.
-  conn_.announce(with_perception_);
+  conn_->announce(with_perception_);
   if (threading_ == Threading::Inline) return;
   motion_thread_ = std::thread([this] { motionLoop(); });
   if (with_perception_) perception_thread_ = std::thread([this] { perceptionLoop(); });
@@ -69,7 +72,7 @@ void RobotProgram::start(Threading threading) {
 
 bool RobotProgram::stepMotion() {
   if (threading_ != Threading::Inline) throw std::logic_error("RobotProgram::stepMotion: the program runs its own threads");
-  if (failed_ || !conn_.takeTick()) return false;
+  if (failed_ || !conn_->takeTick()) return false;
   try {
     motionStep();
     return true;
@@ -82,7 +85,7 @@ bool RobotProgram::stepMotion() {
 
 bool RobotProgram::stepPerception() {
   if (threading_ != Threading::Inline) throw std::logic_error("RobotProgram::stepPerception: the program runs its own threads");
-  if (failed_ || !with_perception_ || !conn_.takeFrame()) return false;
+  if (failed_ || !with_perception_ || !conn_->camera().takeFrame()) return false;
   try {
     perceptionStep();
     return true;
@@ -113,7 +116,7 @@ void RobotProgram::fail(const std::string& thread, const std::exception& e) {
 void RobotProgram::motionLoop() {
   nameThisThread(tag_ + "-motion");
   try {
-    while (conn_.waitTick()) motionStep();
+    while (conn_->waitTick()) motionStep();
   } catch (const std::exception& e) {
     // No acknowledgement follows: the simulator's watchdog reports this robot.
     fail("motion", e);
@@ -122,18 +125,18 @@ void RobotProgram::motionLoop() {
 
 void RobotProgram::motionStep() {
   blackboard::SensorFrame s;
-  s.values = conn_.readSensors();
-  if (io_) {
-    io_->standing = conn_.block()->standing;
-    io_->buttons = conn_.buttons();
+  s.values = conn_->readSensors();
+  if (io_ && conn_->libagent()) {
+    io_->standing = conn_->libagent()->block()->standing;
+    io_->buttons = conn_->libagent()->buttons();
     io_->stiffen = false;
   }
-  s.sim_time_us = conn_.simTimeUs();
+  s.sim_time_us = conn_->timeUs();
   s.time = static_cast<double>(s.sim_time_us) * 1e-6;
   board_.sensors.write(s);
   if (cfg_.step_hook) cfg_.step_hook(framework::ThreadId::Motion);
   schedule_.run(framework::ThreadId::Motion, board_);  // motion -> effector
-  conn_.writeActuators(pending_, nullptr, 0, io_ && io_->stiffen);
+  conn_->writeActuators(pending_, io_ && io_->stiffen);
   motion_ticks_.fetch_add(1);
   if (after_tick_) after_tick_(s.values, s.sim_time_us);
 }
@@ -141,14 +144,14 @@ void RobotProgram::motionStep() {
 void RobotProgram::perceptionLoop() {
   nameThisThread(tag_ + "-percept");
   try {
-    while (conn_.waitFrame()) perceptionStep();
+    while (conn_->camera().waitFrame()) perceptionStep();
   } catch (const std::exception& e) {
     fail("perception", e);
   }
 }
 
 void RobotProgram::perceptionStep() {
-  const agent::libagent::CameraFrame& cf = conn_.frame();
+  const agent::libagent::CameraFrame& cf = conn_->camera().frame();
   // The Motion thread is between ticks while a frame is processed (the
   // body side waits for its answer before posting a frame), so the
   // sensors section holds the sensors of the tick at frame time.
@@ -178,7 +181,7 @@ void RobotProgram::perceptionStep() {
   if (team_link_)
     for (const std::vector<uint8_t>& packet : board_.team_outbox.read().packets) team_link_->send(packet);
   perception_frames_.fetch_add(1);
-  conn_.perceptionDone();
+  conn_->camera().perceptionDone();
 }
 
 }  // namespace agent::program

@@ -1,4 +1,5 @@
-// A robot program: the robot code's threads around one AgentConnection, its
+// A robot program: the robot code's threads around one body connection
+// (BodyConnection.hpp: libagent's block on a V5, LoLA's socket on a V6), its
 // Blackboard, and the modules each thread runs (ordered in ModuleOrder.cpp).
 //
 //   Motion     (thread "t<T>p<P>-motion"):  loop { waitTick; readSensors ->
@@ -37,6 +38,7 @@
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/comms/TeamTransport.hpp"
 #include "agent/libagent/AgentConnection.hpp"
+#include "agent/program/BodyConnection.hpp"
 #include "agent/program/ModuleOrder.hpp"
 #include "agent/framework/ModuleSchedule.hpp"
 
@@ -58,6 +60,8 @@ struct LibagentIO {
 class RobotProgram {
  public:
   // The standard modules; `cfg` says which motion and behaviour.
+  RobotProgram(std::unique_ptr<BodyConnection> connection, ProgramConfig cfg);
+  // On libagent's block (libagentBody).
   RobotProgram(agent::libagent::AgentConnection connection, ProgramConfig cfg);
   // Shorthand: a MotionGenerator for Motion, no behaviour, an optional
   // PerceptionStep run first in the Perception thread.
@@ -99,9 +103,9 @@ class RobotProgram {
   int64_t motionTicks() const { return motion_ticks_.load(); }
   int64_t perceptionFrames() const { return perception_frames_.load(); }
   // The camera images the Perception thread reads (null: no rendering).
-  const agent::libagent::CameraImages* images() const { return conn_.images(); }
+  const agent::libagent::CameraImages* images() const { return conn_->camera().images(); }
   // Attached by name: the simulator process has gone (killed) without ending the run.
-  bool simulatorGone() const { return !conn_.shutdown() && !conn_.simulatorAlive(); }
+  bool simulatorGone() const { return !conn_->shutdown() && !conn_->simulatorAlive(); }
   // First exception a thread died of (empty if none).
   std::string error() const;
 
@@ -117,7 +121,7 @@ class RobotProgram {
   void perceptionStep();
   void fail(const std::string& thread, const std::exception& e);
 
-  agent::libagent::AgentConnection conn_;
+  std::unique_ptr<BodyConnection> conn_;
   std::string tag_;
   ProgramConfig cfg_;
   blackboard::Blackboard board_;

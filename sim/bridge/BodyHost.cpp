@@ -17,6 +17,7 @@
 
 #include "agent/libagent/TripleBuffer.hpp"
 #include "sim/bridge/AttachedProcesses.hpp"
+#include "sim/bridge/ExtensionObject.hpp"
 #include "sim/bridge/WaitStrategy.hpp"
 
 namespace simswift::bridge {
@@ -190,26 +191,9 @@ void BodyHost::initialise(const al::JointValues& initial) {
   last_.joints = initial;
   for (int j = 0; j < al::kNumJoints; ++j) measured_[j] = initial.angles[j];
 
-  SimExtension& x = *ext_;
-  const int32_t pid = x.simulator_pid.load();
-  const uint64_t start = x.simulator_start.load();
-  // Zero everything after the header; the semaphores are (re)initialised.
-  std::memset(static_cast<void*>(&x), 0, sizeof x);
-  x.simulator_pid.store(mode_ == Mode::Named ? pid : 0);
-  x.simulator_start.store(mode_ == Mode::Named ? start : 0);
-  x.sync_mode.store(static_cast<int32_t>(sync_));
-  // pshared = 1: the other end may be another process.
-  sem_init(&x.answered, 1, 0);
-  sem_init(&x.camera.frame_ready, 1, 0);
-  sem_init(&x.camera.perception_done, 1, 0);
-  x.camera.magic = al::kExtensionMagic;
-  new (&x.team) al::TeamLink();  // empty rings, magic set
-  x.version = al::kExtensionVersion;
-  if (images_) images_->magic = al::kCameraImagesMagic;
-  // The magic goes last: a program that sees it sees an initialised robot.
-  std::atomic_thread_fence(std::memory_order_seq_cst);
-  x.magic = al::kExtensionMagic;
-  std::atomic_thread_fence(std::memory_order_seq_cst);
+  // In this process the owner header is 0 (a new object); named, it holds this simulator.
+  initialiseExtension(*ext_, sync_, images_);
+  camera_ = CameraHandover(ext_);
 }
 
 void BodyHost::releaseNamed() {
@@ -233,11 +217,7 @@ void BodyHost::releaseNamed() {
 }
 
 BodyHost::~BodyHost() {
-  if (ext_) {
-    sem_destroy(&ext_->answered);
-    sem_destroy(&ext_->camera.frame_ready);
-    sem_destroy(&ext_->camera.perception_done);
-  }
+  if (ext_) destroyExtension(*ext_);
   if (mode_ == Mode::InProcess) {
     sem_destroy(&tick_local_);
     return;
@@ -338,29 +318,12 @@ ActuatorCommand BodyHost::readActuators() {
   return out;
 }
 
-void BodyHost::publishFrame(const al::CameraFrame& frame) {
-  ext_->camera.frame = frame;
-  // Release, then post: Perception loads the number (acquire) after its wait.
-  ext_->camera.frames_posted.store(++frames_posted_, std::memory_order_release);
-  sem_post(&ext_->camera.frame_ready);
-}
+void BodyHost::publishFrame(const al::CameraFrame& frame) { camera_.publish(frame); }
 
-bool BodyHost::waitPerceptionDone(double timeout_s) {
-  const timespec deadline = monotonicIn(timeout_s);
-  // The answer is Perception's frames_done reaching the last frame posted
-  // (acquire: pairs with its release before the post); the semaphore only
-  // wakes us. A post with an older number (one left behind by an answer
-  // whose post came after a timed-out wait) is skipped.
-  const auto done = [&] { return ext_->camera.frames_done.load(std::memory_order_acquire) == frames_posted_; };
-  for (;;) {
-    if (!waitUntil(&ext_->camera.perception_done, deadline)) return done();
-    if (done()) return true;
-  }
-}
+bool BodyHost::waitPerceptionDone(double timeout_s) { return camera_.waitDone(timeout_s); }
 
 void BodyHost::shutdown() {
   ext_->shutdown.store(1);
-  ext_->camera.shutdown.store(1);
   // A simswift-aware program (AgentConnection) is woken and reads the
   // shutdown flag. An unchanged libagent program is not: woken, it would
   // re-read the last sensor slot as if a new cycle had come. It stays in
@@ -378,7 +341,7 @@ void BodyHost::shutdown() {
                    "comes: stop it before the next run\n",
                    tag_.c_str(), p.name.c_str(), p.pid, names_.memory.c_str());
   }
-  sem_post(&ext_->camera.frame_ready);
+  camera_.shutdown();
 }
 
 std::string BodyHost::attachHint() const {

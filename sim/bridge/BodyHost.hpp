@@ -55,6 +55,7 @@
 #include "agent/nao/Postures.hpp"
 #include "sim/bridge/BodySide.hpp"
 #include "sim/bridge/Cleanup.hpp"
+#include "sim/bridge/ExtensionObject.hpp"
 #include "sim/bridge/LibagentBehaviour.hpp"
 #include "sim/bridge/Releases.hpp"
 #include "sim/bridge/StaleObjects.hpp"
@@ -137,7 +138,7 @@ class BodyHost final : public BodySide {
   // A simswift-aware program has announced itself (AgentConnection::announce).
   bool clientAnnounced() const { return ext_->client_pid.load() != 0; }
   // 30 Hz camera handshake (only if the program has a Perception thread).
-  bool hasPerception() const override { return ext_->camera.consumer.load() != 0; }
+  bool hasPerception() const override { return camera_.consumer(); }
   void publishFrame(const agent::libagent::CameraFrame& frame) override;
   bool waitPerceptionDone(double timeout_s) override;
 
@@ -186,7 +187,7 @@ class BodyHost final : public BodySide {
   int64_t skipped_total_ = 0;
   int64_t contact_lost_events_ = 0;
   int64_t commands_read_ = 0;
-  int64_t frames_posted_ = 0;  // camera frames published (camera.frames_posted)
+  CameraHandover camera_;      // the 30 Hz frames over ext_
   bool contact_lost_ = false;
 };
 

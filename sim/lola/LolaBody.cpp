@@ -16,19 +16,6 @@ using agent::libagent::SyncMode;
 
 namespace {
 
-// LoLA's joint index of each libagent slot, matched by name (Protocol.hpp
-// and agent/libagent/Names.cpp spell them alike).
-std::array<int, al::kNumJoints> jointTable() {
-  std::array<int, al::kNumJoints> table{};
-  for (int j = 0; j < al::kNumJoints; ++j) {
-    table[j] = -1;
-    for (int l = 0; l < kNumJoints; ++l)
-      if (kJointNames[l] == al::Joints::kNames[j]) table[j] = l;
-  }
-  return table;
-}
-const std::array<int, al::kNumJoints> kLolaOfLibagent = jointTable();
-
 // The socket's folder made if missing (the server's bind then says what is wrong).
 const std::string& withFolder(const std::string& path) {
   std::error_code ec;
@@ -46,12 +33,10 @@ uint8_t status(float temperature, const LolaBodyOptions& o) {
 
 }  // namespace
 
-int lolaJointOf(int libagent_joint) { return kLolaOfLibagent[libagent_joint]; }
-
 SensorPacket toLolaPacket(const al::SensorValues& v, const LolaBodyOptions& options) {
   SensorPacket p;
   for (int j = 0; j < al::kNumJoints; ++j) {
-    const int l = kLolaOfLibagent[j];
+    const int l = lolaJointOf(j);
     p.position[l] = v.joints.angles[j];
     p.stiffness[l] = std::max(0.f, v.joints.stiffnesses[j]);  // libagent's -1 (off) is LoLA's 0
     p.temperature[l] = v.joints.temperatures[j];
@@ -60,16 +45,13 @@ SensorPacket toLolaPacket(const al::SensorValues& v, const LolaBodyOptions& opti
   }
   const float* s = v.sensors;
   // Inertial: the slots hold the V5's signs (agent/libagent/Inertial.hpp);
-  // back to the physical body rate w and specific force f (torso axes, x
-  // forward, y left, z up), then as LoLA gives them: the gyroscope
-  // right-handed, +w (the V6 reverses the V5's Z); the accelerometer -f,
-  // which the real-robot clients (B-Human, HULKs) negate back: an upright
-  // V6 reports (0, 0, -9.81) m/s^2 (facts.md 9, docs/lola.md "Signs").
-  const al::inertial::BodyRates w = al::inertial::bodyRates(s);
-  p.gyroscope = {static_cast<float>(w.x), static_cast<float>(w.y), static_cast<float>(w.z)};
+  // back to the physical body rate w and specific force f, then with LoLA's
+  // signs (agent/lola/Protocol.hpp: the gyroscope +w, the accelerometer -f).
   for (int a = 0; a < 3; ++a) {
+    const double w = al::inertial::kGyroscopeSign[a] * s[S::InertialSensor_GyroscopeX + a];
     const double f = al::inertial::kAccelerometerSign[a] * s[S::InertialSensor_AccelerometerX + a];
-    p.accelerometer[a] = static_cast<float>(-f);
+    p.gyroscope[a] = static_cast<float>(kGyroscopeSign[a] * w);
+    p.accelerometer[a] = static_cast<float>(kAccelerometerSign[a] * f);
   }
   p.angles = {s[S::InertialSensor_AngleX], s[S::InertialSensor_AngleY]};  // same convention on both
   p.sonar = {v.sonar[0], v.sonar[al::kNumSonars / 2]};  // the first echo of each side, m
@@ -97,20 +79,24 @@ LolaBody::LolaBody(int team, int player, const al::JointValues& initial, LolaBod
     : BodySide(al::robotTag(team, player)),
       options_(std::move(options)),
       server_(withFolder(options_.socket_path), options_.decoder),
-      ext_(std::make_unique<al::SimExtension>()) {
-  for (int j = 0; j < al::kNumJoints; ++j) position_[kLolaOfLibagent[j]] = initial.angles[j];
+      objects_(std::make_unique<bridge::BodyHost>(
+          team, player, options_.named ? bridge::BodyHost::Mode::Named : bridge::BodyHost::Mode::InProcess, initial,
+          bridge::BodyHostOptions{false, options_.images})) {
+  for (int j = 0; j < al::kNumJoints; ++j) position_[lolaJointOf(j)] = initial.angles[j];
   stiffness_.fill(0.f);  // limp until the program sends Stiffness
 }
 
 LolaBody::~LolaBody() = default;
 
 std::string LolaBody::attachHint() const {
-  return "start its LoLA program so that it connects to " + server_.path() +
-         " (a program that opens /tmp/robocup: `simswift attach` or names: bare)";
+  return "start its LoLA program so that it connects to " + server_.path() + " (the reference program: " +
+         "`simswift-agent --team " + std::to_string(objects_->team()) + " --player " +
+         std::to_string(objects_->player()) + " --lola " + server_.path() +
+         "`; one that opens /tmp/robocup: `simswift attach --team T --player P -- PROGRAM`)";
 }
 
-// A launched program has /tmp of its own in which /tmp/robocup is this
-// robot's socket (ProgramProcess): {socket} is the path it sees.
+// A launched program has a mount namespace of its own in which /tmp/robocup
+// is this robot's socket (ProgramProcess): {socket} is the path it sees.
 std::map<std::string, std::string> LolaBody::placeholders() const {
   return {{"socket", std::string(kDefaultSocketPath)}};
 }
@@ -118,13 +104,14 @@ std::map<std::string, std::string> LolaBody::placeholders() const {
 bool LolaBody::publishSensors(const al::SensorValues& values, int64_t /*sim_time_us*/, int64_t tick) {
   tick_ = tick;
   packet_ = encodeSensorPacket(toLolaPacket(values, options_));
-  sent_ = false;
   answered_ = false;
-  if (sync_ == SyncMode::LockStep) return true;  // sent while the answer is awaited (waitAnswer)
-  // Free-running: send now; take an answer only if one is already there.
+  // Sent now to a connected client (a program whose steps run on the
+  // simulator's thread reads it in its step), and an answer taken if one is
+  // already there. Lock-step then waits for it (waitAnswer; a client that
+  // connects later gets this packet there); free-running does not.
   const Exchange e = server_.exchange(packet_, std::chrono::milliseconds(0));
   sent_ = e.status != Exchange::Status::NoClient;
-  take(e);
+  take(e);  // a client dropped: not sent after all
   return sent_;
 }
 
@@ -176,7 +163,7 @@ al::ActuatorCommand LolaBody::readActuators() {
   }
   al::ActuatorCommand out;
   for (int j = 0; j < al::kNumJoints; ++j) {
-    const int l = kLolaOfLibagent[j];
+    const int l = lolaJointOf(j);
     out.joints.angles[j] = position_[l];
     out.joints.stiffnesses[j] = stiffness_[l];
   }
@@ -184,7 +171,11 @@ al::ActuatorCommand LolaBody::readActuators() {
 }
 
 // LoLA has no way to tell a program the robot is going away: its socket is
-// closed (the program's next read ends) when the body goes.
-void LolaBody::shutdown() { server_.dropClient(); }
+// closed (the program's next read ends). A builtin program's Perception is
+// woken through the extension object.
+void LolaBody::shutdown() {
+  objects_->shutdown();
+  server_.dropClient();
+}
 
 }  // namespace simswift::lola

@@ -28,6 +28,7 @@
 #include <string>
 
 #include "sim/bridge/BodySide.hpp"
+#include "sim/bridge/BodyHost.hpp"
 #include "sim/lola/LolaServer.hpp"
 
 namespace simswift::lola {
@@ -37,6 +38,8 @@ struct LolaBodyOptions {
   // Body id, body version, head id, head version (checkRobotConfig).
   std::array<std::string, 4> robot_config = SensorPacket{}.robot_config;
   DecoderOptions decoder;
+  bool named = false;   // the program is in another process: simswift's objects by name
+  bool images = false;  // camera images for the program (simswift's images block)
   // Status thresholds, deg C (Status above).
   float status_hot = 60.f, status_very_hot = 70.f, status_critical = 90.f;
 };
@@ -44,8 +47,6 @@ struct LolaBodyOptions {
 // The simulator's sensor slot (V5 layout and signs) as LoLA reports it.
 // Pure: tests check each slot's translation.
 SensorPacket toLolaPacket(const agent::libagent::SensorValues& values, const LolaBodyOptions& options);
-// LoLA's joint index of each libagent joint slot (both have 25; LoLA puts the hands last).
-int lolaJointOf(int libagent_joint);
 
 class LolaBody final : public bridge::BodySide {
  public:
@@ -64,7 +65,11 @@ class LolaBody final : public bridge::BodySide {
   bool answered() const override { return answered_; }
   bool waitAnswer(double timeout_s) override;
   agent::libagent::ActuatorCommand readActuators() override;
-  agent::libagent::SimExtension* extension() override { return ext_.get(); }
+  agent::libagent::SimExtension* extension() override { return objects_->extension(); }
+  agent::libagent::CameraImages* images() override { return objects_->images(); }
+  bool hasPerception() const override { return objects_->hasPerception(); }
+  void publishFrame(const agent::libagent::CameraFrame& frame) override { objects_->publishFrame(frame); }
+  bool waitPerceptionDone(double timeout_s) override { return objects_->waitPerceptionDone(timeout_s); }
   void shutdown() override;
   int64_t skippedCycles() const override { return skipped_; }
 
@@ -75,10 +80,12 @@ class LolaBody final : public bridge::BodySide {
   void take(const Exchange& e);  // an exchange's outcome: the answer kept, a dropped client said
   LolaBodyOptions options_;
   LolaServer server_;
-  // A LoLA program reads no extension object; the runner still writes the
-  // game state and team link there (nobody reads them: the V6's game state
-  // comes over UDP, issue 33).
-  std::unique_ptr<agent::libagent::SimExtension> ext_;
+  // simswift's objects beside the body, as a V5 robot has them (BodyHost,
+  // in this process or by libagent's names): the extension object (camera
+  // frames, game state, team link) and the camera images, which the
+  // reference program reads on a V6 as on a V5. Its libagent block is not
+  // used (the joints go over the socket).
+  std::unique_ptr<bridge::BodyHost> objects_;
   agent::libagent::SyncMode sync_ = agent::libagent::SyncMode::LockStep;
   PacketBytes packet_{};
   bool sent_ = false;      // this cycle's packet went out

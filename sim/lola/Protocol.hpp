@@ -1,89 +1,10 @@
-// The LoLA wire protocol of the NAO V6 (2019 onwards): the names, orders and
-// lengths both directions use. One home for these facts; docs/lola.md says
-// which public source gives each (facts.md section 9: B-Human's NaoProvider,
-// HULKs' hula, rUNSWift 2019-2022 LoLAData/LoLAEffector, ros-sports/nao_lola).
-//
-// LoLA's official document is not public. What is reconstructed here (the
-// order of the sensor map's keys) is marked as such.
+// The LoLA protocol's facts live in the shared foundation
+// (agent/lola/Protocol.hpp: the robot program's client reads them too);
+// the simulator's LoLA server uses them under its own namespace.
 #pragma once
 
-#include <array>
-#include <cstddef>
-#include <string_view>
+#include "agent/lola/Protocol.hpp"
 
 namespace simswift::lola {
-
-// --- Joints: every 25-element array, both directions. No RHipYawPitch:
-// index 7 (LHipYawPitch) drives both hips (B-Human, HULKs and nao_lola agree).
-constexpr int kNumJoints = 25;
-enum Joint : int {
-  HeadYaw, HeadPitch,
-  LShoulderPitch, LShoulderRoll, LElbowYaw, LElbowRoll, LWristYaw,
-  LHipYawPitch, LHipRoll, LHipPitch, LKneePitch, LAnklePitch, LAnkleRoll,
-  RHipRoll, RHipPitch, RKneePitch, RAnklePitch, RAnkleRoll,
-  RShoulderPitch, RShoulderRoll, RElbowYaw, RElbowRoll, RWristYaw,
-  LHand, RHand,
-};
-extern const std::array<std::string_view, kNumJoints> kJointNames;
-
-// --- FSR (8 values, kg): per foot front-left, front-right, rear-left,
-// rear-right; left foot first.
-enum Fsr : int {
-  LFootFrontLeft, LFootFrontRight, LFootRearLeft, LFootRearRight,
-  RFootFrontLeft, RFootFrontRight, RFootRearLeft, RFootRearRight,
-};
-constexpr int kNumFsrs = 8;
-
-// --- Touch (14 values, 0 or 1 as floats).
-enum Touch : int {
-  ChestButton, HeadFront, HeadMiddle, HeadRear,
-  LFootBumperLeft, LFootBumperRight, LHandBack, LHandLeft, LHandRight,
-  RFootBumperLeft, RFootBumperRight, RHandBack, RHandLeft, RHandRight,
-};
-constexpr int kNumTouch = 14;
-
-// --- Battery (4 values): charge 0..1, status bits (charging: & 0x80),
-// current A (negative while discharging), temperature deg C. The order of
-// B-Human and HULKs (real-robot clients); nao_lola puts current second.
-enum Battery : int { BatteryCharge, BatteryStatus, BatteryCurrent, BatteryTemperature };
-constexpr int kNumBattery = 4;
-
-// --- RobotConfig (4 strings): body id, body version, head id, head
-// version. Lengths as the real robots give them (HULKs asserts 20-byte ids
-// and 5-character versions whose first digit is 6).
-enum RobotConfigIndex : int { BodyId, BodyVersion, HeadId, HeadVersion };
-constexpr std::array<std::size_t, 4> kRobotConfigLengths{20, 5, 20, 5};
-
-// --- The sensor map: 13 keys, in this order (a reconstruction: with it,
-// float32 values, array16 headers for the 25-element arrays, Status as
-// positive fixints and RobotConfig as above, the map is exactly LoLA's 896
-// bytes; real LoLA's key order is not published).
-enum class SensorKey : int {
-  Stiffness, Position, Temperature, Current, Battery, Accelerometer,
-  Gyroscope, Angles, Sonar, FSR, Status, Touch, RobotConfig,
-};
-constexpr int kNumSensorKeys = 13;
-struct KeySpec {
-  std::string_view name;
-  int length;  // array elements
-};
-extern const std::array<KeySpec, kNumSensorKeys> kSensorKeys;
-constexpr std::size_t kSensorPacketBytes = 896;  // every public client reads 896
-
-// --- The actuator map: any subset of these 11 keys, in any order.
-enum class ActuatorKey : int {
-  Position, Stiffness, Chest, LEye, REye, LEar, REar, LFoot, RFoot, Skull, Sonar,
-};
-constexpr int kNumActuatorKeys = 11;
-extern const std::array<KeySpec, kNumActuatorKeys> kActuatorKeys;
-// The key's index, -1 if LoLA has no such actuator key.
-int actuatorKeyIndex(std::string_view name);
-
-// LoLA's cycle: 83 Hz, one sensor packet every 12 ms (facts.md 9: Aldebaran's
-// NAOqi 2.8 LoLA page; every public client's cycle). The V6 robot's tick.
-constexpr long long kCycleUs = 12000;
-
-// The default socket path every unchanged V6 program opens.
-constexpr std::string_view kDefaultSocketPath = "/tmp/robocup";
-
+using namespace agent::lola;
 }  // namespace simswift::lola

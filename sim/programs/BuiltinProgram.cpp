@@ -12,12 +12,24 @@ namespace ap = agent::program;
 
 BuiltinProgram::BuiltinProgram(RobotSlot slot, ap::ProgramConfig config, ap::Threading threading)
     : ProgramDriver(std::move(slot)) {
-  // The builtin program speaks libagent (the scenario refuses it another body).
-  auto* host = dynamic_cast<bridge::BodyHost*>(slot_.host);
-  if (!host) throw runner::RunnerError("robot " + slot_.tag + ": the builtin program needs a libagent body");
-  al::AgentConnection conn = host->connect();
-  conn.setImages(host->images());
-  program_ = std::make_unique<ap::RobotProgram>(std::move(conn), std::move(config));
+  // Its body connection (agent/program/BodyConnection.hpp): libagent's
+  // block, or LoLA's socket (connected as a V6 program connects, the
+  // extension object in this process for the camera frames).
+  std::unique_ptr<ap::BodyConnection> body;
+  if (auto* host = dynamic_cast<bridge::BodyHost*>(slot_.host)) {
+    al::AgentConnection conn = host->connect();
+    conn.setImages(host->images());
+    body = ap::libagentBody(std::move(conn));
+  } else {
+    al::AgentConnection camera = al::AgentConnection::extensionOnly(slot_.host->extension());
+    camera.setImages(slot_.host->images());
+    try {
+      body = ap::lolaBody(agent::lola::LolaConnection::connect(slot_.host->endpoint(), 1.0), std::move(camera));
+    } catch (const agent::lola::LolaError& e) {
+      throw runner::RunnerError("robot " + slot_.tag + ": " + e.what());
+    }
+  }
+  program_ = std::make_unique<ap::RobotProgram>(std::move(body), std::move(config));
   program_->start(threading);
 }
 

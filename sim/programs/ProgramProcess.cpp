@@ -5,6 +5,9 @@
 #include <sched.h>
 #include <sys/mount.h>
 #include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -38,37 +41,36 @@ std::string selfMap(unsigned id) { return std::to_string(id) + " " + std::to_str
 
 // In the forked child of a LoLA robot's program: a mount namespace of its own
 // (with a user namespace mapping it to itself when it is not root, as
-// sim/experiment/PrivateShm does), a fresh tmpfs on /tmp, and the robot's
-// socket bound onto /tmp/robocup. The socket is opened (O_PATH) inside the
-// new namespace, before the tmpfs hides its path, and bound through
-// /proc/self/fd (a bind source must be a mount of the caller's namespace).
-// Syscalls only: 0, or the errno of the step that failed.
+// sim/experiment/PrivateShm does) in which the robot's socket is bound onto
+// /tmp/robocup (the mount point: robocupMountPoint, below). Syscalls only: 0, or the
+// errno of the step that failed.
 int privateRobocup(const char* socket_path, const char* uid_map, const char* gid_map) {
   if (geteuid() != 0 || unshare(CLONE_NEWNS) != 0) {
     if (unshare(CLONE_NEWUSER | CLONE_NEWNS) != 0) return errno;
     writeProc("/proc/self/setgroups", "deny");
     if (!writeProc("/proc/self/uid_map", uid_map) || !writeProc("/proc/self/gid_map", gid_map)) return errno;
   }
+  // Our mounts stay ours (not propagated back to the machine).
   if (mount("none", "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return errno;
-  const int socket_fd = open(socket_path, O_PATH | O_CLOEXEC);
-  if (socket_fd < 0) return errno;
-  char source[32] = "/proc/self/fd/";  // + the descriptor's digits, written without allocating
-  char digits[12];
-  int n = 0;
-  for (int v = socket_fd; n == 0 || v > 0; v /= 10) digits[n++] = static_cast<char>('0' + v % 10);
-  size_t at = std::strlen(source);
-  while (n > 0) source[at++] = digits[--n];
-  source[at] = '\0';
-  int err = 0;
-  if (mount("simswift-robocup", "/tmp", "tmpfs", MS_NOSUID | MS_NODEV, "mode=1777") != 0) err = errno;
-  if (err == 0) {
-    const int target = open("/tmp/robocup", O_CREAT | O_WRONLY | O_CLOEXEC, 0600);
-    if (target < 0) err = errno;
-    else close(target);
-  }
-  if (err == 0 && mount(source, "/tmp/robocup", nullptr, MS_BIND, nullptr) != 0) err = errno;
-  close(socket_fd);
-  return err;
+  if (mount(socket_path, "/tmp/robocup", nullptr, MS_BIND, nullptr) != 0) return errno;
+  return 0;
+}
+
+// A bind mount needs a file to cover: /tmp/robocup, made once when missing
+// as a socket nobody listens on (what a LoLA server, names: bare, takes for
+// a stale one and replaces) and left. Its errno, or 0 (also when it exists).
+int robocupMountPoint() {
+  struct stat st {};
+  if (lstat("/tmp/robocup", &st) == 0) return 0;
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  std::strcpy(address.sun_path, "/tmp/robocup");
+  const int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return errno;
+  const int r = bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof(address));
+  const int e = errno;
+  close(fd);
+  return r == 0 || e == EADDRINUSE ? 0 : e;
 }
 
 std::string describe(int status) {
@@ -147,6 +149,13 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
   for (std::string& s : env_strings) envp.push_back(s.data());
   envp.push_back(nullptr);
   const std::string uid_map = selfMap(geteuid()), gid_map = selfMap(getegid());
+  if (!robocup_socket.empty()) {
+    if (const int e = robocupMountPoint()) {
+      close(log), close(report[0]), close(report[1]);
+      throw std::runtime_error("robot " + robot_ + ": cannot make /tmp/robocup for its program's view: " +
+                               std::strerror(e));
+    }
+  }
   const pid_t parent = getpid();
   pid_ = fork();
   if (pid_ < 0) {
@@ -189,7 +198,7 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
     reaped_ = true;
     if (err < 0)
       throw std::runtime_error("robot " + robot_ + ": cannot give its program '" + argv[0] +
-                               "' a private /tmp with /tmp/robocup (mount namespace): " + std::strerror(-err));
+                               "' its own /tmp/robocup (mount namespace): " + std::strerror(-err));
     throw std::runtime_error("robot " + robot_ + ": cannot start its program '" + argv[0] + "'" +
                              (cwd.empty() ? "" : " in " + cwd) + ": " + std::strerror(err));
   }
@@ -199,9 +208,10 @@ ProgramProcess::~ProgramProcess() { stop(); }
 
 std::string ProgramProcess::enterPrivateRobocup(const std::string& socket_path) {
   if (access(socket_path.c_str(), F_OK) != 0) return "its LoLA socket " + socket_path + ": " + std::strerror(errno);
+  if (const int e = robocupMountPoint()) return std::string("/tmp/robocup: ") + std::strerror(e);
   const std::string uid_map = selfMap(geteuid()), gid_map = selfMap(getegid());
   const int err = privateRobocup(socket_path.c_str(), uid_map.c_str(), gid_map.c_str());
-  if (err != 0) return std::string("a private /tmp with /tmp/robocup (mount namespace): ") + std::strerror(err);
+  if (err != 0) return std::string("its own /tmp/robocup (mount namespace): ") + std::strerror(err);
   return "";
 }
 

@@ -10,7 +10,7 @@
 // libagent body {number} (libagent's N = team x 11 + player), {memory},
 // {semaphore} (the robot's libagent object names), {extension} (simswift's
 // extension object); for a LoLA body {socket} (its socket as the program
-// sees it: /tmp/robocup in its own /tmp, below); {seed} (the program's seed, as a builtin program gets it), {config} (a
+// sees it: /tmp/robocup in its own mount namespace, below); {seed} (the program's seed, as a builtin program gets it), {config} (a
 // file with the robot's setup as the builtin program gets it:
 // agent/program/RobotSetup.hpp). A relative command path, or a bare name
 // found beside the simswift executable (simswift-agent), resolves against
@@ -40,10 +40,11 @@ class ProgramProcess {
   // stdout and stderr into `log_path` (created; its folder too). The child
   // leads its own process group and is killed if simswift dies
   // (PR_SET_PDEATHSIG). With `robocup_socket` (a LoLA robot's socket), the
-  // child gets a mount namespace of its own with a fresh /tmp in which
-  // /tmp/robocup is that socket: an unchanged V6 program opens its own
-  // robot, several side by side; the tmpfs goes with the program (also
-  // after kill -9). Throws std::runtime_error naming the program if the
+  // child gets a mount namespace of its own in which /tmp/robocup is that
+  // socket (bound onto the machine's /tmp/robocup, made once as the mount
+  // point: a socket nobody listens on): an unchanged V6 program opens its own robot,
+  // several side by side; the mount goes with the program (also after
+  // kill -9). Throws std::runtime_error naming the program if the
   // command cannot be started (not found, not executable: the exec error;
   // the namespace refused: why).
   ProgramProcess(std::string robot, const std::vector<std::string>& argv, const std::string& cwd,
@@ -74,7 +75,7 @@ class ProgramProcess {
   // Replaces {name} by values[name]; an unknown {name} is an error naming it.
   static std::string fill(const std::string& text, const std::map<std::string, std::string>& values);
   // This process enters what a launched LoLA program gets (above): its own
-  // mount namespace, a fresh /tmp, /tmp/robocup bound to `socket_path`
+  // mount namespace, /tmp/robocup bound to `socket_path`
   // (`simswift attach`, for a program started by hand). Empty on success,
   // else why not.
   static std::string enterPrivateRobocup(const std::string& socket_path);

@@ -152,7 +152,7 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const runner::Scenario& sc
   for (const auto& [k, v] : spec.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
   std::unique_ptr<ProgramProcess> process;
   try {
-    // A LoLA program sees its robot's socket at /tmp/robocup (its own /tmp).
+    // A LoLA program sees its robot's socket at /tmp/robocup (its own mount namespace).
     const std::string robocup =
         slot.host->interface() == bridge::BodyInterface::Lola ? slot.host->endpoint() : std::string();
     process = std::make_unique<ProgramProcess>(slot.tag, argv, ProgramProcess::fill(spec.launch.cwd, values), env,

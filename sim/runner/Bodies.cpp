@@ -27,6 +27,8 @@ std::unique_ptr<bridge::BodySide> makeBody(const RobotSpec& spec, const BodyOpti
   if (spec.body == bridge::BodyInterface::Lola) {
     lola::LolaBodyOptions lo;
     lo.socket_path = spec.lola_socket;
+    lo.images = options.images;
+    lo.named = options.named;
     try {
       return std::make_unique<lola::LolaBody>(spec.team, spec.player, initial, lo);
     } catch (const lola::ServerError& e) {

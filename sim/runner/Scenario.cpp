@@ -537,9 +537,6 @@ void readLola(const YamlReader& r, RobotSpec& rs, RobotClaims& claims) {
   rs.lola_socket = std::filesystem::absolute(rs.lola_socket).lexically_normal().string();
   l->finish();
   if (!claims.memories.insert(rs.lola_socket).second) r.fail("lola", "two robots would share " + rs.lola_socket);
-  if (rs.program == RobotSpec::Program::Builtin)
-    r.fail("lola", "the builtin robot program speaks libagent (the NAO V5); a LoLA robot needs a LoLA program: "
-                   "program: external (started by hand) or program: {command: [...]} (its socket: {socket})");
 }
 
 // libagent and names: the release's block and its shared-memory names, no

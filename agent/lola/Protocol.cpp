@@ -1,6 +1,8 @@
-#include "sim/lola/Protocol.hpp"
+#include "agent/lola/Protocol.hpp"
 
-namespace simswift::lola {
+#include "agent/libagent/AgentShared.hpp"
+
+namespace agent::lola {
 
 const std::array<std::string_view, kNumJoints> kJointNames{
     "HeadYaw",        "HeadPitch",
@@ -49,4 +51,26 @@ int actuatorKeyIndex(std::string_view name) {
   return -1;
 }
 
-}  // namespace simswift::lola
+namespace {
+
+// Matched by name: both spell the joints alike (agent/libagent/Names.cpp).
+struct JointTables {
+  std::array<int, libagent::kNumJoints> lola_of{};
+  std::array<int, kNumJoints> libagent_of{};
+  JointTables() {
+    for (int j = 0; j < libagent::kNumJoints; ++j)
+      for (int l = 0; l < kNumJoints; ++l)
+        if (kJointNames[l] == libagent::Joints::kNames[j]) lola_of[j] = l, libagent_of[l] = j;
+  }
+};
+const JointTables& tables() {
+  static const JointTables t;
+  return t;
+}
+
+}  // namespace
+
+int lolaJointOf(int libagent_joint) { return tables().lola_of[libagent_joint]; }
+int libagentJointOf(int lola_joint) { return tables().libagent_of[lola_joint]; }
+
+}  // namespace agent::lola

@@ -1,0 +1,50 @@
+// What the robot program's threads hold of the body: Motion's ticks,
+// sensors and command, Perception's camera frames. Chosen at start, one of:
+//   libagent  the NAO V5: the libagent block (agent/libagent/AgentConnection)
+//   LoLA      the NAO V6: LoLA's socket for Motion (agent/lola/LolaConnection,
+//             the sensors in the V5's slot layout), simswift's extension
+//             object for the camera frames, game state and team link
+// Everything above it (the modules, Motion's walk and kicks, Perception) is
+// the same for both.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "agent/libagent/AgentConnection.hpp"
+#include "agent/lola/LolaConnection.hpp"
+
+namespace agent::program {
+
+class BodyConnection {
+ public:
+  virtual ~BodyConnection() = default;
+
+  // Tells the body side a program is here (`perception`: a thread will take
+  // camera frames); before the first tick is answered.
+  virtual void announce(bool perception) = 0;
+  // Motion: the next tick (blocking / inline: one already posted). False
+  // when the run is over or the body has gone.
+  virtual bool waitTick() = 0;
+  virtual bool takeTick() = 0;
+  virtual libagent::SensorValues readSensors() = 0;
+  // Simulated time of the sensors read, us.
+  virtual int64_t timeUs() const = 0;
+  virtual void writeActuators(const libagent::JointValues& joints, bool stiffen) = 0;
+  // libagent's block (standing, buttons: LibagentIO); null for other bodies.
+  virtual libagent::AgentConnection* libagent() { return nullptr; }
+
+  // Perception: simswift's extension object (AgentConnection's camera side).
+  virtual libagent::AgentConnection& camera() = 0;
+  const libagent::AgentConnection& camera() const { return const_cast<BodyConnection*>(this)->camera(); }
+  // The run is over (set by the body side), or a body attached by name has gone.
+  virtual bool shutdown() const = 0;
+  virtual bool simulatorAlive() const = 0;
+};
+
+std::unique_ptr<BodyConnection> libagentBody(libagent::AgentConnection connection);
+// `camera`: the extension object's connection (AgentConnection::extensionOnly
+// in this process).
+std::unique_ptr<BodyConnection> lolaBody(lola::LolaConnection motion, libagent::AgentConnection camera);
+
+}  // namespace agent::program

@@ -1,0 +1,44 @@
+// simswift's extension object (agent/libagent/SimExtension.hpp) as a body
+// side serves it, whatever the robot interface: libagent's BodyHost keeps it
+// beside the block (in this process or in named shared memory), LoLA's
+// LolaBody in this process for a builtin program. It carries the 30 Hz
+// camera hand-over, the game state and the team link.
+#pragma once
+
+#include <cstdint>
+
+#include "agent/libagent/CameraImages.hpp"
+#include "agent/libagent/SimExtension.hpp"
+
+namespace simswift::bridge {
+
+// Zeroes `x` after its owner header (simulator pid and start, kept) and sets
+// it up: the semaphores (process-shared), the team link, the sync mode, the
+// version, the images block's magic (if any); the magic last, so a program
+// that sees it sees an initialised robot.
+void initialiseExtension(agent::libagent::SimExtension& x, agent::libagent::SyncMode sync,
+                         agent::libagent::CameraImages* images = nullptr);
+// Destroys the semaphores initialiseExtension made.
+void destroyExtension(agent::libagent::SimExtension& x);
+
+// The 30 Hz camera hand-over on one extension object. Every hand-over is
+// ordered by an atomic the program loads after its wait (frames_posted,
+// frames_done), so ThreadSanitizer sees it and a stray post is never an answer.
+class CameraHandover {
+ public:
+  explicit CameraHandover(agent::libagent::SimExtension* x = nullptr) : x_(x) {}
+  // The program has a Perception thread (it said so when it announced itself).
+  bool consumer() const { return x_->camera.consumer.load() != 0; }
+  void publish(const agent::libagent::CameraFrame& frame);
+  // Waits (wall clock, for the watchdog only) until Perception answered the
+  // last frame published. False on timeout.
+  bool waitDone(double timeout_s);
+  // The run is over: the flags set and Perception woken.
+  void shutdown();
+
+ private:
+  agent::libagent::SimExtension* x_;
+  int64_t frames_posted_ = 0;
+};
+
+}  // namespace simswift::bridge
