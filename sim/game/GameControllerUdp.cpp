@@ -1,6 +1,8 @@
 // The GameController's UDP sender and return-packet counter (see the header).
 #include "sim/game/GameControllerUdp.hpp"
 
+#include "sim/game/GameControlVersions.hpp"
+
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
@@ -40,7 +42,11 @@ bool isLoopbackAddress(const std::string& s) {
   return (ntohl(a.s_addr) >> 24) == 127;
 }
 
-GameControllerUdp::GameControllerUdp(const GameUdpConfig& config) : config_(config) {
+GameControllerUdp::GameControllerUdp(const GameUdpConfig& config)
+    : config_(config), version_(spl::findPacketVersion(config.version)) {
+  if (!version_)
+    throw std::runtime_error("game.udp: no GameController packet version " + std::to_string(config_.version) +
+                             " (simswift sends " + spl::packetVersionList() + ")");
   in_addr dest{};
   if (!isLoopbackAddress(config_.address) || inet_pton(AF_INET, config_.address.c_str(), &dest) != 1)
     throw std::runtime_error("game.udp: address " + config_.address + " is not a loopback IPv4 address");
@@ -72,15 +78,16 @@ GameControllerUdp::~GameControllerUdp() {
 
 void GameControllerUdp::update(int64_t t_us, const agent::libagent::GameStateBlock& b) {
   if (t_us >= next_send_us_) {
-    const spl::GameControlData d = spl::encode(b, packet_number_++);
+    const std::vector<uint8_t> d =
+        spl::encodeGameData(*version_, b, packet_number_++, static_cast<uint16_t>(config_.message_budget));
     sockaddr_in to{};
     to.sin_family = AF_INET;
     to.sin_addr.s_addr = dest_addr_;
     to.sin_port = htons(static_cast<uint16_t>(config_.port));
     // Nobody listening is normal (the program may not have started): an
     // error is counted, never fatal.
-    if (sendto(send_fd_, &d, sizeof d, MSG_DONTWAIT, reinterpret_cast<sockaddr*>(&to), sizeof to) ==
-        static_cast<ssize_t>(sizeof d))
+    if (sendto(send_fd_, d.data(), d.size(), MSG_DONTWAIT, reinterpret_cast<sockaddr*>(&to), sizeof to) ==
+        static_cast<ssize_t>(d.size()))
       ++sent_;
     else
       ++send_errors_;
@@ -94,8 +101,8 @@ void GameControllerUdp::drainReturns() {
   for (int i = 0; i < kMaxReadsPerTick; ++i) {
     const ssize_t n = recv(recv_fd_, buf, sizeof buf, MSG_DONTWAIT | MSG_TRUNC);
     if (n < 0) return;  // EAGAIN: none left (or a transient error: read again next tick)
-    spl::ReturnData r;
-    if (!spl::decodeReturn(buf, static_cast<size_t>(n), &r)) {
+    spl::Return r;
+    if (!spl::decodeReturnData(*version_, buf, static_cast<size_t>(n), &r)) {
       ++bad_returns_;
       continue;
     }
@@ -103,11 +110,9 @@ void GameControllerUdp::drainReturns() {
     c.team = r.team;
     c.player = r.player;
     ++c.packets;
-    switch (static_cast<spl::ReturnMessage>(r.message)) {
-      case spl::ReturnMessage::Alive: ++c.alive; break;
-      case spl::ReturnMessage::ManualPenalise: ++c.penalise; break;
-      case spl::ReturnMessage::ManualUnpenalise: ++c.unpenalise; break;
-    }
+    c.alive += r.alive;
+    c.penalise += r.penalise;
+    c.unpenalise += r.unpenalise;
   }
 }
 

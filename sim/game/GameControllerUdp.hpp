@@ -1,7 +1,8 @@
 // The GameController on the network, as an unchanged robot program hears
 // it: with `game: {udp: on}` the runner hands this sender the game state
-// once per tick (stage 11, teamAndGame) and it sends the SPL 2017 game-data
-// packet (sim/game/GameControlPacket.hpp) every 500 ms of simulated time,
+// once per tick (stage 11, teamAndGame) and it sends the SPL game-data
+// packet of the scenario's version (2017's by default:
+// sim/game/GameControlVersions.hpp) every 500 ms of simulated time,
 // from t = 0, to a loopback address; it also reads, without blocking, the
 // return packets ("RGrt") robots send to return_port and counts them per
 // (team, player).
@@ -24,6 +25,10 @@
 
 namespace simswift::game {
 
+namespace spl {
+struct PacketVersion;
+}
+
 struct GameUdpConfig {
   bool on = false;
   // Where the packets go: an IPv4 address on the loopback network
@@ -32,6 +37,13 @@ struct GameUdpConfig {
   std::string address = "127.0.0.1";
   int port = 3838;         // robots' game-data port (SPL: 3838)
   int return_port = 3939;  // where return packets are read (SPL: 3939); 0 = any free port
+  // The packets' version: the season the robot programs were written for
+  // (sim/game/GameControlVersions.hpp: 10 for 2017, 12-18 for 2019-2025).
+  int version = 10;
+  // What each team may still send, in the packets of 2022 on (their
+  // messageBudget; the GameController's rule for a game): an assumption,
+  // the SPL's 1200 per game of those years, not counted down.
+  int message_budget = 1200;
 };
 
 // True if `s` is a dotted IPv4 address in 127.0.0.0/8.
@@ -67,6 +79,7 @@ class GameControllerUdp {
   void drainReturns();
 
   GameUdpConfig config_;
+  const spl::PacketVersion* version_;  // config_.version's layout
   int send_fd_ = -1, recv_fd_ = -1;
   uint32_t dest_addr_ = 0;  // network byte order
   int return_port_ = 0;

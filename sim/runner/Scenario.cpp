@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/game/GameControlVersions.hpp"
 #include "sim/runner/Bodies.hpp"
 #include "agent/nao/NaoFacts.hpp"
 #include "sim/world/ConfigError.hpp"
@@ -239,7 +240,7 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
   // udp: the SPL GameController's packets on the loopback network (ports
   // and address mean nothing without it, so they are refused alone).
   g.udp.on = r.boolean("udp", false);
-  for (const char* key : {"address", "port", "return_port"})
+  for (const char* key : {"address", "port", "return_port", "version", "message_budget"})
     if (!g.udp.on && r.has(key)) r.fail(key, "needs udp: on");
   g.udp.address = r.string("address", g.udp.address);
   if (!game::isLoopbackAddress(g.udp.address))
@@ -247,6 +248,13 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
   g.udp.port = r.integer("port", g.udp.port, Range::closed(1, 65535));
   g.udp.return_port = r.integer("return_port", g.udp.return_port, Range::closed(0, 65535));
   if (g.udp.return_port == g.udp.port) r.fail("return_port", "must differ from port");
+  // The packet version of the season the robot programs were written for
+  // (sim/game/GameControlVersions.hpp).
+  g.udp.version = r.integer("version", g.udp.version, Range::closed(0, 255));
+  if (!game::spl::findPacketVersion(g.udp.version))
+    r.fail("version", "simswift sends GameController packet versions " + game::spl::packetVersionList() +
+                          " (got " + std::to_string(g.udp.version) + ")");
+  g.udp.message_budget = r.integer("message_budget", g.udp.message_budget, Range::closed(0, 65535));
   r.finish();
   return g;
 }

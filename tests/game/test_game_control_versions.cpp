@@ -1,0 +1,173 @@
+// The GameController packets of the NAO V6 seasons (game: {udp: on,
+// version: N}): each version's bytes where the public GameController's C
+// header of that season puts them (sim/game/GameControlVersions.hpp cites
+// the commits), a run's packets at the chosen version, the era's return
+// packets counted, and an unknown version refused with file, line and field.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "sim/game/GameControlVersions.hpp"
+#include "sim/runner/Runner.hpp"
+#include "tests/support/ConfigErrors.hpp"
+
+using simswift::runner::Runner;
+using simswift::runner::Scenario;
+namespace al = agent::libagent;
+namespace spl = simswift::game::spl;
+
+namespace {
+
+uint16_t le16(const std::vector<uint8_t>& p, size_t at) { return static_cast<uint16_t>(p[at] | (p[at + 1] << 8)); }
+
+al::GameStateBlock sampleState() {
+  al::GameStateBlock b{};
+  b.state = static_cast<uint8_t>(al::GameStateValue::Playing);
+  b.secondary_state = 1;  // penalty shoot-out: the game phase's number too
+  b.first_half = 1;
+  b.kickoff_team = 19;
+  b.secs_remaining = 543;
+  b.secondary_time = 7;
+  b.teams[0].team_number = 19;
+  b.teams[0].team_colour = 0;
+  b.teams[0].score = 2;
+  b.teams[1].team_number = 5;
+  b.teams[1].team_colour = 1;
+  b.teams[1].score = 1;
+  b.teams[1].players[2].penalty = 8;  // player 3: request for pickup
+  b.teams[1].players[2].secs_till_unpenalised = 25;
+  return b;
+}
+
+}  // namespace
+
+// Sizes from the C structs (no padding: every uint16 falls on an even byte):
+// 18 bytes of game fields, then two teams of 6 + 2 x 6 (2019-2021),
+// 8 + 2 x 7 (2022) or 10 + 2 x 20 (2023-2025) bytes.
+TEST(GameControlVersions, EachSeasonsBytesWhereItsHeaderPutsThem) {
+  struct Expect {
+    int version;
+    size_t bytes, team_bytes;
+    int players_per_team;
+  };
+  for (const Expect& e : {Expect{12, 54, 18, 5}, Expect{13, 54, 18, 5}, Expect{14, 62, 22, 5},
+                          Expect{15, 118, 50, 7}, Expect{17, 118, 50, 7}, Expect{18, 118, 50, 7}}) {
+    SCOPED_TRACE(e.version);
+    const spl::PacketVersion* v = spl::findPacketVersion(e.version);
+    ASSERT_NE(v, nullptr);
+    const std::vector<uint8_t> p = spl::encodeGameData(*v, sampleState(), 42, 1100);
+    ASSERT_EQ(p.size(), e.bytes);
+    EXPECT_EQ(v->data_bytes, e.bytes);
+    EXPECT_EQ(std::string(p.begin(), p.begin() + 4), "RGme");
+    EXPECT_EQ(p[4], e.version);
+    EXPECT_EQ(p[5], 42);  // packet number
+    EXPECT_EQ(p[6], e.players_per_team);
+    EXPECT_EQ(p[9], 1);   // game phase: penalty shoot-out
+    EXPECT_EQ(p[10], 3);  // state: playing
+    EXPECT_EQ(p[12], 1);  // first half
+    EXPECT_EQ(p[13], 19);  // kicking team
+    EXPECT_EQ(le16(p, 14), 543);
+    EXPECT_EQ(le16(p, 16), 7);
+    const size_t t1 = 18 + e.team_bytes;  // teams[1]
+    EXPECT_EQ(p[18], 19);
+    EXPECT_EQ(p[t1], 5);
+    EXPECT_EQ(p[t1 + 1], 1);  // colour (2023 on: the field players')
+    const bool gk = e.version >= 15, budget = e.version >= 14;
+    EXPECT_EQ(p[t1 + (gk ? 4 : 2)], 1);  // score
+    if (gk) {
+      EXPECT_EQ(p[t1 + 2], 1);  // goalkeeper colour
+      EXPECT_EQ(p[t1 + 3], 1);  // goalkeeper: player 1
+    }
+    if (budget) {
+      EXPECT_EQ(le16(p, t1 + (gk ? 8 : 6)), 1100);
+    }
+    const size_t players = t1 + (gk ? 10 : budget ? 8 : 6);
+    EXPECT_EQ(p[players + 2 * 2], 8);  // player 3's penalty
+    EXPECT_EQ(p[players + 2 * 2 + 1], 25);
+    EXPECT_EQ(players + 2 * static_cast<size_t>(v->max_players), e.bytes);  // the players end the packet
+  }
+  EXPECT_EQ(spl::findPacketVersion(11), nullptr);
+  EXPECT_EQ(spl::findPacketVersion(10)->data_bytes, 588u);  // 2017's, unchanged
+}
+
+// Return packets: 8 bytes until 2021 (team, player, message: 0 alive),
+// 32 from 2022 (player before team, then fallen, pose, ball age, ball).
+TEST(GameControlVersions, ReturnPacketsOfEachEra) {
+  spl::Return r;
+  std::string why;
+  const uint8_t v3[8] = {'R', 'G', 'r', 't', 3, 19, 2, 0};
+  ASSERT_TRUE(spl::decodeReturnData(*spl::findPacketVersion(12), v3, sizeof v3, &r, &why)) << why;
+  EXPECT_EQ(r.team, 19);
+  EXPECT_EQ(r.player, 2);
+  EXPECT_TRUE(r.alive);
+  uint8_t v4[32] = {'R', 'G', 'r', 't', 4, 3, 19, 0};
+  ASSERT_TRUE(spl::decodeReturnData(*spl::findPacketVersion(18), v4, sizeof v4, &r, &why)) << why;
+  EXPECT_EQ(r.team, 19);
+  EXPECT_EQ(r.player, 3);
+  EXPECT_TRUE(r.alive);
+  EXPECT_FALSE(spl::decodeReturnData(*spl::findPacketVersion(18), v3, sizeof v3, &r, &why));
+  EXPECT_NE(why.find("8 bytes (expected 32)"), std::string::npos) << why;
+  v4[4] = 3;
+  EXPECT_FALSE(spl::decodeReturnData(*spl::findPacketVersion(14), v4, sizeof v4, &r, &why));
+  EXPECT_NE(why.find("version 3 (expected 4)"), std::string::npos) << why;
+}
+
+// A run with version 14: a listener gets 62-byte packets every 500 ms of
+// simulated time; a 2022 robot's return packets are counted.
+TEST(GameControlVersions, ARunSendsTheScenariosVersion) {
+  const int listener = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(bind(listener, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
+  socklen_t len = sizeof a;
+  getsockname(listener, reinterpret_cast<sockaddr*>(&a), &len);
+  const std::string yaml = "duration: 1.2\nrobots:\n  - {team: 19, player: 1}\ngame:\n  udp: on\n  version: 14\n  port: " +
+                           std::to_string(ntohs(a.sin_port)) + "\n  return_port: 0\n  message_budget: 900\n";
+  Runner r(Scenario::parse(yaml, "v14.yaml"));
+  r.start();
+  uint8_t ret[32] = {'R', 'G', 'r', 't', 4, 1, 19, 0};
+  sockaddr_in to{};
+  to.sin_family = AF_INET;
+  to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  to.sin_port = htons(static_cast<uint16_t>(r.gameControllerUdp()->returnPort()));
+  for (int i = 0; i < 2; ++i) sendto(listener, ret, sizeof ret, 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
+  simswift::runner::RunOptions o;
+  o.progress = false;
+  r.run(o);
+  std::vector<std::vector<uint8_t>> got;
+  uint8_t buf[2048];
+  ssize_t n;
+  while ((n = recv(listener, buf, sizeof buf, MSG_DONTWAIT)) >= 0) got.emplace_back(buf, buf + n);
+  close(listener);
+  ASSERT_EQ(got.size(), 3u);  // t = 0, 0.5, 1.0 s
+  for (const auto& p : got) {
+    ASSERT_EQ(p.size(), 62u);
+    EXPECT_EQ(p[4], 14);
+    EXPECT_EQ(le16(p, 18 + 6), 900);  // message budget
+  }
+  const auto c = r.gameControllerUdp()->returns();
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].team, 19);
+  EXPECT_EQ(c[0].alive, 2);
+}
+
+TEST(GameControlVersions, UnknownVersionRefusedWithFileLineAndField) {
+  const std::string e = simswift::testing::configError([] {
+    Scenario::parse("robots:\n  - {team: 19, player: 1}\ngame:\n  udp: on\n  version: 16\n", "g.yaml");
+  });
+  EXPECT_NE(e.find("g.yaml:5: game.version: simswift sends GameController packet versions 10 (2017-2018), 12 (2019)"),
+            std::string::npos)
+      << e;
+  const std::string alone = simswift::testing::configError([] {
+    Scenario::parse("robots:\n  - {team: 19, player: 1}\ngame:\n  version: 14\n", "g.yaml");
+  });
+  EXPECT_NE(alone.find("g.yaml:4: game.version: needs udp: on"), std::string::npos) << alone;
+}
