@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "sim/runner/Bodies.hpp"
 #include "agent/nao/NaoFacts.hpp"
 #include "agent/random/SplitMix64.hpp"
 #include "sim/vision/VisionConfig.hpp"
@@ -237,6 +238,14 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
         rob.config_yaml = flow(merged);
       }
       rob.launch = r.has("program") ? readLaunch(r) : def_launch;
+      if (const std::optional<YamlReader> l = r.optionalMap("lola")) {
+        l->finish();  // no keys: the socket is the trial's own
+        rob.v6 = true;
+      }
+      if (!setup.robots.empty() && setup.robots.front().v6 != rob.v6)
+        r.fail(rob.v6 ? "lola" : "team", "every robot of a setup ticks alike: its first robot is a " +
+                                              std::string(setup.robots.front().v6 ? "NAO V6 (lola, 12 ms)"
+                                                                                  : "NAO V5 (libagent, 10 ms)"));
       if (rob.behaviour == Behaviour::Script) {
         if (!r.has("actions"))
           r.missing("actions", "missing: a script robot needs an actions: list (as in a scenario)");
@@ -375,10 +384,15 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   runner::Scenario sc = e.base;
   sc.source = e.source + " (trial " + std::to_string(t.index) + ")";
   sc.seed = t.seed;
-  sc.duration = static_cast<double>(playTick(e)) * kTickSeconds + e.time_limit;
+  const Setup& s = e.setups[t.setup];
+  sc.tick_us = setupTickUs(s);
+  const double tick_s = static_cast<double>(sc.tick_us) * 1e-6;
+  sc.duration = static_cast<double>(playTick(e, sc.tick_us)) * tick_s + e.time_limit;
   const BallPosition& b = e.balls[t.ball];
   sc.ball = std::make_pair(b.x, b.y);
-  const Setup& s = e.setups[t.setup];
+  // A V6 setup gets the V6 body unless the file names a model.
+  const bool v6 = !s.robots.empty() && s.robots.front().v6;
+  if (v6 && sc.model_path == "models/nao_v5.urdf") sc.model_path = "models/nao_v6.urdf";
   for (const ExperimentRobot& r : s.robots) {
     runner::RobotSpec rs;
     if (r.behaviour == Behaviour::Script) rs = r.script;
@@ -391,6 +405,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
     rs.posture = agent::nao::Posture::Stand;
     rs.program = r.launch.launched() ? runner::RobotSpec::Program::External : runner::RobotSpec::Program::Builtin;
     rs.launch = r.launch;
+    if (r.v6) rs.body = bridge::BodyInterface::Lola;  // lola_socket empty: the process's own (Bodies.hpp)
     sc.robots.push_back(std::move(rs));
   }
   // findballexp's start (thesis §3.2.6, §5.1): every robot penalised at its
@@ -405,7 +420,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   g.first_half = e.base.game.first_half;
   g.initial_state = agent::libagent::GameStateValue::Initial;
   g.on_unpenalise = GameConfig::Return::Sideline;  // stays where it stands
-  const double play_s = static_cast<double>(playTick(e)) * kTickSeconds;
+  const double play_s = static_cast<double>(playTick(e, sc.tick_us)) * tick_s;
   g.timeline.push_back({play_s, agent::libagent::GameStateValue::Playing});
   const int n = static_cast<int>(s.robots.size());
   for (int i = 0; i < n; ++i) g.penalties.push_back({0.0, i, agent::libagent::Penalty::Manual, -1.0});
@@ -413,7 +428,14 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   return sc;
 }
 
-int64_t playTick(const Experiment& e) { return std::max<int64_t>(1, agent::nao::ticksIn(e.start.penalised)); }
+int64_t playTick(const Experiment& e, int64_t tick_us) {
+  return std::max<int64_t>(1, std::llround(e.start.penalised / (static_cast<double>(tick_us) * 1e-6)));
+}
+
+int64_t setupTickUs(const Setup& s) {
+  return runner::bodyCycleUs(!s.robots.empty() && s.robots.front().v6 ? bridge::BodyInterface::Lola
+                                                                     : bridge::BodyInterface::Libagent);
+}
 
 }  // namespace simswift::experiment
 

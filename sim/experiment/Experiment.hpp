@@ -95,6 +95,9 @@ struct ExperimentRobot {
   // starts fresh for every trial (sim/programs/ProgramProcess.hpp), given the
   // robot's setup in its {config} file.
   runner::LaunchSpec launch;
+  // lola: {}: a NAO V6 over LoLA at 12 ms (docs/lola.md), its socket private
+  // to the trial's process; every robot of a setup alike.
+  bool v6 = false;
   std::string where;         // "file:line: setups[0].robots[1]" for later errors
   std::string behaviour_where;  // same, of the behaviour key
 };
@@ -194,8 +197,11 @@ TrialSpec trialSpec(const Experiment& e, int index);
 runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t);
 
 // The tick at whose end the robots are unpenalised and PLAYING begins; the
-// trial's clock counts from it.
-int64_t playTick(const Experiment& e);
+// trial's clock counts from it. tick_us: the setup's robots' (10 ms on the
+// V5, 12 ms on the V6: setupTickUs).
+int64_t playTick(const Experiment& e, int64_t tick_us = agent::nao::kMotionTickUs);
+// The tick of a setup's robots, us (sim/runner/Bodies.hpp).
+int64_t setupTickUs(const Setup& s);
 
 // The side of the match a setup's team plays on: the first team number in
 // the setup blue, a second one red (the scenario's own default).

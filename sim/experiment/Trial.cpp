@@ -144,11 +144,12 @@ void playTrial(const Experiment& e, const TrialSpec& t, const runner::Scenario& 
   runner::Runner& run = *owned;
   World& w = run.world();
 
-  const int64_t play = playTick(e);  // PLAYING from the end of this tick: the trial's clock starts
-  const int64_t limit = play + agent::nao::ticksIn(e.time_limit);
-  const int64_t track_every = std::max<int64_t>(1, agent::nao::ticksIn(e.track_every));
-  const int64_t sideline_ticks = std::max<int64_t>(1, agent::nao::ticksIn(e.fallen.sideline_after));
-  auto clock = [&](int64_t tick) { return static_cast<double>(tick - play) * kTickSeconds; };  // s since PLAYING
+  // In the robots' ticks (10 ms on a V5, 12 ms on a V6).
+  const int64_t play = playTick(e, w.tickUs());  // PLAYING from the end of this tick: the trial's clock starts
+  const int64_t limit = play + w.ticksIn(e.time_limit);
+  const int64_t track_every = std::max<int64_t>(1, w.ticksIn(e.track_every));
+  const int64_t sideline_ticks = std::max<int64_t>(1, w.ticksIn(e.fallen.sideline_after));
+  auto clock = [&](int64_t tick) { return static_cast<double>(tick - play) * w.tickSeconds(); };  // s since PLAYING
   std::vector<int64_t> down_since(n, -1);  // tick the robot went down, -1 = up
   std::vector<runner::FallDetector> down(n);
   std::vector<Pose2> last(n);

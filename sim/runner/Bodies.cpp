@@ -1,5 +1,7 @@
 #include "sim/runner/Bodies.hpp"
 
+#include <unistd.h>
+
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/nao/NaoFacts.hpp"
 #include "agent/nao/Postures.hpp"
@@ -26,7 +28,11 @@ std::unique_ptr<bridge::BodySide> makeBody(const RobotSpec& spec, const BodyOpti
   const agent::libagent::JointValues initial = agent::nao::postureCommand(spec.posture);
   if (spec.body == bridge::BodyInterface::Lola) {
     lola::LolaBodyOptions lo;
-    lo.socket_path = spec.lola_socket;
+    // No socket named (an experiment's trial): one of this process's own,
+    // so parallel trials of the same robot never meet.
+    lo.socket_path = !spec.lola_socket.empty() ? spec.lola_socket
+                                               : "/tmp/simswift-lola/p" + std::to_string(::getpid()) + "-" +
+                                                     agent::libagent::robotTag(spec.team, spec.player);
     lo.images = options.images;
     lo.named = options.named;
     try {

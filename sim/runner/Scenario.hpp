@@ -120,7 +120,7 @@ struct RobotSpec : programs::ProgramPart {
   // The body interface (libagent: the NAO V5 at 10 ms; lola: the NAO V6 at
   // 12 ms, sim/lola/LolaBody.hpp) and, for lola, its socket.
   bridge::BodyInterface body = bridge::BodyInterface::Libagent;
-  std::string lola_socket;  // absolute path
+  std::string lola_socket;  // absolute path; empty: one of the process's own (an experiment's trial)
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
   agent::nao::Posture posture = agent::nao::Posture::Stand;
   // builtin: agent/'s program in this process; external: a program
