@@ -29,9 +29,11 @@ std::unique_ptr<bridge::BodySide> makeBody(const RobotSpec& spec, const BodyOpti
   if (spec.body == bridge::BodyInterface::Lola) {
     lola::LolaBodyOptions lo;
     // No socket named (an experiment's trial): one of this process's own,
-    // so parallel trials of the same robot never meet.
+    // so parallel trials of the same robot never meet; in /dev/shm, which a
+    // worker that launches programs makes its own (sim/experiment/
+    // PrivateShm.hpp), so nothing is left there after a kill -9.
     lo.socket_path = !spec.lola_socket.empty() ? spec.lola_socket
-                                               : "/tmp/simswift-lola/p" + std::to_string(::getpid()) + "-" +
+                                               : "/dev/shm/simswift-lola-p" + std::to_string(::getpid()) + "-" +
                                                      agent::libagent::robotTag(spec.team, spec.player);
     lo.images = options.images;
     lo.named = options.named;

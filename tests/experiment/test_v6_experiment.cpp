@@ -5,6 +5,7 @@
 // mixing V5 and V6 robots refused at the robot's line and key.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,6 +31,15 @@ const std::string kV6 =
     "  - name: v6\n    behaviour: findball2017\n    robots:\n"
     "      - {team: 19, player: 2, x: -3.25, y: 3.0, theta: -1.5708, lola: {}}\n"
     "      - {team: 19, player: 3, x: -2.0, y: -3.0, theta: 1.5708, lola: {}}\n";
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::string f;
+  std::istringstream in(line);
+  while (std::getline(in, f, ',')) out.push_back(f);
+  if (!line.empty() && line.back() == ',') out.push_back("");
+  return out;
+}
 
 }  // namespace
 
@@ -63,4 +73,50 @@ TEST(V6Experiment, ASetupMixingV5AndV6IsRefused) {
   const std::string e = simswift::testing::configError([&] { Experiment::parse(mixed, "mixed.yaml"); });
   EXPECT_NE(e.find("mixed.yaml:21: setups[1].robots[1].lola: every robot of a setup ticks alike"), std::string::npos)
       << e;
+}
+
+// Unchanged LoLA programs (the facts-only client, opening /tmp/robocup)
+// launched for every trial of a 2-worker experiment: each drives its own
+// robot, every trial completes, and no socket is left behind.
+TEST(V6Experiment, UnchangedProgramsInTwoWorkersEachDriveTheirOwnRobot) {
+  const std::string client = std::string(SIMSWIFT_BINARY_DIR) + "/lola-client";
+  const std::string file =
+      "name: v6clients\nseed: 7\ntime_limit: 2\ntrials_per_position: 2\nstart: {penalised: 0.5}\n"
+      "balls:\n  - {position: 1, x: 2.25, y: 0.0}\n"
+      "setups:\n  - name: clients\n    behaviour: script\n"
+      "    program: {command: [\"" + client + "\", \"-\", \"0\", hold]}\n"
+      "    robots:\n"
+      "      - {team: 19, player: 2, x: -3.0, y: 1.0, theta: 0, lola: {}, actions: []}\n"
+      "      - {team: 19, player: 3, x: -3.0, y: -1.0, theta: 0, lola: {}, actions: []}\n";
+  const Experiment e = Experiment::parse(file, "v6clients.yaml");
+  const std::string dir = exptest::freshDir("clients");
+  const simswift::experiment::BatchOutcome o = exptest::runInto(e, dir, 2);
+  ASSERT_TRUE(o.assembled) << o.message;
+  EXPECT_EQ(o.ran, 2);
+  EXPECT_EQ(o.failed, 0) << o.message;
+  // Every trial: not failed, and both robots stood on their held joints
+  // (no fall) for the 2.5 s.
+  const std::string csv = exptest::readAll(dir + "/results.csv");
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split(line);
+  int rows = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    const std::vector<std::string> f = split(line);
+    ASSERT_EQ(f.size(), header.size()) << line;
+    for (size_t i = 0; i < f.size(); ++i) {
+      if (header[i] == "failed") {
+        EXPECT_EQ(f[i], "") << line;
+      }
+      if (header[i] == "robot1_falls" || header[i] == "robot2_falls") {
+        EXPECT_EQ(f[i], "0") << header[i] << ": " << line;
+      }
+    }
+  }
+  EXPECT_EQ(rows, 2) << csv;
+  for (const auto& entry : std::filesystem::directory_iterator("/dev/shm"))
+    EXPECT_EQ(entry.path().filename().string().rfind("simswift-lola-p", 0), std::string::npos)
+        << "left behind: " << entry.path();
 }
