@@ -28,6 +28,7 @@
 
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Command.hpp"
+#include "sim/lola/LolaServer.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/programs/ProgramProcess.hpp"
@@ -133,6 +134,18 @@ int cleanMain(int argc, char** argv) {
     ++live;
   }
   std::printf("removed %zu robot(s) left by killed runs; %d in use\n", removed.size(), live);
+  // V6 robots' LoLA sockets (sim/runner/Bodies.hpp): a scenario's in
+  // /tmp/simswift-lola, an experiment trial's in /dev/shm.
+  if (!team) {
+    const std::vector<std::string> sockets =
+        simswift::lola::removeStaleSockets({"/tmp/simswift-lola"}, "t");
+    const std::vector<std::string> trials = simswift::lola::removeStaleSockets({"/dev/shm"}, "simswift-lola-p");
+    std::printf("removed %zu LoLA socket(s) left by killed runs\n", sockets.size() + trials.size());
+  } else {
+    const std::string tag = agent::libagent::robotTag(*team, *player);
+    const auto sockets = simswift::lola::removeStaleSockets({"/tmp/simswift-lola"}, tag);
+    std::printf("removed %zu LoLA socket(s) of %s left by killed runs\n", sockets.size(), tag.c_str());
+  }
   return 0;
 }
 

@@ -70,6 +70,10 @@ constexpr int64_t kMotionTickUs = 10000;                        // us (100 Hz)
 constexpr double kMotionTickSeconds = kMotionTickUs * 1e-6;     // s
 // Whole ticks in `seconds` s, rounded to the nearest (durations, time limits).
 inline int64_t ticksIn(double seconds) { return std::llround(seconds / kMotionTickSeconds); }
+// The same for a robot of another cycle (the V6's LoLA: 12 ms), us per tick.
+inline int64_t ticksIn(double seconds, int64_t tick_us) {
+  return std::llround(seconds / (static_cast<double>(tick_us) * 1e-6));
+}
 
 // ---------------------------------------------------------------- FSRs
 // Order as in libagent: FrontLeft, FrontRight, RearLeft, RearRight.

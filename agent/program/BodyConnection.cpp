@@ -38,8 +38,10 @@ class LolaBody final : public BodyConnection {
     motion_.writeActuators(joints);
   }
   libagent::AgentConnection& camera() override { return camera_; }
-  bool shutdown() const override { return motion_.closed() || camera_.shutdown(); }
-  bool simulatorAlive() const override { return !motion_.closed(); }
+  // The run's end is the extension object's flag (set before the socket
+  // closes); a killed simulator only closes the socket: its pid tells.
+  bool shutdown() const override { return camera_.shutdown(); }
+  bool simulatorAlive() const override { return camera_.simulatorAlive(); }
 
  private:
   lola::LolaConnection motion_;

@@ -55,7 +55,7 @@ class BodySide {
 
   // One tick: the robot's sensors as measured after this tick's physics, at
   // sim time t_us. True if the program was given the tick (false: it had
-  // not taken the last one, and this cycle counts as skipped).
+  // not taken the last one, or no program is connected yet).
   virtual bool publishSensors(const agent::libagent::SensorValues& values, int64_t sim_time_us, int64_t tick) = 0;
   // The program has answered the last tick.
   virtual bool answered() const = 0;

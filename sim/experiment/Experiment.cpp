@@ -193,14 +193,15 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
     }
     // The setup's program: the default of its robots. `external` (a program
     // started by hand) cannot be restarted for each trial: refused.
-    auto readLaunch = [&e](const YamlReader& m) {
+    // any_body: a setup's default program, whose placeholders its robots' bodies decide.
+    auto readLaunch = [&e](const YamlReader& m, bool any_body) {
       runner::RobotSpec tmp;
-      runner::readProgram(m, tmp, e.base.base_dir);
+      runner::readProgram(m, tmp, e.base.base_dir, any_body);
       if (tmp.program == runner::RobotSpec::Program::External && !tmp.launch.launched())
         m.fail("program", "an experiment starts every trial's programs itself: builtin or {command: [...]}");
       return tmp.launch;
     };
-    const runner::LaunchSpec def_launch = readLaunch(s);
+    const runner::LaunchSpec def_launch = readLaunch(s, true);
     std::set<std::pair<int, int>> players;
     for (const YamlReader& r : s.list("robots")) {
       ExperimentRobot rob;
@@ -237,7 +238,7 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
         for (const auto& kv : r.node()["config"]) merged[kv.first.Scalar()] = kv.second;
         rob.config_yaml = flow(merged);
       }
-      rob.launch = r.has("program") ? readLaunch(r) : def_launch;
+      rob.launch = r.has("program") ? readLaunch(r, false) : def_launch;
       if (const std::optional<YamlReader> l = r.optionalMap("lola")) {
         l->finish();  // no keys: the socket is the trial's own
         rob.v6 = true;
@@ -392,7 +393,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   sc.ball = std::make_pair(b.x, b.y);
   // A V6 setup gets the V6 body unless the file names a model.
   const bool v6 = !s.robots.empty() && s.robots.front().v6;
-  if (v6 && sc.model_path == "models/nao_v5.urdf") sc.model_path = "models/nao_v6.urdf";
+  if (v6 && !sc.model_named) sc.model_path = "models/nao_v6.urdf";
   for (const ExperimentRobot& r : s.robots) {
     runner::RobotSpec rs;
     if (r.behaviour == Behaviour::Script) rs = r.script;
@@ -429,7 +430,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
 }
 
 int64_t playTick(const Experiment& e, int64_t tick_us) {
-  return std::max<int64_t>(1, std::llround(e.start.penalised / (static_cast<double>(tick_us) * 1e-6)));
+  return std::max<int64_t>(1, agent::nao::ticksIn(e.start.penalised, tick_us));
 }
 
 int64_t setupTickUs(const Setup& s) {

@@ -92,7 +92,7 @@ std::string LolaBody::attachHint() const {
   return "start its LoLA program so that it connects to " + server_.path() + " (the reference program: " +
          "`simswift-agent --team " + std::to_string(objects_->team()) + " --player " +
          std::to_string(objects_->player()) + " --lola " + server_.path() +
-         "`; one that opens /tmp/robocup: `simswift attach --team T --player P -- PROGRAM`)";
+         "`; one that opens /tmp/robocup: `simswift attach --socket " + server_.path() + " -- PROGRAM`)";
 }
 
 // A launched program has a mount namespace of its own in which /tmp/robocup
@@ -122,10 +122,16 @@ bool LolaBody::waitAnswer(double timeout_s) {
   while (!answered_) {
     const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
     if (left.count() <= 0) return false;
+    // A new connection (a program restarted by hand while the old one
+    // hangs) replaces the old one: it gets this cycle's packet.
+    const int accepted = server_.clientsAccepted();
+    if (sent_ && server_.acceptPending() && server_.clientsAccepted() != accepted) sent_ = false;
     // Not yet sent (no client, or the last one dropped): send this cycle's
-    // packet to whoever connects. Sent: read on for its answer, never a new
-    // packet (LolaServer::exchange says why).
-    const Exchange e = sent_ ? server_.awaitAnswer(left) : server_.exchange(packet_, left);
+    // packet to whoever connects. Sent: read on for its answer (in slices,
+    // to notice a new connection), never a new packet (LolaServer::exchange
+    // says why).
+    const Exchange e = sent_ ? server_.awaitAnswer(std::min(left, std::chrono::milliseconds(50)))
+                             : server_.exchange(packet_, left);
     if (!sent_ && e.status != Exchange::Status::NoClient) sent_ = true;
     take(e);
   }

@@ -18,9 +18,11 @@
 // - A client that disconnects, sends bytes that are not LoLA's or stops
 //   reading is dropped (said once on stderr); the body keeps its last
 //   command and the tick waits for a client to connect again.
-// - Status: from the motor temperature model (ServoParams: the current
-//   limit falls from hot_start), 0 below kStatusHot, then 1, 2 from
-//   hot_start, 3 from hot_end (an assumption: LoLA's thresholds are not public).
+// - Status: from the motor temperature model's temperatures, 0 below
+//   status_hot (60 deg C), 1, then 2 from status_very_hot (70: where the
+//   servo model's current limit starts to fall, ServoParams::hot_start), 3
+//   from status_critical (90: hot_end). An assumption: LoLA's thresholds
+//   are not public (LolaBodyOptions).
 #pragma once
 
 #include <array>

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 
 #include <fcntl.h>
 #include <poll.h>
@@ -41,7 +42,33 @@ int msLeft(Clock::time_point deadline) {
   return left > 0 ? static_cast<int>(left) : 0;
 }
 
+// True if a server listens at `address` (a probe connection is accepted into its backlog).
+bool listening(const sockaddr_un& address) {
+  const int probe = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  const bool live = probe >= 0 && ::connect(probe, reinterpret_cast<const sockaddr*>(&address), sizeof(address)) == 0;
+  if (probe >= 0) ::close(probe);
+  return live;
+}
+
 }  // namespace
+
+std::vector<std::string> removeStaleSockets(const std::vector<std::string>& folders, const std::string& prefix) {
+  std::vector<std::string> removed;
+  for (const std::string& folder : folders) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+      const std::string path = entry.path().string();
+      if (entry.path().filename().string().rfind(prefix, 0) != 0) continue;
+      struct stat st{};
+      sockaddr_un address{};
+      if (lstat(path.c_str(), &st) != 0 || !S_ISSOCK(st.st_mode) || path.size() >= sizeof(address.sun_path)) continue;
+      address.sun_family = AF_UNIX;
+      std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+      if (!listening(address) && ::unlink(path.c_str()) == 0) removed.push_back(path);
+    }
+  }
+  return removed;
+}
 
 LolaServer::LolaServer(std::string socket_path, DecoderOptions decoder)
     : path_(std::move(socket_path)), decoder_(decoder) {
@@ -56,11 +83,7 @@ LolaServer::LolaServer(std::string socket_path, DecoderOptions decoder)
     if (!S_ISSOCK(st.st_mode)) throw ServerError("LoLA socket " + path_ + ": exists and is not a socket");
     // A socket someone still listens on is another live server's: refused,
     // never taken over. One nobody answers is a stale one of an earlier run.
-    const int probe = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    const bool live =
-        probe >= 0 && ::connect(probe, reinterpret_cast<const sockaddr*>(&address), sizeof(address)) == 0;
-    if (probe >= 0) ::close(probe);
-    if (live) throw ServerError("LoLA socket " + path_ + ": another server is listening there");
+    if (listening(address)) throw ServerError("LoLA socket " + path_ + ": another server is listening there");
     ::unlink(path_.c_str());
   }
   listener_ = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);

@@ -23,6 +23,7 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sim/lola/ActuatorDecoder.hpp"
 #include "sim/lola/SensorPacket.hpp"
@@ -50,6 +51,11 @@ struct Exchange {
   bool new_client = false;  // a client was accepted during this exchange
 };
 const char* toString(Exchange::Status status);
+
+// LoLA sockets a killed run left (nobody listens on them) among the entries
+// of `folders` whose names start with `prefix`: removed, their paths
+// returned; live ones are left (`simswift clean`).
+std::vector<std::string> removeStaleSockets(const std::vector<std::string>& folders, const std::string& prefix);
 
 class LolaServer {
  public:

@@ -48,7 +48,8 @@ int privateRobocup(const char* socket_path, const char* uid_map, const char* gid
   if (geteuid() != 0 || unshare(CLONE_NEWNS) != 0) {
     if (unshare(CLONE_NEWUSER | CLONE_NEWNS) != 0) return errno;
     writeProc("/proc/self/setgroups", "deny");
-    if (!writeProc("/proc/self/uid_map", uid_map) || !writeProc("/proc/self/gid_map", gid_map)) return errno;
+    if (!writeProc("/proc/self/uid_map", uid_map) || !writeProc("/proc/self/gid_map", gid_map))
+      return errno != 0 ? errno : EIO;  // a short write sets none
   }
   // Our mounts stay ours (not propagated back to the machine).
   if (mount("none", "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return errno;

@@ -301,7 +301,7 @@ void readPhysics(const YamlReader& top, Scenario& sc) {
   }
 }
 
-void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir) {
+void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir, bool any_body) {
   rs.program = RobotSpec::Program::Builtin;
   if (!robot.has("program") || !robot.node()["program"].IsMap()) {
     rs.program = robot.choice("program", "builtin", {"builtin", "external"}) == "external"
@@ -337,8 +337,9 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
   // the body's (BodySide::placeholders: a LoLA body's socket, libagent's names).
   std::map<std::string, std::string> names;
   for (const char* k : {"team", "player", "seed", "config"}) names[k] = "x";
-  if (robot.has("lola")) names["socket"] = "x";
-  else
+  const bool lola = robot.has("lola");
+  if (lola || any_body) names["socket"] = "x";
+  if (!lola || any_body)
     for (const char* k : {"number", "memory", "semaphore", "extension"}) names[k] = "x";
   try {
     for (const std::string& a : rs.launch.command) ProgramProcess::fill(a, names);
@@ -413,6 +414,7 @@ void readRun(const YamlReader& top, Scenario& sc) {
   sc.field_path = top.string("field", "fields/spl_2017.yaml");
   auto lineOf = [&](const char* key) { return root[key] ? root[key].Mark().line + 1 : 1; };
   sc.model_line = lineOf("model");
+  sc.model_named = top.has("model");
   sc.field_line = lineOf("field");
   // At least one tick, at most limits::kMaxTime (a run that would go on
   // for weeks is a typo).
@@ -540,9 +542,11 @@ void readLola(const YamlReader& r, RobotSpec& rs, RobotClaims& claims) {
   }
   if (!l) return;
   rs.lola_socket = l->string("socket", defaultLolaSocket(rs.team, rs.player, rs.bare_names));
-  if (rs.lola_socket.empty() || rs.lola_socket.size() > 107)
-    l->fail("socket", "a Unix socket path has 1..107 characters (got " + std::to_string(rs.lola_socket.size()) + ")");
+  if (rs.lola_socket.empty()) l->fail("socket", "must name a path");
   rs.lola_socket = std::filesystem::absolute(rs.lola_socket).lexically_normal().string();
+  if (rs.lola_socket.size() > 107)
+    l->fail("socket", "a Unix socket path has at most 107 characters (" + rs.lola_socket + " has " +
+                          std::to_string(rs.lola_socket.size()) + ")");
   l->finish();
   if (!claims.memories.insert(rs.lola_socket).second) r.fail("lola", "two robots would share " + rs.lola_socket);
 }
@@ -638,7 +642,7 @@ void readRobots(const YamlReader& top, Scenario& sc) {
   if (sc.robots.empty()) top.fail("robots", "a scenario needs at least one robot");
   sc.tick_us = bodyCycleUs(sc.robots.front().body);
   // A V6 world gets the V6 body unless the file names a model.
-  if (sc.robots.front().body == bridge::BodyInterface::Lola && !top.has("model")) sc.model_path = "models/nao_v6.urdf";
+  if (sc.robots.front().body == bridge::BodyInterface::Lola && !sc.model_named) sc.model_path = "models/nao_v6.urdf";
 }
 
 // Robots on top of one another (the field is not needed for this).

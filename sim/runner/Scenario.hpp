@@ -174,6 +174,7 @@ struct Scenario {
   std::string model_path;   // absolute, or relative to base_dir, then to the data folders
   std::string field_path;
   int model_line = 1, field_line = 1;  // where they were given (for errors)
+  bool model_named = false;             // the file has `model:` (else a V6 run takes the V6's)
   std::string base_dir;     // where relative paths resolve first (the scenario's folder)
   double duration = 10.0;   // s
   uint64_t seed = 1;
@@ -223,8 +224,11 @@ void readActions(const YamlReader& robot, RobotSpec& rs);
 
 // A robot entry's `program:` (builtin, external, or {command: [...], cwd,
 // env, stop_grace}) into rs.program and rs.launch; relative paths resolve
-// against base_dir (also the experiment files' robots).
-void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir);
+// against base_dir (also the experiment files' robots). Its placeholders are
+// checked against the robot's body (a `lola:` robot's or libagent's);
+// any_body: against either (an experiment setup's default program, whose
+// robots say which; a wrong one is refused when the trial launches it).
+void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir, bool any_body = false);
 
 // The scenario's settings blocks, one reader each (also the experiment
 // files' base settings and their sweeps, sim/experiment): `noise:` (on/off

@@ -144,7 +144,7 @@ class World {
   int64_t tickUs() const { return config_.tick_us; }    // us per tick (WorldConfig::tick_us)
   double tickSeconds() const { return config_.tick_us * 1e-6; }
   // Ticks in `seconds` of simulated time (rounded to the nearest).
-  int64_t ticksIn(double seconds) const { return std::llround(seconds / tickSeconds()); }
+  int64_t ticksIn(double seconds) const { return agent::nao::ticksIn(seconds, config_.tick_us); }
 
   const std::vector<LinkContact>& contacts() const { return contacts_; }
   std::vector<WorldEvent> takeEvents();

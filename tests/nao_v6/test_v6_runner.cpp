@@ -13,7 +13,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -464,4 +466,69 @@ TEST(V6Builtin, BuiltinLaunchedAndHandStartedGiveTheSameHash) {
   }
   EXPECT_EQ(hashes[0], hashes[1]) << "builtin and launched";
   EXPECT_EQ(hashes[0], hashes[2]) << "builtin and started by hand";
+}
+
+// kill -9 of a run with two launched unchanged LoLA programs: the programs
+// go with it (their mount namespaces with them), and `simswift clean`
+// removes what a killed process cannot (its robots' sockets and
+// extension objects); nothing else is left.
+TEST(V6Run, KillNineLeavesNothingCleanDoesNotRemove) {
+  const std::string dir = "/tmp/simswift-test-v6-kill-" + std::to_string(::getpid());
+  const std::string marker = "v6-kill-test-" + std::to_string(::getpid());
+  ASSERT_EQ(std::system(("mkdir -p " + dir).c_str()), 0);
+  {
+    std::ofstream y(dir + "/pair.yaml");
+    y << "duration: 600\nwatchdog: 20\nprogram_logs: " << dir << "/logs\nrobots:\n";
+    for (int p = 1; p <= 2; ++p)
+      y << "  - {team: 88, player: " << p << ", x: -1.0, y: " << (p == 1 ? 1.0 : -1.0) << ", lola: {}, "
+        << "program: {command: [\"" << kClient << "\", \"-\", \"0\", hold, \"" << marker << "\"]}}\n";
+  }
+  const std::string simswift = std::string(SIMSWIFT_BINARY_DIR) + "/simswift";
+  const pid_t sim = ::fork();
+  if (sim == 0) {
+    const int fd = ::open((dir + "/run.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
+    ::execl(simswift.c_str(), simswift.c_str(), "run", (dir + "/pair.yaml").c_str(), "--quiet", nullptr);
+    ::_exit(127);
+  }
+  // Both programs are driving their robots.
+  auto packets = [&](int player) {  // the last packet number a program printed, -1 if none
+    const std::vector<std::string> l = lastLines(dir + "/logs/t88p" + std::to_string(player) + ".log", 1);
+    return l.empty() ? -1 : std::stoi(l[0].substr(7));
+  };
+  bool going = false;
+  for (int i = 0; i < 2000 && !going; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    going = packets(1) > 20 && packets(2) > 20;
+  }
+  ASSERT_TRUE(going) << lastLine(dir + "/run.log");
+  ::kill(sim, SIGKILL);
+  int status = 0;
+  ASSERT_EQ(::waitpid(sim, &status, 0), sim);
+  // The programs end with it (PR_SET_PDEATHSIG), within 2 s.
+  auto programs = [&] {
+    int n = 0;
+    for (const auto& e : std::filesystem::directory_iterator("/proc")) {
+      std::ifstream in(e.path() / "cmdline");
+      std::string cmd((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      if (cmd.find(marker) != std::string::npos) ++n;
+    }
+    return n;
+  };
+  for (int i = 0; i < 200 && programs() > 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(programs(), 0);
+  // Left: the robots' sockets (stale) and named objects, as a killed V5 run leaves its objects.
+  EXPECT_EQ(::access("/tmp/simswift-lola/t88p1", F_OK), 0);
+  FILE* p = ::popen((simswift + " clean --team 88 --player 1 2>&1; " + simswift + " clean --team 88 --player 2 2>&1")
+                        .c_str(),
+                    "r");
+  std::string out;
+  char buf[256];
+  while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+  if (p) ::pclose(p);
+  EXPECT_NE(out.find("removed 1 LoLA socket(s) of t88p1"), std::string::npos) << out;
+  EXPECT_NE(out.find("removed 1 LoLA socket(s) of t88p2"), std::string::npos) << out;
+  EXPECT_NE(::access("/tmp/simswift-lola/t88p1", F_OK), 0);
+  EXPECT_NE(::access("/tmp/simswift-lola/t88p2", F_OK), 0);
+  std::system(("rm -rf " + dir).c_str());
 }
