@@ -4,10 +4,9 @@
 // 896-byte sensor packet per 12 ms cycle, answer it with an actuator map
 // (Position and Stiffness). The sensors are handed up in the V5's slot
 // layout, units and signs (agent/libagent/AgentShared.hpp, Inertial.hpp), so
-// the robot code above reads one representation whatever the body: Motion
-// takes its tick from the clock; only the effector's per-tick speed clip
-// (agent/motion/JointLimits.hpp) still assumes 10 ms, which holds a V6's
-// joints to 10/12 of their top speed.
+// the robot code above reads one representation whatever the body: nothing
+// in Motion changes between a V5 and a V6 (it takes its tick, 12 ms here,
+// from the clock).
 #pragma once
 
 #include <array>

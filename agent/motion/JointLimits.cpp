@@ -5,7 +5,7 @@
 
 namespace agent::motion {
 
-void Clipper::clip(libagent::JointValues& cmd, const libagent::JointValues& sensed) {
+void Clipper::clip(libagent::JointValues& cmd, const libagent::JointValues& sensed, double tick_s) {
   const auto& lim = jointLimits();
   for (int i = 0; i < libagent::kNumJoints; ++i) {
     // 1e-5 rad inside the limits: a float at the limit may round past the
@@ -22,7 +22,7 @@ void Clipper::clip(libagent::JointValues& cmd, const libagent::JointValues& sens
       last_[i] = std::min(hi, std::max(lo, s));
     }
     // A hair under the limit so float rounding never exceeds it.
-    const float step = static_cast<float>(lim[i].max_velocity * kMotionTick) * 0.9999f;
+    const float step = static_cast<float>(lim[i].max_velocity * tick_s) * 0.9999f;
     a = std::min(last_[i] + step, std::max(last_[i] - step, a));
     a = std::min(hi, std::max(lo, a));
     cmd.angles[i] = a;

@@ -14,7 +14,7 @@ namespace agent::motion {
 using JointLimit = nao::JointLimit;
 using nao::jointLimits;  // indexed by libagent::Joints::JointCode
 
-// The Motion thread's tick (s): commands move at most max_velocity * tick.
+// The NAO V5's Motion tick (s), the default where no clock says otherwise.
 constexpr double kMotionTick = nao::kMotionTickSeconds;  // s
 
 // Clips commanded angles to the joint limits and to the per-tick speed
@@ -22,8 +22,10 @@ constexpr double kMotionTick = nao::kMotionTickSeconds;  // s
 // reset) starts from `sensed` angles, so the first command cannot jump.
 class Clipper {
  public:
-  // Clips `cmd` in place. `sensed` = the measured angles this tick.
-  void clip(libagent::JointValues& cmd, const libagent::JointValues& sensed);
+  // Clips `cmd` in place. `sensed` = the measured angles this tick; commands
+  // move at most max_velocity * tick_s (the body's tick: 10 ms on a V5,
+  // 12 ms on a V6).
+  void clip(libagent::JointValues& cmd, const libagent::JointValues& sensed, double tick_s = kMotionTick);
   void reset() { primed_ = false; }
 
  private:

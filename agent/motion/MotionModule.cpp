@@ -233,7 +233,9 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
   if (mode_ == Mode::Falling || mode_ == Mode::Fallen || mode_ == Mode::Dead || mode_ == Mode::Limp) {
     clipper_.reset();
   }
-  clipper_.clip(out, sensors.joints);
+  // The tick in whole us, as the body gives it (10000 on a V5: the same
+  // double as kMotionTick, 12000 on a V6).
+  clipper_.clip(out, sensors.joints, static_cast<double>(std::llround(dt * 1e6)) * 1e-6);
   last_cmd_ = out;
 
   // Odometry from the steps the walk executed this tick.

@@ -49,10 +49,14 @@ std::string socketPath(const std::string& name) {
   return "/tmp/simswift-test-v6-" + std::to_string(::getpid()) + "-" + name;
 }
 
-Scenario v6Scenario(const std::string& socket, const std::string& program, double duration) {
+// Robots whose program is in another process have named objects (their
+// extension object), which two tests running at once must not share: each
+// test has its own team number.
+Scenario v6Scenario(const std::string& socket, const std::string& program, double duration, int team = 19) {
   std::ostringstream y;
   y << "duration: " << duration << "\nseed: 5\nattach_timeout: 20\nrobots:\n"
-    << "  - {team: 19, player: 1, x: -1.0, y: 0.5, lola: {socket: " << socket << "}, program: " << program << "}\n";
+    << "  - {team: " << team << ", player: 1, x: -1.0, y: 0.5, lola: {socket: " << socket << "}, program: " << program
+    << "}\n";
   Scenario sc = Scenario::parse(y.str(), std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/v6_test.yaml");
   return sc;
 }
@@ -219,7 +223,7 @@ TEST(V6Packet, SlotsTranslateWithLolasOrdersAndSigns) {
 // model's mass.
 TEST(V6Run, LaunchedClientHoldsTheRobotInLockStep) {
   const std::string socket = socketPath("launched");
-  Scenario sc = v6Scenario(socket, "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 2.0);
+  Scenario sc = v6Scenario(socket, "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 2.0, 61);
   sc.program_logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid());
   auto runner = std::make_unique<Runner>(sc);
   Runner& r = *runner;
@@ -236,7 +240,7 @@ TEST(V6Run, LaunchedClientHoldsTheRobotInLockStep) {
   // 2 %, and upright the accelerometer reads -9.81 m/s^2 on z (LoLA's sign)
   // within 0.1, averaged (per packet they carry the sensor noise and the
   // stance's small vibration: about 0.16 kg and 0.45 m/s^2 sd, seed 5).
-  const std::vector<std::string> lines = lastLines(sc.program_logs + "/t19p1.log", 50);
+  const std::vector<std::string> lines = lastLines(sc.program_logs + "/t61p1.log", 50);
   ASSERT_EQ(lines.size(), 50u);
   double fsr = 0, acc = 0;
   for (const std::string& l : lines) {
@@ -260,8 +264,8 @@ TEST(V6Run, HandStartedAndAttachedEqualLaunched) {
     SCOPED_TRACE(k);
     const std::string socket = socketPath("same" + std::to_string(k));
     const std::string logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid());
-    Scenario sc = k == 0 ? v6Scenario(socket, "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 1.0)
-                         : v6Scenario(socket, "external", 1.0);
+    Scenario sc = k == 0 ? v6Scenario(socket, "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 1.0, 62)
+                         : v6Scenario(socket, "external", 1.0, 62);
     sc.program_logs = logs;
     Runner r(sc);
     r.start();  // the socket exists from here
@@ -293,7 +297,7 @@ TEST(V6Run, HandStartedAndAttachedEqualLaunched) {
 TEST(V6Run, DisconnectGarbageAndReconnect) {
   const std::string socket = socketPath("reconnect");
   const std::string logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid());
-  Scenario sc = v6Scenario(socket, "external", 0.6);  // 50 ticks
+  Scenario sc = v6Scenario(socket, "external", 0.6, 63);  // 50 ticks
   sc.program_logs = logs;
   Runner r(sc);
   std::thread clients([&] {
@@ -320,7 +324,12 @@ TEST(V6Run, DisconnectGarbageAndReconnect) {
     ::close(fd);
     EXPECT_EQ(exitCode(spawnClient(socket, 0, "hold", logs + "/second.log")), 0);
   });
-  const simswift::runner::RunStats s = r.run(quiet());
+  simswift::runner::RunStats s;
+  try {
+    s = r.run(quiet());
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << e.what();
+  }
   clients.join();
   EXPECT_EQ(s.ticks, 50);
   EXPECT_EQ(dynamic_cast<LolaBody&>(r.body(0)).answers(), 50);
@@ -335,7 +344,7 @@ TEST(V6Run, TwoUnchangedProgramsEachOpenTheirOwnRobocup) {
   std::ostringstream y;
   y << "duration: 0.6\nseed: 3\nattach_timeout: 20\nprogram_logs: " << logs << "/pair\nrobots:\n";
   for (int p = 1; p <= 2; ++p)
-    y << "  - {team: 19, player: " << p << ", x: -1.0, y: " << (p == 1 ? 1.0 : -1.0) << ", lola: {socket: "
+    y << "  - {team: 64, player: " << p << ", x: -1.0, y: " << (p == 1 ? 1.0 : -1.0) << ", lola: {socket: "
       << socketPath("pair" + std::to_string(p)) << "}, program: {command: [\"" << kClient
       << "\", \"-\", \"0\", hold]}}\n";
   Runner r(Scenario::parse(y.str(), "pair.yaml"));
@@ -345,7 +354,7 @@ TEST(V6Run, TwoUnchangedProgramsEachOpenTheirOwnRobocup) {
     auto& body = dynamic_cast<LolaBody&>(r.body(i));
     EXPECT_EQ(body.answers(), 50) << "robot " << i;
     EXPECT_EQ(body.server().clientsAccepted(), 1) << "robot " << i;
-    const std::string line = lastLine(logs + "/pair/t19p" + std::to_string(i + 1) + ".log");
+    const std::string line = lastLine(logs + "/pair/t64p" + std::to_string(i + 1) + ".log");
     EXPECT_EQ(line.rfind("packet 49 ", 0), 0u) << line;
   }
   // The machine's /tmp/robocup is only the mount point: a socket nobody
@@ -367,7 +376,7 @@ TEST(V6Run, TwoUnchangedProgramsEachOpenTheirOwnRobocup) {
 // command and counts as skipped.
 TEST(V6Run, RealtimeSendsEveryCycleAndWaitsForNobody) {
   const std::string socket = socketPath("realtime");
-  Scenario sc = v6Scenario(socket, "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 0.6);
+  Scenario sc = v6Scenario(socket, "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 0.6, 65);
   sc.program_logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid()) + "/realtime";
   Runner r(sc);
   simswift::runner::RunOptions o = quiet();
@@ -379,7 +388,7 @@ TEST(V6Run, RealtimeSendsEveryCycleAndWaitsForNobody) {
   EXPECT_EQ(body.answers() + body.skippedCycles(), 50) << "every cycle answered or skipped";
   EXPECT_GE(body.answers(), 25) << "most answers arrive within their 12 ms cycle";
   // The client saw a packet every cycle after it connected.
-  const std::string line = lastLine(sc.program_logs + "/t19p1.log");
+  const std::string line = lastLine(sc.program_logs + "/t65p1.log");
   ASSERT_EQ(line.rfind("packet ", 0), 0u) << line;
   EXPECT_GE(std::stoi(line.substr(7)), 25) << line;
 }
@@ -388,10 +397,10 @@ TEST(V6Run, RealtimeSendsEveryCycleAndWaitsForNobody) {
 
 namespace {
 
-Scenario builtinV6(const std::string& socket, const std::string& extra, double duration) {
+Scenario builtinV6(const std::string& socket, const std::string& extra, double duration, int team = 19) {
   std::ostringstream y;
   y << "duration: " << duration << "\nseed: 11\nrobots:\n"
-    << "  - {team: 19, player: 1, x: -2.0, y: 0.0, lola: {socket: " << socket << "}" << extra << "}\n";
+    << "  - {team: " << team << ", player: 1, x: -2.0, y: 0.0, lola: {socket: " << socket << "}" << extra << "}\n";
   return Scenario::parse(y.str(), "v6_builtin.yaml");
 }
 
@@ -445,7 +454,7 @@ TEST(V6Builtin, BuiltinLaunchedAndHandStartedGiveTheSameHash) {
         k == 0 ? "" : k == 1 ? ", program: {command: [\"" + agent + "\", --config, \"{config}\", --lola]}"
                              : ", program: external";
     // By hand: the actions are in its config file (an external robot's scenario entry takes none).
-    Scenario sc = builtinV6(socket, (k == 2 ? "" : actions) + program, 2.0);
+    Scenario sc = builtinV6(socket, (k == 2 ? "" : actions) + program, 2.0, 66);
     sc.program_logs = logs;
     Runner r(sc);
     r.start();
@@ -455,7 +464,7 @@ TEST(V6Builtin, BuiltinLaunchedAndHandStartedGiveTheSameHash) {
       if (pid == 0) {
         const int fd = ::open((logs + "/hand.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
-        const std::string config = logs + "/t19p1.robot.yaml";
+        const std::string config = logs + "/t66p1.robot.yaml";
         ::execl(agent.c_str(), agent.c_str(), "--config", config.c_str(), "--lola", socket.c_str(), nullptr);
         ::_exit(127);
       }
