@@ -67,7 +67,7 @@ const char* kUsage =
     "  --model URDF           robot model (overrides the scenario's model:)\n"
     "  --field YAML           field (overrides the scenario's field:)\n"
     "  --attach-timeout S     wall-clock seconds to wait for external robots (default 30)\n"
-    "  --print-hash-every N   print the state hash every N ticks (10 ms each)\n"
+    "  --print-hash-every N   print the state hash every N ticks (10 ms each; 12 ms on a V6)\n"
     "  --quiet                no progress lines\n"
     "  --dump-frames DIR      render both cameras of every robot at 30 Hz and write\n"
     "                         DIR/t<team>p<player>_<top|bottom>_<frame>.png\n"
