@@ -1,7 +1,8 @@
 #include "sim/experiment/PrivateShm.hpp"
 
+#include "sim/programs/MountNamespace.hpp"
+
 #include <fcntl.h>
-#include <sched.h>
 #include <sys/mount.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,33 +12,10 @@
 
 namespace simswift::experiment {
 
-namespace {
-
-bool writeFile(const char* path, const std::string& text) {
-  const int fd = open(path, O_WRONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool ok = write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
-  close(fd);
-  return ok;
-}
-
-}  // namespace
-
 std::string enterPrivateShm() {
-  const uid_t uid = geteuid();
-  const gid_t gid = getegid();
-  if (uid != 0 || unshare(CLONE_NEWNS) != 0) {
-    // Not root (or not allowed): a user namespace first, mapping us to ourselves.
-    if (unshare(CLONE_NEWUSER | CLONE_NEWNS) != 0)
-      return std::string("unshare(user + mount namespace): ") + std::strerror(errno);
-    writeFile("/proc/self/setgroups", "deny");
-    if (!writeFile("/proc/self/uid_map", std::to_string(uid) + " " + std::to_string(uid) + " 1\n") ||
-        !writeFile("/proc/self/gid_map", std::to_string(gid) + " " + std::to_string(gid) + " 1\n"))
-      return std::string("uid_map/gid_map: ") + std::strerror(errno);
-  }
-  // Our mounts stay ours (not propagated back to the machine).
-  if (mount("none", "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0)
-    return std::string("mount --make-rprivate /: ") + std::strerror(errno);
+  const char* step = "";
+  if (const int e = programs::enterOwnMountNamespace(programs::selfIdMaps(), &step))
+    return std::string(step) + ": " + std::strerror(e);
   if (mount("simswift-trial", "/dev/shm", "tmpfs", MS_NOSUID | MS_NODEV, "mode=1777") != 0)
     return std::string("mount tmpfs on /dev/shm: ") + std::strerror(errno);
   return "";

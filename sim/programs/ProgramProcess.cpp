@@ -1,8 +1,9 @@
 #include "sim/programs/ProgramProcess.hpp"
 
+#include "sim/programs/MountNamespace.hpp"
+
 #include <fcntl.h>
 #include <signal.h>
-#include <sched.h>
 #include <sys/mount.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
@@ -27,32 +28,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Writes `text` to a /proc file (the forked child: syscalls only). False on failure.
-bool writeProc(const char* path, const char* text) {
-  const int fd = open(path, O_WRONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool ok = write(fd, text, std::strlen(text)) == static_cast<ssize_t>(std::strlen(text));
-  close(fd);
-  return ok;
-}
-
-// A user namespace's uid_map / gid_map line mapping `id` to itself.
-std::string selfMap(unsigned id) { return std::to_string(id) + " " + std::to_string(id) + " 1\n"; }
-
 // In the forked child of a LoLA robot's program: a mount namespace of its own
-// (with a user namespace mapping it to itself when it is not root, as
-// sim/experiment/PrivateShm does) in which the robot's socket is bound onto
-// /tmp/robocup (the mount point: robocupMountPoint, below). Syscalls only: 0, or the
-// errno of the step that failed.
-int privateRobocup(const char* socket_path, const char* uid_map, const char* gid_map) {
-  if (geteuid() != 0 || unshare(CLONE_NEWNS) != 0) {
-    if (unshare(CLONE_NEWUSER | CLONE_NEWNS) != 0) return errno;
-    writeProc("/proc/self/setgroups", "deny");
-    if (!writeProc("/proc/self/uid_map", uid_map) || !writeProc("/proc/self/gid_map", gid_map))
-      return errno != 0 ? errno : EIO;  // a short write sets none
-  }
-  // Our mounts stay ours (not propagated back to the machine).
-  if (mount("none", "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return errno;
+// (MountNamespace.hpp) in which the robot's socket is bound onto
+// /tmp/robocup (the mount point: robocupMountPoint, below). Syscalls only:
+// 0, or the errno of the step that failed.
+int privateRobocup(const char* socket_path, const IdMaps& maps) {
+  if (const int e = enterOwnMountNamespace(maps)) return e;
   if (mount(socket_path, "/tmp/robocup", nullptr, MS_BIND, nullptr) != 0) return errno;
   return 0;
 }
@@ -149,7 +130,7 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
   }
   for (std::string& s : env_strings) envp.push_back(s.data());
   envp.push_back(nullptr);
-  const std::string uid_map = selfMap(geteuid()), gid_map = selfMap(getegid());
+  const IdMaps maps = selfIdMaps();
   if (!robocup_socket.empty()) {
     if (const int e = robocupMountPoint()) {
       close(log), close(report[0]), close(report[1]);
@@ -176,7 +157,7 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
     if (devnull >= 0) dup2(devnull, STDIN_FILENO);
     int err = 0;
     // Negative: the namespace failed (the parent says so).
-    if (!robocup_socket.empty()) err = -privateRobocup(robocup_socket.c_str(), uid_map.c_str(), gid_map.c_str());
+    if (!robocup_socket.empty()) err = -privateRobocup(robocup_socket.c_str(), maps);
     if (err == 0 && !cwd.empty() && chdir(cwd.c_str()) != 0) err = errno;
     if (err == 0) {
       execvpe(args[0], args.data(), envp.data());
@@ -210,8 +191,7 @@ ProgramProcess::~ProgramProcess() { stop(); }
 std::string ProgramProcess::enterPrivateRobocup(const std::string& socket_path) {
   if (access(socket_path.c_str(), F_OK) != 0) return "its LoLA socket " + socket_path + ": " + std::strerror(errno);
   if (const int e = robocupMountPoint()) return std::string("/tmp/robocup: ") + std::strerror(e);
-  const std::string uid_map = selfMap(geteuid()), gid_map = selfMap(getegid());
-  const int err = privateRobocup(socket_path.c_str(), uid_map.c_str(), gid_map.c_str());
+  const int err = privateRobocup(socket_path.c_str(), selfIdMaps());
   if (err != 0) return std::string("its own /tmp/robocup (mount namespace): ") + std::strerror(err);
   return "";
 }

@@ -1,0 +1,24 @@
+// A mount namespace of the calling process's own: an experiment worker's
+// private /dev/shm (sim/experiment/PrivateShm) and a launched LoLA program's
+// /tmp/robocup (ProgramProcess) start here. When the caller is not root (or
+// root may not unshare), a user namespace mapping it to itself comes first.
+// Syscalls only, so a forked child may call it between fork and exec; the
+// id maps are written out before the fork.
+#pragma once
+
+namespace simswift::programs {
+
+// "<id> <id> 1\n" for /proc/self/uid_map and gid_map: the caller's ids.
+struct IdMaps {
+  char uid[32];
+  char gid[32];
+};
+IdMaps selfIdMaps();
+
+// Enters the namespace and makes every mount in it private (not propagated
+// back to the machine). 0, or the errno of the step that failed; `step`
+// (if given) names it: "unshare(user + mount namespace)", "uid_map/gid_map"
+// or "mount --make-rprivate /".
+int enterOwnMountNamespace(const IdMaps& maps, const char** step = nullptr);
+
+}  // namespace simswift::programs
