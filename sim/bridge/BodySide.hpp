@@ -70,11 +70,11 @@ class BodySide {
   // link, camera frames); every body has one, a program may not read it.
   virtual agent::libagent::SimExtension* extension() = 0;
   // The camera images block (null unless rendered for this robot's program).
-  virtual agent::libagent::CameraImages* images() { return nullptr; }
+  virtual agent::libagent::CameraImages* images() = 0;
   // 30 Hz camera hand-over: the program has a Perception thread.
-  virtual bool hasPerception() const { return false; }
-  virtual void publishFrame(const agent::libagent::CameraFrame& /*frame*/) {}
-  virtual bool waitPerceptionDone(double /*timeout_s*/) { return true; }
+  virtual bool hasPerception() const = 0;
+  virtual void publishFrame(const agent::libagent::CameraFrame& frame) = 0;
+  virtual bool waitPerceptionDone(double timeout_s) = 0;
 
   // The run ends: the program is told (where the interface can tell it).
   virtual void shutdown() = 0;

@@ -1,8 +1,8 @@
-// simswift's extension object (agent/libagent/SimExtension.hpp) as a body
-// side serves it, whatever the robot interface: libagent's BodyHost keeps it
-// beside the block (in this process or in named shared memory), LoLA's
-// LolaBody in this process for a builtin program. It carries the 30 Hz
-// camera hand-over, the game state and the team link.
+// simswift's extension object (agent/libagent/SimExtension.hpp) as the body
+// side serves it: BodyHost keeps it beside the block, in this process or in
+// named shared memory (also for a V6 robot: sim/lola/LolaBody keeps a
+// BodyHost for it). It carries the 30 Hz camera hand-over, the game state
+// and the team link; set up and handed over here, apart from the block.
 #pragma once
 
 #include <cstdint>

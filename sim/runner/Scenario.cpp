@@ -490,7 +490,7 @@ void readBall(const YamlReader& top, Scenario& sc) {
 // What the robots read so far have taken: libagent names and team colours.
 struct RobotClaims {
   std::set<int> numbers;                          // libagent name numbers in use
-  std::set<std::string> memories;                 // libagent memory names in use (releases name differently)
+  std::set<std::string> memories;                 // libagent memory names and LoLA sockets in use
   std::vector<std::pair<int, TeamColour>> teams;  // team number -> colour, in order of appearance
   int bare = 0;                                   // robots with the bare names
   std::optional<bridge::BodyInterface> body;      // the first robot's body interface
