@@ -1,5 +1,5 @@
 // Shared by the benchmark programs: print a figure and append it to the
-// results file named in the README ("name value unit" per line).
+// results file named in docs/benchmarks.md ("name value unit" per line).
 #pragma once
 
 #include <cstdio>

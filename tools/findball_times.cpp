@@ -1,4 +1,4 @@
-// Prints the README's kinematic find-ball table: time to find a ball at
+// Prints docs/behaviour.md's kinematic find-ball table: time to find a ball at
 // table 5.2's positions 1-5 (s) from table 5.1's starts, mean [min, max]
 // over start-pose seeds 1..5; 400 = not found within 400 s. A table
 // printer, not a test (it asserts nothing); the closed-loop logic tests
@@ -13,7 +13,7 @@ using namespace agent::behaviour;
 using namespace agent::behaviour::table51;
 
 int main() {
-  // Kinematic times (s) for the README: mean [min, max] over start-pose
+  // Kinematic times (s) for docs/behaviour.md: mean [min, max] over start-pose
   // seeds 1..5; 400 = not found within 400 s.
   for (int robots : {1, 3})
     for (auto kind : {BehaviourKind::FINDBALL_2016, BehaviourKind::FINDBALL_2017}) {

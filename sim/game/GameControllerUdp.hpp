@@ -11,8 +11,8 @@
 // is received is counted, never acted on (a robot's manual penalise
 // message does not penalise it here), so the simulation's own state does
 // not depend on the network. A program that takes its game state from
-// these packets reads them on its own thread, not in lock-step: see the
-// README's GameController section.
+// these packets reads them on its own thread, not in lock-step: see
+// docs/game.md, "The GameController on UDP".
 #pragma once
 
 #include <cstdint>

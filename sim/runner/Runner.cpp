@@ -276,8 +276,9 @@ void Runner::attachPrograms() {
 }
 
 // The watchdog ends a run only when it is on and no debugger is attached: a
-// thread stopped at a breakpoint keeps the run waiting (README "Debugging in
-// gdb"). Off (watchdog: off / --watchdog off), the runner waits in 1 s slices.
+// thread stopped at a breakpoint keeps the run waiting (docs/runner.md,
+// "Debugging in gdb"). Off (watchdog: off / --watchdog off), the runner waits
+// in 1 s slices.
 double Runner::watchdogWait() const { return scenario_.watchdog_s > 0 ? scenario_.watchdog_s : 1.0; }
 bool Runner::watchdogArmed() const { return scenario_.watchdog_s > 0 && !tracerAttached(); }
 

@@ -91,9 +91,9 @@ TEST(Cli, GoodScenarioRunsAndExitsZero) {
   EXPECT_EQ(r.code, 0) << r.err;
 }
 
-// README "Debugging in gdb": a robot thread held 3 s at a breakpoint with a
-// 1 s watchdog; the run still ends normally with the hash of a run without
-// gdb (the runner waits for every thread each tick).
+// docs/runner.md, "Debugging in gdb": a robot thread held 3 s at a
+// breakpoint with a 1 s watchdog; the run still ends normally with the hash
+// of a run without gdb (the runner waits for every thread each tick).
 TEST(Cli, BreakpointInGdbDoesNotTripTheWatchdog) {
   if (std::system("command -v gdb >/dev/null 2>&1") != 0) GTEST_SKIP() << "gdb not installed";
   const std::string scenario = std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/walk_one.yaml";
