@@ -3,6 +3,7 @@
 //
 //   simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]
 //   simswift experiment merge DIR... --out DIR      (sim/experiment/Command.cpp)
+//   simswift test FILE.yaml [--short] [--baseline DIR] [--junit FILE]   (sim/scenario_tests/TestCommand.cpp)
 //   simswift clean [--team T --player P]
 //   simswift attach (--team T --player P | --socket PATH) -- COMMAND...
 //   simswift run SCENARIO.yaml [--realtime] [--duration S] [--seed N]
@@ -28,6 +29,7 @@
 
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Command.hpp"
+#include "sim/scenario_tests/TestCommand.hpp"
 #include "sim/lola/LolaServer.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
@@ -41,6 +43,7 @@ const char* kUsage =
     "usage: simswift run SCENARIO.yaml [options]\n"
     "       simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]   (see experiment --help)\n"
     "       simswift experiment merge DIR... --out DIR\n"
+    "       simswift test FILE.yaml [--short] [--baseline DIR] [--junit FILE] [--jobs N]   (see test --help)\n"
     "       simswift clean [--team T --player P]   remove objects a killed run left in /dev/shm\n"
     "       simswift attach (--team T --player P | --socket PATH) -- COMMAND...\n"
     "                      run an unchanged V6 (LoLA) program by hand: its /tmp/robocup is that\n"
@@ -195,6 +198,7 @@ int main(int argc, char** argv) {
   }
   if (cmd == "experiment")  // the behaviours of agent/behaviour in the trials
     return simswift::experiment::experimentMain(argc - 1, argv + 1, simswift::experiment::behaviourHooks());
+  if (cmd == "test") return simswift::scenario_tests::testMain(argc - 1, argv + 1);
   if (cmd == "clean") return cleanMain(argc, argv);
   if (cmd == "attach") return attachMain(argc, argv);
   if (cmd != "run") usageError("unknown command '" + cmd + "'");

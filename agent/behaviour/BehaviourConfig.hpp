@@ -250,6 +250,14 @@ struct SkillConfig {
   double ball_lost_time = 3.0;        // s without a sighting before the ball counts as lost
   double team_ball_max_age = 2.0;     // s: a teammate's sighting older than this is ignored
   Point2 kick_target{field::kLength / 2, 0};  // mm, opponent goal centre
+  // Strikers of one team: the one nearest the ball plays it (by this
+  // robot's ball and its teammates' heard poses), by more than role_margin;
+  // within it, the lower player number does, so two robots closing in do
+  // not swap every packet. The others wait support_distance behind the
+  // ball toward their own goal, facing it.
+  bool team_roles = true;
+  double role_margin = 300.0;        // mm
+  double support_distance = 1200.0;  // mm
 };
 
 enum class BehaviourKind : int32_t { FINDBALL_2016 = 0, FINDBALL_2017, STRIKER };

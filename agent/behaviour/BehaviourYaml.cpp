@@ -137,6 +137,9 @@ void readSkills(const YamlReader& r, ab::SkillConfig& k) {
   num(r, "kick_power", k.kick_power, Range::closed(0, 1));
   num(r, "ball_lost_time", k.ball_lost_time, Range::nonNegative());
   num(r, "team_ball_max_age", k.team_ball_max_age, Range::nonNegative());
+  flag(r, "team_roles", k.team_roles);
+  num(r, "role_margin", k.role_margin, Range::closed(0, 5000));
+  num(r, "support_distance", k.support_distance, Range::closed(200, 5000));
   if (r.has("kick_target")) {
     const std::vector<double> t = r.numbers("kick_target", 2);
     k.kick_target = {t[0], t[1]};

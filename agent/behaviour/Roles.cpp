@@ -51,6 +51,18 @@ RoleOutput Striker::tick(const BehaviourInputs& in, const FindBallResult* fb) {
   auto ball = knownBall(in, c_.skills);
   if (!ball) return search_.tick(in, fb);
   search_.reset();
+  if (!playsBall(in, *ball)) {
+    // Support: behind the ball on the line to our own goal, facing the ball.
+    const Point2 own_goal{-c_.field.length / 2, 0};
+    const double d = std::max(1.0, distance(*ball, own_goal));
+    const double s = std::min(c_.skills.support_distance, d);
+    const Point2 spot{ball->x + (own_goal.x - ball->x) * s / d, ball->y + (own_goal.y - ball->y) * s / d};
+    const WalkToResult w = support_.tick(in, spot, std::atan2(ball->y - spot.y, ball->x - spot.x), 100.0);
+    o.body = w.body;
+    o.head = headLookAt(toRobotFrame(in.self.pose, *ball), c_.skills);
+    o.activity = "support";
+    return o;
+  }
   const ApproachBall::Output a = approach_.tick(in, *ball);
   o.body = a.body;
   o.head = a.head;
@@ -63,6 +75,21 @@ RoleOutput Striker::tick(const BehaviourInputs& in, const FindBallResult* fb) {
     o.activity = "kick";
   }
   return o;
+}
+
+bool Striker::playsBall(const BehaviourInputs& in, Point2 ball) {
+  if (!c_.skills.team_roles) return true;
+  // Every striker of the team decides by the same rule on (nearly) the same
+  // data, so they agree: nearest by more than the margin plays; within the
+  // margin, the lower player number does (no swapping as the two close in).
+  const double mine = distance(position(in.self.pose), ball);
+  for (const Teammate& t : in.teammates) {
+    if (t.penalised || t.fallen || t.time_since_heard > c_.skills.obstacle_timeout) continue;
+    const double theirs = distance(position(t.pose), ball);
+    if (theirs < mine - c_.skills.role_margin) return false;
+    if (std::fabs(theirs - mine) <= c_.skills.role_margin && t.player < in.player) return false;
+  }
+  return true;
 }
 
 }  // namespace agent::behaviour

@@ -1,8 +1,10 @@
 // Roles on top of the skills.
 //   Searcher: FindBall (2016 or 2017) until this robot or a teammate sees
 //     the ball; then walks up to the ball (approach_distance) watching it.
-//   Striker: ApproachBall then Kick while the ball is known; FindBall 2017
-//     otherwise. Shows the stack end to end.
+//   Striker: ApproachBall then Kick while the ball is known and this robot
+//     plays it (the nearest of its team's strikers: SkillConfig::team_roles);
+//     a striker that does not waits behind the ball; FindBall 2017 while the
+//     ball is unknown. Shows the stack end to end.
 #pragma once
 
 #include <optional>
@@ -58,7 +60,11 @@ class Striker {
   const Searcher& searcher() const { return search_; }
 
  private:
+  // Whether this robot plays the ball (team_roles).
+  bool playsBall(const BehaviourInputs& in, Point2 ball);
+
   BehaviourConfig c_;
+  WalkTo support_{c_.skills, c_.field};
   ApproachBall approach_;
   Kick kick_;
   Searcher search_;

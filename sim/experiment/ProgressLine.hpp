@@ -15,7 +15,8 @@ struct ProgressLine {
   int failed = 0, ran = 0;  // by this run
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 
-  void trial(const TrialResult& r);  // a trial finished: its outcome and the ETA
+  void trial(const TrialResult& r);  // a find-ball trial finished: its outcome and the ETA
+  void step(const std::string& what); // any trial finished: `what` happened, and the ETA
   void fail(int trial, const std::string& why);
   void end();  // ends the bar's line
 };

@@ -109,17 +109,23 @@ FolderLock::~FolderLock() {
 }
 
 FolderLock claimFolder(const Experiment& e, const std::string& dir) {
+  return claimFolder(e.text, e.source, dir, "experiment.yaml");
+}
+
+FolderLock claimFolder(const std::string& text, const std::string& source, const std::string& dir,
+                       const std::string& copy_name) {
   makeDirs(dir + "/trials");
   FolderLock lock(dir);
-  const std::string copy = dir + "/experiment.yaml";
+  const std::string copy = dir + "/" + copy_name;
+  const std::string kind = copy_name == "experiment.yaml" ? "experiment" : "test";
   if (exists(copy)) {
     const std::string held = readFile(copy);
-    if (held != e.text)
-      throw BatchInputError(dir + " holds results of a different experiment file: " + copy + " differs from " +
-                            e.source + " (first at " + firstDifference(held, e.text, copy, e.source) +
+    if (held != text)
+      throw BatchInputError(dir + " holds results of a different " + kind + " file: " + copy + " differs from " +
+                            source + " (first at " + firstDifference(held, text, copy, source) +
                             "); choose another --out or remove the folder");
   } else {
-    writeAtomic(copy, e.text);
+    writeAtomic(copy, text);
   }
   // Temporary files of processes that died mid-write.
   if (DIR* d = opendir((dir + "/trials").c_str())) {

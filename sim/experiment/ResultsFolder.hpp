@@ -43,6 +43,10 @@ class FolderLock {
 // Removes temporary files of writers that died mid-write. Keep the lock
 // for as long as the folder is written.
 [[nodiscard]] FolderLock claimFolder(const Experiment& e, const std::string& dir);
+// The same for any batch: `text` (read from `source`) is kept as
+// dir/`copy_name` ("experiment.yaml", "tests.yaml").
+[[nodiscard]] FolderLock claimFolder(const std::string& text, const std::string& source, const std::string& dir,
+                                     const std::string& copy_name);
 
 // A trial is done once its results row (trial_NNNNNN.csv, written last) is there.
 bool trialDone(const std::string& dir, int trial);

@@ -72,45 +72,73 @@ double fisherExact(int a, int b, int c, int d) {
   return std::min(1.0, p);
 }
 
-MannWhitney mannWhitney(const std::vector<double>& x, const std::vector<double>& y) {
-  MannWhitney r;
-  const size_t n1 = x.size(), n2 = y.size();
-  if (n1 == 0 || n2 == 0) return r;
-  // Ranks of the pooled sample (ties: mean rank), and the tie groups.
+namespace {
+
+// U of x against y (pairs with x > y, ties 1/2) from the pooled ranks, and
+// the tie groups' sum of t^3 - t.
+struct UStat {
+  double u = 0;
+  bool ties = false;
+  double tie_term = 0;
+};
+
+UStat uStatistic(const std::vector<double>& x, const std::vector<double>& y) {
   std::vector<std::pair<double, int>> all;
   for (double v : x) all.push_back({v, 0});
   for (double v : y) all.push_back({v, 1});
   std::sort(all.begin(), all.end());
-  const size_t n = all.size();
-  double rank_sum_x = 0, tie_term = 0;
-  bool ties = false;
+  const size_t n = all.size(), n1 = x.size();
+  UStat s;
+  double rank_sum_x = 0;
   for (size_t i = 0; i < n;) {
     size_t j = i;
     while (j < n && all[j].first == all[i].first) ++j;
     const double t = static_cast<double>(j - i);
-    if (t > 1) ties = true;
-    tie_term += t * t * t - t;
+    if (t > 1) s.ties = true;
+    s.tie_term += t * t * t - t;
     const double mean_rank = (static_cast<double>(i + 1) + static_cast<double>(j)) / 2.0;
     for (size_t k = i; k < j; ++k)
       if (all[k].second == 0) rank_sum_x += mean_rank;
     i = j;
   }
-  r.u = rank_sum_x - static_cast<double>(n1) * (n1 + 1) / 2.0;
+  s.u = rank_sum_x - static_cast<double>(n1) * (n1 + 1) / 2.0;
+  return s;
+}
+
+// The number of arrangements of n1 x and n2 y values with each U (no ties),
+// by the recurrence N(u; m, k) = N(u - k; m - 1, k) + N(u; m, k - 1).
+std::vector<double> exactUCounts(size_t n1, size_t n2) {
+  const size_t umax = n1 * n2;
+  std::vector<std::vector<double>> prev(n2 + 1, std::vector<double>(umax + 1, 0.0));
+  for (size_t k = 0; k <= n2; ++k) prev[k][0] = 1;  // m = 0: U = 0 once
+  for (size_t m = 1; m <= n1; ++m) {
+    std::vector<std::vector<double>> cur(n2 + 1, std::vector<double>(umax + 1, 0.0));
+    cur[0][0] = 1;
+    for (size_t k = 1; k <= n2; ++k)
+      for (size_t u = 0; u <= m * k; ++u) cur[k][u] = (u >= k ? prev[k][u - k] : 0.0) + cur[k - 1][u];
+    prev.swap(cur);
+  }
+  return prev[n2];
+}
+
+// The normal approximation's variance of U with the tie correction.
+double uVariance(size_t n1, size_t n2, double tie_term) {
+  const double nn = static_cast<double>(n1 + n2);
+  return static_cast<double>(n1) * n2 / 12.0 * ((nn + 1) - tie_term / (nn * (nn - 1)));
+}
+
+}  // namespace
+
+MannWhitney mannWhitney(const std::vector<double>& x, const std::vector<double>& y) {
+  MannWhitney r;
+  const size_t n1 = x.size(), n2 = y.size();
+  if (n1 == 0 || n2 == 0) return r;
+  const UStat s = uStatistic(x, y);
+  r.u = s.u;
   const double mu = static_cast<double>(n1) * n2 / 2.0;
-  if (!ties && n1 <= 30 && n2 <= 30) {
-    // Exact: the number of arrangements with each U, by the recurrence
-    // N(u; m, k) = N(u - k; m - 1, k) + N(u; m, k - 1) over sample sizes.
+  if (!s.ties && n1 <= 30 && n2 <= 30) {
+    const std::vector<double> counts = exactUCounts(n1, n2);
     const size_t umax = n1 * n2;
-    std::vector<std::vector<double>> prev(n2 + 1, std::vector<double>(umax + 1, 0.0));
-    for (size_t k = 0; k <= n2; ++k) prev[k][0] = 1;  // m = 0: U = 0 once
-    for (size_t m = 1; m <= n1; ++m) {
-      std::vector<std::vector<double>> cur(n2 + 1, std::vector<double>(umax + 1, 0.0));
-      cur[0][0] = 1;
-      for (size_t k = 1; k <= n2; ++k)
-        for (size_t u = 0; u <= m * k; ++u) cur[k][u] = (u >= k ? prev[k][u - k] : 0.0) + cur[k - 1][u];
-      prev.swap(cur);
-    }
-    const std::vector<double>& counts = prev[n2];
     double total = 0, tail = 0;
     const double u_low = std::min(r.u, static_cast<double>(umax) - r.u);
     for (size_t u = 0; u <= umax; ++u) {
@@ -121,13 +149,59 @@ MannWhitney mannWhitney(const std::vector<double>& x, const std::vector<double>&
     r.exact = true;
     return r;
   }
-  const double nn = static_cast<double>(n);
-  const double var = static_cast<double>(n1) * n2 / 12.0 * ((nn + 1) - tie_term / (nn * (nn - 1)));
+  const double var = uVariance(n1, n2, s.tie_term);
   if (var <= 0) return r;  // every value equal: no evidence of a difference
   const double z = (std::fabs(r.u - mu) - 0.5) / std::sqrt(var);
   const boost::math::normal normal;
   r.p = std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(normal, std::max(0.0, z))));
   return r;
+}
+
+MannWhitney mannWhitneyGreater(const std::vector<double>& x, const std::vector<double>& y) {
+  MannWhitney r;
+  const size_t n1 = x.size(), n2 = y.size();
+  if (n1 == 0 || n2 == 0) return r;
+  const UStat s = uStatistic(x, y);
+  r.u = s.u;
+  if (!s.ties && n1 <= 30 && n2 <= 30) {
+    const std::vector<double> counts = exactUCounts(n1, n2);
+    double total = 0, tail = 0;
+    for (size_t u = 0; u < counts.size(); ++u) {
+      total += counts[u];
+      if (static_cast<double>(u) >= r.u - 1e-9) tail += counts[u];
+    }
+    r.p = std::min(1.0, tail / total);
+    r.exact = true;
+    return r;
+  }
+  const double var = uVariance(n1, n2, s.tie_term);
+  if (var <= 0) return r;
+  const double z = (r.u - static_cast<double>(n1) * n2 / 2.0 - 0.5) / std::sqrt(var);
+  const boost::math::normal normal;
+  r.p = std::min(1.0, boost::math::cdf(boost::math::complement(normal, z)));
+  return r;
+}
+
+double fisherLess(int a, int b, int c, int d) {
+  const unsigned r1 = static_cast<unsigned>(a + b), c1 = static_cast<unsigned>(a + c),
+                 n = static_cast<unsigned>(a + b + c + d);
+  if (n == 0) return 1.0;
+  const boost::math::hypergeometric_distribution<double> h(c1, r1, n);
+  return std::min(1.0, boost::math::cdf(h, static_cast<unsigned>(a)));
+}
+
+std::vector<double> holm(const std::vector<double>& p) {
+  const size_t m = p.size();
+  std::vector<size_t> order(m);
+  for (size_t i = 0; i < m; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return p[a] < p[b]; });
+  std::vector<double> adj(m);
+  double running = 0;
+  for (size_t k = 0; k < m; ++k) {
+    running = std::max(running, std::min(1.0, static_cast<double>(m - k) * p[order[k]]));
+    adj[order[k]] = running;
+  }
+  return adj;
 }
 
 }  // namespace simswift::experiment::stats

@@ -43,4 +43,16 @@ struct MannWhitney {
 };
 MannWhitney mannWhitney(const std::vector<double>& x, const std::vector<double>& y);
 
+// One-sided Mann-Whitney: the evidence that x tends to be larger than y
+// (p = P(U >= u) under the null; exact or normal as above).
+MannWhitney mannWhitneyGreater(const std::vector<double>& x, const std::vector<double>& y);
+
+// One-sided Fisher's exact test of {{a, b}, {c, d}}: the probability of a or
+// fewer in the first cell with the margins fixed (row 1's rate is lower).
+double fisherLess(int a, int b, int c, int d);
+
+// Holm's step-down adjustment of p-values (family-wise error at most the
+// level used), in the input's order.
+std::vector<double> holm(const std::vector<double>& p);
+
 }  // namespace simswift::experiment::stats

@@ -1,152 +1,56 @@
 #include "sim/experiment/WorkerPool.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <chrono>
-#include <csignal>
-#include <cstdio>
-#include <cstring>
-#include <map>
 
-#include <fcntl.h>
-#include <sys/prctl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include "sim/bridge/BodyHost.hpp"
 #include "sim/experiment/Batch.hpp"
 #include "sim/experiment/Files.hpp"
-#include "sim/experiment/PrivateShm.hpp"
+#include "sim/experiment/ForkPool.hpp"
 #include "sim/experiment/ResultsFolder.hpp"
 
 namespace simswift::experiment {
 
 namespace {
 
-volatile sig_atomic_t g_stop = 0;
-void onSignal(int) { g_stop = 1; }
+// A find-ball trial as a ForkJob: the worker runs runAndWriteTrial; the
+// parent reads a finished trial's results and timing rows back for the
+// progress line and the wall clock.
+class TrialJob : public ForkJob {
+ public:
+  TrialJob(const Experiment& e, const TrialHooks& hooks, const std::string& dir, ProgressLine& progress, RunWall& wall)
+      : e_(e), hooks_(hooks), dir_(dir), progress_(progress), wall_(wall) {}
 
-// The worker process: one trial, messages into its log, then _exit (robot
-// threads that did not answer a watchdog cannot be joined).
-[[noreturn]] void workerMain(const Experiment& e, const TrialHooks& hooks, const std::string& dir, int t,
-                             bool private_shm) {
-  signal(SIGINT, SIG_DFL);
-  signal(SIGTERM, SIG_DFL);
-  const std::string log = trialFile(dir, t, ".log");
-  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd >= 0) {
-    dup2(fd, STDOUT_FILENO);
-    dup2(fd, STDERR_FILENO);
-    close(fd);
+  std::string logFile(int t) const override { return trialFile(dir_, t, ".log"); }
+  void run(int t) const override { runAndWriteTrial(e_, hooks_, t, dir_); }
+  bool done(int t) const override { return trialDone(dir_, t); }
+  void finished(int t, double peak_mb) override {
+    TrialResult r = parseCsvRow(readFile(trialFile(dir_, t, ".csv")), static_cast<int>(e_.sweep.size()));
+    parseTimingRow(readFile(trialFile(dir_, t, ".timing.csv")), r);
+    progress_.trial(r);
+    ++wall_.ran;
+    wall_.trial_sim_s += r.sim_s;
+    wall_.trial_wall_s += r.wall_s;
+    wall_.peak_trial_mb = std::max(wall_.peak_trial_mb, peak_mb);
   }
-  int code = 0;
-  try {
-    if (private_shm) {
-      const pid_t parent = getppid();
-      const std::string err = enterPrivateShm();
-      if (!err.empty()) throw BatchError("a private /dev/shm for the trial: " + err);
-      // New credentials may clear the parent-death signal: set it again
-      // (and end if the batch died meanwhile).
-      prctl(PR_SET_PDEATHSIG, SIGKILL);
-      if (getppid() != parent) _exit(1);
-    }
-    runAndWriteTrial(e, hooks, t, dir);
-  } catch (const ConfigError& ex) {
-    std::fprintf(stderr, "%s\n", ex.what());
-    code = 2;
-  } catch (const std::exception& ex) {
-    std::fprintf(stderr, "%s\n", ex.what());
-    code = 1;
-  }
-  std::fflush(stdout);
-  std::fflush(stderr);
-  if (code == 0) unlink(log.c_str());
-  bridge::cleanup::removeAll();
-  _exit(code);
-}
+  void failed(int t, const std::string& why) override { progress_.fail(t, why); }
 
-// A worker ended: a finished trial is read back from its files, a failed
-// one reported with the end of its log; an interrupted one leaves no log.
-void collect(const Experiment& e, const std::string& dir, int t, int status, ProgressLine& progress, RunWall& wall,
-             WorkerRun& run) {
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && trialDone(dir, t)) {
-    TrialResult r = parseCsvRow(readFile(trialFile(dir, t, ".csv")), static_cast<int>(e.sweep.size()));
-    parseTimingRow(readFile(trialFile(dir, t, ".timing.csv")), r);
-    progress.trial(r);
-    ++run.ran;
-    ++wall.ran;
-    wall.trial_sim_s += r.sim_s;
-    wall.trial_wall_s += r.wall_s;
-  } else if (g_stop) {
-    unlink(trialFile(dir, t, ".log").c_str());  // interrupted, not failed
-  } else {
-    const std::string why = WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status))
-                                                : "exit code " + std::to_string(WEXITSTATUS(status));
-    progress.fail(t, why + ": " + fileTail(trialFile(dir, t, ".log"), 600) + " (log: " + trialFile(dir, t, ".log") +
-                         ")");
-    ++run.failed;
-  }
-}
+ private:
+  const Experiment& e_;
+  const TrialHooks& hooks_;
+  const std::string& dir_;
+  ProgressLine& progress_;
+  RunWall& wall_;
+};
 
 }  // namespace
 
 WorkerRun runWorkers(const Experiment& e, const TrialHooks& hooks, const std::string& dir, const std::vector<int>& todo,
                      int jobs, bool private_shm, ProgressLine& progress, RunWall& wall) {
-  struct sigaction sa {}, old_int{}, old_term{};
-  sa.sa_handler = onSignal;
-  sigemptyset(&sa.sa_mask);
-  sa.sa_flags = 0;  // no SA_RESTART: waitpid returns on a signal
-  g_stop = 0;
-  sigaction(SIGINT, &sa, &old_int);
-  sigaction(SIGTERM, &sa, &old_term);
-
-  WorkerRun run;
-  const auto wall0 = std::chrono::steady_clock::now();
-  std::map<pid_t, int> running;
-  size_t next = 0;
-  while ((next < todo.size() && !g_stop) || !running.empty()) {
-    while (!g_stop && next < todo.size() && static_cast<int>(running.size()) < jobs) {
-      const int t = todo[next++];
-      const pid_t parent = getpid();
-      const pid_t pid = fork();
-      if (pid < 0) throw BatchError(std::string("fork: ") + std::strerror(errno));
-      if (pid == 0) {
-        // The batch killed (kill -9 included): the worker goes too, and with
-        // it the programs it launched (their own PR_SET_PDEATHSIG,
-        // ProgramProcess.cpp). A batch that died before the prctl: we are
-        // already an orphan, so end now.
-        prctl(PR_SET_PDEATHSIG, SIGKILL);
-        if (getppid() != parent) _exit(1);
-        workerMain(e, hooks, dir, t, private_shm);
-      }
-      running[pid] = t;
-    }
-    if (running.empty()) break;
-    int status = 0;
-    rusage usage{};  // the trial process's own: its peak resident memory
-    const pid_t pid = wait4(-1, &status, 0, &usage);
-    if (pid < 0) {
-      if (errno == EINTR) {
-        if (g_stop)
-          for (const auto& [p, t] : running) kill(p, SIGTERM);  // a signal to us alone: pass it on
-        continue;
-      }
-      throw BatchError(std::string("waitpid: ") + std::strerror(errno));
-    }
-    auto it = running.find(pid);
-    if (it == running.end()) continue;  // not ours
-    const int t = it->second;
-    running.erase(it);
-    wall.peak_trial_mb = std::max(wall.peak_trial_mb, static_cast<double>(usage.ru_maxrss) / 1024.0);  // KiB -> MB
-    collect(e, dir, t, status, progress, wall, run);
-  }
+  TrialJob job(e, hooks, dir, progress, wall);
+  const ForkRun f = runForked(job, todo, jobs, private_shm);
   progress.end();
-  wall.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  sigaction(SIGINT, &old_int, nullptr);
-  sigaction(SIGTERM, &old_term, nullptr);
-  run.interrupted = g_stop != 0;
-  return run;
+  wall.wall_s = f.wall_s;
+  wall.peak_trial_mb = std::max(wall.peak_trial_mb, f.peak_mb);
+  return WorkerRun{f.ran, f.failed, f.interrupted};
 }
 
 }  // namespace simswift::experiment

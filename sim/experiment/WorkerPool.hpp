@@ -1,4 +1,4 @@
-// Trials in worker processes: each trial is forked into a process of its
+// Find-ball trials in worker processes (ForkPool.hpp): each trial is forked into a process of its
 // own, at most `jobs` at a time, so a trial that crashes or hangs takes
 // only itself down and its memory is returned when it ends. A worker runs
 // runAndWriteTrial, its messages going to trial_NNNNNN.log (kept only if it

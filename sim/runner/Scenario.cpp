@@ -645,6 +645,8 @@ void readRobots(const YamlReader& top, Scenario& sc) {
   if (sc.robots.front().body == bridge::BodyInterface::Lola && !sc.model_named) sc.model_path = "models/nao_v6.urdf";
 }
 
+}  // namespace
+
 // Robots on top of one another (the field is not needed for this).
 void checkRobotsApart(const Scenario& sc) {
   for (size_t i = 0; i < sc.robots.size(); ++i)
@@ -657,13 +659,14 @@ void checkRobotsApart(const Scenario& sc) {
     }
 }
 
-}  // namespace
-
 // The blocks in file order of the documentation (Scenario.hpp); the robots
 // before team_comms and game, which may name them.
 Scenario Scenario::parse(const std::string& text, const std::string& source_name) {
   const YAML::Node root = YamlReader::parse(text, source_name);
-  YamlReader top(root, source_name);
+  return read(YamlReader(root, source_name), source_name);
+}
+
+Scenario Scenario::read(const YamlReader& top, const std::string& source_name) {
   Scenario sc;
   sc.source = source_name;
   readRun(top, sc);

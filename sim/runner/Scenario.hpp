@@ -216,6 +216,10 @@ struct Scenario {
 
   static Scenario loadFile(const std::string& path);
   static Scenario parse(const std::string& text, const std::string& source_name);
+  // A scenario map inside another file (a scenario test's `scenario:`):
+  // errors name that file and the map's key path; relative paths resolve
+  // against source_name's folder.
+  static Scenario read(const YamlReader& top, const std::string& source_name);
 };
 
 // A robot entry's `actions:` list into rs.actions and rs.pushes (also the
@@ -239,6 +243,10 @@ void readNoise(const YamlReader& top, NoiseSwitches& noise);
 void readPhysics(const YamlReader& top, Scenario& sc);
 network::TeamNetworkConfig readTeamComms(const YamlReader& r);
 game::GameConfig readGame(const YamlReader& r, int num_robots);
+
+// Robots closer than two robot radii: ConfigError naming the second's line
+// (Scenario::parse calls it; so does a scenario test for its fuzzed starts).
+void checkRobotsApart(const Scenario& sc);
 
 // The seed of robot `index`'s program (its filters' random source) in a
 // run with seed `seed`: one derivation for builtin and launched programs.
