@@ -38,7 +38,7 @@ stamp "installed package: library-only build, headers, Python, examples"
 # walk/motion logic tests, so they would add time, not coverage. Cameras are off in the sanitizer builds: OSMesa's
 # llvmpipe JIT is not instrumented and dominates the run time; the camera
 # code itself is covered by the Release suite.
-heavy='MotionPhysics\.|ExternalExperimentFull\.'
+heavy='MotionPhysics\.|ExternalExperimentFull\.|SimswiftTestHeavy\.'
 # -O1: the sanitizers' recommended level, and half the compile time of -O3.
 san_cmake=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG"
            -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF)

@@ -1,0 +1,107 @@
+// Verdicts from the Wilson interval, the baseline comparison (one-sided
+// Fisher and Mann-Whitney, Holm), exit codes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/experiment/Statistics.hpp"
+#include "sim/scenario_tests/Summary.hpp"
+
+namespace {
+
+using namespace simswift::scenario_tests;
+namespace stats = simswift::experiment::stats;
+
+const std::string kSource = std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/tests/t.yaml";
+
+TestFile oneTest(double required) {
+  return TestFile::parse("name: t\ntests:\n  - name: a\n    required: " + std::to_string(required) +
+                             "\n    scenario: {robots: [{team: 19, player: 2}]}\n    pass: {never: {fallen: any}}\n",
+                         kSource);
+}
+
+std::vector<RunResult> runs(const std::string& test, int n, int passed, double pass_time = 10, double step = 1) {
+  std::vector<RunResult> v;
+  for (int i = 0; i < n; ++i) {
+    RunResult r;
+    r.index = i;
+    r.test = test;
+    r.run = i;
+    r.passed = i < passed;
+    r.decided_s = pass_time + step * i;
+    if (!r.passed) r.failure = "x";
+    v.push_back(r);
+  }
+  return v;
+}
+
+TEST(Verdict, FromTheWilsonIntervalAgainstTheRequiredRate) {
+  const TestFile f = oneTest(0.75);
+  // 12/12: interval 0.757-1 (lower end >= 0.75): passes.
+  EXPECT_EQ(summarise(f, runs("a", 12, 12))[0].verdict, TestSummary::Verdict::Passes);
+  // 11/12: 0.646-0.985 straddles 0.75: undecided.
+  const TestSummary u = summarise(f, runs("a", 12, 11))[0];
+  EXPECT_EQ(u.verdict, TestSummary::Verdict::Undecided);
+  EXPECT_NEAR(u.lo, 0.646, 0.001);
+  EXPECT_EQ(u.failures.size(), 1u);
+  // 3/12: upper end 0.53 < 0.75: fails.
+  EXPECT_EQ(summarise(f, runs("a", 12, 3))[0].verdict, TestSummary::Verdict::Fails);
+  EXPECT_EQ(exitCode(summarise(f, runs("a", 12, 12))), 0);
+  EXPECT_EQ(exitCode(summarise(f, runs("a", 12, 11))), 1);
+}
+
+TEST(Statistics, OneSidedTestsOnKnownTables) {
+  // 0/10 against 10/10: only this table, 1 / C(20, 10).
+  EXPECT_NEAR(stats::fisherLess(0, 10, 10, 0), 1.0 / 184756.0, 1e-12);
+  EXPECT_DOUBLE_EQ(stats::fisherLess(10, 0, 0, 10), 1.0);
+  // Every x above every y, three each: 1 of C(6, 3) = 20 arrangements.
+  const stats::MannWhitney m = stats::mannWhitneyGreater({4, 5, 6}, {1, 2, 3});
+  EXPECT_TRUE(m.exact);
+  EXPECT_NEAR(m.p, 0.05, 1e-12);
+  EXPECT_NEAR(stats::mannWhitneyGreater({1, 2, 3}, {4, 5, 6}).p, 1.0, 1e-12);
+  // Holm: sorted 0.01, 0.02, 0.04 times 3, 2, 1, kept monotone.
+  const std::vector<double> h = stats::holm({0.04, 0.01, 0.02});
+  EXPECT_NEAR(h[1], 0.03, 1e-12);
+  EXPECT_NEAR(h[2], 0.04, 1e-12);
+  EXPECT_NEAR(h[0], 0.04, 1e-12);
+}
+
+TEST(Baseline, ALowerRateIsARegressionTheSameRateIsNot) {
+  const TestFile f = oneTest(0.5);
+  std::vector<TestSummary> weak = summarise(f, runs("a", 10, 2));
+  const std::vector<RunResult> base = runs("a", 10, 10);
+  compareWithBaseline(weak, runs("a", 10, 2), base, 0.05);
+  ASSERT_TRUE(weak[0].compared);
+  EXPECT_TRUE(weak[0].regressed);
+  EXPECT_LT(weak[0].p_rate_adj, 0.001);
+  EXPECT_EQ(exitCode(weak), 1);
+  std::vector<TestSummary> same = summarise(f, runs("a", 10, 9));
+  compareWithBaseline(same, runs("a", 10, 9), base, 0.05);
+  EXPECT_FALSE(same[0].regressed);
+  EXPECT_GT(same[0].p_rate, 0.05);
+}
+
+TEST(Baseline, SlowerPassesAreARegression) {
+  const TestFile f = oneTest(0.5);
+  const std::vector<RunResult> now = runs("a", 10, 10, 30, 1), base = runs("a", 10, 10, 10, 1);
+  std::vector<TestSummary> s = summarise(f, now);
+  compareWithBaseline(s, now, base, 0.05);
+  EXPECT_TRUE(s[0].time_compared);
+  EXPECT_TRUE(s[0].regressed);
+  EXPECT_DOUBLE_EQ(s[0].p_rate, 1.0);  // the rate is the same
+  EXPECT_LT(s[0].p_time_adj, 0.001);
+  // Faster is not a regression.
+  std::vector<TestSummary> fast = summarise(f, base);
+  compareWithBaseline(fast, base, now, 0.05);
+  EXPECT_FALSE(fast[0].regressed);
+}
+
+TEST(Baseline, ATestMissingFromTheBaselineIsNotCompared) {
+  const TestFile f = oneTest(0.5);
+  std::vector<TestSummary> s = summarise(f, runs("a", 10, 2));
+  compareWithBaseline(s, runs("a", 10, 2), runs("other", 10, 10), 0.05);
+  EXPECT_FALSE(s[0].compared);
+  EXPECT_FALSE(s[0].regressed);
+}
+
+}  // namespace
