@@ -5,6 +5,7 @@
 # report is. Other jobs:
 #   bash scripts/build-and-run.sh scenarios/thesis_findball.yaml      # an experiment file (has setups:)
 #   bash scripts/build-and-run.sh scenarios/walk_one.yaml --realtime  # a scenario: simswift run
+#   bash scripts/build-and-run.sh scenarios/tests/reference.yaml --short   # a test file (has tests:): simswift test
 #   bash scripts/build-and-run.sh experiment FILE.yaml --jobs 2       # any simswift command line
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,7 +15,10 @@ cmake --build build -j"$(nproc)" --target simswift
 if [ $# -eq 0 ]; then
   set -- experiment scenarios/findball_quick.yaml
 elif [ -f "$1" ]; then
-  # A file: an experiment (it has a top-level setups: list) or a scenario.
-  if grep -q '^setups:' "$1"; then set -- experiment "$@"; else set -- run "$@"; fi
+  # A file: an experiment (it has a top-level setups: list), a test file
+  # (tests:) or a scenario.
+  if grep -q '^setups:' "$1"; then set -- experiment "$@";
+  elif grep -q '^tests:' "$1"; then set -- test "$@";
+  else set -- run "$@"; fi
 fi
 exec ./build/simswift "$@"

@@ -155,6 +155,7 @@ std::string folderText(const TestFile& f, const TestOptions& opt) {
   if (!t.empty() && t.back() != '\n') t += '\n';
   t += "# simswift test: " + std::string(opt.short_form ? "--short" : "full form");
   if (opt.has_seed) t += " --seed " + std::to_string(opt.seed);
+  if (!opt.only.empty()) t += " --only " + opt.only;
   return t + "\n";
 }
 

@@ -33,6 +33,7 @@ struct TestOptions {
   int jobs = 0;                   // worker processes; 0 = the number of cores
   int shard = 1, shards = 1;      // run the runs with index % shards == shard - 1
   bool short_form = false;        // the CI form: each test's short seed count
+  std::string only;               // --only: the tests kept (TestFile::tests already filtered)
   bool has_seed = false;          // --seed: replaces the file's seed
   uint64_t seed = 0;
   std::string baseline;           // an earlier run's results folder ("" = none)

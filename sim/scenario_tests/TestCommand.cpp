@@ -13,7 +13,7 @@
 namespace simswift::scenario_tests {
 
 const char* kTestUsage =
-    "usage: simswift test FILE.yaml [--short] [--out DIR] [--jobs N] [--shard K/N] [--seed N]\n"
+    "usage: simswift test FILE.yaml [--short] [--only A,B] [--out DIR] [--jobs N] [--shard K/N] [--seed N]\n"
     "                               [--baseline DIR] [--alpha A] [--junit FILE] [--progress lines|none]\n"
     "       simswift test FILE.yaml --check [--short] [--seed N]\n"
     "       simswift test FILE.yaml --test NAME --trial I [--seed N] [--overview DIR]\n"
@@ -28,6 +28,7 @@ const char* kTestUsage =
     "Run the same command again to continue an interrupted run.\n"
     "\n"
     "  --short            the CI form: each test's short seed count\n"
+    "  --only A,B,...     run only the tests named (in the file's order)\n"
     "  --out DIR          results folder\n"
     "  --jobs N           worker processes (default: the number of cores)\n"
     "  --shard K/N        run only runs K-1, K-1+N, ... (K = 1..N); join with --merge\n"
@@ -64,7 +65,7 @@ bool parseUnsigned(const std::string& s, uint64_t max, uint64_t* v) {
 
 int testMain(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  std::string file, test_name, overview;
+  std::string file, test_name, overview, only;
   std::vector<std::string> merge_dirs;
   TestOptions opt;
   bool check = false, merge = false;
@@ -80,11 +81,12 @@ int testMain(int argc, char** argv) {
       opt.short_form = true;
     } else if (a == "--check") {
       check = true;
-    } else if (a == "--out" || a == "--baseline" || a == "--junit" || a == "--test" || a == "--overview") {
+    } else if (a == "--out" || a == "--baseline" || a == "--junit" || a == "--test" || a == "--overview" ||
+               a == "--only") {
       const std::string* v = value();
       if (!v || v->empty()) return usage(a + " needs a value");
       (a == "--out" ? opt.out_dir : a == "--baseline" ? opt.baseline : a == "--junit" ? opt.junit
-                                    : a == "--test" ? test_name : overview) = *v;
+                                    : a == "--test" ? test_name : a == "--only" ? only : overview) = *v;
     } else if (a == "--jobs") {
       const std::string* v = value();
       if (!v || !parseUnsigned(*v, 4096, &n) || n == 0) return usage("--jobs needs a number of workers (1..4096)");
@@ -134,7 +136,12 @@ int testMain(int argc, char** argv) {
   if (!overview.empty() && trial < 0) return usage("--overview goes with --test NAME --trial I");
   if (merge && opt.out_dir.empty()) return usage("--merge needs --out DIR");
   try {
-    const TestFile f = TestFile::loadFile(file);
+    TestFile f = TestFile::loadFile(file);
+    if (!only.empty()) {
+      std::string err;
+      if (!selectTests(f, only, &err)) return usage("--only: " + err);
+      opt.only = only;
+    }
     if (opt.out_dir.empty()) opt.out_dir = "results/tests-" + f.name + (opt.short_form ? "-short" : "");
     if (check) {
       checkPlacements(f, opt.short_form, opt.seed, opt.has_seed);

@@ -171,6 +171,28 @@ TestFile TestFile::parse(const std::string& text, const std::string& source_name
   return f;
 }
 
+bool selectTests(TestFile& f, const std::string& names, std::string* error) {
+  std::set<std::string> wanted;
+  std::stringstream in(names);
+  std::string n;
+  while (std::getline(in, n, ','))
+    if (!n.empty()) wanted.insert(n);
+  for (const std::string& w : wanted) {
+    bool found = false;
+    for (const ScenarioTest& t : f.tests) found = found || t.name == w;
+    if (!found) {
+      *error = "no test named " + w + " in " + f.source;
+      return false;
+    }
+  }
+  std::vector<ScenarioTest> kept;
+  for (ScenarioTest& t : f.tests)
+    if (wanted.count(t.name)) kept.push_back(std::move(t));
+  f.tests = std::move(kept);
+  if (f.tests.empty()) *error = "names no test";
+  return !f.tests.empty();
+}
+
 uint64_t runSeed(uint64_t file_seed, const std::string& test, int run) {
   using agent::random::splitmix64;
   return splitmix64(splitmix64(file_seed ^ fnv1a(test)) ^ static_cast<uint64_t>(run)) % 2147483647ull;

@@ -70,6 +70,10 @@ struct TestFile {
   static TestFile parse(const std::string& text, const std::string& source_name);
 };
 
+// Keeps only the tests named in `names` ("a,b,c"), in the file's order.
+// False with *error naming an unknown test.
+bool selectTests(TestFile& f, const std::string& names, std::string* error);
+
 // Which test and run a global run index is (tests in file order, each's
 // runs in order). `short_form`: the short seed counts.
 struct RunSpec {

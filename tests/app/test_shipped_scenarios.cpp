@@ -1,5 +1,6 @@
 // Every file in scenarios/ is loaded as a user would load it, so a shipped
 // file can never rot: experiments through `simswift experiment --check`,
+// test files (scenarios/tests/) through `simswift test --check`,
 // scenarios through `simswift run --check` and, where every robot runs the
 // builtin program, a brief run (0.2 simulated s) as well. A scenario whose
 // robots run in another process is only checked: its program is not ours
@@ -79,6 +80,25 @@ TEST(ShippedScenarios, EveryFileIsAcceptedAndBuiltinOnesRun) {
     const Result r = shell(kBin + " run " + f.string() + " --duration 0.2 --quiet");
     EXPECT_EQ(r.code, 0) << r.output;
     EXPECT_NE(r.output.find("hash "), std::string::npos) << r.output;
+  }
+}
+
+// Test files (scenarios/tests/, the CI template's example): every test and
+// every run's fuzzed start, in both forms. The reference program's short
+// form runs in tests/scenario_tests.
+TEST(ShippedScenarios, EveryTestFileIsAccepted) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(fs::path(SIMSWIFT_SOURCE_DIR) / "scenarios" / "tests"))
+    if (e.path().extension() == ".yaml") files.push_back(e.path());
+  files.push_back(fs::path(SIMSWIFT_SOURCE_DIR) / "examples" / "ci" / "team_tests.yaml");
+  EXPECT_GE(files.size(), 2u);
+  for (const fs::path& f : files) {
+    SCOPED_TRACE(f.string());
+    for (const char* form : {"", " --short"}) {
+      const Result r = shell(kBin + " test " + f.string() + " --check" + form);
+      EXPECT_EQ(r.code, 0) << r.output;
+      EXPECT_NE(r.output.find("valid"), std::string::npos) << r.output;
+    }
   }
 }
 

@@ -81,6 +81,18 @@ TEST(SimswiftTest, VerdictsExitCodeAndReplayCommands) {
   EXPECT_NE(one.output.find("(seed " + seed + ")"), std::string::npos) << one.output << " seed " << seed;
 }
 
+TEST(SimswiftTest, OnlyRunsTheTestsNamed) {
+  const std::string d = freshDir("only");
+  writeText(d + "/tiny.yaml", kTiny);
+  const auto r = shell(kBin + " test " + d + "/tiny.yaml --only stands --out " + d + "/out --progress none");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 of 1 tests pass"), std::string::npos) << r.output;
+  EXPECT_EQ(readText(d + "/out/results.csv").find("never_scores"), std::string::npos);
+  const auto bad = shell(kBin + " test " + d + "/tiny.yaml --only stand --out " + d + "/bad");
+  EXPECT_EQ(bad.code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--only: no test named stand in"), std::string::npos) << bad.output;
+}
+
 TEST(SimswiftTest, ABadFileIsRefusedWithItsLineAndExitTwo) {
   const std::string d = freshDir("bad");
   std::string bad = kTiny;
