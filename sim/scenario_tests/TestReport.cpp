@@ -183,7 +183,7 @@ bool plotPassRates(const std::vector<TestSummary>& tests, const std::string& dir
      << "set title 'Pass rate per test: 95 % Wilson interval (bar), required rate (red mark)'\n"
      << "set xrange [0:1]\nset xtics 0.1 format '%.0f' scale 1\n"
      << "set format x '%g'\nset xlabel 'pass rate'\n"
-     << "set yrange [-0.7:" << tests.size() - 0.3 << "]\nset ytics scale 0\nset grid xtics\nunset key\n"
+     << "set yrange [" << tests.size() - 0.3 << ":-0.7]\nset ytics scale 0\nset grid xtics\nunset key\n"  // first test on top
      << "plot 'pass_rates.dat' using 3:1:4:5:ytic(2) with xerrorbars lc rgb '#1f5fa8' pt 7 lw 2, \\\n"
      << "     '' using 6:1 with points lc rgb '#c0392b' pt 11 ps 2\n";
   experiment::writeAtomic(dir + "/pass_rates.gp", gp.str());
