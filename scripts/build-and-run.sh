@@ -11,7 +11,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)" --target simswift
+# simswift-agent too: test files and scenarios may launch it as a robot program.
+cmake --build build -j"$(nproc)" --target simswift simswift-agent
 if [ $# -eq 0 ]; then
   set -- experiment scenarios/findball_quick.yaml
 elif [ -f "$1" ]; then

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """How often `simswift test --baseline` calls a regression (docs/testing.md).
 
-Runs a test file once as the baseline (seed BASE), then for each of K other
-seed sets runs (a) the same program and (b) a weakened one against that
-baseline, and counts how often each is flagged: (a) is the false-alarm
-rate, (b) the detection rate, with the weakened runs' smallest adjusted
-p-values. The weakened program is the file with every `behaviour: striker`
+For each of K seed sets, runs the file as a baseline on one seed, then (a)
+the same program and (b) a weakened one on another seed against that
+baseline (every set its own two seeds, so the K outcomes are independent),
+and counts how often each is flagged: (a) is the false-alarm rate, (b) the
+detection rate, with the weakened runs' smallest adjusted p-values. The weakened program is the file with every `behaviour: striker`
 replaced by WEAK (default: the striker's kick power set to 0 through the
 behaviour's config override).
 
@@ -18,6 +18,7 @@ never run by ctest.
 import argparse
 import csv
 import os
+import shutil
 import subprocess
 import sys
 
@@ -31,7 +32,10 @@ def run(args, file, seed, out, baseline=None):
         cmd += ["--only", args.only]
     if baseline:
         cmd += ["--baseline", baseline]
-    subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    shutil.rmtree(out, ignore_errors=True)  # never a stale summary from an earlier call
+    code = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if code.returncode not in (0, 1):
+        sys.exit("%s: exit code %d: %s" % (" ".join(cmd), code.returncode, code.stderr[-2000:]))
     with open(os.path.join(out, "summary.csv")) as f:
         return list(csv.DictReader(f))
 
@@ -55,15 +59,16 @@ def main():
     weak_file = os.path.join(args.out, "weak.yaml")
     with open(weak_file, "w") as f:
         f.write(text.replace("behaviour: striker", "behaviour: " + args.weak))
-    # The copy sits in another folder: its relative scenario paths must still resolve.
-    base = os.path.join(args.out, "base")
-    run(args, args.file, args.base_seed, base)
+    # The copy sits in OUT: a file whose tests name scenario files by relative
+    # path needs its copy beside it (the reference file's scenarios are inline).
     lines = ["| seed set | same program: tests flagged | weakened: tests flagged | weakened: smallest p (Holm) |",
              "|---:|---:|---:|---:|"]
     same_runs_flagged = weak_runs_flagged = 0
     same_tests_flagged = weak_tests_flagged = tests_compared = 0
     for k in range(1, args.sets + 1):
-        seed = args.base_seed + k
+        seed = args.base_seed + 2 * k
+        base = os.path.join(args.out, "base%d" % k)
+        run(args, args.file, seed - 1, base)
         same = run(args, args.file, seed, os.path.join(args.out, "same%d" % k), base)
         weak = run(args, weak_file, seed, os.path.join(args.out, "weak%d" % k), base)
         sf = sum(r["regressed"] == "1" for r in same)
@@ -80,9 +85,9 @@ def main():
         print(lines[-1], flush=True)
     lines.append("")
     lines.append("Same program flagged in %d of %d seed sets (%d of %d test comparisons); weakened program "
-                 "flagged in %d of %d seed sets. Baseline seed %d, file %s%s." %
+                 "flagged in %d of %d seed sets. Seed set k: baseline seed %d + 2k - 1, runs %d + 2k; file %s%s." %
                  (same_runs_flagged, args.sets, same_tests_flagged, tests_compared, weak_runs_flagged, args.sets,
-                  args.base_seed, args.file, " (--only " + args.only + ")" if args.only else ""))
+                  args.base_seed, args.base_seed, args.file, " (--only " + args.only + ")" if args.only else ""))
     report = "\n".join(lines) + "\n"
     open(os.path.join(args.out, "regression_check.md"), "w").write(report)
     print(report)

@@ -36,6 +36,7 @@ void TeamNetwork::send(int from, const uint8_t* bytes, size_t size, int64_t t_us
   const Endpoint& src = endpoints_.at(from);
   if (config_.budget > 0 && stats_.team_sent[src.team] >= config_.budget) {
     ++stats_.over_budget;
+    ++stats_.team_over_budget[src.team];
     return;
   }
   ++stats_.sent;

@@ -46,6 +46,7 @@ struct TeamNetworkStats {
   int64_t delivered = 0;     // (packet, teammate) pairs handed over
   int64_t inbox_overflow = 0;// delivered but the receiver's inbox was full
   int64_t team_sent[2] = {0, 0};
+  int64_t team_over_budget[2] = {0, 0};  // of over_budget, per team
 };
 
 class TeamNetwork {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sim/experiment/Trial.hpp"
 #include "sim/game/GameController.hpp"
 
 namespace simswift::scenario_tests {
@@ -52,6 +53,7 @@ std::string operatorOf(const YamlReader& m, const std::vector<std::string>& ops,
     m.finish();
     m.fail("no operator");
   }
+  for (const std::string& op : ops) (void)m.has(op);  // a stray key's message lists them all
   return found;
 }
 
@@ -279,121 +281,119 @@ size_t countNodes(const TimeNode& n) {
   return c;
 }
 
-std::string seconds2(double t) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f s", t);
-  return buf;
-}
+std::string seconds2(double t) { return experiment::fixed(t, 2) + " s"; }
 
 }  // namespace
 
 ConditionRun::ConditionRun(const TimeNode& root, const FieldConfig& field)
     : root_(root), field_(field), states_(countNodes(root)), can_stop_early_(hasEventually(root)) {}
 
-// Advances the temporal leaves (at_end: only when at_end is set) and
-// returns the node's value; optimistic: a pending always / never counts as
-// holding (the test may end now).
-Verdict3 ConditionRun::step(const TimeNode& n, size_t& id, const Truth& t, bool at_end, bool optimistic) {
+// The temporal operators after one tick (at_end: the time limit).
+void ConditionRun::advance(const TimeNode& n, size_t& id, const Truth& t, bool at_end) {
   State& s = states_[id++];
   using K = TimeNode::Kind;
   switch (n.kind) {
     case K::Within:
-      if (s.v == Verdict3::Pending && !optimistic) {
-        if (t.t <= n.seconds + 1e-9 && n.that.eval(t, field_)) s = {Verdict3::True, t.t};
-        else if (t.t >= n.seconds - 1e-9 || at_end) s = {Verdict3::False, std::min(t.t, n.seconds)};
-      }
-      return s.v;
+      if (s.v != Verdict3::Pending) return;
+      if (t.t <= n.seconds + 1e-9 && n.that.eval(t, field_)) s = {Verdict3::True, t.t};
+      else if (t.t >= n.seconds - 1e-9 || at_end) s = {Verdict3::False, std::min(t.t, n.seconds)};
+      return;
     case K::Always:
-      if (s.v == Verdict3::Pending && !optimistic) {
-        if (n.that.eval(t, field_) == n.negate) s = {Verdict3::False, t.t};
-        else if (at_end) s = {Verdict3::True, t.t};
-      }
-      return s.v == Verdict3::Pending && optimistic ? Verdict3::True : s.v;
+      if (s.v != Verdict3::Pending) return;
+      if (n.that.eval(t, field_) == n.negate) s = {Verdict3::False, t.t};
+      else if (at_end) s = {Verdict3::True, t.t};
+      return;
     case K::AtEnd:
-      if (s.v == Verdict3::Pending && at_end && !optimistic)
-        s = {n.that.eval(t, field_) ? Verdict3::True : Verdict3::False, t.t};
-      return s.v;
+      if (s.v == Verdict3::Pending && at_end) s = {n.that.eval(t, field_) ? Verdict3::True : Verdict3::False, t.t};
+      return;
+    default:
+      for (const TimeNode& c : n.children) advance(c, id, t, at_end);
+  }
+}
+
+// The node's value from its operators' states (kept in states_ for
+// firstFailure). optimistic: a pending always / never counts as holding,
+// but only on a path of `all`s from the root: under `any` or `not` an
+// invariant that might still break decides nothing yet.
+Verdict3 ConditionRun::value(const TimeNode& n, size_t& id, bool optimistic) {
+  State& s = states_[id++];
+  using K = TimeNode::Kind;
+  switch (n.kind) {
+    case K::Within:
+    case K::AtEnd: return s.v;
+    case K::Always: return s.v == Verdict3::Pending && optimistic ? Verdict3::True : s.v;
     case K::Not: {
-      const Verdict3 v = step(n.children[0], id, t, at_end, optimistic);
-      return v == Verdict3::Pending ? v : v == Verdict3::True ? Verdict3::False : Verdict3::True;
+      const Verdict3 v = value(n.children[0], id, false);
+      s.v = v == Verdict3::Pending ? v : v == Verdict3::True ? Verdict3::False : Verdict3::True;
+      return s.v;
     }
     case K::All:
     case K::Any: {
-      // Every child steps (their states advance whatever the others say).
       const Verdict3 decisive = n.kind == K::All ? Verdict3::False : Verdict3::True;
       bool any_decisive = false, all_other = true;
       for (const TimeNode& c : n.children) {
-        const Verdict3 v = step(c, id, t, at_end, optimistic);
+        const Verdict3 v = value(c, id, optimistic && n.kind == K::All);
         any_decisive = any_decisive || v == decisive;
         all_other = all_other && v != Verdict3::Pending && v != decisive;
       }
-      if (any_decisive) return decisive;
-      return all_other ? (decisive == Verdict3::False ? Verdict3::True : Verdict3::False) : Verdict3::Pending;
+      s.v = any_decisive ? decisive
+            : all_other  ? (decisive == Verdict3::False ? Verdict3::True : Verdict3::False)
+                         : Verdict3::Pending;
+      return s.v;
     }
   }
   return Verdict3::Pending;
 }
 
-// The earliest temporal leaf whose outcome made the condition fail (its
-// polarity: under an odd number of `not`s, a leaf that held).
-void ConditionRun::firstFailure(const TimeNode& n, size_t& id) {
-  struct Walk {
-    ConditionRun& self;
-    void go(const TimeNode& n, size_t& id, bool positive) {
-      const State& s = self.states_[id++];
-      using K = TimeNode::Kind;
-      if (n.kind == K::Not) return go(n.children[0], id, !positive);
-      if (n.kind == K::All || n.kind == K::Any) {
-        for (const TimeNode& c : n.children) go(c, id, positive);
-        return;
-      }
-      const Verdict3 bad = positive ? Verdict3::False : Verdict3::True;
-      if (s.v != bad) return;
-      if (!self.failure_.empty() && s.t >= self.failure_t_) return;
-      std::string what;
-      if (!positive) what = "not " + n.text + ": it held at " + seconds2(s.t);
-      else if (n.kind == K::Within) what = n.text + ": not met by " + seconds2(s.t);
-      else if (n.kind == K::Always) what = n.text + ": broken at " + seconds2(s.t);
-      else what = n.text + ": false at the end (" + seconds2(s.t) + ")";
-      self.failure_ = what;
-      self.failure_t_ = s.t;
+// The earliest operator whose outcome made the condition fail: from the
+// root, only into the children that decided their parent's failing value
+// (under an odd number of `not`s, a value that held).
+void ConditionRun::firstFailure(const TimeNode& n, size_t& id, bool positive) {
+  const State& s = states_[id++];
+  using K = TimeNode::Kind;
+  const Verdict3 bad = positive ? Verdict3::False : Verdict3::True;
+  if (n.kind == K::Not || n.kind == K::All || n.kind == K::Any) {
+    for (const TimeNode& c : n.children) {
+      const size_t child = id;
+      const bool child_positive = n.kind == K::Not ? !positive : positive;
+      const Verdict3 child_bad = child_positive ? Verdict3::False : Verdict3::True;
+      if (s.v == bad && states_[child].v == child_bad) firstFailure(c, id, child_positive);
+      else id += countNodes(c);
     }
-  } w{*this};
-  w.go(n, id, true);
+    return;
+  }
+  if (s.v != bad) return;
+  if (!failure_.empty() && s.t >= failure_t_) return;
+  std::string what;
+  if (!positive) what = "not " + n.text + ": it held at " + seconds2(s.t);
+  else if (n.kind == K::Within) what = n.text + ": not met by " + seconds2(s.t);
+  else if (n.kind == K::Always) what = n.text + ": broken at " + seconds2(s.t);
+  else what = n.text + ": false at the end (" + seconds2(s.t) + ")";
+  failure_ = what;
+  failure_t_ = s.t;
 }
 
-Verdict3 ConditionRun::update(const Truth& t) {
+Verdict3 ConditionRun::decide(const Truth& t, bool at_end) {
   size_t id = 0;
-  const Verdict3 v = step(root_, id, t, false, false);
+  advance(root_, id, t, at_end);
+  id = 0;
+  Verdict3 v = value(root_, id, false);
+  if (v == Verdict3::Pending && can_stop_early_ && !at_end) {
+    id = 0;
+    if (value(root_, id, true) == Verdict3::True) v = Verdict3::True;
+    id = 0;
+    (void)value(root_, id, false);  // the stored composite values as they are
+  }
+  if (v != Verdict3::Pending) decided_t_ = t.t;
   if (v == Verdict3::False) {
-    size_t k = 0;
-    firstFailure(root_, k);
-    decided_t_ = t.t;
-    return v;
-  }
-  if (v == Verdict3::True) {
-    decided_t_ = t.t;
-    return v;
-  }
-  if (can_stop_early_) {
-    size_t k = 0;
-    if (step(root_, k, t, false, true) == Verdict3::True) {
-      decided_t_ = t.t;
-      return Verdict3::True;
-    }
-  }
-  return Verdict3::Pending;
-}
-
-Verdict3 ConditionRun::finish(const Truth& t) {
-  size_t id = 0;
-  const Verdict3 v = step(root_, id, t, true, false);
-  decided_t_ = t.t;
-  if (v == Verdict3::False) {
-    size_t k = 0;
-    firstFailure(root_, k);
+    id = 0;
+    firstFailure(root_, id, true);
   }
   return v;
 }
+
+Verdict3 ConditionRun::update(const Truth& t) { return decide(t, false); }
+
+Verdict3 ConditionRun::finish(const Truth& t) { return decide(t, true); }
 
 }  // namespace simswift::scenario_tests

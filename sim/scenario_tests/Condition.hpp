@@ -28,8 +28,12 @@
 //
 // The run ends at the time limit, or as soon as the condition is decided:
 // failed for good, or (when it has an eventually / within) met, with every
-// always / never counted as holding so far. A test with only invariants and
-// at_end runs to its time limit.
+// always / never on a path of `all`s from the root counted as holding so
+// far. So an invariant is checked until the goal is reached, not after:
+// `all: [{within: {seconds: 60, that: {touched_ball: 0}}}, {never:
+// {ball_in_goal: blue}}]` ends at the first touch; to watch for an own goal
+// over the whole minute, ask `at_end: {touched_ball: 0}` instead. A test
+// with only invariants and at_end runs to its time limit.
 #pragma once
 
 #include <memory>
@@ -104,8 +108,10 @@ class ConditionRun {
     Verdict3 v = Verdict3::Pending;
     double t = 0;  // when decided
   };
-  Verdict3 step(const TimeNode& n, size_t& id, const Truth& t, bool at_end, bool optimistic);
-  void firstFailure(const TimeNode& n, size_t& id);
+  void advance(const TimeNode& n, size_t& id, const Truth& t, bool at_end);
+  Verdict3 value(const TimeNode& n, size_t& id, bool optimistic);
+  void firstFailure(const TimeNode& n, size_t& id, bool positive);
+  Verdict3 decide(const Truth& t, bool at_end);
 
   const TimeNode& root_;
   const FieldConfig& field_;

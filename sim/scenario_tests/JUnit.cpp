@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "sim/experiment/Trial.hpp"
 #include "sim/scenario_tests/TestReport.hpp"
 
 namespace simswift::scenario_tests {
@@ -26,11 +27,7 @@ std::string xmlEscape(const std::string& s) {
 
 namespace {
 
-std::string seconds3(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", s);
-  return buf;
-}
+std::string seconds3(double s) { return experiment::fixed(s, 3); }
 
 }  // namespace
 
@@ -62,9 +59,10 @@ std::string junitXml(const TestFile& f, const TestOptions& opt, const std::vecto
       x << "/>\n";
       continue;
     }
-    const std::string type = s.regressed                                       ? "regression"
+    // The verdict first; a passing test that regressed: "regression".
+    const std::string type = s.verdict == TestSummary::Verdict::Fails       ? "fails"
                              : s.verdict == TestSummary::Verdict::Undecided ? "undecided"
-                                                                             : "fails";
+                                                                             : "regression";
     x << ">\n      <failure type=\"" << type << "\" message=\"" << xmlEscape(verdictLine(s)) << "\">"
       << xmlEscape(failureText(f, opt, s)) << "</failure>\n";
     x << "    </testcase>\n";

@@ -69,7 +69,7 @@ std::vector<TestSummary> summarise(const TestFile& f, const std::vector<RunResul
 }
 
 void compareWithBaseline(std::vector<TestSummary>& tests, const std::vector<RunResult>& current,
-                         const std::vector<RunResult>& baseline, double alpha) {
+                         const std::vector<RunResult>& baseline, double alpha, const std::set<std::string>& changed) {
   std::map<std::string, std::pair<int, int>> base;  // runs, passed
   for (const RunResult& r : baseline) {
     auto& b = base[r.test];
@@ -82,6 +82,10 @@ void compareWithBaseline(std::vector<TestSummary>& tests, const std::vector<RunR
     TestSummary& s = tests[i];
     auto it = base.find(s.name);
     if (it == base.end() || it->second.first == 0 || s.runs == 0) continue;
+    if (changed.count(s.name)) {
+      s.changed = true;  // another test under the same name: nothing to compare
+      continue;
+    }
     s.compared = true;
     s.base_runs = it->second.first;
     s.base_passed = it->second.second;
@@ -91,7 +95,12 @@ void compareWithBaseline(std::vector<TestSummary>& tests, const std::vector<RunR
     which.push_back({i, false});
     const std::vector<double> now_t = passTimes(current, s.name), base_t = passTimes(baseline, s.name);
     s.base_mean_pass_s = mean(base_t);
-    if (now_t.size() >= 2 && base_t.size() >= 2) {
+    // Times that all tie (a test decided only at its time limit) say
+    // nothing: left out of the family rather than diluting it.
+    bool all_tie = true;
+    for (const std::vector<double>* v : {&now_t, &base_t})
+      for (double x : *v) all_tie = all_tie && x == (now_t.empty() ? x : now_t.front());
+    if (now_t.size() >= 2 && base_t.size() >= 2 && !all_tie) {
       s.time_compared = true;
       s.p_time = stats::mannWhitneyGreater(now_t, base_t).p;
       raw.push_back(s.p_time);

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <algorithm>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,7 @@ struct TestSummary {
   double sim_s = 0, wall_s = 0;     // summed over runs (reporting only)
   // Against the baseline (compared = the baseline has this test).
   bool compared = false;
+  bool changed = false;                   // in the baseline, but defined differently there
   int base_runs = 0, base_passed = 0;
   double base_mean_pass_s = 0;
   double p_rate = 1, p_time = 1;          // one-sided, raw
@@ -50,9 +52,11 @@ const char* verdictName(TestSummary::Verdict v);  // "passes", "fails", "undecid
 std::vector<TestSummary> summarise(const TestFile& f, const std::vector<RunResult>& results);
 
 // Fills the baseline fields from this run's and the baseline's results
-// (tests matched by name; a test missing from the baseline is not compared).
+// (tests matched by name; a test missing from the baseline, or `changed`
+// since (its definition differs), is not compared).
 void compareWithBaseline(std::vector<TestSummary>& tests, const std::vector<RunResult>& current,
-                         const std::vector<RunResult>& baseline, double alpha);
+                         const std::vector<RunResult>& baseline, double alpha,
+                         const std::set<std::string>& changed = {});
 
 // 0 every test passes and none regressed; 1 otherwise.
 int exitCode(const std::vector<TestSummary>& tests);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <set>
 #include <sstream>
 
 #include <unistd.h>
@@ -12,6 +13,7 @@
 #include "sim/experiment/PrivateShm.hpp"
 #include "sim/experiment/ProgressLine.hpp"
 #include "sim/experiment/ResultsFolder.hpp"
+#include "sim/experiment/Trial.hpp"
 #include "sim/scenario_tests/JUnit.hpp"
 #include "sim/scenario_tests/TestReport.hpp"
 
@@ -26,9 +28,7 @@ using experiment::writeAtomic;
 namespace {
 
 std::string timingRow(const RunResult& r) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%.3f,%.3f\n", r.sim_s, r.wall_s);
-  return buf;
+  return experiment::fixed(r.sim_s, 3) + "," + experiment::fixed(r.wall_s, 3) + "\n";
 }
 
 void readTiming(const std::string& path, RunResult& r) {
@@ -69,7 +69,21 @@ class RunJob : public experiment::ForkJob {
                   r.passed ? r.decided_s : r.failure_s, r.passed ? "" : ": ", r.failure.c_str());
     progress_.step(what);
   }
-  void failed(int t, const std::string& why) override { progress_.fail(t, why); }
+  // A run whose process died (a crash, a hang ended by the watchdog, a
+  // launched program that killed it) is a failing run, recorded as such so
+  // the folder still gets its verdicts; its log stays. Delete its
+  // trial_NNNNNN.csv to run it again.
+  void failed(int t, const std::string& why) override {
+    progress_.fail(t, why);
+    const RunSpec s = runSpec(f_, opt_.short_form, t, opt_.seed, opt_.has_seed);
+    RunResult r;
+    r.index = t;
+    r.test = f_.tests[s.test].name;
+    r.run = s.run;
+    r.seed = s.seed;
+    r.failure = "the run's process failed (" + why.substr(0, why.find(':')) + ")";  // no pid or path
+    writeRun(opt_.out_dir, r);
+  }
 
  private:
   const TestFile& f_;
@@ -130,7 +144,19 @@ void assemble(const TestFile& f, const TestOptions& opt, int total, TestOutcome&
   }
   writeAtomic(opt.out_dir + "/results.csv", csv);
   out.tests = summarise(f, results);
-  if (!opt.baseline.empty()) compareWithBaseline(out.tests, results, readBaseline(opt.baseline), opt.alpha);
+  if (!opt.baseline.empty()) {
+    // Tests redefined since the baseline (same name, another entry) are not compared.
+    std::set<std::string> changed;
+    const std::string held = opt.baseline + "/tests.yaml";
+    if (exists(held)) {
+      const std::map<std::string, std::string> before = testDefinitions(readFile(held), held);
+      for (const ScenarioTest& t : f.tests) {
+        auto it = before.find(t.name);
+        if (it != before.end() && it->second != t.definition) changed.insert(t.name);
+      }
+    }
+    compareWithBaseline(out.tests, results, readBaseline(opt.baseline), opt.alpha, changed);
+  }
   writeAtomic(opt.out_dir + "/summary.csv", summaryCsv(out.tests, !opt.baseline.empty()));
   std::string figure_note;
   const bool figure = plotPassRates(out.tests, opt.out_dir, &figure_note);
@@ -155,7 +181,11 @@ std::string folderText(const TestFile& f, const TestOptions& opt) {
   if (!t.empty() && t.back() != '\n') t += '\n';
   t += "# simswift test: " + std::string(opt.short_form ? "--short" : "full form");
   if (opt.has_seed) t += " --seed " + std::to_string(opt.seed);
-  if (!opt.only.empty()) t += " --only " + opt.only;
+  if (!opt.only.empty()) {
+    // The tests kept, in the file's order (--only b,a and a,b are one run).
+    t += " --only ";
+    for (size_t k = 0; k < f.tests.size(); ++k) t += (k ? "," : "") + f.tests[k].name;
+  }
   return t + "\n";
 }
 
@@ -199,21 +229,22 @@ TestOutcome runTests(const TestFile& f, const TestOptions& opt) {
   if (out.interrupted) {
     m << "interrupted: " << out.already + out.ran << " of " << out.runs << " runs kept in " << opt.out_dir
       << "; run the same command again to continue";
-  } else if (out.failed) {
-    m << out.failed << " run(s) failed to run (logs in " << opt.out_dir << "/trials); rerun to retry them";
-    out.exit_code = 1;
-  } else {
-    bool all = true;
-    for (int t = 0; t < total && all; ++t) all = experiment::trialDone(opt.out_dir, t);
-    if (all) {
-      assemble(f, opt, total, out, run.wall_s);
-      return out;
-    }
-    m << "shard " << opt.shard << "/" << opt.shards << ": " << out.already + out.ran << " runs in " << opt.out_dir
-      << "; join the shards with `simswift test FILE --merge DIR... --out DIR`";
+    out.message = m.str();
+    out.exit_code = 130;
+    return out;
   }
+  bool all = true;
+  for (int t = 0; t < total && all; ++t) all = experiment::trialDone(opt.out_dir, t);
+  if (all) {
+    assemble(f, opt, total, out, run.wall_s);
+    if (out.failed)
+      out.message = std::to_string(out.failed) + " run(s) failed in their process (counted as failing; logs in " +
+                    opt.out_dir + "/trials)\n" + out.message;
+    return out;
+  }
+  m << "shard " << opt.shard << "/" << opt.shards << ": " << out.already + out.ran + out.failed << " runs in "
+    << opt.out_dir << "; join the shards with `simswift test FILE --merge DIR... --out DIR`";
   out.message = m.str();
-  if (out.interrupted) out.exit_code = 130;
   return out;
 }
 

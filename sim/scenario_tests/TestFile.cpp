@@ -8,6 +8,7 @@
 
 #include "agent/random/Random.hpp"
 #include "agent/random/SplitMix64.hpp"
+#include "sim/experiment/Statistics.hpp"
 
 namespace simswift::scenario_tests {
 
@@ -19,11 +20,38 @@ namespace {
 constexpr int kMaxSeeds = 100000;
 constexpr double kMaxTimeLimit = 3600;  // s of simulated time per run
 
-struct Defaults {
-  int seeds = 20;
-  double required = 0.9;
-  double time_limit = 60;
-};
+std::string flowYaml(const YAML::Node& n) {
+  YAML::Emitter e;
+  e << YAML::Flow << n;
+  return e.c_str();
+}
+
+using Defaults = TestDefaults;
+
+// The seeds at which every run passing confirms `required` (the Wilson
+// lower end reaches it), up to kMaxSeeds.
+int seedsToConfirm(double required) {
+  int n = 1;
+  while (n < kMaxSeeds && experiment::stats::wilson(n, n).lo < required) n = n < 64 ? n + 1 : n * 2;
+  return n;
+}
+
+// Refuses a required rate that the test's seeds cannot confirm.
+void checkConfirmable(const YamlReader& t, const ScenarioTest& test) {
+  if (test.required >= 1)
+    t.fail("required", "a rate of 1 can never be confirmed (a 95 % interval's lower end stays below 1): use a rate "
+                       "below 1, e.g. 0.95");
+  for (const int n : {test.seeds, test.short_seeds}) {
+    const double lo = experiment::stats::wilson(n, n).lo;
+    if (lo < test.required)
+      t.fail(t.has("required") ? "required" : "seeds",
+             "with " + std::to_string(n) + " seeds even " + std::to_string(n) + "/" + std::to_string(n) +
+                 " passes give a 95 % lower bound of " + std::to_string(lo).substr(0, 5) + ", below the required " +
+                 std::to_string(test.required).substr(0, 5) + ": the test could never pass; use at least " +
+                 std::to_string(seedsToConfirm(test.required)) + " seeds" +
+                 (n == test.short_seeds && n != test.seeds ? " in short:" : "") + " or a lower rate");
+  }
+}
 
 // A fuzz range: a number a (>= 0) for [-a, a], or offsets [lo, hi].
 Range2 readRange(const YamlReader& r, const std::string& key, double max) {
@@ -96,6 +124,7 @@ ScenarioTest readTest(const YamlReader& t, const std::string& source, const Defa
                       std::set<std::string>& names) {
   ScenarioTest test;
   test.line = t.node().Mark().line + 1;
+  test.definition = flowYaml(t.node());
   test.name = t.string("name");
   if (test.name.empty() || test.name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") !=
                                std::string::npos)
@@ -109,6 +138,7 @@ ScenarioTest readTest(const YamlReader& t, const std::string& source, const Defa
   }
   test.time_limit = t.number("time_limit", d.time_limit, Range::openClosed(0, kMaxTimeLimit));
   test.required = t.number("required", d.required, Range::openClosed(0, 1));
+  checkConfirmable(t, test);
   readScenario(t, source, test);
   test.scenario.duration = test.time_limit;
   test.field = FieldConfig::loadYaml(test.scenario.fieldFile());
@@ -169,6 +199,16 @@ TestFile TestFile::parse(const std::string& text, const std::string& source_name
   }
   top.finish();
   return f;
+}
+
+std::map<std::string, std::string> testDefinitions(const std::string& text, const std::string& source) {
+  const YAML::Node root = YamlReader::parse(text, source);
+  std::map<std::string, std::string> out;
+  if (!root.IsMap() || !root["tests"] || !root["tests"].IsSequence())
+    throw ConfigError(source + ":1: not a test file (no tests: list)");
+  for (const YAML::Node& t : root["tests"])
+    if (t.IsMap() && t["name"] && t["name"].IsScalar()) out[t["name"].Scalar()] = flowYaml(t);
+  return out;
 }
 
 bool selectTests(TestFile& f, const std::string& names, std::string* error) {

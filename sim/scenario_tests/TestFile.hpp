@@ -20,11 +20,14 @@
 //       pass: {...}                 # the pass condition (Condition.hpp)
 //
 // Every error is a ConfigError "file:line: key: message", with "did you
-// mean" for a misspelt key. Every run's fuzzed placement is checked against
+// mean" for a misspelt key. A required rate that its seeds could not
+// confirm even if every run passed (Summary.hpp: the Wilson interval's lower
+// end) is refused with the seeds it needs. Every run's fuzzed placement is checked against
 // the field before any run starts.
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -45,15 +48,23 @@ struct PoseFuzz {
   Range2 x, y, theta;  // m, m, rad
 };
 
+// A test's settings when neither it nor the file's `defaults:` gives them.
+struct TestDefaults {
+  int seeds = 20;
+  double required = 0.8;   // 20 of 20 passes give a Wilson lower end of 0.84
+  double time_limit = 60;  // s
+};
+
 struct ScenarioTest {
   std::string name;
+  std::string definition;        // the test's entry as flow YAML (a baseline's is compared with it)
   int line = 0;                  // of the test's entry
   runner::Scenario scenario;     // duration = time_limit
   FieldConfig field;             // the scenario's field (for the predicates)
-  int seeds = 20;
-  int short_seeds = 20;
-  double time_limit = 60;        // s
-  double required = 0.9;         // pass rate
+  int seeds = TestDefaults{}.seeds;
+  int short_seeds = TestDefaults{}.seeds;
+  double time_limit = TestDefaults{}.time_limit;  // s
+  double required = TestDefaults{}.required;      // pass rate
   std::vector<PoseFuzz> robot_fuzz;  // one per robot (zero ranges: none)
   PoseFuzz ball_fuzz;            // x, y
   TimeNode pass;
@@ -84,6 +95,11 @@ struct RunSpec {
 };
 int countRuns(const TestFile& f, bool short_form);
 RunSpec runSpec(const TestFile& f, bool short_form, int index, uint64_t seed_override, bool has_override);
+
+// Each test's entry in a test file's text as flow YAML, by name (a
+// baseline folder's tests.yaml; its tests are not loaded). Throws
+// ConfigError if the text is not a test file.
+std::map<std::string, std::string> testDefinitions(const std::string& text, const std::string& source);
 
 // The run's seed: from the file's seed (or --seed), the test's name and
 // the run's number; a test's seeds do not move when tests are added,

@@ -5,21 +5,14 @@
 
 #include "sim/experiment/Figures.hpp"
 #include "sim/experiment/Files.hpp"
+#include "sim/experiment/Trial.hpp"
 
 namespace simswift::scenario_tests {
 
 namespace {
 
-std::string f1(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", v);
-  return b;
-}
-std::string f2(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f", v);
-  return b;
-}
+std::string f1(double v) { return experiment::fixed(v, 1); }
+std::string f2(double v) { return experiment::fixed(v, 2); }
 std::string pct(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.0f", 100 * v);
@@ -128,7 +121,8 @@ std::string reportMarkdown(const TestFile& f, const TestOptions& opt, const std:
     o << "|---|---:|---:|---:|---:|---:|---:|---|\n";
     for (const TestSummary& s : tests) {
       if (!s.compared) {
-        o << "| " << s.name << " | " << s.passed << "/" << s.runs << " | (not in the baseline) | | | | | |\n";
+        o << "| " << s.name << " | " << s.passed << "/" << s.runs << " | "
+          << (s.changed ? "(redefined since the baseline)" : "(not in the baseline)") << " | | | | | |\n";
         continue;
       }
       o << "| " << s.name << " | " << s.passed << "/" << s.runs << " | " << s.base_passed << "/" << s.base_runs << " | "

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sim/experiment/Csv.hpp"
+#include "sim/experiment/Trial.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Errors.hpp"
 #include "sim/runner/Runner.hpp"
@@ -15,25 +16,14 @@ namespace simswift::scenario_tests {
 
 namespace {
 
-std::string fixed3(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3f", v);
-  return buf;
+// One record per line (Csv.hpp): a failure text's line breaks become spaces.
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
 }
 
-// A results field: quoted when it holds a separator or a quote.
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) {
-    if (c == '\n') q += ' ';
-    else if (c == '"') q += "\"\"";
-    else q += c;
-  }
-  return q + "\"";
-}
-
-void play(const TestFile& f, const ScenarioTest& test, runner::Scenario sc, RunResult& res) {
+void play(const ScenarioTest& test, runner::Scenario sc, RunResult& res) {
   runner::Runner run(sc);
   // The robot programs' steps on this thread (as an experiment's trials:
   // the same results as named threads; one run per core).
@@ -43,7 +33,7 @@ void play(const TestFile& f, const ScenarioTest& test, runner::Scenario sc, RunR
   const int64_t ticks = run.world().ticksIn(test.time_limit);
   const double tick_s = run.world().tickSeconds();
   Truth truth = observe(run, 0.0, nullptr);
-  Verdict3 v = Verdict3::Pending;
+  Verdict3 v = cond.update(truth);  // the start counts: an invariant already broken, a goal already met
   int64_t k = 0;
   while (k < ticks && v == Verdict3::Pending) {
     run.tick();
@@ -60,7 +50,6 @@ void play(const TestFile& f, const ScenarioTest& test, runner::Scenario sc, RunR
   }
   for (const RobotTruth& r : truth.robots) res.falls += r.falls;
   res.sim_s = static_cast<double>(k) * tick_s;
-  (void)f;
 }
 
 }  // namespace
@@ -84,7 +73,7 @@ RunResult runTest(const TestFile& f, const RunSpec& spec, const std::string& pro
   for (runner::RobotSpec& r : sc.robots)
     if (r.body == bridge::BodyInterface::Lola) r.lola_socket.clear();  // private to this process
   try {
-    play(f, test, sc, res);
+    play(test, sc, res);
   } catch (const runner::ProgramError& err) {
     const std::string name = res.test;
     const int run = res.run;
@@ -105,8 +94,8 @@ std::string resultsHeader() { return "run,test,test_run,seed,passed,decided_s,fa
 std::string resultsRow(const RunResult& r) {
   std::ostringstream o;
   o << r.index << ',' << r.test << ',' << r.run << ',' << r.seed << ',' << (r.passed ? 1 : 0) << ','
-    << fixed3(r.decided_s) << ',' << (r.passed ? "" : fixed3(r.failure_s)) << ',' << r.falls << ','
-    << csvField(r.failure) << '\n';
+    << experiment::fixed(r.decided_s, 3) << ',' << (r.passed ? "" : experiment::fixed(r.failure_s, 3)) << ','
+    << r.falls << ',' << experiment::csvField(oneLine(r.failure)) << '\n';
   return o.str();
 }
 

@@ -36,8 +36,8 @@ Truth observe(runner::Runner& r, double t, const Truth* before) {
     if (c.other == GeomTag::Ball && c.robot >= 0 && c.robot < n) out.robots[c.robot].touched_ball = true;
   out.state = r.gameController().state();
   const network::TeamNetworkStats& s = r.teamNetwork().stats();
-  out.team_sent[0] = s.team_sent[0];
-  out.team_sent[1] = s.team_sent[1];
+  // What each team's programs sent, within the budget or not.
+  for (int k = 0; k < 2; ++k) out.team_sent[k] = s.team_sent[k] + s.team_over_budget[k];
   return out;
 }
 

@@ -30,7 +30,7 @@ struct Truth {
   double ball_x = 0, ball_y = 0, ball_z = 0;  // m, field frame (centre)
   std::vector<RobotTruth> robots;   // scenario order
   agent::libagent::GameStateValue state = agent::libagent::GameStateValue::Playing;
-  int64_t team_sent[2] = {0, 0};    // team packets accepted from each side so far
+  int64_t team_sent[2] = {0, 0};    // team packets each side's programs sent so far (over budget too)
 };
 
 // The truth after the runner's latest tick, t s since the start; `before`

@@ -19,26 +19,14 @@
 #include <vector>
 
 #include "sim/runner/Runner.hpp"
+#include "tests/support/Shell.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code = -1;
-  std::string output;
-};
-
-Result shell(const std::string& cmd) {
-  Result r;
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  if (!p) return r;
-  char buf[512];
-  while (fgets(buf, sizeof buf, p)) r.output += buf;
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using Result = simswift::testing::ShellResult;
+using simswift::testing::shell;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p);

@@ -128,6 +128,43 @@ TEST(Condition, FirstFailureIsTheEarliest) {
   EXPECT_NE(run.failure().find("not met by 3.00 s"), std::string::npos) << run.failure();
 }
 
+TEST(Condition, AnInvariantUnderAnyDecidesNothingEarly) {
+  // Met at the first tick only if `never` counted as holding inside `any`.
+  const TimeNode c = condition("pass: {any: [{eventually: {ball_in_goal: red}}, {never: {fallen: 0}}]}");
+  ConditionRun run(c, kField);
+  EXPECT_EQ(run.update(truth(0.01, 0, 0)), Verdict3::Pending);
+  EXPECT_EQ(run.finish(truth(60, 0, 0)), Verdict3::True);  // nobody fell: the `never` branch holds
+}
+
+TEST(Condition, TheFailureNamedIsTheOneThatDecided) {
+  // The `any` is met by its second branch at 30 s; its first branch failed
+  // at 5 s but decided nothing. The fall at 40 s failed the condition.
+  const TimeNode c = condition(
+      "pass: {all: [{any: [{within: {seconds: 5, that: {ball_in_goal: red}}}, {within: {seconds: 60, that: "
+      "{touched_ball: 1}}}]}, {never: {fallen: 0}}, {eventually: {ball_in_goal: blue}}]}");
+  ConditionRun run(c, kField);
+  Truth t = truth(5, 0, 0);
+  EXPECT_EQ(run.update(t), Verdict3::Pending);
+  t = truth(30, 0, 0);
+  t.robots[1].touched_ball = true;
+  EXPECT_EQ(run.update(t), Verdict3::Pending);
+  t.t = 40;
+  t.robots[0].fallen = true;
+  EXPECT_EQ(run.update(t), Verdict3::False);
+  EXPECT_NE(run.failure().find("fallen: 0"), std::string::npos) << run.failure();
+  EXPECT_DOUBLE_EQ(run.failureTime(), 40);
+}
+
+TEST(Condition, OfTwoDecidingFailuresTheEarlierIsNamed) {
+  const TimeNode c = condition(
+      "pass: {any: [{within: {seconds: 8, that: {ball_in_goal: red}}}, {within: {seconds: 3, that: {touched_ball: 0}}}]}");
+  ConditionRun run(c, kField);
+  EXPECT_EQ(run.update(truth(3, 0, 0)), Verdict3::Pending);
+  EXPECT_EQ(run.update(truth(8, 0, 0)), Verdict3::False);
+  EXPECT_NE(run.failure().find("touched_ball: 0"), std::string::npos) << run.failure();
+  EXPECT_DOUBLE_EQ(run.failureTime(), 3);
+}
+
 TEST(StatePredicates, SelectorsCountsAndSums) {
   Truth t = truth(1, 0, 0);
   t.robots[0].x = -0.2;  // blue, 0.2 m from the ball

@@ -23,7 +23,7 @@ const std::string kOne =
     "    seeds: 5\n"
     "    short: {seeds: 2}\n"
     "    time_limit: 4\n"
-    "    required: 0.6\n"
+    "    required: 0.3\n"
     "    scenario:\n"
     "      ball: {x: 1.0, y: 0.5}\n"
     "      robots:\n"
@@ -71,8 +71,21 @@ TEST(TestFile, ErrorsNameTheLineAndKey) {
   EXPECT_NE(errorOf(file("  - name: x\n    pass: {never: {fallen: 0}}\n")).find("tests[0]"), std::string::npos);
   EXPECT_NE(errorOf("name: t\ntests: []\n").find("needs at least one test"), std::string::npos);
   std::string required = kOne;
-  required.replace(required.find("required: 0.6"), 13, "required: 1.5");
+  required.replace(required.find("required: 0.3"), 13, "required: 1.5");
   EXPECT_NE(errorOf(file(required)).find("t.yaml:8: tests[0].required"), std::string::npos) << errorOf(file(required));
+}
+
+TEST(TestFile, ARequiredRateItsSeedsCannotConfirmIsRefused) {
+  // 2 short seeds: 2/2 passes give a lower bound of 0.342.
+  std::string t = kOne;
+  t.replace(t.find("required: 0.3"), 13, "required: 0.5");
+  const std::string e = errorOf(file(t));
+  EXPECT_NE(e.find("t.yaml:8: tests[0].required: with 2 seeds even 2/2 passes give a 95 % lower bound of 0.342"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("use at least 4 seeds in short:"), std::string::npos) << e;  // 4/4: 0.51
+  t.replace(t.find("required: 0.5"), 13, "required: 1.0");
+  EXPECT_NE(errorOf(file(t)).find("a rate of 1 can never be confirmed"), std::string::npos);
 }
 
 TEST(TestFile, AFuzzListLongerThanTheRobots) {
