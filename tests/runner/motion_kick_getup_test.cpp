@@ -7,7 +7,7 @@
 #include <vector>
 #include <cstdio>
 
-#include "tests/runner/motion_harness.hpp"
+#include "tools/motion_harness.hpp"
 
 using agent::blackboard::ActionType;
 using agent::blackboard::Foot;
