@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/runner/FallDetector.hpp"
 #include "tools/motion_harness.hpp"
 
 using agent::blackboard::ActionType;
@@ -215,7 +216,7 @@ int main(int argc, char** argv) {
         std::printf("\n");
       }
     }
-    if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > 0.25) {
+    if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > simswift::runner::FallDetector::kStandHeight) {
       up_at = i * 0.01;
       break;
     }
