@@ -153,17 +153,23 @@ YAML::Node YamlReader::parse(const std::string& text, const std::string& file) {
   return root;
 }
 
-YAML::Node YamlReader::parseFile(const std::string& path) {
+std::string YamlReader::readFile(const std::string& path, const std::string& kind) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path, 1, "", "is a directory, not a file");
+  if (std::filesystem::is_directory(path, ec)) {
+    const bool vowel = !kind.empty() && std::string("aeiou").find(kind[0]) != std::string::npos;
+    throw ConfigError(path, 1, "", "is a directory, not " + std::string(vowel ? "an " : "a ") + kind);
+  }
+  // yaml-cpp reads everything at once: a huge file is refused before it is read.
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec) checkConfigSize(size, path);
   std::ifstream in(path);
-  if (!in) throw ConfigError(path, 1, "", "cannot open file");
+  if (!in) throw ConfigError(path, 1, "", "cannot open " + kind);
   std::ostringstream ss;
   ss << in.rdbuf();
-  return parse(ss.str(), path);
+  return ss.str();
 }
+
+YAML::Node YamlReader::parseFile(const std::string& path) { return parse(readFile(path), path); }
 
 YamlReader::YamlReader(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}

@@ -7,10 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
 #include "sim/game/GameControlVersions.hpp"
@@ -390,16 +388,7 @@ std::string Scenario::modelFile() const { return locate(model_path, "model", mod
 std::string Scenario::fieldFile() const { return locate(field_path, "field", field_line); }
 
 Scenario Scenario::loadFile(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path, 1, "", "is a directory, not a scenario file");
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path, 1, "", "cannot open scenario file");
-  // yaml-cpp reads everything at once: refuse a huge file first.
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec) checkConfigSize(size, path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), path);
+  return parse(YamlReader::readFile(path, "scenario file"), path);
 }
 
 namespace {
