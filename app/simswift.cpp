@@ -193,7 +193,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (cmd == "--version") {
-    std::printf("simswift 0.1\n");
+    std::printf("simswift %s\n", SIMSWIFT_VERSION);
     return 0;
   }
   if (cmd == "experiment")  // the behaviours of agent/behaviour in the trials

@@ -176,7 +176,7 @@ int main(int argc, char** argv) {
 
   // Falls per 100 random 20 s sequences (a new command every 2 s): a
   // sequence with any fall (WalkSample::falls: the simulator's detector,
-  // torso origin below 0.20 m, the meter's count) counts one.
+  // torso origin below FallDetector::kFallHeight, the meter's count) counts one.
   if (!wanted("falls")) return 0;
   int falls = 0;
   double sim_s = 0, wall_s = 0, cpu_s = 0;

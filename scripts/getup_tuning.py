@@ -1,8 +1,8 @@
 """What the get-up tuning scripts share (tune-getup-front.py, tune-getup-roll.py).
 
-run_trial() runs one pushed-over trial of a candidate GETUP_FRAMES text
-through the tuning harness (tools/getup_tuning.cpp,
-MotionGetupTuning.Trace) and returns its RESULT line's words:
+run_trial() runs one pushed-over trial of a candidate frames text (the
+harness's --frames format) through the tuning harness (tools/getup_tuning.cpp,
+build/tools/getup-tuning) and returns its RESULT line's words:
   RESULT <dir> trial N: UP|down up_at T attempts A best R besth H
 evolve() is the (mu/mu, lambda)-ES both scripts search with, the parent
 re-evaluated each generation; the best candidate so far is kept in --out.
@@ -41,21 +41,20 @@ def check_runner(p, args):
         p.error("--runner %s: no such file (build the tools first)" % args.runner)
 
 
-def run_trial(args, text, trial, direction, extra_env=None):
+def run_trial(args, text, trial, direction, extra_args=None):
     with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
         f.write(text)
         path = f.name
-    env = dict(os.environ, GETUP_DIR=direction, GETUP_FRAMES=path, GETUP_SEED=str(trial), GETUP_ONE="1",
-               GETUP_QUIET="1", GETUP_SEED_BASE=str(args.seed_base), **(extra_env or {}))
+    cmd = [args.runner, "--dir", direction, "--frames", path, "--trial", str(trial), "--one", "--quiet",
+           "--seed-base", str(args.seed_base)] + (extra_args or [])
     try:
-        out = subprocess.run([args.runner, "--gtest_filter=*Trace"],
-                             env=env, capture_output=True, text=True).stdout
+        out = subprocess.run(cmd, capture_output=True, text=True).stdout
     finally:
         os.unlink(path)
     for line in out.splitlines():
         if line.startswith("RESULT"):
             return line.split()
-    raise RuntimeError("no RESULT line from %s (is it built with the tuning test?)" % args.runner)
+    raise RuntimeError("no RESULT line from %s (%s)" % (args.runner, " ".join(cmd)))
 
 
 def up_score(w):
@@ -64,7 +63,7 @@ def up_score(w):
 
 
 def evolve(args, score, mean, decode, lam, mu, lo, hi, decay, workers):
-    """score(job) is the caller's top-level function of (args, x); decode(x) a GETUP_FRAMES text."""
+    """score(job) is the caller's top-level function of (args, x); decode(x) a --frames text."""
     rng = random.Random(args.rng)
     sigma = args.sigma
     best = (float("-inf"), None)

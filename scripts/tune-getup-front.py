@@ -5,7 +5,7 @@ How the front get-up in agent/motion/Generators.cpp (getupFrontFrames) was
 retuned for the faithful motors (torque falling linearly with speed, gear
 efficiency 0.8): an evolution strategy over the symmetric keyframes after the
 arms have gone overhead, starting from the previous sequence. Each candidate
-is written as a GETUP_FRAMES file and run through the tuning harness
+is written as a --frames file and run through the tuning harness
 (tools/getup_tuning.cpp, build/tools/getup-tuning) on several
 pushed-over trials; a trial scores
 
@@ -26,7 +26,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from getup_tuning import check_runner, clamp, evolve, parser, run_trial, start_mean, up_score  # noqa: E402
 
-# Symmetric frame columns (GETUP_FRAMES format) and their ranges (rad):
+# Symmetric frame columns (the --frames format) and their ranges (rad):
 # sp sr ey er hyp hr hp kn ap ar.
 RANGES = [(-2.08, 2.08), (-0.31, 1.32), (-2.08, 2.08), (-1.54, -0.04), (-1.14, 0.74),
           (-0.37, 0.79), (-1.53, 0.48), (-0.09, 2.11), (-1.18, 0.92), (-0.39, 0.76)]

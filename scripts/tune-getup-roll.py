@@ -4,7 +4,7 @@
 How the roll in agent/motion/Generators.cpp (getupBackFrames) was found: an
 evolution strategy over three asymmetric whole-body keyframes that follow a
 fixed V-sit and precede the unchanged front get-up. Each candidate is written
-as a GETUP_FRAMES file and run through the tuning harness
+as a --frames file and run through the tuning harness
 (tools/getup_tuning.cpp, build/tools/getup-tuning) on several pushed-
 over trials; the score of a trial is
 
@@ -41,7 +41,7 @@ V_SIT = "0.5 0.75 0.2 0 -0.05 0 0 -1.5 0 0 0\n"  # hips flexed, legs straight, a
 
 
 def decode(x):
-    """Genes in 0..1 -> a GETUP_FRAMES text (durations 0.2..1.0 s)."""
+    """Genes in 0..1 -> a --frames text (durations 0.2..1.0 s)."""
     width = len(JOINTS) + 1
     lines = []
     for f in range(FRAMES):
@@ -57,7 +57,7 @@ def score(job):
     text = decode(x)
     results = []
     for t in range(args.trials):
-        w = run_trial(args, text, t, "back", {"GETUP_ROLL": "1"})
+        w = run_trial(args, text, t, "back", ["--roll"])
         up = up_score(w)
         # Not up: how far the chest came to face down, and how high the torso rose.
         results.append(up if up is not None else float(w[w.index("best") + 1]) + 4 * float(w[w.index("besth") + 1]))

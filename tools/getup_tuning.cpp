@@ -1,23 +1,33 @@
-// Tuning harness for the get-up keyframes (run by hand: build/tools/getup-tuning).
-// GETUP_FRAMES=<file> overrides the front (GETUP_DIR=front) or back sequence
-// with keyframes read from a text file, so sequences can be tuned without a
-// rebuild. Line format (rad, s; symmetric arms/legs as in Generators.cpp):
+// Tuning harness for the get-up keyframes, run by hand (build/tools/getup-tuning;
+// never by ctest). Pushes the robot over and prints, every 0.1 s, the time,
+// the Motion mode, torso height (m), AngleX / AngleY (rad), the get-up
+// attempts and the main joints' sensed/commanded angles (--torque: also each
+// left joint's torque over its stall torque), then one line
+//   RESULT <front|back> trial N: UP|down up_at T attempts A best R besth H
+// (--quiet: that line only). scripts/getup_tuning.py drives it.
+//
+//   getup-tuning [--dir front|back] [--frames FILE] [--trial N] [--seed-base S]
+//                [--one] [--quiet] [--roll] [--torque]
+//
+// --frames FILE replaces the front (--dir front, the default) or back
+// sequence with keyframes read from a text file, so sequences can be tuned
+// without a rebuild. Line format (rad, s; symmetric arms/legs as in Generators.cpp):
 //   dur sp sr ey er hyp hr hp kn ap ar [joint=value ...]
 //   crouch dur | stand dur | front (the front get-up's frames)
-// Prints torso height (m), AngleX / AngleY (rad) and the mode every 0.1 s
-// (GETUP_QUIET: only the RESULT line). GETUP_SEED = trial (push and noise),
-// GETUP_SEED_BASE = noise seed base, GETUP_ONE = stop after the first attempt,
-// GETUP_ROLL = score the chest facing down. scripts/tune-getup-roll.py drives it.
-#include <gtest/gtest.h>
-
+// --trial N: the push (and the noise seed's offset); --seed-base S: the noise
+// seed base (default 100 front, 150 back: the tests'); --one: stop after the
+// first attempt; --roll: score the chest facing down.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
-#include "tests/runner/motion_harness.hpp"
+#include "sim/runner/FallDetector.hpp"
+#include "tools/motion_harness.hpp"
 
 using agent::blackboard::ActionType;
 using motion_test::MotionHarness;
@@ -25,6 +35,66 @@ namespace J = agent::libagent::Joints;
 namespace S = agent::libagent::Sensors;
 
 namespace {
+
+struct Options {
+  bool forwards = true;     // --dir front (back: false)
+  std::string frames;       // --frames
+  int trial = 0;            // --trial
+  int base = -1;            // --seed-base (-1: the tests' for the direction)
+  bool one = false, quiet = false, roll = false, torque = false;
+};
+
+// --help: the usage on stdout, exit 0; a bad argument: why and the usage on stderr, exit 2.
+[[noreturn]] void usage(const std::string& why, int code = 2) {
+  std::fprintf(code == 0 ? stdout : stderr,
+               "getup-tuning: %s\nusage: getup-tuning [--dir front|back] [--frames FILE] [--trial N] "
+               "[--seed-base S] [--one] [--quiet] [--roll] [--torque]\n",
+               why.c_str());
+  std::exit(code);
+}
+
+int integer(const std::string& flag, const char* text) {
+  char* end = nullptr;
+  const long v = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0') usage(flag + ": not an integer: '" + text + "'");
+  return static_cast<int>(v);
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> const char* {
+      if (i + 1 >= argc) usage(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--dir") {
+      const std::string d = value();
+      if (d != "front" && d != "back") usage("--dir: front or back (got '" + d + "')");
+      o.forwards = d == "front";
+    } else if (a == "--frames") {
+      o.frames = value();
+      if (!std::ifstream(o.frames)) usage("--frames: cannot read " + o.frames);
+    } else if (a == "--trial") {
+      o.trial = integer(a, value());
+    } else if (a == "--seed-base") {
+      o.base = integer(a, value());
+    } else if (a == "--one") {
+      o.one = true;
+    } else if (a == "--quiet") {
+      o.quiet = true;
+    } else if (a == "--roll") {
+      o.roll = true;
+    } else if (a == "--torque") {
+      o.torque = true;
+    } else if (a == "--help" || a == "-h") {
+      usage("the get-ups' tuning harness", 0);
+    } else {
+      usage("unknown argument '" + a + "'");
+    }
+  }
+  return o;
+}
 
 std::vector<agent::motion::Keyframe> readFrames(const std::string& path, const agent::motion::WalkConfig& cfg) {
   std::vector<agent::motion::Keyframe> f;
@@ -77,19 +147,15 @@ std::vector<agent::motion::Keyframe> readFrames(const std::string& path, const a
 
 }  // namespace
 
-TEST(MotionGetupTuning, Trace) {
-  const char* dir = std::getenv("GETUP_DIR");
-  const bool forwards = !dir || std::string(dir) != "back";
-  const char* seed_env = std::getenv("GETUP_SEED");
-  const int trial = seed_env ? std::atoi(seed_env) : 0;
-  const char* quiet = std::getenv("GETUP_QUIET");
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  const bool forwards = o.forwards;
+  const int trial = o.trial;
+  const bool quiet = o.quiet;
   agent::motion::MotionConfig cfg;
-  if (const char* file = std::getenv("GETUP_FRAMES")) {
-    (forwards ? cfg.getup_front : cfg.getup_back) = readFrames(file, cfg.walk);
-  }
-  // GETUP_SEED_BASE: tune on other noise seeds than the test's (100 front, 150 back).
-  const char* base_env = std::getenv("GETUP_SEED_BASE");
-  const int base = base_env ? std::atoi(base_env) : (forwards ? 100 : 150);
+  if (!o.frames.empty()) (forwards ? cfg.getup_front : cfg.getup_back) = readFrames(o.frames, cfg.walk);
+  // --seed-base: tune on other noise seeds than the test's (100 front, 150 back).
+  const int base = o.base >= 0 ? o.base : (forwards ? 100 : 150);
   MotionHarness h(base + trial, -3.0, 0.0, 0.0, "", cfg);
   h.request(ActionType::STAND);
   h.run(1.0);
@@ -99,7 +165,7 @@ TEST(MotionGetupTuning, Trace) {
   double up_at = -1, best = -9, best_h = 0;
   bool face_down = false;  // the first attempt has had the chest down (a back roll worked)
   std::vector<double> window, window_h;
-  const bool one = std::getenv("GETUP_ONE") != nullptr;  // stop after the first attempt
+  const bool one = o.one;  // stop after the first attempt
   for (int i = 0; i < 1300; ++i) {
     h.run(0.01);
     const auto st = h.state();
@@ -109,11 +175,11 @@ TEST(MotionGetupTuning, Trace) {
     if (h.motion().getupAttempts() == 1 && h.motion().mode() == agent::motion::MotionModule::Mode::Getup)
     {
       // Held for 0.5 s (the minimum over the last 50 ticks), so a throw that falls back does not count.
-      // GETUP_ROLL scores how far the chest faces down (the torso x axis against
+      // --roll scores how far the chest faces down (the torso x axis against
       // world z: -1 on the back, 0 on the side or sitting, +1 face down).
       const auto& robot = h.runner().world().robot(0);
       const double chest_down = -robot.linkPose(robot.model().rootLink()).rotation().col(0).z();
-      window.push_back(std::getenv("GETUP_ROLL") ? chest_down
+      window.push_back(o.roll ? chest_down
                                                  : h.torsoHeight() - 0.2 * std::fabs(s[S::InertialSensor_AngleY]) -
                                                        0.2 * std::fabs(s[S::InertialSensor_AngleX]));
       if (window.size() > 50) window.erase(window.begin());
@@ -136,7 +202,7 @@ TEST(MotionGetupTuning, Trace) {
                   s[S::InertialSensor_AngleY], h.motion().getupAttempts(), q[J::LShoulderPitch], c[J::LShoulderPitch],
                   q[J::LElbowRoll], c[J::LElbowRoll], q[J::LHipYawPitch], c[J::LHipYawPitch], q[J::LHipPitch],
                   c[J::LHipPitch], q[J::LKneePitch], c[J::LKneePitch], q[J::LAnklePitch], c[J::LAnklePitch]);
-      if (std::getenv("GETUP_TORQUE")) {
+      if (o.torque) {
         // Torque delivered / the motor's cap at rest (stall x efficiency x stiffness), per left joint.
         const auto& robot = h.runner().world().robot(0);
         std::printf("        torque/stall:");
@@ -150,11 +216,12 @@ TEST(MotionGetupTuning, Trace) {
         std::printf("\n");
       }
     }
-    if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > 0.25) {
+    if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > simswift::runner::FallDetector::kStandHeight) {
       up_at = i * 0.01;
       break;
     }
   }
   std::printf("RESULT %s trial %d: %s up_at %.2f attempts %d best %.3f besth %.3f\n", forwards ? "front" : "back",
               trial, up_at >= 0 ? "UP" : "down", up_at, h.motion().getupAttempts(), best, best_h);
+  return 0;
 }

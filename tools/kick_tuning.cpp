@@ -1,61 +1,115 @@
-// Tuning harness for the kick (run by hand: build/tools/kick-tuning). Kicks a
-// ball placed as MotionPhysics.FullPowerKick* places it, on KICK_N seeds from
-// KICK_SEED_BASE (default 900: tune on other seeds than the tests' 200-239),
-// with the KickConfig fields overridden by KICK_<FIELD> (e.g. KICK_WIND_BACK=90,
-// KICK_REACH, KICK_LIFT, KICK_SHIFT, KICK_HEIGHT, KICK_STRIKE_TIME_FAST,
-// KICK_ARM_SWING, KICK_ANKLE_ROLL_MARGIN), KICK_POWER and KICK_DIRECTION (rad)
-// for Distances. KICK_FOOT=left|right (default
-// right). Distances prints a summary; Diagnose one line per kick (where the
-// foot meets the ball, foot and ball speeds, the stance foot's slip and yaw,
-// commands at a joint limit), and with KICK_TRACE a line per tick.
-#include <gtest/gtest.h>
-
+// Tuning harness for the kick, run by hand (build/tools/kick-tuning; never
+// by ctest). Kicks a ball placed as MotionPhysics.FullPowerKick* places it,
+// on --n seeds from --seed-base (default 900: tune on other seeds than the
+// tests' 200-239), with KickConfig fields overridden by --kick FIELD=VALUE
+// (shift, height, lift, wind_back, reach, strike_time_fast, arm_swing,
+// ankle_roll_margin; repeatable).
+//
+//   kick-tuning [distances|diagnose] [--foot left|right] [--n N] [--seed-base S]
+//               [--power P] [--direction RAD] [--kick FIELD=VALUE ...] [--trace]
+//
+// distances prints one summary line (kicks of >= 2.5 m, the min, median and
+// max distance, falls), with --power and --direction (rad) for its kicks;
+// diagnose one line per kick (where the foot meets the ball, foot and ball
+// speeds, the stance foot's slip and yaw, commands at a joint limit), and
+// with --trace a line per tick. Neither named: both, distances first.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
-#include "tests/runner/motion_harness.hpp"
+#include "tools/motion_harness.hpp"
 
 using agent::blackboard::ActionType;
 using agent::blackboard::Foot;
 using motion_test::MotionHarness;
 
 namespace {
-void override(const char* name, double* field) {
-  if (const char* e = std::getenv(name)) *field = std::atof(e);
-}
-void overrides(agent::motion::MotionConfig& cfg) {
-  override("KICK_SHIFT", &cfg.kick.shift);
-  override("KICK_HEIGHT", &cfg.kick.height);
-  override("KICK_LIFT", &cfg.kick.lift);
-  override("KICK_WIND_BACK", &cfg.kick.wind_back);
-  override("KICK_REACH", &cfg.kick.reach);
-  override("KICK_STRIKE_TIME_FAST", &cfg.kick.strike_time_fast);
-  override("KICK_ARM_SWING", &cfg.kick.arm_swing);
-  override("KICK_ANKLE_ROLL_MARGIN", &cfg.kick.ankle_roll_margin);
-}
-// Which kicks to run: KICK_FOOT (left|right, default right), KICK_N seeds
-// (default 10) from KICK_SEED_BASE (default 900).
-struct KickRuns {
-  Foot foot;
-  int n, base;
-};
-KickRuns kickRuns() {
-  const char* foot_env = std::getenv("KICK_FOOT");
-  return {foot_env && std::string(foot_env) == "left" ? Foot::LEFT : Foot::RIGHT,
-          std::getenv("KICK_N") ? std::atoi(std::getenv("KICK_N")) : 10,
-          std::getenv("KICK_SEED_BASE") ? std::atoi(std::getenv("KICK_SEED_BASE")) : 900};
-}
-}  // namespace
 
-TEST(MotionKickTuning, Distances) {
+struct Options {
+  bool distances = true, diagnose = true;
+  Foot foot = Foot::RIGHT;
+  int n = 10, base = 900;
+  double power = 1.0, direction = 0.0;  // distances' kicks (diagnose: full power, straight)
+  bool trace = false;
   agent::motion::MotionConfig cfg;
-  overrides(cfg);
-  const KickRuns runs = kickRuns();
-  const Foot foot = runs.foot;
-  const int n = runs.n, base = runs.base;
+};
+
+// --help: the usage on stdout, exit 0; a bad argument: why and the usage on stderr, exit 2.
+[[noreturn]] void usage(const std::string& why, int code = 2) {
+  std::fprintf(code == 0 ? stdout : stderr,
+               "kick-tuning: %s\nusage: kick-tuning [distances|diagnose] [--foot left|right] [--n N] "
+               "[--seed-base S] [--power P] [--direction RAD] [--kick FIELD=VALUE ...] [--trace]\n",
+               why.c_str());
+  std::exit(code);
+}
+
+double number(const std::string& flag, const char* text) {
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(v)) usage(flag + ": not a number: '" + text + "'");
+  return v;
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  agent::motion::KickConfig& k = o.cfg.kick;
+  const std::map<std::string, double*> fields = {
+      {"shift", &k.shift},         {"height", &k.height},
+      {"lift", &k.lift},           {"wind_back", &k.wind_back},
+      {"reach", &k.reach},         {"strike_time_fast", &k.strike_time_fast},
+      {"arm_swing", &k.arm_swing}, {"ankle_roll_margin", &k.ankle_roll_margin}};
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> const char* {
+      if (i + 1 >= argc) usage(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "distances" || a == "diagnose") {
+      o.distances = a == "distances";
+      o.diagnose = a == "diagnose";
+    } else if (a == "--foot") {
+      const std::string f = value();
+      if (f != "left" && f != "right") usage("--foot: left or right (got '" + f + "')");
+      o.foot = f == "left" ? Foot::LEFT : Foot::RIGHT;
+    } else if (a == "--n") {
+      o.n = static_cast<int>(number(a, value()));
+      if (o.n < 1) usage("--n: at least 1 kick");
+    } else if (a == "--seed-base") {
+      o.base = static_cast<int>(number(a, value()));
+    } else if (a == "--power") {
+      o.power = number(a, value());
+    } else if (a == "--direction") {
+      o.direction = number(a, value());
+    } else if (a == "--kick") {
+      const std::string kv = value();
+      const size_t eq = kv.find('=');
+      const auto it = fields.find(kv.substr(0, eq));
+      if (eq == std::string::npos || it == fields.end()) {
+        std::string names;
+        for (const auto& f : fields) names += (names.empty() ? "" : ", ") + f.first;
+        usage("--kick: FIELD=VALUE with FIELD one of " + names + " (got '" + kv + "')");
+      }
+      *it->second = number("--kick " + it->first, kv.c_str() + eq + 1);
+    } else if (a == "--trace") {
+      o.trace = true;
+    } else if (a == "--help" || a == "-h") {
+      usage("the kick's tuning harness", 0);
+    } else {
+      usage("unknown argument '" + a + "'");
+    }
+  }
+  return o;
+}
+
+// Distance of each kick: one summary line.
+void distances(const Options& o) {
+  const agent::motion::MotionConfig& cfg = o.cfg;
+  const Foot foot = o.foot;
+  const int n = o.n, base = o.base;
   std::vector<double> d;
   int fell = 0;
   for (int s = base; s < base + n; ++s) {
@@ -65,9 +119,7 @@ TEST(MotionKickTuning, Distances) {
     h.request(ActionType::STAND);
     h.run(1.0);
     const Eigen::Vector3d b0 = h.runner().world().ballPosition();
-    const double power = std::getenv("KICK_POWER") ? std::atof(std::getenv("KICK_POWER")) : 1.0;
-    const double direction = std::getenv("KICK_DIRECTION") ? std::atof(std::getenv("KICK_DIRECTION")) : 0.0;
-    h.kick(foot, power, direction);
+    h.kick(foot, o.power, o.direction);
     if (!h.run(6.0)) ++fell;
     d.push_back((h.runner().world().ballPosition() - b0).head<2>().norm());
   }
@@ -78,14 +130,12 @@ TEST(MotionKickTuning, Distances) {
               d.back(), fell);
 }
 
-// Per-kick diagnosis (KICK_DIAG): where and how fast the foot meets the ball,
-// what the stance foot and torso do meanwhile. One line per seed.
-TEST(MotionKickTuning, Diagnose) {
-  agent::motion::MotionConfig cfg;
-  overrides(cfg);
-  const KickRuns runs = kickRuns();
-  const Foot foot = runs.foot;
-  const int n = runs.n, base = runs.base;
+// Per-kick diagnosis: where and how fast the foot meets the ball, what the
+// stance foot and torso do meanwhile. One line per seed.
+void diagnose(const Options& o) {
+  const agent::motion::MotionConfig& cfg = o.cfg;
+  const Foot foot = o.foot;
+  const int n = o.n, base = o.base;
   for (int s = base; s < base + n; ++s) {
     const double y = foot == Foot::RIGHT ? -0.05 : 0.05;
     MotionHarness h(static_cast<uint64_t>(s), -3.0, 0.0, 0.0,
@@ -106,7 +156,7 @@ TEST(MotionKickTuning, Diagnose) {
     std::vector<int> at_limit;
     bool prev = false;
     bool up = true;
-    const bool trace = std::getenv("KICK_TRACE") != nullptr;
+    const bool trace = o.trace;
     const int hp = body.model().jointIndex(foot == Foot::RIGHT ? "RHipPitch" : "LHipPitch");
     const int kn = body.model().jointIndex(foot == Foot::RIGHT ? "RKneePitch" : "LKneePitch");
     const int ap = body.model().jointIndex(foot == Foot::RIGHT ? "RAnklePitch" : "LAnklePitch");
@@ -190,4 +240,13 @@ TEST(MotionKickTuning, Diagnose) {
                 contacts, rel_x, rel_y, rel_z, foot_vx, foot_vy, vmax, vz, vdir, st_dx * 1e3, st_dy * 1e3, st_yaw, t_pitch,
                 t_roll, max_pitch, max_roll);
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  if (o.distances) distances(o);
+  if (o.diagnose) diagnose(o);
+  return 0;
 }

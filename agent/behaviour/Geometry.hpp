@@ -36,10 +36,4 @@ inline Point2 toRobotFrame(const Pose2& pose, Point2 field) {
   return {c * dx + s * dy, -s * dx + c * dy};
 }
 
-// A robot-relative point of `pose` expressed in the field frame.
-inline Point2 toFieldFrame(const Pose2& pose, Point2 rel) {
-  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-  return {pose.x + c * rel.x - s * rel.y, pose.y + s * rel.x + c * rel.y};
-}
-
 }  // namespace agent::behaviour

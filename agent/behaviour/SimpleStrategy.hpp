@@ -14,7 +14,6 @@ class SimpleStrategy : public FindBallStrategy {
  public:
   explicit SimpleStrategy(std::unique_ptr<UtilityCalculator> calc) : calc_(std::move(calc)) {}
   SearchChoice choose(const PositionalDistribution& d, const BehaviourInputs& in) override;
-  const UtilityCalculator& calculator() const { return *calc_; }
 
  private:
   std::unique_ptr<UtilityCalculator> calc_;

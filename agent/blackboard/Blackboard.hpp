@@ -136,7 +136,6 @@ enum class BodyState : int32_t {
   FALLEN_SIDEWAYS,
   LIMP,             // DEAD / LIMP / CROUCH on request
 };
-const char* bodyStateName(BodyState p);
 
 // Written by Motion, read by everyone.
 struct MotionState {

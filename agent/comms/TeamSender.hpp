@@ -28,7 +28,6 @@ class TeamSender {
 
   int64_t sent() const { return sent_; }
   int64_t failed() const { return failed_; }   // transport refused (e.g. outbox full)
-  int64_t periodUs() const { return period_us_; }
 
  private:
   int team_, player_;

@@ -119,49 +119,57 @@ std::string Range::describe() const {
 
 void checkConfigSize(unsigned long long bytes, const std::string& file) {
   if (bytes > kMaxConfigBytes)
-    throw ConfigError(file + ":1: " + std::to_string(bytes) + " bytes is more than a configuration file can be (" +
-                      std::to_string(kMaxConfigBytes >> 10) + " KB)");
+    throw ConfigError(file, 1, "",
+                      std::to_string(bytes) + " bytes is more than a configuration file can be (" +
+                          std::to_string(kMaxConfigBytes >> 10) + " KB)");
 }
 
 YAML::Node YamlReader::parse(const std::string& text, const std::string& file) {
   checkConfigSize(text.size(), file);
   if (const size_t nul = text.find('\0'); nul != std::string::npos) {
     const long line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
-    throw ConfigError(file + ":" + std::to_string(line) + ": contains a NUL byte (not a text file?)");
+    throw ConfigError(file, static_cast<int>(line), "", "contains a NUL byte (not a text file?)");
   }
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp says "bad file" here; its mark is where it stopped.
-    throw ConfigError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML nested too deep: yaml-cpp stops at " +
-                      std::to_string(e.depth()) + " levels of recursion (a configuration file needs fewer than 10)");
+    throw ConfigError(file, e.mark.line + 1, "",
+                      "YAML nested too deep: yaml-cpp stops at " + std::to_string(e.depth()) +
+                          " levels of recursion (a configuration file needs fewer than 10)");
   } catch (const YAML::Exception& e) {
     // e.mark.line is 0-based; e.msg is yaml-cpp's text without the position.
-    throw ConfigError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " +
-                      e.msg);
+    throw ConfigError(file, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
   }
   // Only an alias ('*') can make the readers' walk longer than the text.
   if (text.find('*') != std::string::npos) {
     const size_t nodes = expandedNodes(root, kMaxConfigNodes);
     if (nodes > kMaxConfigNodes)
-      throw ConfigError(file + ":1: more than " + std::to_string(kMaxConfigNodes) +
-                        " YAML nodes, counting each use of an alias in full (aliases of aliases?)");
+      throw ConfigError(file, 1, "",
+                        "more than " + std::to_string(kMaxConfigNodes) +
+                            " YAML nodes, counting each use of an alias in full (aliases of aliases?)");
   }
   return root;
 }
 
-YAML::Node YamlReader::parseFile(const std::string& path) {
+std::string YamlReader::readFile(const std::string& path, const std::string& kind) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ":1: is a directory, not a file");
+  if (std::filesystem::is_directory(path, ec)) {
+    const bool vowel = !kind.empty() && std::string("aeiou").find(kind[0]) != std::string::npos;
+    throw ConfigError(path, 1, "", "is a directory, not " + std::string(vowel ? "an " : "a ") + kind);
+  }
+  // yaml-cpp reads everything at once: a huge file is refused before it is read.
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec) checkConfigSize(size, path);
   std::ifstream in(path);
-  if (!in) throw ConfigError(path + ":1: cannot open file");
+  if (!in) throw ConfigError(path, 1, "", "cannot open " + kind);
   std::ostringstream ss;
   ss << in.rdbuf();
-  return parse(ss.str(), path);
+  return ss.str();
 }
+
+YAML::Node YamlReader::parseFile(const std::string& path) { return parse(readFile(path), path); }
 
 YamlReader::YamlReader(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
@@ -174,14 +182,18 @@ void YamlReader::fail(const std::string& key, const std::string& message) const 
   YAML::Node n = get(key);
   YAML::Mark m = (n.IsDefined() && !n.Mark().is_null()) ? n.Mark() : node_.Mark();
   // An empty document has no marks: its line is 1.
-  const std::string where = file_ + ":" + std::to_string(m.is_null() ? 1 : m.line + 1);
-  throw ConfigError(where + ": " + keyPath(key) + ": " + message);
+  const int line = m.is_null() ? 1 : m.line + 1;
+  const std::string k = keyPath(key);
+  // A key spelt "" keeps its empty slot in the text ("file:3: : ...").
+  if (k.empty()) throw ConfigError(file_, line, "", ": " + message);
+  throw ConfigError(file_, line, k, message);
 }
 
 void YamlReader::fail(const std::string& message) const {
-  const std::string where = file_ + ":" + std::to_string(node_.Mark().is_null() ? 1 : node_.Mark().line + 1);
-  throw ConfigError(where + ": " + (path_.empty() ? std::string("<document>") : path_) + ": " +
-                    message);
+  const int line = node_.Mark().is_null() ? 1 : node_.Mark().line + 1;
+  // The document itself has no key: "<document>" is said in the text only.
+  if (path_.empty()) throw ConfigError(file_, line, "", "<document>: " + message);
+  throw ConfigError(file_, line, path_, message);
 }
 
 void YamlReader::missing(const std::string& key, const std::string& message) const {
@@ -198,9 +210,9 @@ void YamlReader::checkMisspelling(const std::string& key) const {
       const std::string& k = it->first.Scalar();
       if (std::find(known_.begin(), known_.end(), k) != known_.end() || !nearMiss(k, key)) continue;
       const YAML::Mark m = it->first.Mark();
-      throw ConfigError(file_ + ":" + std::to_string(m.is_null() ? 1 : m.line + 1) + ": unknown key '" + clip(k) +
-                        "' in " + (path_.empty() ? std::string("<document>") : path_) + " (did you mean " + key +
-                        "? a required key, missing)");
+      throw ConfigError(file_, m.is_null() ? 1 : m.line + 1, "",
+                        "unknown key '" + clip(k) + "' in " + (path_.empty() ? std::string("<document>") : path_) +
+                            " (did you mean " + key + "? a required key, missing)");
     }
 }
 
@@ -368,10 +380,9 @@ void YamlReader::finish() const {
       if (suggestion.empty() && nearMiss(k, e)) suggestion = " (did you mean " + e + "?)";
     }
     YAML::Mark m = it->first.Mark();
-    const std::string where = file_ + ":" + std::to_string(m.is_null() ? 1 : m.line + 1);
-    throw ConfigError(where + ": unknown key '" + clip(k) + "' in " +
-                      (path_.empty() ? std::string("<document>") : path_) + suggestion +
-                      "; expected one of " + (expected.empty() ? "(none)" : expected));
+    throw ConfigError(file_, m.is_null() ? 1 : m.line + 1, "",
+                      "unknown key '" + clip(k) + "' in " + (path_.empty() ? std::string("<document>") : path_) +
+                          suggestion + "; expected one of " + (expected.empty() ? "(none)" : expected));
   }
 }
 

@@ -80,8 +80,12 @@ class YamlReader {
  public:
   // Parses YAML text; a syntax error becomes a ConfigError with the line.
   static YAML::Node parse(const std::string& text, const std::string& file);
-  // Reads and parses a file; a missing file, a directory or a file over
-  // kMaxConfigBytes is a ConfigError.
+  // The text of a configuration file, the one way every loader reads one: a
+  // directory ("path:1: is a directory, not a <kind>"), a file over
+  // kMaxConfigBytes (refused before it is read) or one that cannot be opened
+  // ("path:1: cannot open <kind>") is a ConfigError.
+  static std::string readFile(const std::string& path, const std::string& kind = "file");
+  // Reads (readFile) and parses a file.
   static YAML::Node parseFile(const std::string& path);
 
   // `node` must be a map (checked lazily by the getters); `path` is the

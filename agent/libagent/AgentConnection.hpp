@@ -85,7 +85,6 @@ class AgentConnection {
   void writeActuators(const ActuatorCommand& cmd);
   void writeActuators(const JointValues& joints, const LedCommand* leds = nullptr,
                       SonarMode sonar = 0, bool stiffen = false, const std::string& say = {});
-  void setStanding(bool standing) { block_->standing = standing; }
 
   // Perception side. waitFrame() returns false when the run is over;
   // perceptionDone() answers the frame it took (camera.frames_done).

@@ -270,7 +270,6 @@ void Localiser::inject(int count) {
     p.theta = wrapAngle(c.theta + rng_.gaussian(0.03));
     p.w = cfg_.inject_prior * likelihood(p) / particles_.size();
   }
-  ++injections_;
 }
 
 double Localiser::modeCost(double x, double y) const {

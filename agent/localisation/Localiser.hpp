@@ -128,7 +128,6 @@ class Localiser {
   const blackboard::LocalisationEstimate& estimate() const { return estimate_; }
   const std::vector<Particle>& particles() const { return particles_; }
   const LocaliserConfig& config() const { return cfg_; }
-  int64_t injections() const { return injections_; }
 
   // Likelihood of one frame's features at a pose (product over features, each
   // mixed with the outlier floor), for tests and tools.
@@ -179,7 +178,6 @@ class Localiser {
   bool beyondBound(double x) const { return x > bound_x_; }
   double last_probe_ = -1e9;  // s
   bool have_estimate_ = false;
-  int64_t injections_ = 0;
   blackboard::LocalisationEstimate estimate_;
 };
 

@@ -31,7 +31,6 @@ class HeadGenerator {
             double dt, libagent::JointValues& out);
   void reset() { primed_ = false; }
   float targetYaw() const { return target_yaw_; }
-  float targetPitch() const { return target_pitch_; }
 
  private:
   bool primed_ = false;

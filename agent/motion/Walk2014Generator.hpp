@@ -89,8 +89,6 @@ class Walk2014Generator {
   const WalkSpeed& latched() const { return step_speed_; }  // this step's speed
   double stepTime() const { return t_; }
   double stepPeriod() const { return period_; }
-  double turnCorrection() const { return turn_correction_; }
-  int64_t stepsTaken() const { return steps_; }
 
   // Body motion executed during the last tick, robot frame (mm, mm, rad),
   // from the support foot's motion relative to the hips.

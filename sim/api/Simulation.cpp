@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
-#include <regex>
 
 #include "agent/libagent/AgentShared.hpp"
 #include "sim/programs/Programs.hpp"
@@ -37,15 +36,8 @@ static_assert(sameIndex(Sonar, al::Sensors::US) && sameIndex(RFsrRearRight, al::
               sameIndex(ChestButton, al::Sensors::ChestBoard_Button) &&
               sameIndex(BatteryCharge, al::Sensors::Battery_Charge));
 
-ConfigError configError(const std::exception& e) {
-  const std::string m = e.what();
-  static const std::regex form(R"(^(.*?):(\d+): ([^: ][^:]*): )");
-  std::smatch g;
-  if (std::regex_search(m, g, form)) return ConfigError(m, g[1].str(), std::stoi(g[2].str()), g[3].str());
-  static const std::regex file_line(R"(^(.*?):(\d+): )");
-  if (std::regex_search(m, g, file_line)) return ConfigError(m, g[1].str(), std::stoi(g[2].str()), "");
-  return ConfigError(m, "", 0, "");
-}
+ConfigError configError(const simswift::ConfigError& e) { return ConfigError(e.what(), e.file, e.line, e.key); }
+ConfigError configError(const simswift::ModelError& e) { return ConfigError(e.what(), e.file, e.line, ""); }
 
 // The simulator's errors for a bad scenario, model or field (its own
 // ConfigError, ModelError) as the API's ConfigError, for every call that

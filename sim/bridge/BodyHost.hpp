@@ -105,7 +105,6 @@ class BodyHost final : public BodySide {
   std::map<std::string, std::string> placeholders() const override;
   const agent::libagent::RobotNames& names() const { return names_; }
   const std::string& memoryName() const { return names_.memory; }
-  const std::string& semaphoreName() const { return names_.semaphore; }
 
   AgentData* block() { return block_; }  // the 2017 block; null for other releases
   Release release() const { return options_.release; }

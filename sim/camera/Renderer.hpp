@@ -35,7 +35,6 @@ class Renderer {
   void render(const Scene& scene, const CameraView& view, uint8_t* rgb);
   std::vector<uint8_t> render(const Scene& scene, const CameraView& view);
 
-  uint64_t contextId() const { return id_; }
   static const char* rendererName();  // GL_RENDERER of the last context made
 
  private:

@@ -12,7 +12,7 @@ namespace la = agent::libagent;
 namespace {
 
 [[noreturn]] void fail(const RobotModel& model, int line, const std::string& what) {
-  throw ModelError(model.source() + ":" + std::to_string(line) + ": " + what);
+  throw ModelError(model.source(), line, what);
 }
 
 }  // namespace

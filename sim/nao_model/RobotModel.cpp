@@ -56,7 +56,7 @@ std::mutex& parserMutex() {
 }
 
 [[noreturn]] void fail(const std::string& source, int line, const std::string& what) {
-  throw ModelError(source + ":" + std::to_string(line) + ": " + what);
+  throw ModelError(source, line, what);
 }
 
 // Sane ranges for every number the loader accepts (SI units). Wide enough
@@ -173,14 +173,15 @@ double orderKey(const std::string& name) {
 
 RobotModel RobotModel::loadUrdf(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw ModelError(path + ":1: is a directory, not a URDF file");
+  if (std::filesystem::is_directory(path, ec)) throw ModelError(path, 1, "is a directory, not a URDF file");
   std::ifstream in(path);
-  if (!in) throw ModelError(path + ":1: cannot open URDF file");
+  if (!in) throw ModelError(path, 1, "cannot open URDF file");
   // Refuse a huge file before reading it all.
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec && size > UrdfLimits::kMaxBytes)
-    throw ModelError(path + ":1: URDF is " + std::to_string(size) + " bytes, more than the " +
-                     std::to_string(UrdfLimits::kMaxBytes >> 20) + " MB limit");
+    throw ModelError(path, 1,
+                     "URDF is " + std::to_string(size) + " bytes, more than the " +
+                         std::to_string(UrdfLimits::kMaxBytes >> 20) + " MB limit");
   std::stringstream ss;
   ss << in.rdbuf();
   return loadUrdfString(ss.str(), path);

@@ -17,6 +17,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace simswift {
@@ -68,9 +69,13 @@ struct JointSpec {
 };
 
 // Raised for a missing or malformed element; the message names the file and
-// the link or joint.
+// the link or joint: "file:line: what", the file and line also kept apart.
 struct ModelError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  ModelError(std::string file_, int line_, const std::string& what)
+      : std::runtime_error(file_ + ":" + std::to_string(line_) + ": " + what), file(std::move(file_)), line(line_) {}
+
+  std::string file;
+  int line = 0;
 };
 
 class RobotModel {

@@ -18,7 +18,7 @@ namespace simswift {
 namespace {
 
 [[noreturn]] void fail(const std::string& source, int line, const std::string& what) {
-  throw ModelError(source + ":" + std::to_string(line) + ": " + what);
+  throw ModelError(source, line, what);
 }
 
 // The first limit of UrdfLimits (depth, elements, attributes) `xml` passes,

@@ -188,7 +188,6 @@ class Runner {
   // shows a search (ProgramDriver::findBallView, the observer hook) gets a
   // PNG per 1/rate_hz s of simulated time; run() assembles the videos.
   void setFindBallView(const sim::views::FindBallRecorderConfig& c) { findball_view_config_ = c; }
-  int64_t findBallViewFrames() const { return findball_view_ ? findball_view_->frames() : 0; }
   // After run(): the overview video line (empty if no overview).
   const std::string& overviewMessage() const { return overview_message_; }
   // Ends the overview (assembles the video) and returns its message; run() calls it.

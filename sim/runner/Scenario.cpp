@@ -7,10 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "agent/libagent/SharedNames.hpp"
 #include "sim/game/GameControlVersions.hpp"
@@ -382,24 +380,15 @@ std::string Scenario::locate(const std::string& p, const std::string& key, int l
   }
   std::string list;
   for (const auto& t : tried) list += (list.empty() ? "" : ", ") + t;
-  throw ConfigError(source + ":" + std::to_string(line) + ": " + key + ": '" + p + "' not found (tried " + list +
-                    "; set SIMSWIFT_DATA_DIR or give --" + key + ")");
+  throw ConfigError(source, line, key,
+                    "'" + p + "' not found (tried " + list + "; set SIMSWIFT_DATA_DIR or give --" + key + ")");
 }
 
 std::string Scenario::modelFile() const { return locate(model_path, "model", model_line); }
 std::string Scenario::fieldFile() const { return locate(field_path, "field", field_line); }
 
 Scenario Scenario::loadFile(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ":1: is a directory, not a scenario file");
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path + ":1: cannot open scenario file");
-  // yaml-cpp reads everything at once: refuse a huge file first.
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec) checkConfigSize(size, path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), path);
+  return parse(YamlReader::readFile(path, "scenario file"), path);
 }
 
 namespace {
@@ -653,9 +642,9 @@ void checkRobotsApart(const Scenario& sc) {
     for (size_t j = 0; j < i; ++j) {
       const double d = std::hypot(sc.robots[i].x - sc.robots[j].x, sc.robots[i].y - sc.robots[j].y);
       if (d < 2 * limits::kRobotRadius)
-        throw ConfigError(sc.source + ":" + std::to_string(sc.robots[i].line) + ": robots[" + std::to_string(i) +
-                          "]: overlaps robots[" + std::to_string(j) + "] (centres " + std::to_string(d) +
-                          " m apart; at least " + std::to_string(2 * limits::kRobotRadius) + " m needed)");
+        throw ConfigError(sc.source, sc.robots[i].line, "robots[" + std::to_string(i) + "]",
+                          "overlaps robots[" + std::to_string(j) + "] (centres " + std::to_string(d) +
+                              " m apart; at least " + std::to_string(2 * limits::kRobotRadius) + " m needed)");
     }
 }
 
@@ -689,7 +678,7 @@ Scenario Scenario::read(const YamlReader& top, const std::string& source_name) {
 
 void Scenario::checkAgainstField(const FieldConfig& f) const {
   auto fail = [&](int line, const std::string& what) {
-    throw ConfigError(source + ":" + std::to_string(line) + ": " + what + " (field " + f.source + ")");
+    throw ConfigError(source, line, "", what + " (field " + f.source + ")");
   };
   const double r_post = f.goal.post_diameter / 2;
   const double post_y = f.goal.inner_width / 2 + r_post;  // as FieldGeometry.cpp builds them

@@ -34,9 +34,8 @@
 
 namespace simswift::sensors {
 
-// IMU sensor points in the torso frame (Aldebaran's NAO V5 (H25) documentation), m.
+// The IMU's accelerometer point in the torso frame (Aldebaran's NAO V5 (H25) documentation), m.
 inline Eigen::Vector3d accelerometerPoint() { return {-0.008, 0.00606, 0.027}; }
-inline Eigen::Vector3d gyroscopePoint() { return {-0.008, 0.006, 0.029}; }
 
 // (angle_x, angle_y) of a torso orientation (torso-to-world rotation), rad.
 Eigen::Vector2d torsoRollPitch(const Eigen::Matrix3d& torso_to_world);

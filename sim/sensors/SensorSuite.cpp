@@ -181,7 +181,6 @@ void SensorSuite::updateFeet(const World& world) {
   const int cop[2] = {S::LFoot_FSR_CenterOfPressure_X, S::RFoot_FSR_CenterOfPressure_X};
   for (int foot = 0; foot < 2; ++foot) {
     std::array<double, 4>& fz = forces[foot];
-    true_foot_force_[foot] = fz[0] + fz[1] + fz[2] + fz[3];
     for (double& v : fz) v = fsr_noise_[foot].perturb(v, config_.fsr.sigma, config_.fsr.bias, config_.noise);
     saturate(fz, config_.fsr_max);
     for (int k = 0; k < 4; ++k) s[first[foot] + k] = static_cast<float>(fz[k]);

@@ -66,9 +66,6 @@ class SensorSuite {
 
   int robot() const { return robot_; }
   const SensorConfig& config() const { return config_; }
-  // Ground truth of the last update, for tests and logs: each foot's total
-  // normal force (N) before noise and saturation.
-  double trueFootForce(bool left) const { return left ? true_foot_force_[0] : true_foot_force_[1]; }
 
  private:
   void updateJoints(const World& world, double dt);
@@ -88,7 +85,6 @@ class SensorSuite {
   std::array<int, 2> foot_link_{{-1, -1}};  // link of each foot's ankle frame
   std::vector<int> link_foot_;              // per link: 0 left foot, 1 right foot, -1 other
   std::array<FsrLayout, 2> fsr_layout_;
-  std::array<double, 2> true_foot_force_{{0, 0}};
   std::array<bool, la::kNumJoints> is_hand_{};
   std::array<int, la::kNumJoints> joint_of_slot_{};  // model joint of each libagent slot
   std::array<SonarBeam, 2> sonar_beam_;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
@@ -189,6 +190,49 @@ TEST(Simulation, BadScenariosThrowWithFileLineAndKey) {
   } catch (const simswift::api::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("/no/such/scenario.yaml"), std::string::npos) << e.what();
   }
+}
+
+// The error's file, line and key are those its throw site gave (issue 32;
+// they were read back from the message before): a syntax error has a line
+// and no key (the text's "YAML syntax error: ..." is no key path), a file
+// name with ": 9: " in it is kept whole, and a URDF's error names the URDF.
+TEST(Simulation, TheErrorsFileLineAndKeyAreTheThrowSitesOwn) {
+  try {
+    simswift::Simulation::fromYaml("duration: 4\nrobots: [{team: 3, player: 1}\n", "syntax.yaml");
+    FAIL() << "accepted";
+  } catch (const simswift::api::ConfigError& e) {
+    EXPECT_EQ(e.file, "syntax.yaml") << e.what();
+    EXPECT_EQ(e.line, 3) << e.what();  // yaml-cpp's mark: the end, the list still open
+    EXPECT_EQ(e.key, "") << e.what();
+  }
+  try {
+    simswift::Simulation::fromYaml("duration: 4\nrobots:\n  - {team: 300, player: 1}\n", "runs:9: a: b.yaml");
+    FAIL() << "accepted";
+  } catch (const simswift::api::ConfigError& e) {
+    EXPECT_EQ(e.file, "runs:9: a: b.yaml") << e.what();
+    EXPECT_EQ(e.line, 3) << e.what();
+    EXPECT_EQ(e.key, "robots[0].team") << e.what();
+  }
+  // A URDF whose second line is a link without an inertial.
+  const std::string urdf = ::testing::TempDir() + "simswift_api_bad_model.urdf";
+  {
+    std::FILE* f = std::fopen(urdf.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("<robot name=\"bad\">\n  <link name=\"torso\"/>\n</robot>\n", f);
+    std::fclose(f);
+  }
+  simswift::Simulation sim = simswift::Simulation::fromYaml(
+      "duration: 1\nmodel: " + urdf + "\nrobots:\n  - {team: 86, player: 1, x: 0.0, y: 1.0}\n", "urdf.yaml");
+  try {
+    sim.step();
+    FAIL() << "started";
+  } catch (const simswift::api::ConfigError& e) {
+    EXPECT_EQ(e.file, urdf) << e.what();
+    EXPECT_EQ(e.line, 2) << e.what();
+    EXPECT_EQ(e.key, "") << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind(urdf + ":2: ", 0), 0u) << e.what();
+  }
+  std::remove(urdf.c_str());
 }
 
 // Every call is valid before the first step: queries answer from the

@@ -84,6 +84,19 @@ TEST(Cli, BadScenarioFieldAndModelExitTwoNamingFileAndLine) {
   expectInputError(fs::path(s).parent_path().string(), fs::path(s).parent_path().string() + ":1: is a directory");
 }
 
+// The version printed is project()'s in CMakeLists.txt (it said 0.1 while
+// the project was 0.2.0).
+TEST(Cli, VersionIsTheProjectsVersion) {
+  FILE* p = popen((std::string(SIMSWIFT_BINARY_DIR) + "/simswift --version 2>&1").c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string out;
+  char buf[256];
+  while (fgets(buf, sizeof buf, p)) out += buf;
+  const int st = pclose(p);
+  EXPECT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) == 0) << out;
+  EXPECT_EQ(out, std::string("simswift ") + SIMSWIFT_VERSION + "\n");
+}
+
 TEST(Cli, GoodScenarioRunsAndExitsZero) {
   const std::string s =
       write("good.yaml", "duration: 0.05\nrobots:\n  - {team: 0, player: 1, x: -1, y: 0}\n");

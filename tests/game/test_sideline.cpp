@@ -6,6 +6,7 @@
 #include "agent/program/Postures.hpp"
 #include "sim/game/Sideline.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
+#include "sim/runner/FallDetector.hpp"
 
 using namespace simswift;
 using namespace simswift::game;
@@ -69,7 +70,7 @@ TEST(Sideline, PenalisedRobotGoesToTheSidelineAndBack) {
   EXPECT_NEAR(now.y, before.y, 0.05);
   EXPECT_NEAR(angleDiff(now.theta, before.theta), 0, 0.1);
   const double z = w.robot(a).linkPose(w.robot(a).model().rootLink()).translation().z();
-  EXPECT_GT(z, 0.25);  // standing, not fallen
+  EXPECT_GT(z, runner::FallDetector::kStandHeight);  // standing, not fallen
   // Left on the sideline (SPL re-entry) when not restored.
   placer.unpenalise(w, b, /*restore=*/false);
   for (int k = 0; k < 20; ++k) w.step();

@@ -7,9 +7,11 @@
 #include <vector>
 #include <cstdio>
 
-#include "tests/runner/motion_harness.hpp"
+#include "sim/runner/FallDetector.hpp"
+#include "tools/motion_harness.hpp"
 
 using agent::blackboard::ActionType;
+using simswift::runner::FallDetector;
 using agent::blackboard::Foot;
 using motion_test::MotionHarness;
 
@@ -111,11 +113,11 @@ void getupTrials(bool forwards) {
       separation = std::max(separation, h.runner().world().robot(0).anchorSeparation());
       const auto st = h.state();
       if (motion_test::downOrGettingUp(st.posture)) fell = true;
-      // Standing again: reported STANDING, torso above 0.25 m and upright within 0.3 rad.
+      // Standing again: reported STANDING, torso above kStandHeight and upright within 0.3 rad.
       const float* sv = h.checked().last_sensed.sensors;
       const bool upright = std::fabs(sv[agent::libagent::Sensors::InertialSensor_AngleX]) < 0.3f &&
                            std::fabs(sv[agent::libagent::Sensors::InertialSensor_AngleY]) < 0.3f;
-      if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > 0.25 && upright) {
+      if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > FallDetector::kStandHeight && upright) {
         up_again = true;
         up_at = (i + 1) * 0.01;
       }
@@ -173,6 +175,6 @@ TEST(MotionPhysics, PushedOverIsDetectedAndFallsLimp) {
     EXPECT_TRUE(lying_reported) << (forwards ? "forward" : "backward");
     // Reported lying while the torso really is on the ground (the get-up
     // that follows raises it again within the 3 s).
-    EXPECT_LT(height_when_lying, 0.2) << (forwards ? "forward" : "backward");
+    EXPECT_LT(height_when_lying, FallDetector::kFallHeight) << (forwards ? "forward" : "backward");
   }
 }

@@ -4,8 +4,10 @@
 
 #include <cmath>
 
+#include "sim/runner/FallDetector.hpp"
 #include "sim/runner/Runner.hpp"
 
+using simswift::runner::FallDetector;
 using simswift::runner::Runner;
 using simswift::runner::Scenario;
 
@@ -63,7 +65,7 @@ TEST(MotionScenario, ActionsWalkTheRobotAndPushesKnockItOver) {
   for (int i = 0; i < 550; ++i) runner.tick();
   const double x = runner.world().robot(0).linkPose(torso).translation().x();
   EXPECT_GT(x, -2.0 + 0.6);  // ~3 s at up to 250 mm/s (with the start ramp)
-  EXPECT_GT(runner.world().robot(0).linkPose(torso).translation().z(), 0.25);  // still up
+  EXPECT_GT(runner.world().robot(0).linkPose(torso).translation().z(), FallDetector::kStandHeight);  // still up
   // The run summary's per-robot line reports the same torso position.
   const simswift::runner::RunStats walked = runner.stats();
   ASSERT_EQ(walked.robots.size(), 1u);
@@ -74,7 +76,7 @@ TEST(MotionScenario, ActionsWalkTheRobotAndPushesKnockItOver) {
   EXPECT_EQ(walked.robotLines().rfind("  t0p1: x ", 0), 0u) << walked.robotLines();
   EXPECT_NE(walked.robotLines().find("falls 0  up\n"), std::string::npos) << walked.robotLines();
   for (int i = 0; i < 200; ++i) runner.tick();
-  EXPECT_LT(runner.world().robot(0).linkPose(torso).translation().z(), 0.2);  // pushed over
+  EXPECT_LT(runner.world().robot(0).linkPose(torso).translation().z(), FallDetector::kFallHeight);  // pushed over
   EXPECT_EQ(runner.stats().robots[0].falls, 1);
   EXPECT_TRUE(runner.stats().robots[0].down);
   EXPECT_NE(runner.stats().robotLines().find("falls 1  down\n"), std::string::npos) << runner.stats().robotLines();

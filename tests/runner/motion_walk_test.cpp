@@ -9,7 +9,7 @@
 
 #include "sim/api/WalkSampling.hpp"
 #include "simswift/WalkTest.hpp"
-#include "tests/runner/motion_harness.hpp"
+#include "tools/motion_harness.hpp"
 
 using agent::blackboard::ActionType;
 using motion_test::MotionHarness;

@@ -13,6 +13,7 @@
 #include "agent/libagent/Inertial.hpp"
 #include "agent/program/Postures.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
+#include "sim/runner/FallDetector.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
 
@@ -237,7 +238,7 @@ TEST(SensorsPhysics, LimpRobotFallingForwardReadsPositiveAngleY) {
   std::printf("forward fall: AngleX %.3f AngleY %.3f torso z %.3f m\n", f.angle_x, f.angle_y, f.torso_z);
   EXPECT_GT(f.angle_y, 0.5);
   EXPECT_LT(std::abs(f.angle_x), 0.5);
-  EXPECT_LT(f.torso_z, 0.2);  // collapsed within 3 s
+  EXPECT_LT(f.torso_z, runner::FallDetector::kFallHeight);  // collapsed within 3 s
   EXPECT_GT(f.peak_pitch_rate, 1.0);  // pitching forward: GyroscopeY > 0
   EXPECT_GT(f.lying[S::InertialSensor_AccelerometerX], 4.0);  // face down: toward +g
   expectLyingAccelerometer(f);
@@ -247,7 +248,7 @@ TEST(SensorsPhysics, LimpRobotFallingBackwardReadsNegativeAngleY) {
   const Fall f = pushedFall({-0.6, 0, 0}, 0.0f);
   std::printf("backward fall: AngleX %.3f AngleY %.3f torso z %.3f m\n", f.angle_x, f.angle_y, f.torso_z);
   EXPECT_LT(f.angle_y, -0.5);
-  EXPECT_LT(f.torso_z, 0.2);
+  EXPECT_LT(f.torso_z, runner::FallDetector::kFallHeight);
   EXPECT_LT(f.peak_pitch_rate, -1.0);  // pitching backward: GyroscopeY < 0
   EXPECT_LT(f.lying[S::InertialSensor_AccelerometerX], -4.0);  // on the back: toward -g
   expectLyingAccelerometer(f);
@@ -260,7 +261,7 @@ TEST(SensorsPhysics, RobotFallingToItsRightReadsPositiveAngleX) {
   std::printf("right fall: AngleX %.3f AngleY %.3f torso z %.3f m\n", f.angle_x, f.angle_y, f.torso_z);
   EXPECT_GT(f.angle_x, 1.0);
   EXPECT_LT(std::abs(f.angle_y), 0.5);
-  EXPECT_LT(f.torso_z, 0.2);
+  EXPECT_LT(f.torso_z, runner::FallDetector::kFallHeight);
   EXPECT_GT(f.peak_roll_rate, 1.0);  // rolling to its right: GyroscopeX > 0
   EXPECT_GT(f.lying[S::InertialSensor_AccelerometerY], 4.0);  // on its right side: toward +g
   expectLyingAccelerometer(f);
@@ -271,7 +272,7 @@ TEST(SensorsPhysics, RobotFallingToItsLeftReadsNegativeAngleX) {
   std::printf("left fall: AngleX %.3f AngleY %.3f torso z %.3f m\n", f.angle_x, f.angle_y, f.torso_z);
   EXPECT_LT(f.angle_x, -1.0);
   EXPECT_LT(std::abs(f.angle_y), 0.5);
-  EXPECT_LT(f.torso_z, 0.2);
+  EXPECT_LT(f.torso_z, runner::FallDetector::kFallHeight);
   EXPECT_LT(f.peak_roll_rate, -1.0);
   EXPECT_LT(f.lying[S::InertialSensor_AccelerometerY], -4.0);
   expectLyingAccelerometer(f);
