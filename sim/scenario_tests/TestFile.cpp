@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -24,6 +23,22 @@ std::string flowYaml(const YAML::Node& n) {
   YAML::Emitter e;
   e << YAML::Flow << n;
   return e.c_str();
+}
+
+// What a test measures, as flow YAML: its entry without what may change
+// while a baseline stays comparable (its name, seed counts and required
+// rate; its robots' programs and behaviours: the program under test).
+std::string measuredPart(const YAML::Node& test) {
+  YAML::Node t = YAML::Clone(test);
+  for (const char* k : {"name", "seeds", "short", "required"}) t.remove(k);
+  YAML::Node sc = t["scenario"];
+  if (sc.IsMap() && sc["robots"] && sc["robots"].IsSequence())
+    for (YAML::Node r : sc["robots"])
+      if (r.IsMap()) {
+        r.remove("behaviour");
+        r.remove("program");
+      }
+  return flowYaml(t);
 }
 
 using Defaults = TestDefaults;
@@ -124,7 +139,7 @@ ScenarioTest readTest(const YamlReader& t, const std::string& source, const Defa
                       std::set<std::string>& names) {
   ScenarioTest test;
   test.line = t.node().Mark().line + 1;
-  test.definition = flowYaml(t.node());
+  test.definition = measuredPart(t.node());
   test.name = t.string("name");
   if (test.name.empty() || test.name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") !=
                                std::string::npos)
@@ -158,17 +173,7 @@ double draw(agent::random::Random& rng, const Range2& r) { return r.any() ? rng.
 
 }  // namespace
 
-TestFile TestFile::loadFile(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ":1: is a directory, not a test file");
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path + ":1: cannot open test file");
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec) agent::config::checkConfigSize(size, path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), path);
-}
+TestFile TestFile::loadFile(const std::string& path) { return parse(YamlReader::readFile(path, "test file"), path); }
 
 TestFile TestFile::parse(const std::string& text, const std::string& source_name) {
   const YAML::Node root = YamlReader::parse(text, source_name);
@@ -207,7 +212,7 @@ std::map<std::string, std::string> testDefinitions(const std::string& text, cons
   if (!root.IsMap() || !root["tests"] || !root["tests"].IsSequence())
     throw ConfigError(source + ":1: not a test file (no tests: list)");
   for (const YAML::Node& t : root["tests"])
-    if (t.IsMap() && t["name"] && t["name"].IsScalar()) out[t["name"].Scalar()] = flowYaml(t);
+    if (t.IsMap() && t["name"] && t["name"].IsScalar()) out[t["name"].Scalar()] = measuredPart(t);
   return out;
 }
 

@@ -57,7 +57,9 @@ struct TestDefaults {
 
 struct ScenarioTest {
   std::string name;
-  std::string definition;        // the test's entry as flow YAML (a baseline's is compared with it)
+  std::string definition;        // what it measures, as flow YAML: its entry without name, seed
+                                 // counts, required rate and its robots' programs and behaviours
+                                 // (a baseline's test is compared only if its own is the same)
   int line = 0;                  // of the test's entry
   runner::Scenario scenario;     // duration = time_limit
   FieldConfig field;             // the scenario's field (for the predicates)
@@ -96,8 +98,8 @@ struct RunSpec {
 int countRuns(const TestFile& f, bool short_form);
 RunSpec runSpec(const TestFile& f, bool short_form, int index, uint64_t seed_override, bool has_override);
 
-// Each test's entry in a test file's text as flow YAML, by name (a
-// baseline folder's tests.yaml; its tests are not loaded). Throws
+// Each test's definition (ScenarioTest::definition) in a test file's text,
+// by name (a baseline folder's tests.yaml; its tests are not loaded). Throws
 // ConfigError if the text is not a test file.
 std::map<std::string, std::string> testDefinitions(const std::string& text, const std::string& source);
 

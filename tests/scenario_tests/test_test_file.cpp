@@ -146,6 +146,23 @@ TEST(TestFile, AScenarioFileByName) {
   EXPECT_NE(e.find("t.yaml:5: tests[0].scenario: no scenario file"), std::string::npos) << e;
 }
 
+TEST(TestFile, ABaselineComparesTheSameMeasurementWhateverTheProgram) {
+  const TestFile f = TestFile::parse(file(kOne), kSource);
+  // Another program (behaviour, program), other seed counts and rate: the same measurement.
+  std::string other = kOne;
+  other.replace(other.find("theta: 0.0}"), 11, "theta: 0.0, behaviour: striker, program: builtin}");
+  other.replace(other.find("seeds: 5"), 8, "seeds: 9");
+  other.replace(other.find("required: 0.3"), 13, "required: 0.2");
+  EXPECT_EQ(testDefinitions(file(other), "b.yaml").at("walk"), f.tests[0].definition);
+  // A longer time limit or another condition: another test under the same name.
+  std::string longer = kOne;
+  longer.replace(longer.find("time_limit: 4"), 13, "time_limit: 5");
+  EXPECT_NE(testDefinitions(file(longer), "b.yaml").at("walk"), f.tests[0].definition);
+  std::string cond = kOne;
+  cond.replace(cond.find("fallen: any"), 11, "fallen: 0");
+  EXPECT_NE(testDefinitions(file(cond), "b.yaml").at("walk"), f.tests[0].definition);
+}
+
 TEST(ResultsRow, RoundTrips) {
   RunResult r;
   r.index = 12;
