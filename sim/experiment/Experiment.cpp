@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -68,16 +67,7 @@ int Experiment::maxRobots() const {
 }
 
 Experiment Experiment::loadFile(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ":1: is a directory, not an experiment file");
-  // Refused from its size before it is read.
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec) checkConfigSize(size, path);
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path + ":1: cannot open experiment file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), path);
+  return parse(YamlReader::readFile(path, "experiment file"), path);
 }
 
 namespace {
