@@ -1,8 +1,8 @@
-#include <filesystem>
 #include "sim/experiment/Experiment.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <sstream>
