@@ -121,6 +121,18 @@ std::vector<double> exactUCounts(size_t n1, size_t n2) {
   return prev[n2];
 }
 
+// The exact probability of the U values `in_tail` picks, under the null.
+template <class InTail>
+double exactTail(size_t n1, size_t n2, InTail in_tail) {
+  const std::vector<double> counts = exactUCounts(n1, n2);
+  double total = 0, tail = 0;
+  for (size_t u = 0; u < counts.size(); ++u) {
+    total += counts[u];
+    if (in_tail(static_cast<double>(u))) tail += counts[u];
+  }
+  return tail / total;
+}
+
 // The normal approximation's variance of U with the tie correction.
 double uVariance(size_t n1, size_t n2, double tie_term) {
   const double nn = static_cast<double>(n1 + n2);
@@ -137,15 +149,8 @@ MannWhitney mannWhitney(const std::vector<double>& x, const std::vector<double>&
   r.u = s.u;
   const double mu = static_cast<double>(n1) * n2 / 2.0;
   if (!s.ties && n1 <= 30 && n2 <= 30) {
-    const std::vector<double> counts = exactUCounts(n1, n2);
-    const size_t umax = n1 * n2;
-    double total = 0, tail = 0;
-    const double u_low = std::min(r.u, static_cast<double>(umax) - r.u);
-    for (size_t u = 0; u <= umax; ++u) {
-      total += counts[u];
-      if (static_cast<double>(u) <= u_low + 1e-9) tail += counts[u];
-    }
-    r.p = std::min(1.0, 2.0 * tail / total);
+    const double u_low = std::min(r.u, static_cast<double>(n1 * n2) - r.u);
+    r.p = std::min(1.0, 2.0 * exactTail(n1, n2, [&](double u) { return u <= u_low + 1e-9; }));
     r.exact = true;
     return r;
   }
@@ -164,13 +169,7 @@ MannWhitney mannWhitneyGreater(const std::vector<double>& x, const std::vector<d
   const UStat s = uStatistic(x, y);
   r.u = s.u;
   if (!s.ties && n1 <= 30 && n2 <= 30) {
-    const std::vector<double> counts = exactUCounts(n1, n2);
-    double total = 0, tail = 0;
-    for (size_t u = 0; u < counts.size(); ++u) {
-      total += counts[u];
-      if (static_cast<double>(u) >= r.u - 1e-9) tail += counts[u];
-    }
-    r.p = std::min(1.0, tail / total);
+    r.p = std::min(1.0, exactTail(n1, n2, [&](double u) { return u >= r.u - 1e-9; }));
     r.exact = true;
     return r;
   }
