@@ -30,6 +30,7 @@
 #include "sim/experiment/BehaviourHooks.hpp"
 #include "sim/experiment/Command.hpp"
 #include "sim/scenario_tests/TestCommand.hpp"
+#include "agent/config/Seed.hpp"
 #include "sim/lola/LolaServer.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
@@ -101,11 +102,9 @@ double numberArg(int& i, int argc, char** argv, const char* name, double lo, dou
 uint64_t seedArg(int& i, int argc, char** argv) {
   if (i + 1 >= argc) usageError("--seed needs a value");
   const std::string v = argv[++i];
-  if (v.empty() || v.size() > 16 || v.find_first_not_of("0123456789") != std::string::npos)
-    usageError("--seed: must be a whole number in [0, 2^53] (got '" + v + "')");
-  const uint64_t n = std::stoull(v);
-  if (n > (uint64_t{1} << 53)) usageError("--seed: must be a whole number in [0, 2^53] (got '" + v + "')");
-  return n;
+  const std::optional<uint64_t> n = agent::config::parseSeed(v);
+  if (!n) usageError(std::string("--seed: must be ") + agent::config::kSeedRange + " (got '" + v + "')");
+  return *n;
 }
 
 }  // namespace

@@ -31,6 +31,7 @@
 #include <string>
 #include <thread>
 
+#include "agent/config/Seed.hpp"
 #include "agent/libagent/AgentConnection.hpp"
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/program/RobotProgram.hpp"
@@ -106,9 +107,10 @@ int main(int argc, char** argv) {
     else if (a == "--config") config = next("--config");
     else if (a == "--behaviour") behaviour = next("--behaviour");
     else if (a == "--seed") {
-      const double v = number(next("--seed"), "--seed");
-      if (v < 0 || v != static_cast<double>(static_cast<uint64_t>(v))) usageError("--seed must be a whole number");
-      seed = static_cast<uint64_t>(v);
+      const char* v = next("--seed");
+      const std::optional<uint64_t> s = agent::config::parseSeed(v);
+      if (!s) usageError(std::string("--seed must be ") + agent::config::kSeedRange + " (got '" + v + "')");
+      seed = *s;
     } else if (a == "--start") {
       agent::blackboard::FieldPose p;
       p.x = number(next("--start"), "--start X") * 1000.0;  // m -> mm

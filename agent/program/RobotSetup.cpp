@@ -8,6 +8,7 @@
 
 #include "agent/behaviour/BehaviourModule.hpp"
 #include "agent/behaviour/BehaviourYaml.hpp"
+#include "agent/config/Seed.hpp"
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/motion/ActionYaml.hpp"
 
@@ -89,15 +90,11 @@ void readRobotSetup(const YamlReader& r, RobotSetup& s) {
   s.team = r.integer("team", s.team, Range::closed(libagent::kMinTeamNumber, libagent::kMaxTeamNumber));
   s.player = r.integer("player", s.player, Range::closed(libagent::kMinPlayer, libagent::kMaxPlayer));
   if (r.has("seed")) {
-    // A whole number of up to 64 bits (the simulator derives robot seeds by
-    // multiplying, so they exceed a double's exact range).
+    // Up to 64 bits (the simulator derives robot seeds by multiplying).
     const std::string v = r.string("seed");
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long long seed = std::strtoull(v.c_str(), &end, 10);
-    if (v.empty() || v[0] == '-' || *end != '\0' || errno == ERANGE)
-      r.fail("seed", "must be a whole number in [0, 2^64) (got '" + v + "')");
-    s.seed = seed;
+    const std::optional<uint64_t> seed = config::parseSeed(v);
+    if (!seed) r.fail("seed", std::string("must be ") + config::kSeedRange + " (got '" + v + "')");
+    s.seed = *seed;
   }
   if (auto p = r.optionalMap("start")) {
     const Range pos = Range::closed(-kMaxPosition, kMaxPosition);

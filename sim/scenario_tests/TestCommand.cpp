@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "agent/config/Seed.hpp"
 #include "sim/experiment/BatchError.hpp"
 #include "sim/scenario_tests/TestBatch.hpp"
 #include "sim/world/ConfigError.hpp"
@@ -97,8 +98,9 @@ int testMain(int argc, char** argv) {
       trial = static_cast<int64_t>(n);
     } else if (a == "--seed") {
       const std::string* v = value();
-      if (!v || !parseUnsigned(*v, UINT64_MAX, &opt.seed))
-        return usage("--seed needs a whole number in [0, 18446744073709551615]");
+      const std::optional<uint64_t> s = v ? agent::config::parseSeed(*v) : std::nullopt;
+      if (!s) return usage(std::string("--seed needs ") + agent::config::kSeedRange);
+      opt.seed = *s;
       opt.has_seed = true;
     } else if (a == "--alpha") {
       const std::string* v = value();

@@ -168,3 +168,24 @@ TEST(Cli, CleanRemovesWhatAKilledRunLeftAndNamesLiveOwners) {
   EXPECT_NE(out.find("in use by a running simswift (pid " + std::to_string(getpid()) + ")"), std::string::npos) << out;
   EXPECT_TRUE(fs::exists("/dev/shm/libagent-memory" + std::to_string(93 * 11 + 5)));
 }
+
+// The one seed reader on both programs' command lines: the largest 64-bit
+// seed is taken, one beyond it is refused with exit 2 naming the range.
+TEST(Cli, TheSeedTakesEverySixtyFourBitValue) {
+  const std::string scenario = std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/stand_one.yaml";
+  const Result max = run(scenario + " --seed 18446744073709551615 --duration 0.02");
+  EXPECT_EQ(max.code, 0) << max.err;
+  const Result over = run(scenario + " --seed 18446744073709551616 --duration 0.02");
+  EXPECT_EQ(over.code, 2) << over.err;
+  EXPECT_NE(over.err.find("--seed: must be a whole number in [0, 18446744073709551615]"), std::string::npos)
+      << over.err;
+  FILE* p = popen((std::string(SIMSWIFT_BINARY_DIR) + "/simswift-agent --seed 1e3 2>&1").c_str(), "r");
+  std::string agent_err;
+  char buf[512];
+  while (fgets(buf, sizeof buf, p)) agent_err += buf;
+  const int st = pclose(p);
+  EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 2) << agent_err;
+  EXPECT_NE(agent_err.find("--seed must be a whole number in [0, 18446744073709551615] (got '1e3')"),
+            std::string::npos)
+      << agent_err;
+}
