@@ -98,7 +98,7 @@ double numberArg(int& i, int argc, char** argv, const char* name, double lo, dou
   return d;
 }
 
-// A whole number in [0, 2^53] (the scenario's seed range), digits only.
+// --seed: any 64-bit seed (agent/config/Seed.hpp), digits only.
 uint64_t seedArg(int& i, int argc, char** argv) {
   if (i + 1 >= argc) usageError("--seed needs a value");
   const std::string v = argv[++i];
