@@ -1,6 +1,5 @@
 #include "sim/scenario_tests/TestCommand.hpp"
 
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -52,13 +51,11 @@ int usage(const std::string& msg) {
   return 2;
 }
 
+// A whole number up to max, digits only (the seed reader's rules).
 bool parseUnsigned(const std::string& s, uint64_t max, uint64_t* v) {
-  if (s.empty() || s[0] == '-' || s[0] == '+') return false;
-  errno = 0;
-  char* end = nullptr;
-  const unsigned long long x = std::strtoull(s.c_str(), &end, 10);
-  if (*end != '\0' || errno == ERANGE || x > max) return false;
-  *v = x;
+  const std::optional<uint64_t> x = agent::config::parseSeed(s);
+  if (!x || *x > max) return false;
+  *v = *x;
   return true;
 }
 
