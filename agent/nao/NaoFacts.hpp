@@ -54,9 +54,22 @@ constexpr CameraMount kTopCamera{58.71, 0.0, 63.64, 1.2 * kDeg};
 constexpr CameraMount kBottomCamera{50.71, 0.0, 17.74, 39.7 * kDeg};
 constexpr const CameraMount& cameraMount(Camera c) { return c == Camera::Top ? kTopCamera : kBottomCamera; }
 
-// Both cameras: the same lens.
-constexpr double kCameraHorizontalFov = 60.9 * kDeg;  // rad
-constexpr double kCameraVerticalFov = 47.6 * kDeg;    // rad
+// The V6 mounts both cameras where the V5 does: Aldebaran's NAOH25V60.urdf
+// (NAOqi 2.8) gives the same offsets and tilts (cited and used by rUNSWift's
+// 2022 release, robot/perception/kinematics/Kinematics.cpp).
+
+// Both cameras of a robot: the same lens. The V5's MT9M114: 60.9 x 47.6 deg
+// (Aldebaran's NAO V5 (H25) documentation); the V6's OV5640: 56.3 x 43.7 deg
+// (Aldebaran's NAOqi 2.8 "NAO V6 video camera" specifications, as rUNSWift's
+// 2022 release reads them: robot/perception/vision/VisionDefinitions.hpp).
+struct CameraLens {
+  double horizontal_fov;  // rad
+  double vertical_fov;    // rad
+};
+constexpr CameraLens kV5CameraLens{60.9 * kDeg, 47.6 * kDeg};
+constexpr CameraLens kV6CameraLens{56.3 * kDeg, 43.7 * kDeg};
+constexpr double kCameraHorizontalFov = kV5CameraLens.horizontal_fov;  // rad, the V5's
+constexpr double kCameraVerticalFov = kV5CameraLens.vertical_fov;      // rad, the V5's
 constexpr int kCameraFramesPerSecond = 30;            // both cameras; Perception's rate
 constexpr double kCameraRateHz = kCameraFramesPerSecond;  // Hz
 

@@ -54,12 +54,12 @@ bool viewAngles(const CameraPose& cam, double x, double y, double* horizontal, d
   return true;
 }
 
-bool inFieldOfView(const CameraPose& cam, double x, double y) {
+bool inFieldOfView(const CameraPose& cam, double x, double y, const nao::CameraLens& lens) {
   const Vec3 d = cam.rotation.transposed() * (Vec3{x, y, 0} - cam.position);
   if (d.x <= 1.0) return false;
   // Pinhole: the image plane coordinates are d.y / d.x and d.z / d.x.
-  return std::fabs(d.y / d.x) <= std::tan(nao::kCameraHorizontalFov / 2) &&
-         std::fabs(d.z / d.x) <= std::tan(nao::kCameraVerticalFov / 2);
+  return std::fabs(d.y / d.x) <= std::tan(lens.horizontal_fov / 2) &&
+         std::fabs(d.z / d.x) <= std::tan(lens.vertical_fov / 2);
 }
 
 }  // namespace agent::perception

@@ -29,6 +29,7 @@ bool viewAngles(const CameraPose& cam, double x, double y, double* horizontal, d
 
 // Whether a ground point (mm, robot frame) lies inside the camera's field of
 // view (60.9 x 47.6 degrees).
-bool inFieldOfView(const CameraPose& cam, double x, double y);
+bool inFieldOfView(const CameraPose& cam, double x, double y,
+                   const nao::CameraLens& lens = nao::kV5CameraLens);
 
 }  // namespace agent::perception

@@ -7,17 +7,12 @@
 
 namespace simswift::camera {
 
-namespace {
-constexpr double kNaoHfov = agent::nao::kCameraHorizontalFov;  // the robot code's hardware facts
-constexpr double kNaoVfov = agent::nao::kCameraVerticalFov;
-}  // namespace
-
-Intrinsics Intrinsics::nao(int width, int height) {
+Intrinsics Intrinsics::nao(int width, int height, const agent::nao::CameraLens& lens) {
   Intrinsics k;
   k.width = width;
   k.height = height;
-  k.fx = (width / 2.0) / std::tan(kNaoHfov / 2);
-  k.fy = (height / 2.0) / std::tan(kNaoVfov / 2);
+  k.fx = (width / 2.0) / std::tan(lens.horizontal_fov / 2);
+  k.fy = (height / 2.0) / std::tan(lens.vertical_fov / 2);
   k.cx = width / 2.0;
   k.cy = height / 2.0;
   return k;
@@ -54,10 +49,10 @@ Eigen::Isometry3d cameraInHead(CameraId id) {
 }
 
 CameraModel CameraModel::naoCamera(const Eigen::Isometry3d& head_pose, CameraId id, int width,
-                                   int height) {
+                                   int height, const agent::nao::CameraLens& lens) {
   CameraModel c;
   c.pose = head_pose * cameraInHead(id);
-  c.intrinsics = Intrinsics::nao(width, height);
+  c.intrinsics = Intrinsics::nao(width, height, lens);
   return c;
 }
 

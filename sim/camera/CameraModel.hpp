@@ -13,6 +13,8 @@
 #include <Eigen/Geometry>
 #include <optional>
 
+#include "agent/nao/NaoFacts.hpp"
+
 namespace simswift::camera {
 
 enum CameraId : int { kTop = 0, kBottom = 1 };
@@ -22,10 +24,12 @@ struct Intrinsics {
   double fx = 0, fy = 0;          // focal lengths, px
   double cx = 0, cy = 0;          // principal point, px (continuous coordinates)
 
-  // The NAO camera at the given resolution: 60.9 x 47.6 deg field of view
-  // (Aldebaran's NAO V5 (H25) documentation), principal point at the image centre.
-  // fx = (w/2)/tan(hfov/2) ~ 544.2 px at 640 wide; fy from the vertical FOV.
-  static Intrinsics nao(int width = 640, int height = 480);
+  // The NAO camera at the given resolution through `lens` (the V5's 60.9 x
+  // 47.6 deg, the V6's 56.3 x 43.7 deg: agent/nao/NaoFacts.hpp), principal
+  // point at the image centre. fx = (w/2)/tan(hfov/2): ~544.2 px at 640 wide
+  // on a V5, ~599.8 px on a V6; fy from the vertical FOV.
+  static Intrinsics nao(int width = 640, int height = 480,
+                        const agent::nao::CameraLens& lens = agent::nao::kV5CameraLens);
   // A free camera with the given horizontal FOV (rad) and square pixels.
   static Intrinsics fromHorizontalFov(int width, int height, double hfov);
 };
@@ -46,7 +50,8 @@ struct CameraModel {
   Intrinsics intrinsics = Intrinsics::nao();
 
   static CameraModel naoCamera(const Eigen::Isometry3d& head_pose, CameraId id,
-                               int width = 640, int height = 480);
+                               int width = 640, int height = 480,
+                               const agent::nao::CameraLens& lens = agent::nao::kV5CameraLens);
 
   // Pixel (continuous) of a world point; nullopt if it is not in front of
   // the camera (x <= 1 mm in the camera frame). May fall outside the image.

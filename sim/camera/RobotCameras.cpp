@@ -13,7 +13,7 @@ constexpr double kCameraHz = 30.0;  // NAO camera frame rate (simulated time)
 }  // namespace
 
 RobotCameras::RobotCameras(const World& world, RobotCamerasConfig config)
-    : scene_(world.field(), std::move(config.scene)), width_(config.width), height_(config.height) {
+    : scene_(world.field(), std::move(config.scene)), width_(config.width), height_(config.height), lens_(config.lens) {
   setResolution(config.width, config.height);
   for (int i = 0; i < world.numRobots(); ++i) scene_.preloadModel(world.robot(i).model());
 }
@@ -54,7 +54,7 @@ void RobotCameras::syncScene(const World& world) {
 
 CameraModel RobotCameras::camera(const World& world, int robot, CameraId id) const {
   const RobotBody& body = world.robot(robot);
-  return CameraModel::naoCamera(body.linkPose(headLink(body.model())), id, width_, height_);
+  return CameraModel::naoCamera(body.linkPose(headLink(body.model())), id, width_, height_, lens_);
 }
 
 CameraView RobotCameras::view(const World& world, int robot, CameraId id) const {

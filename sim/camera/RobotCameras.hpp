@@ -24,6 +24,7 @@ namespace simswift::camera {
 
 struct RobotCamerasConfig {
   int width = 640, height = 480;  // 640x480 (default) or 1280x960
+  agent::nao::CameraLens lens = agent::nao::kV5CameraLens;  // the robots' (one kind per world)
   SceneOptions scene;
 };
 
@@ -64,6 +65,7 @@ class RobotCameras {
   Renderer renderer_;
   std::vector<int> teams_;
   int width_, height_;
+  agent::nao::CameraLens lens_;
 };
 
 }  // namespace simswift::camera

@@ -19,6 +19,10 @@ int64_t bodyCycleUs(bridge::BodyInterface b) {
   return b == bridge::BodyInterface::Lola ? lola::kCycleUs : agent::nao::kMotionTickUs;
 }
 
+agent::nao::CameraLens bodyCameraLens(bridge::BodyInterface b) {
+  return b == bridge::BodyInterface::Lola ? agent::nao::kV6CameraLens : agent::nao::kV5CameraLens;
+}
+
 std::string defaultLolaSocket(int team, int player, bool bare) {
   if (bare) return std::string(lola::kDefaultSocketPath);
   return "/tmp/simswift-lola/" + agent::libagent::robotTag(team, player);

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "agent/nao/NaoFacts.hpp"
 #include "sim/bridge/BodySide.hpp"
 
 namespace simswift::runner {
@@ -18,6 +19,9 @@ const char* bodyInterfaceName(bridge::BodyInterface b);  // "libagent", "lola"
 // (sim/lola/Protocol.hpp kCycleUs). One world runs one cycle: the scenario
 // refuses robots whose cycles differ.
 int64_t bodyCycleUs(bridge::BodyInterface b);
+// The cameras' lens of the robot behind each interface: the V5's behind
+// libagent, the V6's behind LoLA (agent/nao/NaoFacts.hpp).
+agent::nao::CameraLens bodyCameraLens(bridge::BodyInterface b);
 // The V6's LoLA socket a robot gets when the scenario names none:
 // /tmp/robocup with names: bare (what an unchanged program opens), else
 // /tmp/simswift-lola/t<team>p<player> (a second live run with the same robot

@@ -55,6 +55,7 @@ void Runner::startCameras() {
   camera::RobotCamerasConfig cc;
   cc.width = cs.width;
   cc.height = cs.height;
+  cc.lens = camerasLens();
   cameras_ = std::make_unique<camera::RobotCameras>(*world_, cc);
   std::vector<int> teams;
   // Jerseys by side (colour), whatever the SPL team numbers.
@@ -237,10 +238,18 @@ void Runner::buildTeamAndGame() {
   teamAndGame(0);
 }
 
-// The vision oracle: its noise follows the scenario's master switch too.
+agent::nao::CameraLens Runner::camerasLens() const {
+  return scenario_.robots.empty() ? agent::nao::kV5CameraLens : bodyCameraLens(scenario_.robots.front().body);
+}
+
+// The vision oracle: its noise follows the scenario's master switch too;
+// its field of view is the robots' lens unless the scenario sets one.
 void Runner::buildVision() {
   vision::VisionConfig vc = scenario_.vision;
   vc.noise = vc.noise && scenario_.noise.on;
+  const agent::nao::CameraLens lens = camerasLens();
+  if (!vc.hfov_deg) vc.hfov_deg = lens.horizontal_fov / agent::nao::kDeg;
+  if (!vc.vfov_deg) vc.vfov_deg = lens.vertical_fov / agent::nao::kDeg;
   vision_ = std::make_unique<vision::VisionOracle>(world_->field(), vc, scenario_.seed);
   std::vector<int> teams, colours;
   for (auto& r : robots_) {

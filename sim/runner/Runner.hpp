@@ -74,6 +74,7 @@
 #include <vector>
 
 #include "agent/libagent/SimExtensions.hpp"
+#include "agent/nao/NaoFacts.hpp"
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/game/GameControllerUdp.hpp"
@@ -162,6 +163,9 @@ class Runner {
   // The vision oracle (after start()): what each robot was shown in the
   // last camera frame (the experiment's found rule reads its ball sightings).
   const vision::VisionOracle& visionOracle() const { return *vision_; }
+  // The robots' camera lens (one kind of robot per world: the scenario
+  // refuses robots whose ticks differ), the V5's if there are no robots.
+  agent::nao::CameraLens camerasLens() const;
   int64_t lastFrame() const { return last_frame_; }  // index of the last camera frame (-1: none yet)
   // Teleports robot i, standing, to (x, y) m facing theta rad (field frame)
   // and restarts its sensors from rest (the experiment's sideline rule).

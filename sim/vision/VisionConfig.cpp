@@ -86,8 +86,8 @@ VisionConfig readVisionConfig(const YamlReader& r, VisionConfig c) {
   }
   c.enabled = r.boolean("enabled", c.enabled);
   c.noise = r.boolean("noise", c.noise);
-  c.hfov_deg = r.number("hfov_deg", c.hfov_deg, Range::closed(1, 179));
-  c.vfov_deg = r.number("vfov_deg", c.vfov_deg, Range::closed(1, 179));
+  if (r.has("hfov_deg")) c.hfov_deg = r.number("hfov_deg", 0, Range::closed(1, 179));
+  if (r.has("vfov_deg")) c.vfov_deg = r.number("vfov_deg", 0, Range::closed(1, 179));
   c.camera_offset_mm = r.number("camera_offset_mm", c.camera_offset_mm, Range::closed(0, 100));
   c.lying_tilt_deg = r.number("lying_tilt_deg", c.lying_tilt_deg, Range::closed(1, 180));
   c.falling_rate_dps = r.number("falling_rate_dps", c.falling_rate_dps, Range::positive());

@@ -29,6 +29,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
 namespace agent::config {
@@ -94,8 +95,10 @@ struct VisionConfig {
   BallModel ball_model = BallModel::Detector;
   double thesis_ball_half_angle_deg = 30;  // Thesis2017: either side of the camera's heading
   bool noise = true;                 // false: exact, no misses, no false positives
-  double hfov_deg = 60.9;            // each camera (Aldebaran's NAO V5 (H25) documentation)
-  double vfov_deg = 47.6;
+  // Each camera's field of view, deg; unset: the robot's own lens (the V5's
+  // 60.9 x 47.6, the V6's 56.3 x 43.7: agent/nao/NaoFacts.hpp), which the
+  // runner fills in from the robots' body interface.
+  std::optional<double> hfov_deg, vfov_deg;
   double camera_offset_mm = 5;       // table 3.1: camera position error, uniform +-, once per robot
   double lying_tilt_deg = 45;        // torso z axis from vertical: lying, sees nothing
   double falling_rate_dps = 120;     // torso angular speed that means falling ...

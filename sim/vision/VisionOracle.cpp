@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "agent/nao/NaoFacts.hpp"
 #include "agent/random/SplitMix64.hpp"
 #include "sim/sensors/Noise.hpp"
 
@@ -110,18 +111,21 @@ Eigen::Vector2d GroundFrame::toRobot(const Eigen::Vector2d& p) const {
 }
 
 CameraMount cameraMount(int camera) {
-  // Aldebaran's NAO V5 (H25) documentation: mm from the HeadPitch frame, degrees down.
-  if (camera == 0) return {Eigen::Vector3d(0.05871, 0, 0.06364), 1.2 * kDeg};
-  if (camera == 1) return {Eigen::Vector3d(0.05071, 0, 0.01774), 39.7 * kDeg};
-  throw std::invalid_argument("vision: camera must be 0 (top) or 1 (bottom)");
+  // The robot code's hardware facts (agent/nao/NaoFacts.hpp: mm from the
+  // HeadPitch frame, rad down; the V5's and the V6's are the same), in m.
+  if (camera != 0 && camera != 1) throw std::invalid_argument("vision: camera must be 0 (top) or 1 (bottom)");
+  const agent::nao::CameraMount& m =
+      agent::nao::cameraMount(camera == 0 ? agent::nao::Camera::Top : agent::nao::Camera::Bottom);
+  return {Eigen::Vector3d(m.x, m.y, m.z) * 1e-3, m.pitch_down};
 }
 
 VisionOracle::VisionOracle(const FieldConfig& field, VisionConfig config, uint64_t seed)
     : features_(FieldFeatures::fromField(field)),
       config_(std::move(config)),
       seed_(seed),
-      tan_half_h_(std::tan(config_.hfov_deg * kDeg / 2)),
-      tan_half_v_(std::tan(config_.vfov_deg * kDeg / 2)),
+      // Unset: the V5's lens (the runner sets a V6 run's: sim/runner/Bodies.hpp).
+      tan_half_h_(std::tan(config_.hfov_deg.value_or(agent::nao::kV5CameraLens.horizontal_fov / kDeg) * kDeg / 2)),
+      tan_half_v_(std::tan(config_.vfov_deg.value_or(agent::nao::kV5CameraLens.vertical_fov / kDeg) * kDeg / 2)),
       ball_radius_(field.ball.diameter / 2),
       line_half_width_(field.line_width / 2) {
   margin_ = std::max(1e-4, config_.occlusion_margin_mm * 1e-3);

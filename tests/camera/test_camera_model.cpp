@@ -20,6 +20,17 @@ TEST(CameraModel, NaoIntrinsicsMatchThePublishedFieldOfView) {
   EXPECT_NEAR(big.fx, 2 * k.fx, 1e-9);
 }
 
+// The V6's OV5640 lens, 56.3 x 43.7 deg (Aldebaran's NAOqi 2.8 NAO V6 camera
+// specifications): about 598 px at 640x480, 10 % longer than the V5's.
+TEST(CameraModel, V6IntrinsicsMatchItsPublishedFieldOfView) {
+  const Intrinsics k = Intrinsics::nao(640, 480, agent::nao::kV6CameraLens);
+  EXPECT_NEAR(k.fx, 598.05, 0.05);  // 320 / tan(28.15 deg), worked by hand
+  EXPECT_NEAR(k.fy, 598.53, 0.05);  // 240 / tan(21.85 deg)
+  EXPECT_DOUBLE_EQ(k.cx, 320.0);
+  EXPECT_DOUBLE_EQ(k.cy, 240.0);
+  EXPECT_NEAR(k.fx / Intrinsics::nao(640, 480).fx, 1.0987, 0.0005);
+}
+
 TEST(CameraModel, MountingOffsetsAndPitch) {
   const Eigen::Isometry3d top = cameraInHead(kTop), bottom = cameraInHead(kBottom);
   EXPECT_NEAR((top.translation() - Eigen::Vector3d(0.05871, 0, 0.06364)).norm(), 0, 1e-12);

@@ -70,6 +70,35 @@ TEST(RobotCameras, BallRelativeToTheRobotAppearsAtTheExpectedPixel) {
   }
 }
 
+// A V6 renders through its own lens (56.3 x 43.7 deg against the V5's 60.9 x
+// 47.6): the same ball, seen from the same head, lies 1.099 times as far
+// from the image centre (the ratio of the focal lengths) and looks larger.
+TEST(RobotCameras, AV6RendersThroughItsNarrowerLens) {
+  noDisplay();
+  World world(FieldConfig{});
+  const int robot = world.addRobot(naoModel(), -1.0, 0.0, 0.0, standingPosture(*naoModel()));
+  world.placeBall(-1.0 + 1.6, 0.3);  // 1.6 m ahead, 0.3 m to the left
+  Blob seen[2];
+  for (int k = 0; k < 2; ++k) {
+    RobotCamerasConfig cfg;
+    cfg.scene.sky = {0, 0, 1};
+    cfg.scene.draw_net = false;
+    cfg.lens = k == 0 ? agent::nao::kV5CameraLens : agent::nao::kV6CameraLens;
+    RobotCameras cams(world, cfg);
+    auto images = std::make_unique<CameraImages>();
+    cams.fillImages(world, robot, *images);
+    const CameraModel model = cams.camera(world, robot, kTop);
+    const Blob expected = sphereImage(model, world.ballPosition(), world.field().ball.diameter / 2);
+    ASSERT_GT(expected.area, 30) << "ball not in the top camera's view";
+    seen[k] = ballNear(copyRgb(*images, kTop), images->width, images->height, expected);
+    EXPECT_NEAR(seen[k].u, expected.u, 2.0) << (k ? "V6" : "V5");
+    EXPECT_NEAR(seen[k].v, expected.v, 2.0) << (k ? "V6" : "V5");
+  }
+  const double ratio = (seen[1].u - 320.0) / (seen[0].u - 320.0);
+  EXPECT_NEAR(ratio, 598.05 / 544.34, 0.03);
+  EXPECT_GT(seen[1].area, seen[0].area);
+}
+
 TEST(RobotCameras, IdenticalWorldsRenderIdenticalFramesAndYuvMatchesRgb) {
   noDisplay();
   uint64_t hashes[2][2];

@@ -30,6 +30,7 @@
 #include "sim/runner/Bodies.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
+#include "sim/vision/VisionOracle.hpp"
 #include "tests/support/ConfigErrors.hpp"
 
 namespace al = agent::libagent;
@@ -425,6 +426,25 @@ TEST(V6Builtin, StandsAndWalksAtTwelveMilliseconds) {
   ASSERT_EQ(s.robots.size(), 1u);
   EXPECT_GT(s.robots[0].x - (-2.0), 0.4) << "walked " << s.robots[0].x + 2.0 << " m";
   EXPECT_NEAR(s.robots[0].y, 0.0, 0.15);
+}
+
+// A V6 run's cameras and vision see through the V6's lens (56.3 x 43.7 deg,
+// agent/nao/NaoFacts.hpp), a V5 run's through the V5's; a scenario's
+// vision: {hfov_deg} still wins.
+TEST(V6Builtin, CamerasAndVisionUseTheV6Lens) {
+  Runner v6(builtinV6(socketPath("lens"), "", 0.1));
+  v6.run(quiet());
+  EXPECT_NEAR(v6.camerasLens().horizontal_fov * 180 / M_PI, 56.3, 1e-9);
+  EXPECT_NEAR(v6.visionOracle().config().hfov_deg.value_or(0), 56.3, 1e-9);
+  EXPECT_NEAR(v6.visionOracle().config().vfov_deg.value_or(0), 43.7, 1e-9);
+  Runner v5(Scenario::parse("duration: 0.1\nrobots:\n  - {team: 19, player: 1, x: -2.0, y: 0.0}\n", "v5.yaml"));
+  v5.run(quiet());
+  EXPECT_NEAR(v5.visionOracle().config().hfov_deg.value_or(0), 60.9, 1e-9);
+  Runner set(Scenario::parse("duration: 0.1\nvision: {hfov_deg: 50}\nrobots:\n  - {team: 19, player: 1, x: -2.0, y: 0.0, "
+                             "lola: {socket: " + socketPath("lens-set") + "}}\n", "v6_set.yaml"));
+  set.run(quiet());
+  EXPECT_NEAR(set.visionOracle().config().hfov_deg.value_or(0), 50.0, 1e-9);
+  EXPECT_NEAR(set.visionOracle().config().vfov_deg.value_or(0), 43.7, 1e-9);
 }
 
 // Inline (the experiment's way) and on named threads: the same state hash.

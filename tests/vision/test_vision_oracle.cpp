@@ -80,8 +80,8 @@ TEST(VisionConfig, DefaultsFollowTheThesis) {
   EXPECT_DOUBLE_EQ(b.elevation_sigma_deg, 0.1480);
   EXPECT_DOUBLE_EQ(b.distance_sigma_fraction, 0.000965);
   EXPECT_DOUBLE_EQ(c.camera_offset_mm, 5);
-  EXPECT_DOUBLE_EQ(c.hfov_deg, 60.9);
-  EXPECT_DOUBLE_EQ(c.vfov_deg, 47.6);
+  EXPECT_FALSE(c.hfov_deg.has_value());  // the robot's own lens (the runner sets it)
+  EXPECT_FALSE(c.vfov_deg.has_value());
   EXPECT_LT(b.on_line_factor, 1.0);
   // Probability: flat, then falling linearly, zero beyond the range.
   EXPECT_DOUBLE_EQ(b.probability(1000), b.p_near);
@@ -170,20 +170,29 @@ class OneRobot : public ::testing::Test {
   World world;
 };
 
+// Unset, the oracle's field of view is the V5's 60.9 x 47.6 deg; set (as the
+// runner does for a V6 run), the V6's 56.3 x 43.7 deg.
 TEST_F(OneRobot, EveryImageEdgeJustInsideAndJustOutside) {
-  VisionOracle o(world.field(), exact(), 1);
-  const double th = std::tan(60.9 * kDeg / 2), tv = std::tan(47.6 * kDeg / 2);
-  const double in = 0.999, out = 1.001;
-  for (int cam = 0; cam < 2; ++cam) {
-    const Eigen::Isometry3d pose = o.cameraPose(world, 0, cam);
-    auto at = [&](double ty, double tz) { return pose * Eigen::Vector3d(2.0, 2.0 * ty, 2.0 * tz); };
-    for (double s : {-1.0, 1.0}) {
-      EXPECT_TRUE(o.inImage(pose, at(s * th * in, 0))) << "cam " << cam << " side " << s;
-      EXPECT_FALSE(o.inImage(pose, at(s * th * out, 0))) << "cam " << cam << " side " << s;
-      EXPECT_TRUE(o.inImage(pose, at(0, s * tv * in))) << "cam " << cam << " up/down " << s;
-      EXPECT_FALSE(o.inImage(pose, at(0, s * tv * out))) << "cam " << cam << " up/down " << s;
+  VisionConfig v6 = exact();
+  v6.hfov_deg = 56.3;
+  v6.vfov_deg = 43.7;
+  struct Lens { VisionConfig config; double hfov_deg, vfov_deg; };
+  for (const Lens& lens : {Lens{exact(), 60.9, 47.6}, Lens{v6, 56.3, 43.7}}) {
+    SCOPED_TRACE(::testing::Message() << "lens " << lens.hfov_deg << " x " << lens.vfov_deg << " deg");
+    VisionOracle o(world.field(), lens.config, 1);
+    const double th = std::tan(lens.hfov_deg * kDeg / 2), tv = std::tan(lens.vfov_deg * kDeg / 2);
+    const double in = 0.999, out = 1.001;
+    for (int cam = 0; cam < 2; ++cam) {
+      const Eigen::Isometry3d pose = o.cameraPose(world, 0, cam);
+      auto at = [&](double ty, double tz) { return pose * Eigen::Vector3d(2.0, 2.0 * ty, 2.0 * tz); };
+      for (double s : {-1.0, 1.0}) {
+        EXPECT_TRUE(o.inImage(pose, at(s * th * in, 0))) << "cam " << cam << " side " << s;
+        EXPECT_FALSE(o.inImage(pose, at(s * th * out, 0))) << "cam " << cam << " side " << s;
+        EXPECT_TRUE(o.inImage(pose, at(0, s * tv * in))) << "cam " << cam << " up/down " << s;
+        EXPECT_FALSE(o.inImage(pose, at(0, s * tv * out))) << "cam " << cam << " up/down " << s;
+      }
+      EXPECT_FALSE(o.inImage(pose, pose * Eigen::Vector3d(-1, 0, 0)));  // behind
     }
-    EXPECT_FALSE(o.inImage(pose, pose * Eigen::Vector3d(-1, 0, 0)));  // behind
   }
 }
 
