@@ -62,6 +62,16 @@ std::string packetVersionList() {
   return s;
 }
 
+int penaltyCode(const PacketVersion& v, al::Penalty p) {
+  if (v.data_version <= 12) return static_cast<int>(p);
+  switch (p) {
+    case al::Penalty::IllegalDefender: return 5;   // PENALTY_SPL_ILLEGAL_POSITION
+    case al::Penalty::KickOffGoal: return -1;      // no such penalty from 2020
+    case al::Penalty::RequestForPickup: return 7;  // PENALTY_SPL_REQUEST_FOR_PICKUP
+    default: return static_cast<int>(p);           // 0-4, 6, 14, 15: the same numbers
+  }
+}
+
 std::vector<std::uint8_t> encodeGameData(const PacketVersion& v, const al::GameStateBlock& b,
                                          std::uint8_t packet_number, std::uint16_t message_budget) {
   std::vector<std::uint8_t> out;
@@ -98,7 +108,10 @@ std::vector<std::uint8_t> encodeGameData(const PacketVersion& v, const al::GameS
     if (v.message_budget) w.u16(message_budget);
     for (int p = 0; p < v.max_players; ++p) {
       const bool known = p < al::kGameMaxPlayers;
-      w.u8(known ? t.players[p].penalty : 0);
+      // The season's number; one it lacks is refused when the scenario is
+      // read, else sent as manual (15), the GameController's catch-all.
+      const int code = known ? penaltyCode(v, static_cast<al::Penalty>(t.players[p].penalty)) : 0;
+      w.u8(static_cast<std::uint8_t>(code < 0 ? static_cast<int>(al::Penalty::Manual) : code));
       w.u8(known ? t.players[p].secs_till_unpenalised : 0);
     }
   }

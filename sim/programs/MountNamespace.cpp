@@ -3,11 +3,14 @@
 #include <fcntl.h>
 #include <sched.h>
 #include <sys/mount.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <mutex>
 
 namespace simswift::programs {
 
@@ -46,6 +49,56 @@ int enterOwnMountNamespace(const IdMaps& maps, const char** step) {
   }
   if (mount("none", "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return fail("mount --make-rprivate /", errno);
   return 0;
+}
+
+namespace {
+
+// The probe: a child tries, and reports the step that failed (an index into
+// kSteps) and its errno through its exit status and a pipe.
+NamespaceSupport probe() {
+  static const char* const kSteps[] = {"unshare(user + mount namespace)", "uid_map/gid_map",
+                                       "mount --make-rprivate /"};
+  const IdMaps maps = selfIdMaps();
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) return {false, std::string("pipe: ") + std::strerror(errno)};
+  const pid_t pid = fork();
+  if (pid < 0) {
+    const int e = errno;
+    close(fds[0]), close(fds[1]);
+    return {false, std::string("fork: ") + std::strerror(e)};
+  }
+  if (pid == 0) {
+    const char* step = nullptr;
+    int report[2] = {0, enterOwnMountNamespace(maps, &step)};
+    for (int i = 0; i < 3; ++i)
+      if (step == kSteps[i] || (step && std::strcmp(step, kSteps[i]) == 0)) report[0] = i;
+    ssize_t w = write(fds[1], report, sizeof report);
+    (void)w;
+    _exit(0);
+  }
+  close(fds[1]);
+  int report[2] = {0, EIO};
+  ssize_t n;
+  do n = read(fds[0], report, sizeof report);
+  while (n < 0 && errno == EINTR);
+  close(fds[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (n != static_cast<ssize_t>(sizeof report)) return {false, "the probe's child gave no answer"};
+  if (report[1] == 0) return {true, ""};
+  return {false, std::string(kSteps[report[0]]) + ": " + std::strerror(report[1])};
+}
+
+}  // namespace
+
+NamespaceSupport mountNamespaceSupport() {
+  const char* forced = std::getenv("SIMSWIFT_MOUNT_NAMESPACE");
+  if (forced && std::strcmp(forced, "off") == 0) return {false, "SIMSWIFT_MOUNT_NAMESPACE=off"};
+  static std::once_flag once;
+  static NamespaceSupport probed;
+  std::call_once(once, [] { probed = probe(); });
+  return probed;
 }
 
 }  // namespace simswift::programs

@@ -6,6 +6,8 @@
 // id maps are written out before the fork.
 #pragma once
 
+#include <string>
+
 namespace simswift::programs {
 
 // "<id> <id> 1\n" for /proc/self/uid_map and gid_map: the caller's ids.
@@ -20,5 +22,17 @@ IdMaps selfIdMaps();
 // (if given) names it: "unshare(user + mount namespace)", "uid_map/gid_map"
 // or "mount --make-rprivate /".
 int enterOwnMountNamespace(const IdMaps& maps, const char** step = nullptr);
+
+// Whether this machine gives a process a mount namespace of its own (no
+// unprivileged user namespaces, or a container without CAP_SYS_ADMIN: no).
+// Probed once per process, in a forked child that tries
+// enterOwnMountNamespace. SIMSWIFT_MOUNT_NAMESPACE=off in the environment
+// answers no without probing (to run as such a machine would; read at every
+// call). `why` says why not ("" when available).
+struct NamespaceSupport {
+  bool available = false;
+  std::string why;
+};
+NamespaceSupport mountNamespaceSupport();
 
 }  // namespace simswift::programs

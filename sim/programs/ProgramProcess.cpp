@@ -192,7 +192,9 @@ std::string ProgramProcess::enterPrivateRobocup(const std::string& socket_path) 
   if (access(socket_path.c_str(), F_OK) != 0) return "its LoLA socket " + socket_path + ": " + std::strerror(errno);
   if (const int e = robocupMountPoint()) return std::string("/tmp/robocup: ") + std::strerror(e);
   const int err = privateRobocup(socket_path.c_str(), selfIdMaps());
-  if (err != 0) return std::string("its own /tmp/robocup (mount namespace): ") + std::strerror(err);
+  if (err != 0)
+    return std::string("its own /tmp/robocup (mount namespace): ") + std::strerror(err) +
+           " (a program that takes a socket path can be started with " + socket_path + " itself)";
   return "";
 }
 

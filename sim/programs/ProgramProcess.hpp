@@ -32,6 +32,16 @@ struct LaunchSpec {
   std::vector<std::pair<std::string, std::string>> env;  // added to simswift's environment
   double stop_grace_s = 2;           // s between SIGTERM and SIGKILL at the end
   bool launched() const { return !command.empty(); }
+  // Whether the placeholder {name} appears in the command or in an
+  // environment value.
+  bool names(const std::string& name) const {
+    const std::string p = "{" + name + "}";
+    for (const std::string& a : command)
+      if (a.find(p) != std::string::npos) return true;
+    for (const auto& kv : env)
+      if (kv.second.find(p) != std::string::npos) return true;
+    return false;
+  }
 };
 
 class ProgramProcess {

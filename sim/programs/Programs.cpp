@@ -5,9 +5,11 @@
 #include <map>
 
 #include "agent/libagent/SharedNames.hpp"
+#include "agent/lola/Protocol.hpp"
 #include "agent/program/RobotSetup.hpp"
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/programs/ExternalProgram.hpp"
+#include "sim/programs/MountNamespace.hpp"
 #include "sim/programs/ProgramSpec.hpp"
 #include "sim/runner/Errors.hpp"
 #include "sim/runner/Scenario.hpp"
@@ -145,6 +147,30 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const runner::Scenario& sc
                  {"player", std::to_string(spec.player)},
                  {"seed", std::to_string(runner::programSeed(sc.seed, slot.index))},
                  {"config", std::filesystem::absolute(config).string()}});
+  // A LoLA program sees its robot's socket at /tmp/robocup, in a mount
+  // namespace of its own (ProgramProcess). Not needed when the robot's
+  // socket is the machine's /tmp/robocup itself (names: bare). Where the
+  // machine gives no namespace, a program that takes its socket's path
+  // ({socket} in its command or environment) is given the real path
+  // instead; an unchanged one cannot run (docs/lola.md).
+  std::string robocup;
+  if (slot.host->interface() == bridge::BodyInterface::Lola) {
+    const std::string socket = slot.host->endpoint();
+    if (socket != agent::lola::kDefaultSocketPath) {
+      const NamespaceSupport ns = mountNamespaceSupport();
+      if (ns.available) {
+        robocup = socket;
+      } else if (spec.launch.names("socket")) {
+        values["socket"] = socket;
+      } else {
+        throw ProgramError("robot " + slot.tag + ": this machine gives its program no mount namespace of its own (" +
+                               ns.why + "), so an unchanged LoLA program cannot see its robot's socket at " +
+                               "/tmp/robocup: put {socket} in its command (it becomes " + socket +
+                               ") or give the robot names: bare (its socket is then /tmp/robocup itself)",
+                           slot.tag + ": program could not be started");
+      }
+    }
+  }
   std::vector<std::string> argv;
   for (const std::string& a : spec.launch.command) argv.push_back(ProgramProcess::fill(a, values));
   argv[0] = ProgramProcess::resolveCommand(argv[0], sc.base_dir);
@@ -152,9 +178,6 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const runner::Scenario& sc
   for (const auto& [k, v] : spec.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
   std::unique_ptr<ProgramProcess> process;
   try {
-    // A LoLA program sees its robot's socket at /tmp/robocup (its own mount namespace).
-    const std::string robocup =
-        slot.host->interface() == bridge::BodyInterface::Lola ? slot.host->endpoint() : std::string();
     process = std::make_unique<ProgramProcess>(slot.tag, argv, ProgramProcess::fill(spec.launch.cwd, values), env,
                                                (logs / (slot.tag + ".log")).string(), spec.launch.stop_grace_s,
                                                robocup);

@@ -253,6 +253,18 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
     r.fail("version", "simswift sends GameController packet versions " + game::spl::packetVersionList() +
                           " (got " + std::to_string(g.udp.version) + ")");
   g.udp.message_budget = r.integer("message_budget", g.udp.message_budget, Range::closed(0, 65535));
+  // A penalty the season's packets have no number for (kick_off_goal from
+  // 2020 on) cannot reach the programs: refused.
+  if (g.udp.on) {
+    const game::spl::PacketVersion& v = *game::spl::findPacketVersion(g.udp.version);
+    size_t k = 0;
+    for (const YamlReader& e : r.list("penalties")) {
+      if (game::spl::penaltyCode(v, g.penalties[k].penalty) < 0)
+        e.fail("penalty", "GameController packet version " + std::to_string(v.data_version) + " (" + v.seasons +
+                              ") has no such penalty");
+      ++k;
+    }
+  }
   r.finish();
   return g;
 }

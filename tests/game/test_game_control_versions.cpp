@@ -89,12 +89,55 @@ TEST(GameControlVersions, EachSeasonsBytesWhereItsHeaderPutsThem) {
       EXPECT_EQ(le16(p, t1 + (gk ? 8 : 6)), 1100);
     }
     const size_t players = t1 + (gk ? 10 : budget ? 8 : 6);
-    EXPECT_EQ(p[players + 2 * 2], 8);  // player 3's penalty
+    // Player 3's penalty, request for pickup: 8 in 2019, 7 from 2020.
+    EXPECT_EQ(p[players + 2 * 2], e.version == 12 ? 8 : 7);
     EXPECT_EQ(p[players + 2 * 2 + 1], 25);
     EXPECT_EQ(players + 2 * static_cast<size_t>(v->max_players), e.bytes);  // the players end the packet
   }
   EXPECT_EQ(spl::findPacketVersion(11), nullptr);
   EXPECT_EQ(spl::findPacketVersion(10)->data_bytes, 588u);  // 2017's, unchanged
+}
+
+// Each season's penalty numbers (the public headers' PENALTY_SPL_* at the
+// commits GameControlVersions.hpp names): 2017 and 2019 alike for 1-8;
+// from 2020 illegal position is 5, request for pickup 7, no kick-off goal.
+TEST(GameControlVersions, PenaltiesByEachSeasonsNumbers) {
+  using P = agent::libagent::Penalty;
+  for (int version : {10, 12}) {
+    const spl::PacketVersion& v = *spl::findPacketVersion(version);
+    EXPECT_EQ(spl::penaltyCode(v, P::IllegalDefender), 5);
+    EXPECT_EQ(spl::penaltyCode(v, P::KickOffGoal), 7);
+    EXPECT_EQ(spl::penaltyCode(v, P::RequestForPickup), 8);
+  }
+  for (int version : {13, 14, 15, 17, 18}) {
+    SCOPED_TRACE(version);
+    const spl::PacketVersion& v = *spl::findPacketVersion(version);
+    EXPECT_EQ(spl::penaltyCode(v, P::None), 0);
+    EXPECT_EQ(spl::penaltyCode(v, P::IllegalBallContact), 1);
+    EXPECT_EQ(spl::penaltyCode(v, P::PlayerPushing), 2);
+    EXPECT_EQ(spl::penaltyCode(v, P::IllegalMotionInSet), 3);
+    EXPECT_EQ(spl::penaltyCode(v, P::InactivePlayer), 4);
+    EXPECT_EQ(spl::penaltyCode(v, P::IllegalDefender), 5);  // illegal position
+    EXPECT_EQ(spl::penaltyCode(v, P::LeavingTheField), 6);
+    EXPECT_EQ(spl::penaltyCode(v, P::KickOffGoal), -1);
+    EXPECT_EQ(spl::penaltyCode(v, P::RequestForPickup), 7);
+    EXPECT_EQ(spl::penaltyCode(v, P::Substitute), 14);
+    EXPECT_EQ(spl::penaltyCode(v, P::Manual), 15);
+  }
+}
+
+// A scenario penalty its season's packets cannot carry is refused with
+// file:line:key; the same with the 2019 packets is accepted.
+TEST(GameControlVersions, APenaltyTheSeasonLacksIsRefused) {
+  auto yaml = [](int version) {
+    return "robots:\n  - {team: 19, player: 1}\ngame:\n  udp: on\n  version: " + std::to_string(version) +
+           "\n  penalties:\n    - {t: 1, robot: 0, penalty: kick_off_goal}\n";
+  };
+  const std::string e = simswift::testing::configError([&] { Scenario::parse(yaml(13), "gc13.yaml"); });
+  EXPECT_NE(e.find("gc13.yaml:7"), std::string::npos) << e;
+  EXPECT_NE(e.find("penalty"), std::string::npos) << e;
+  EXPECT_NE(e.find("version 13 (2020-2021) has no such penalty"), std::string::npos) << e;
+  EXPECT_EQ(simswift::testing::configError([&] { Scenario::parse(yaml(12), "gc12.yaml"); }), "");
 }
 
 // Return packets: 8 bytes until 2021 (team, player, message: 0 alive),

@@ -28,6 +28,7 @@
 #include "sim/lola/LolaBody.hpp"
 #include "sim/nao_model/RobotModel.hpp"
 #include "sim/runner/Bodies.hpp"
+#include "sim/programs/MountNamespace.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/vision/VisionOracle.hpp"
@@ -369,6 +370,41 @@ TEST(V6Run, TwoUnchangedProgramsEachOpenTheirOwnRobocup) {
   std::snprintf(a.sun_path, sizeof a.sun_path, "/tmp/robocup");
   EXPECT_NE(::connect(probe, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
   ::close(probe);
+}
+
+// Where the machine gives no mount namespace (as SIMSWIFT_MOUNT_NAMESPACE=off
+// makes it here): a program that takes its socket's path ({socket}) is given
+// the real path and runs in lock-step; an unchanged program (it opens
+// /tmp/robocup) is refused with the two ways out, before anything starts.
+TEST(V6Run, WithoutMountNamespacesAProgramGivenItsSocketStillRuns) {
+  ::setenv("SIMSWIFT_MOUNT_NAMESPACE", "off", 1);
+  struct Unset {
+    ~Unset() { ::unsetenv("SIMSWIFT_MOUNT_NAMESPACE"); }
+  } unset;
+  ASSERT_FALSE(simswift::programs::mountNamespaceSupport().available);
+  const std::string logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid()) + "/nons";
+  Scenario sc = v6Scenario(socketPath("nons"), "{command: [\"" + kClient + "\", \"{socket}\", \"0\", hold]}", 0.6, 68);
+  sc.program_logs = logs;
+  {
+    Runner r(sc);
+    const simswift::runner::RunStats s = r.run(quiet());
+    EXPECT_EQ(s.ticks, 50);
+    EXPECT_EQ(dynamic_cast<LolaBody&>(r.body(0)).answers(), 50);
+    EXPECT_EQ(lastLine(logs + "/t68p1.log").rfind("packet 49 ", 0), 0u);
+  }
+  Scenario unchanged = v6Scenario(socketPath("nons-unchanged"), "{command: [\"" + kClient + "\", \"-\", \"0\", hold]}", 0.6, 69);
+  unchanged.program_logs = logs;
+  std::string message;
+  try {
+    Runner r(unchanged);
+    r.run(quiet());
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("no mount namespace of its own (SIMSWIFT_MOUNT_NAMESPACE=off)"), std::string::npos) << message;
+  EXPECT_NE(message.find("put {socket} in its command"), std::string::npos) << message;
+  EXPECT_NE(message.find("names: bare"), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(logs + "/t69p1.log")) << "nothing was started";
 }
 
 // --realtime: the run is paced at 12 ms and never waits for the program:
