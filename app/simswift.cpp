@@ -242,7 +242,6 @@ int RunCommand::run() {
   return 0;
 }
 
-
 // simswift clean [--team T --player P]: removes the named objects a killed
 // simulator left in /dev/shm (all robots, or that robot under every
 // release's names) and names the pid of any simulator still running one.
