@@ -62,7 +62,7 @@ TestCommand::TestCommand(CLI::App& parent) {
           [](std::string& text) -> std::string {
             const std::optional<double> a = cli::parseNumber(text);
             if (!a || !(*a > 0 && *a < 1)) return "must be a level in (0, 1) (got '" + text + "')";
-            return cli::number().operator()(text);  // exact for CLI11's conversion
+            return cli::number()(text);  // rewritten exactly for CLI11's conversion
           },
           "", ""));
   cmd_->add_option("--junit", opt_.junit, "also write the JUnit XML to FILE")
