@@ -8,10 +8,8 @@
 // the libagent block and simswift's extension objects beside it, so it is
 // also the template a team reads to attach its own program.
 //
-//   simswift-agent --team T --player P [--behaviour NAME] [--config FILE]
-//                  [--seed S] [--start X Y THETA] [--posture NAME]
-//                  [--move JOINT ANGLE [--at S]] [--bare] [--print] [--attach-timeout S]
-//                  [--lola [SOCKET]]
+// `simswift-agent --help` lists its options (declared once, with CLI11, in
+// main()); a bad command line exits with status 2, naming the option.
 //
 // --lola: the robot is a NAO V6: Motion talks to its LoLA socket (default
 // /tmp/robocup, what a launched program sees as its robot's: docs/lola.md)
@@ -30,47 +28,18 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <tuple>
+#include <utility>
 
-#include "agent/config/Seed.hpp"
 #include "agent/libagent/AgentConnection.hpp"
 #include "agent/libagent/SharedNames.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "agent/program/RobotSetup.hpp"
 #include "agent/behaviour/BehaviourYaml.hpp"
 #include "agent/config/ConfigError.hpp"
+#include "sim/cli/CommandLine.hpp"
 
 namespace {
-
-const char* kUsage =
-    "usage: simswift-agent [--team T --player P] [options]\n"
-    "  --team T             SPL team number (0..255); with --player P the robot's\n"
-    "                       objects are /libagent-memory<N>, N = T x 11 + P\n"
-    "  --config FILE        the robot's setup (agent/program/RobotSetup.hpp): team,\n"
-    "                       player, seed, start, behaviour, actions, posture, script;\n"
-    "                       the flags below override it\n"
-    "  --behaviour NAME     findball2016, findball2017, striker or script\n"
-    "  --seed S             the filters' random source (default 1)\n"
-    "  --start X Y THETA    known start pose for localisation (m, m, rad; field frame)\n"
-    "  --bare               use the robot build's bare names (/libagent-memory)\n"
-    "  --posture NAME       stand (default), crouch, limp or zero (no behaviour or actions)\n"
-    "  --move JOINT ANGLE   move one joint (NAO name, e.g. HeadYaw) to ANGLE rad\n"
-    "  --at S               ... at simulated time S s (default 0)\n"
-    "  --print              print the sensors, game state and team packet counts\n"
-    "                       every 100 ticks (1 s)\n"
-    "  --attach-timeout S   keep trying to attach for S wall-clock seconds (default 10)\n"
-    "  --lola [SOCKET]      a NAO V6: Motion over LoLA's socket (default /tmp/robocup)\n";
-
-[[noreturn]] void usageError(const std::string& msg) {
-  std::fprintf(stderr, "simswift-agent: %s\n\n%s", msg.c_str(), kUsage);
-  std::exit(2);
-}
-
-double number(const char* s, const char* what) {
-  char* end = nullptr;
-  const double v = std::strtod(s, &end);
-  if (*end != '\0') usageError(std::string(what) + ": not a number: '" + s + "'");
-  return v;
-}
 
 void printSensors(const agent::libagent::SensorValues& s, int64_t t_us) {
   namespace al = agent::libagent;
@@ -87,55 +56,72 @@ void printSensors(const agent::libagent::SensorValues& s, int64_t t_us) {
 int main(int argc, char** argv) {
   namespace al = agent::libagent;
   namespace ap = agent::program;
+  namespace cli = simswift::cli;
   std::optional<int> team, player;
-  std::optional<ap::Posture> posture;
-  std::optional<std::string> behaviour, config;
+  std::optional<std::string> posture_name, behaviour, config;
   std::optional<uint64_t> seed;
-  std::optional<agent::blackboard::FieldPose> start;
-  std::string move_joint;
-  double move_angle = 0, move_at = 0, attach_timeout = 10;
+  std::optional<std::tuple<double, double, double>> start;  // m, m, rad
+  // joint, angle in rad (checked as a number by the parser; a pair of
+  // strings because CLI11's pair<string, double> reading warns)
+  std::optional<std::pair<std::string, std::string>> move;
+  double move_at = 0, attach_timeout = 10;
   bool print = false, bare = false;
   std::optional<std::string> lola;  // the V6's socket
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next = [&](const char* what) -> const char* {
-      if (i + 1 >= argc) usageError(std::string(what) + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--team") team = static_cast<int>(number(next("--team"), "--team"));
-    else if (a == "--player") player = static_cast<int>(number(next("--player"), "--player"));
-    else if (a == "--config") config = next("--config");
-    else if (a == "--behaviour") behaviour = next("--behaviour");
-    else if (a == "--seed") {
-      const char* v = next("--seed");
-      const std::optional<uint64_t> s = agent::config::parseSeed(v);
-      if (!s) usageError(std::string("--seed must be ") + agent::config::kSeedRange + " (got '" + v + "')");
-      seed = *s;
-    } else if (a == "--start") {
-      agent::blackboard::FieldPose p;
-      p.x = number(next("--start"), "--start X") * 1000.0;  // m -> mm
-      p.y = number(next("--start"), "--start Y") * 1000.0;
-      p.theta = number(next("--start"), "--start THETA");
-      start = p;
-    } else if (a == "--posture") {
-      const std::string p = next("--posture");
-      auto parsed = ap::parsePosture(p);
-      if (!parsed) usageError("--posture: unknown posture '" + p + "'");
-      posture = *parsed;
-    } else if (a == "--move") {
-      move_joint = next("--move");
-      move_angle = number(next("--move"), "--move ANGLE");
-    } else if (a == "--at") move_at = number(next("--at"), "--at");
-    else if (a == "--print") print = true;
-    else if (a == "--bare") bare = true;
-    else if (a == "--lola")
-      lola = i + 1 < argc && argv[i + 1][0] != '-' ? std::string(argv[++i]) : std::string(agent::lola::kDefaultSocketPath);
-    else if (a == "--attach-timeout") attach_timeout = number(next("--attach-timeout"), "--attach-timeout");
-    else if (a == "--help" || a == "-h") {
-      std::printf("%s", kUsage);
-      return 0;
-    } else usageError("unknown argument '" + a + "'");
-  }
+
+  CLI::App app("The reference robot program in its own process: attaches to a simulated robot's\n"
+               "shared memory (libagent's names) and runs the modules of a builtin robot program.",
+               "simswift-agent");
+  app.footer("Exit codes: 0 the run ended; 1 the simulator is gone, the program failed or it could not\n"
+             "attach; 2 bad command line or config file.");
+  app.add_option("--team", team,
+                 "SPL team number (0..255); with --player P the robot's\n"
+                 "objects are /libagent-memory<N>, N = T x 11 + P")
+      ->type_name("T")
+      ->transform(cli::number(al::kMinTeamNumber, al::kMaxTeamNumber, true));
+  app.add_option("--player", player, "player number (1..5)")
+      ->type_name("P")
+      ->transform(cli::number(al::kMinPlayer, al::kMaxPlayer, true));
+  app.add_option("--config", config,
+                 "the robot's setup (agent/program/RobotSetup.hpp): team,\n"
+                 "player, seed, start, behaviour, actions, posture, script;\n"
+                 "the flags override it")
+      ->type_name("FILE");
+  app.add_option("--behaviour", behaviour, "findball2016, findball2017, striker or script")->type_name("NAME");
+  app.add_option("--seed", seed, "the filters' random source (default 1)")->type_name("S")->transform(cli::seed());
+  app.add_option("--start", start, "known start pose for localisation (m, m, rad; field frame)")
+      ->type_name("X Y THETA")
+      ->transform(cli::number());
+  app.add_flag("--bare", bare, "use the robot build's bare names (/libagent-memory)");
+  app.add_option("--posture", posture_name, "stand (default), crouch, limp or zero (no behaviour or actions)")
+      ->type_name("NAME")
+      ->transform(CLI::Validator(
+          [](std::string& text) -> std::string {
+            return ap::parsePosture(text) ? "" : "unknown posture '" + text + "'";
+          },
+          "", ""));
+  app.add_option("--move", move, "move one joint (NAO name, e.g. HeadYaw) to ANGLE rad")
+                              ->type_name("JOINT ANGLE")
+                              ->transform(CLI::Validator(
+                                  [](std::string& joint) -> std::string {
+                                    return ap::jointIndex(joint) >= 0 ? "" : "unknown joint '" + joint + "'";
+                                  },
+                                  "", "")
+                                              .application_index(0))
+                              ->transform(cli::number().application_index(1));
+  app.add_option("--at", move_at, "... at simulated time S s (default 0)")
+      ->type_name("S")
+      ->transform(cli::number());
+  app.add_flag("--print", print,
+               "print the sensors, game state and team packet counts\n"
+               "every 100 ticks (1 s)");
+  app.add_option("--attach-timeout", attach_timeout, "keep trying to attach for S wall-clock seconds (default 10)")
+      ->type_name("S")
+      ->transform(cli::number());
+  app.add_option("--lola", lola, "a NAO V6: Motion over LoLA's socket")
+      ->type_name("[SOCKET]")
+      ->expected(0, 1)
+      ->default_str(std::string(agent::lola::kDefaultSocketPath));
+  if (const std::optional<int> code = cli::parse(app, argc, argv)) return *code;
 
   // The setup: the config file, then the flags.
   ap::RobotSetup setup;
@@ -150,20 +136,26 @@ int main(int argc, char** argv) {
   if (team) setup.team = *team;
   if (player) setup.player = *player;
   if (seed) setup.seed = *seed;
-  if (start) setup.start = start;
-  if (posture) setup.posture = *posture;
-  if (!config && !team) usageError("--team is needed (or a --config file that names it)");
-  if (!config && !player) usageError("--player is needed (or a --config file that names it)");
+  if (start) {
+    agent::blackboard::FieldPose p;
+    p.x = std::get<0>(*start) * 1000.0;  // m -> mm
+    p.y = std::get<1>(*start) * 1000.0;
+    p.theta = std::get<2>(*start);
+    setup.start = p;
+  }
+  if (posture_name) setup.posture = *ap::parsePosture(*posture_name);
+  if (!config && !team) return cli::usageError(app, "--team is needed (or a --config file that names it)");
+  if (!config && !player) return cli::usageError(app, "--player is needed (or a --config file that names it)");
   if (setup.team < al::kMinTeamNumber || setup.team > al::kMaxTeamNumber)
-    usageError("--team must be an SPL team number " + std::to_string(al::kMinTeamNumber) + ".." +
-               std::to_string(al::kMaxTeamNumber));
+    return cli::usageError(app, "--team must be an SPL team number " + std::to_string(al::kMinTeamNumber) + ".." +
+                                    std::to_string(al::kMaxTeamNumber));
   if (setup.player < al::kMinPlayer || setup.player > al::kMaxPlayer)
-    usageError("--player must be " + std::to_string(al::kMinPlayer) + ".." + std::to_string(al::kMaxPlayer));
-  if (!move_joint.empty()) {
+    return cli::usageError(app, "--player must be " + std::to_string(al::kMinPlayer) + ".." +
+                                    std::to_string(al::kMaxPlayer));
+  if (move) {
     ap::ScriptStep s;
-    s.joint = ap::jointIndex(move_joint);
-    if (s.joint < 0) usageError("--move: unknown joint '" + move_joint + "'");
-    s.angle = static_cast<float>(move_angle);
+    s.joint = ap::jointIndex(move->first);
+    s.angle = static_cast<float>(*cli::parseNumber(move->second));
     s.t_s = move_at;
     setup.script.push_back(s);
   }

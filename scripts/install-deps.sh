@@ -10,6 +10,7 @@ pkgs=(build-essential cmake pkg-config git
       python3-dev python3-pybind11 python3-pytest python3-numpy   # Python bindings (python/)
       libboost-math-dev   # the report's statistics (sim/experiment/Statistics.cpp)
       libmsgpack-dev      # the LoLA protocol (sim/lola): msgpack-c
+      libcli11-dev        # the programs' command lines (sim/cli): CLI11, header-only
       libxml2-utils       # xmllint: the JUnit XML of `simswift test` checked against its schema (tests/scenario_tests)
       clang libclang-rt-14-dev)   # libFuzzer targets (docs/testing.md, "Fuzzing the loaders")
 missing=()

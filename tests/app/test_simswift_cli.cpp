@@ -185,7 +185,7 @@ TEST(Cli, TheSeedTakesEverySixtyFourBitValue) {
   while (fgets(buf, sizeof buf, p)) agent_err += buf;
   const int st = pclose(p);
   EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 2) << agent_err;
-  EXPECT_NE(agent_err.find("--seed must be a whole number in [0, 18446744073709551615] (got '1e3')"),
+  EXPECT_NE(agent_err.find("--seed: must be a whole number in [0, 18446744073709551615] (got '1e3')"),
             std::string::npos)
       << agent_err;
 }
