@@ -104,6 +104,20 @@ TEST(ModuleOf, RunsOnCopiesOfItsInputsAndPublishesItsOutputs) {
   EXPECT_DOUBLE_EQ(board.ball.read().time_since_seen, 2.5);
 }
 
+// The one list of sections gives the ids, the names and the fields alike.
+TEST(Sections, IdsNamesAndFieldsComeFromTheOneList) {
+  bb::Blackboard board;
+  EXPECT_EQ(fw::kNumSections, 14);
+  EXPECT_EQ(static_cast<int>(fw::SectionOf<bb::SensorFrame>::id), 0);
+  EXPECT_EQ(static_cast<int>(fw::SectionOf<bb::ActuatorRequest>::id), fw::kNumSections - 1);
+  EXPECT_STREQ(fw::sectionName(fw::SectionOf<bb::GameControllerData>::id), "game_controller");
+  EXPECT_STREQ(fw::sectionName(fw::SectionOf<bb::FindBallInfo>::id), "findball");
+  EXPECT_STREQ(fw::sectionName(SectionId::Actuators), "actuators");
+  EXPECT_STREQ(fw::sectionName(SectionId::NUM_SECTIONS), "?");
+  EXPECT_EQ(&fw::SectionOf<bb::TeamInbox>::of(board), &board.team_inbox);
+  EXPECT_EQ(&fw::SectionOf<bb::MotionRequest>::of(board), &board.motion_request);
+}
+
 TEST(ModuleSchedule, ReadingASectionNobodyProvidesNamesBoth) {
   fw::ModuleSchedule s;
   s.providedByProgram(ThreadId::Perception, SectionId::Frame);
