@@ -41,14 +41,15 @@
 
 namespace {
 
-const char* kUsage =
+// The --behaviour names come from agent/behaviour's table of kinds.
+const std::string kUsage =
     "usage: simswift-agent [--team T --player P] [options]\n"
     "  --team T             SPL team number (0..255); with --player P the robot's\n"
     "                       objects are /libagent-memory<N>, N = T x 11 + P\n"
     "  --config FILE        the robot's setup (agent/program/RobotSetup.hpp): team,\n"
     "                       player, seed, start, behaviour, actions, posture, script;\n"
     "                       the flags below override it\n"
-    "  --behaviour NAME     findball2016, findball2017, striker or script\n"
+    "  --behaviour NAME     " + agent::behaviour::behaviourNamesText() + "\n"
     "  --seed S             the filters' random source (default 1)\n"
     "  --start X Y THETA    known start pose for localisation (m, m, rad; field frame)\n"
     "  --bare               use the robot build's bare names (/libagent-memory)\n"
@@ -61,7 +62,7 @@ const char* kUsage =
     "  --lola [SOCKET]      a NAO V6: Motion over LoLA's socket (default /tmp/robocup)\n";
 
 [[noreturn]] void usageError(const std::string& msg) {
-  std::fprintf(stderr, "simswift-agent: %s\n\n%s", msg.c_str(), kUsage);
+  std::fprintf(stderr, "simswift-agent: %s\n\n%s", msg.c_str(), kUsage.c_str());
   std::exit(2);
 }
 
@@ -132,7 +133,7 @@ int main(int argc, char** argv) {
       lola = i + 1 < argc && argv[i + 1][0] != '-' ? std::string(argv[++i]) : std::string(agent::lola::kDefaultSocketPath);
     else if (a == "--attach-timeout") attach_timeout = number(next("--attach-timeout"), "--attach-timeout");
     else if (a == "--help" || a == "-h") {
-      std::printf("%s", kUsage);
+      std::printf("%s", kUsage.c_str());
       return 0;
     } else usageError("unknown argument '" + a + "'");
   }
