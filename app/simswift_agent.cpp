@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
                  "player, seed, start, behaviour, actions, posture, script;\n"
                  "the flags override it")
       ->type_name("FILE");
-  app.add_option("--behaviour", behaviour, "findball2016, findball2017, striker or script")->type_name("NAME");
+  app.add_option("--behaviour", behaviour, agent::behaviour::behaviourNamesText())->type_name("NAME");
   app.add_option("--seed", seed, "the filters' random source (default 1)")->type_name("S")->transform(cli::seed());
   app.add_option("--start", start, "known start pose for localisation (m, m, rad; field frame)")
       ->type_name("X Y THETA")

@@ -262,24 +262,62 @@ struct SkillConfig {
 
 enum class BehaviourKind : int32_t { FINDBALL_2016 = 0, FINDBALL_2017, STRIKER };
 
-// The scenario's spelling: "findball2016", "findball2017", "striker".
+// The behaviour kinds, one row each: the kind and its name, as a scenario's,
+// an experiment's and a robot setup's `behaviour:` and simswift-agent
+// --behaviour spell it. Every list of kinds (the readers' choices, their
+// error messages, the help, the FindBall view's captions) is read from here.
+// Row i is kind i (FindBallInfo::kind carries the number).
+struct BehaviourKindRow {
+  BehaviourKind kind;
+  const char* name;
+};
+inline constexpr BehaviourKindRow kBehaviourKinds[] = {
+    {BehaviourKind::FINDBALL_2016, "findball2016"},
+    {BehaviourKind::FINDBALL_2017, "findball2017"},
+    {BehaviourKind::STRIKER, "striker"},
+};
+constexpr int kNumBehaviourKinds = static_cast<int>(sizeof kBehaviourKinds / sizeof kBehaviourKinds[0]);
+constexpr bool behaviourKindRowsInOrder() {
+  for (int i = 0; i < kNumBehaviourKinds; ++i)
+    if (static_cast<int>(kBehaviourKinds[i].kind) != i) return false;
+  return true;
+}
+static_assert(behaviourKindRowsInOrder(), "kBehaviourKinds: row i must be kind i");
+
+// The `behaviour:` that runs no behaviour: the robot's actions: list.
+inline constexpr const char* kScriptBehaviourName = "script";
+
+// The kind's name; "?" for a number outside the table.
 inline const char* behaviourKindName(BehaviourKind k) {
-  switch (k) {
-    case BehaviourKind::FINDBALL_2016: return "findball2016";
-    case BehaviourKind::FINDBALL_2017: return "findball2017";
-    case BehaviourKind::STRIKER: return "striker";
-  }
-  return "?";
+  const int i = static_cast<int>(k);
+  return i >= 0 && i < kNumBehaviourKinds ? kBehaviourKinds[i].name : "?";
 }
 // False (kind untouched) for an unknown name, so a loader can report it.
 inline bool parseBehaviourKind(const std::string& name, BehaviourKind* kind) {
-  for (BehaviourKind k : {BehaviourKind::FINDBALL_2016, BehaviourKind::FINDBALL_2017,
-                          BehaviourKind::STRIKER})
-    if (name == behaviourKindName(k)) {
-      *kind = k;
+  for (const BehaviourKindRow& r : kBehaviourKinds)
+    if (name == r.name) {
+      *kind = r.kind;
       return true;
     }
   return false;
+}
+// Every name a `behaviour:` may take: the kinds in the table's order, then
+// kScriptBehaviourName.
+inline const std::vector<std::string>& behaviourNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const BehaviourKindRow& r : kBehaviourKinds) v.push_back(r.name);
+    v.push_back(kScriptBehaviourName);
+    return v;
+  }();
+  return names;
+}
+// The same for messages and help: "findball2016, findball2017, striker or script".
+inline std::string behaviourNamesText() {
+  const std::vector<std::string>& v = behaviourNames();
+  std::string t;
+  for (size_t i = 0; i < v.size(); ++i) t += (i == 0 ? "" : i + 1 == v.size() ? " or " : ", ") + v[i];
+  return t;
 }
 
 struct BehaviourConfig {

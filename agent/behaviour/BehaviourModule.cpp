@@ -87,8 +87,11 @@ void BehaviourModule::update(const In& board, Out& written) {
   }
   fb.resets = resets_;
   fb.segment = behaviour_.searchSegment();
-  const bool searching = out.activity && (std::strcmp(out.activity, "findball2017") == 0 ||
-                                          std::strcmp(out.activity, "findball2016") == 0);
+  // A search runs under its kind's name (Searcher::tick).
+  const auto running = [&out](BehaviourKind k) {
+    return out.activity && std::strcmp(out.activity, behaviourKindName(k)) == 0;
+  };
+  const bool searching = running(BehaviourKind::FINDBALL_2017) || running(BehaviourKind::FINDBALL_2016);
   if (searching) {
     const Point2 p = behaviour_.searchPoint();
     fb.has_point = std::isfinite(p.x) && std::isfinite(p.y);

@@ -147,11 +147,6 @@ void readSkills(const YamlReader& r, ab::SkillConfig& k) {
   r.finish();
 }
 
-const std::vector<std::string>& kindNames() {
-  static const std::vector<std::string> names{"findball2016", "findball2017", "striker", "script"};
-  return names;
-}
-
 }  // namespace
 
 std::optional<ab::BehaviourConfig> readBehaviour(const YamlReader& robot, std::string* yaml) {
@@ -165,11 +160,11 @@ std::optional<ab::BehaviourConfig> readBehaviour(const YamlReader& robot, std::s
   std::optional<YamlReader> m;
   if (robot.node()["behaviour"].IsMap()) {
     m = robot.map("behaviour");
-    kind = m->choice("kind", "findball2017", kindNames());
+    kind = m->choice("kind", ab::behaviourKindName(ab::BehaviourConfig().kind), ab::behaviourNames());
   } else {
-    kind = robot.choice("behaviour", "script", kindNames());
+    kind = robot.choice("behaviour", ab::kScriptBehaviourName, ab::behaviourNames());
   }
-  if (kind == "script") {
+  if (kind == ab::kScriptBehaviourName) {
     if (m) {
       if (m->node().size() > 1) m->fail("kind", "behaviour script takes no overrides (it runs the actions: list)");
       m->finish();

@@ -1,7 +1,7 @@
 // A robot's `behaviour:` in a scenario or in the robot program's own config
 // file (agent/behaviour/BehaviourConfig.hpp):
 //
-//   behaviour: findball2017            # or findball2016, striker, script
+//   behaviour: findball2017            # or another kind (kBehaviourKinds), or script
 //   behaviour: {kind: findball2017,    # with overrides of any config field
 //               grid: {columns: 4, rows: 3},
 //               distribution: {entropy_rate: 0.02},

@@ -34,7 +34,7 @@ RoleOutput Searcher::tick(const BehaviourInputs& in, const FindBallResult* fb) {
   o.body = s.body;
   o.head = s.head;
   o.searching = true;
-  o.activity = use_2017_ ? "findball2017" : "findball2016";
+  o.activity = behaviourKindName(use_2017_ ? BehaviourKind::FINDBALL_2017 : BehaviourKind::FINDBALL_2016);
   return o;
 }
 

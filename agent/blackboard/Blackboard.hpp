@@ -12,21 +12,9 @@
 // Who reads and writes what is declared by the modules' types
 // (agent/framework/Module.hpp) and checked at start-up
 // (agent/framework/ModuleSchedule.hpp); the order per thread is in
-// agent/program/ModuleOrder.cpp. Sections, by field (writer -> readers):
-//   sensors         program, every Motion tick -> motion
-//   frame           program, every camera frame -> every Perception module
-//   vision          vision adapter -> localisation, ball tracker
-//   localisation    localisation -> ball tracker, behaviour, team send
-//   ball            ball tracker -> behaviour, team send
-//   team            team receive -> ball tracker (previous frame), behaviour
-//   game            game state -> localisation, behaviour, action script
-//   game_controller program (the game-state device), every camera frame -> game state
-//   team_inbox      program (the team transport), every camera frame -> team receive
-//   team_outbox     team send -> program (puts it on the team transport)
-//   motion_request  behaviour or a scenario's action script -> motion
-//   findball        behaviour -> team send, the simulator's FindBall view
-//   motion          motion -> vision adapter, localisation, ball tracker, behaviour, team send
-//   actuators       motion -> effector
+// agent/program/ModuleOrder.cpp. The sections are SIMSWIFT_BLACKBOARD_SECTIONS
+// below, the one list the Blackboard's fields, the framework's SectionId,
+// section names and SectionOf<T> are generated from.
 //
 // Units: distances mm, speeds mm/s, angles rad, angular speeds rad/s.
 // Frames: sensors, vision and the motion request are robot-relative (x
@@ -158,22 +146,32 @@ struct ActuatorRequest {
   int64_t tick = 0;
 };
 
-// The sections, in the order of the list at the top of this file.
+// The sections, in order: X(type, SectionId enumerator, field = section name),
+// each with its writer -> readers. The order is the Blackboard's field order
+// and SectionId's numbering.
+#define SIMSWIFT_BLACKBOARD_SECTIONS(X)                                                                         \
+  X(SensorFrame, Sensors, sensors)             /* program, every Motion tick -> motion */                       \
+  X(FrameInfo, Frame, frame)                   /* program, every camera frame -> every Perception module */     \
+  X(VisionMeasurements, Vision, vision)        /* vision adapter -> localisation, ball tracker */               \
+  X(LocalisationEstimate, Localisation, localisation) /* localisation -> ball tracker, behaviour, team send */   \
+  X(BallEstimate, Ball, ball)                  /* ball tracker -> behaviour, team send */                       \
+  X(TeamInfo, Team, team)                      /* team receive -> ball tracker (previous frame), behaviour */   \
+  X(GameInfo, Game, game)                      /* game state -> localisation, behaviour, action script */       \
+  X(GameControllerData, GameController, game_controller) /* program (game-state device), every camera frame    \
+                                                            -> game state */                                    \
+  X(TeamInbox, TeamInbox, team_inbox)          /* program (team transport), every camera frame -> team receive */ \
+  X(TeamOutbox, TeamOutbox, team_outbox)       /* team send -> program (puts it on the team transport) */       \
+  X(MotionRequest, MotionRequest, motion_request) /* behaviour or a scenario's action script -> motion */       \
+  X(FindBallInfo, FindBall, findball)          /* behaviour -> team send, the simulator's FindBall view */      \
+  X(MotionState, Motion, motion)               /* motion -> vision adapter, localisation, ball tracker,         \
+                                                  behaviour, team send */                                       \
+  X(ActuatorRequest, Actuators, actuators)     /* motion -> effector */
+
+// The store: one Section per entry of the list above, in its order.
 struct Blackboard {
-  Section<SensorFrame> sensors;
-  Section<FrameInfo> frame;
-  Section<VisionMeasurements> vision;
-  Section<LocalisationEstimate> localisation;
-  Section<BallEstimate> ball;
-  Section<TeamInfo> team;
-  Section<GameInfo> game;
-  Section<GameControllerData> game_controller;
-  Section<TeamInbox> team_inbox;
-  Section<TeamOutbox> team_outbox;
-  Section<MotionRequest> motion_request;
-  Section<FindBallInfo> findball;
-  Section<MotionState> motion;
-  Section<ActuatorRequest> actuators;
+#define SIMSWIFT_BLACKBOARD_FIELD(Type, Id, field) Section<Type> field;
+  SIMSWIFT_BLACKBOARD_SECTIONS(SIMSWIFT_BLACKBOARD_FIELD)
+#undef SIMSWIFT_BLACKBOARD_FIELD
 };
 
 inline const char* actionName(ActionType t) {

@@ -16,6 +16,12 @@
 // for it), nor does writing one. Reads<..., IfProvided<T>> reads T when some module
 // writes it and its default value otherwise. The declared lists are what the
 // schedule (agent/framework/ModuleSchedule.hpp) checks at start-up.
+//
+// That holds for every module, not by convention: ModuleOf is the only class
+// that can derive from Module (its constructors are private), and ModuleOf's
+// run(Blackboard&), the one entry point that sees the whole Blackboard, is
+// final. A module cannot reach the Blackboard but through its In and Out.
+// tests/agent/framework: the static checks and the compile-fail cases.
 #pragma once
 
 #include <stdexcept>
@@ -34,10 +40,24 @@ struct ModuleError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The untyped face the schedule sees. Modules derive from ModuleOf (below).
+template <class... T>
+struct Reads {};
+template <class... T>
+struct Writes {};
+template <class... T>
+struct UsesPrevious {};
+template <class T>
+struct IfProvided {};  // inside Reads<>: an optional read
+
+template <class R, class W, class U = UsesPrevious<>>
+class ModuleOf;
+
+// The untyped face the schedule sees. Only ModuleOf (below) derives from it.
 class Module {
  public:
   virtual ~Module() = default;
+  Module(const Module&) = delete;
+  Module& operator=(const Module&) = delete;
   virtual const char* name() const = 0;
   virtual std::vector<SectionId> reads() const = 0;
   virtual std::vector<SectionId> optionalReads() const = 0;
@@ -47,19 +67,15 @@ class Module {
   virtual std::vector<SectionId> usesPrevious() const = 0;
 
  private:
+  // Private, so a class deriving from Module directly cannot be constructed:
+  // its run() could write any section while declaring others.
+  Module() = default;
+  template <class R, class W, class U>
+  friend class ModuleOf;
   friend class ModuleSchedule;
   // One cycle of the module's thread (a Motion tick or a camera frame).
   virtual void run(blackboard::Blackboard& board) = 0;
 };
-
-template <class... T>
-struct Reads {};
-template <class... T>
-struct Writes {};
-template <class... T>
-struct UsesPrevious {};
-template <class T>
-struct IfProvided {};  // inside Reads<>: an optional read
 
 namespace detail {
 template <class T>
@@ -77,10 +93,10 @@ constexpr bool kDeclared = (std::is_same_v<S, T> || ...);
 }  // namespace detail
 
 // What a module reads: copies taken from the Blackboard before it runs.
+// Made only by ModuleOf::run, from the Blackboard.
 template <class... T>
 class Inputs {
  public:
-  explicit Inputs(blackboard::Blackboard& b) : values_(SectionOf<T>::of(b).read()...) {}
   // Only for a section in the module's Reads<> or UsesPrevious<>.
   template <class S, class = std::enable_if_t<detail::kDeclared<S, T...>>>
   const S& get() const {
@@ -88,28 +104,31 @@ class Inputs {
   }
 
  private:
+  template <class R, class W, class U>
+  friend class ModuleOf;
+  explicit Inputs(blackboard::Blackboard& b) : values_(SectionOf<T>::of(b).read()...) {}
   std::tuple<T...> values_;
 };
 
 // What a module writes: starts as the section's current value (the module
 // is its only writer), published to the Blackboard after it runs.
+// Made and published only by ModuleOf::run.
 template <class... T>
 class Outputs {
  public:
-  explicit Outputs(blackboard::Blackboard& b) : values_(SectionOf<T>::of(b).read()...) {}
   // Only for a section in the module's Writes<>.
   template <class S, class = std::enable_if_t<detail::kDeclared<S, T...>>>
   S& get() {
     return std::get<S>(values_);
   }
-  void publish(blackboard::Blackboard& b) const { (SectionOf<T>::of(b).write(std::get<T>(values_)), ...); }
 
  private:
+  template <class R, class W, class U>
+  friend class ModuleOf;
+  explicit Outputs(blackboard::Blackboard& b) : values_(SectionOf<T>::of(b).read()...) {}
+  void publish(blackboard::Blackboard& b) const { (SectionOf<T>::of(b).write(std::get<T>(values_)), ...); }
   std::tuple<T...> values_;
 };
-
-template <class R, class W, class U = UsesPrevious<>>
-class ModuleOf;
 
 template <class... R, class... W, class... U>
 class ModuleOf<Reads<R...>, Writes<W...>, UsesPrevious<U...>> : public Module {

@@ -5,26 +5,6 @@
 
 namespace agent::framework {
 
-const char* sectionName(SectionId s) {
-  switch (s) {
-    case SectionId::Sensors: return "sensors";
-    case SectionId::Frame: return "frame";
-    case SectionId::Vision: return "vision";
-    case SectionId::Localisation: return "localisation";
-    case SectionId::Ball: return "ball";
-    case SectionId::Team: return "team";
-    case SectionId::Game: return "game";
-    case SectionId::GameController: return "game_controller";
-    case SectionId::TeamInbox: return "team_inbox";
-    case SectionId::TeamOutbox: return "team_outbox";
-    case SectionId::MotionRequest: return "motion_request";
-    case SectionId::FindBall: return "findball";
-    case SectionId::Motion: return "motion";
-    case SectionId::Actuators: return "actuators";
-    default: return "?";
-  }
-}
-
 const char* threadName(ThreadId t) { return t == ThreadId::Perception ? "Perception" : "Motion"; }
 
 Module& ModuleSchedule::add(ThreadId thread, std::unique_ptr<Module> m) {

@@ -5,16 +5,16 @@
 namespace simswift::experiment {
 
 void RobotBehaviours::check(const Experiment&, const ExperimentRobot& r) const {
-  if (r.behaviour == Behaviour::Script) return;
-  programs::checkBehaviour(behaviourName(r.behaviour), r.config_yaml, r.behaviour_where);
+  if (r.isScript()) return;
+  programs::checkBehaviour(r.behaviour, r.config_yaml, r.behaviour_where);
 }
 
 void RobotBehaviours::configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const {
   const Setup& s = e.setups[t.setup];
   for (size_t i = 0; i < s.robots.size() && i < sc.robots.size(); ++i) {
     const ExperimentRobot& r = s.robots[i];
-    if (r.behaviour == Behaviour::Script) continue;  // its actions are already set
-    programs::setBehaviour(sc.robots[i], behaviourName(r.behaviour), r.config_yaml, r.behaviour_where);
+    if (r.isScript()) continue;  // its actions are already set
+    programs::setBehaviour(sc.robots[i], r.behaviour, r.config_yaml, r.behaviour_where);
   }
 }
 

@@ -39,26 +39,7 @@ std::string flow(const YAML::Node& n) {
   return e.c_str();
 }
 
-Behaviour parseBehaviour(const std::string& s) {
-  if (s == "findball2016") return Behaviour::FindBall2016;
-  if (s == "findball2017") return Behaviour::FindBall2017;
-  if (s == "striker") return Behaviour::Striker;
-  return Behaviour::Script;
-}
-
-const std::vector<std::string> kBehaviours = {"findball2016", "findball2017", "striker", "script"};
-
 }  // namespace
-
-const char* behaviourName(Behaviour b) {
-  switch (b) {
-    case Behaviour::FindBall2016: return "findball2016";
-    case Behaviour::FindBall2017: return "findball2017";
-    case Behaviour::Striker: return "striker";
-    case Behaviour::Script: return "script";
-  }
-  return "?";
-}
 
 int Experiment::maxRobots() const {
   size_t n = 0;
@@ -174,7 +155,8 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
     if (!setup_names.insert(setup.name).second) s.fail("name", "setup '" + setup.name + "' appears twice");
     setup.thesis_table = s.choice("thesis_table", "", {"", "5.3", "5.4", "5.5", "5.6", "5.7", "5.8"});
     const bool has_default = s.has("behaviour");
-    const std::string def_behaviour = has_default ? s.choice("behaviour", "script", kBehaviours) : "";
+    const std::string def_behaviour =
+        has_default ? s.choice("behaviour", programs::kScriptBehaviour, programs::behaviourNames()) : "";
     const std::string def_where = has_default ? where(s, "behaviour") : "";
     std::string def_config;
     if (s.has("config")) {
@@ -209,16 +191,15 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
       rob.theta = r.number("theta", Range::closed(-2 * M_PI, 2 * M_PI));
       onCarpet(r, rob.x, rob.y, agent::nao::kFootprintRadius / 1000, "the robot");  // m
       if (r.has("behaviour")) {
-        rob.behaviour = parseBehaviour(r.choice("behaviour", "script", kBehaviours));
+        rob.behaviour = r.choice("behaviour", programs::kScriptBehaviour, programs::behaviourNames());
         rob.behaviour_where = where(r, "behaviour");
       } else if (has_default) {
-        rob.behaviour = parseBehaviour(def_behaviour);
+        rob.behaviour = def_behaviour;
         rob.behaviour_where = def_where;
       } else {
         r.checkMisspelling("behaviour");
         s.checkMisspelling("behaviour");  // the setup's default, misspelt
-        r.fail("behaviour", "missing: give the robot (or its setup) a behaviour: findball2016, findball2017, "
-                            "striker or script");
+        r.fail("behaviour", "missing: give the robot (or its setup) a behaviour: " + programs::behaviourNamesText());
       }
       rob.config_yaml = def_config;
       if (r.has("config")) {
@@ -237,13 +218,13 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
         r.fail(rob.v6 ? "lola" : "team", "every robot of a setup ticks alike: its first robot is a " +
                                               std::string(setup.robots.front().v6 ? "NAO V6 (lola, 12 ms)"
                                                                                   : "NAO V5 (libagent, 10 ms)"));
-      if (rob.behaviour == Behaviour::Script) {
+      if (rob.isScript()) {
         if (!r.has("actions"))
           r.missing("actions", "missing: a script robot needs an actions: list (as in a scenario)");
         runner::readActions(r, rob.script);
       } else if (r.has("actions")) {
         r.fail("actions", "only a script robot takes actions (this one is " +
-                              std::string(behaviourName(rob.behaviour)) + ")");
+                              rob.behaviour + ")");
       }
       r.finish();
       // Robots standing on each other.
@@ -386,7 +367,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   if (v6 && !sc.model_named) sc.model_path = "models/nao_v6.urdf";
   for (const ExperimentRobot& r : s.robots) {
     runner::RobotSpec rs;
-    if (r.behaviour == Behaviour::Script) rs = r.script;
+    if (r.isScript()) rs = r.script;
     rs.team = r.team;
     rs.colour = teamColour(s, r.team);
     rs.player = r.player;

@@ -63,6 +63,7 @@
 #include <vector>
 
 #include "sim/experiment/Sweep.hpp"
+#include "sim/programs/ProgramSpec.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/ConfigError.hpp"
 #include "sim/world/FieldConfig.hpp"
@@ -73,10 +74,6 @@ namespace simswift::experiment {
 // trials per position); more is refused when it is loaded.
 constexpr int64_t kMaxTrials = 1000000;
 
-// Behaviours an experiment may name (a scenario's `behaviour:`).
-// Whether this build can run one is the BehaviourFactory's call (TrialHooks).
-enum class Behaviour { FindBall2016, FindBall2017, Striker, Script };
-const char* behaviourName(Behaviour b);
 
 struct BallPosition {
   int number = 1;          // the thesis's position number (table 5.2)
@@ -88,7 +85,11 @@ struct ExperimentRobot {
   int team = 0;            // SPL team number (GameController byte, 0..255), e.g. 19
   int player = 2;          // 1..5
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
-  Behaviour behaviour = Behaviour::Script;
+  // A scenario's `behaviour:` name (programs::behaviourNames(): the robot
+  // program's kinds, or script). Whether this build can run it is the
+  // BehaviourFactory's call (TrialHooks).
+  std::string behaviour = programs::kScriptBehaviour;
+  bool isScript() const { return behaviour == programs::kScriptBehaviour; }
   std::string config_yaml;  // behaviour overrides, opaque (YAML flow text; "" = none)
   runner::RobotSpec script;  // behaviour script: its actions (the scenario's actions: list)
   // program: builtin (default) or {command: [...]}: a program simswift

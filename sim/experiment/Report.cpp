@@ -119,7 +119,7 @@ std::string robotsLine(const Setup& s) {
   std::ostringstream o;
   for (size_t i = 0; i < s.robots.size(); ++i) {
     const ExperimentRobot& r = s.robots[i];
-    o << (i ? "; " : "") << "t" << r.team << "p" << r.player << " " << behaviourName(r.behaviour) << " at ("
+    o << (i ? "; " : "") << "t" << r.team << "p" << r.player << " " << r.behaviour << " at ("
       << fixed(r.x * 1000, 0) << ", " << fixed(r.y * 1000, 0) << ") mm";
   }
   return o.str();

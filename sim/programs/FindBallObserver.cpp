@@ -75,8 +75,8 @@ FindBallViewData viewFromInfo(const agent::blackboard::FindBallInfo& fb, int pla
   self.target_y = fb.point_y;
   d.robots.push_back(self);
   for (const agent::blackboard::FindBallTeammate& t : fb.teammates) d.robots.push_back(viewRobot(t));
-  static const char* kinds[] = {"findball2016", "findball2017", "striker"};
-  const char* kind = fb.kind >= 0 && fb.kind < 3 ? kinds[fb.kind] : "?";
+  namespace ab = agent::behaviour;
+  const char* kind = ab::behaviourKindName(static_cast<ab::BehaviourKind>(fb.kind));  // "?" outside the table
   char caption[128];
   std::snprintf(caption, sizeof caption, "t=%.1f s  %s  %s  %s", fb.time, tag.c_str(), kind, fb.activity);
   d.caption = caption;

@@ -27,8 +27,12 @@ void checkBehaviour(const std::string& kind, const std::string& overrides, const
 }
 
 const char* behaviourName(const ProgramPart& p) {
-  return p.behaviour ? agent::behaviour::behaviourKindName(p.behaviour->kind) : "script";
+  return p.behaviour ? agent::behaviour::behaviourKindName(p.behaviour->kind) : kScriptBehaviour;
 }
+
+const std::vector<std::string>& behaviourNames() { return agent::behaviour::behaviourNames(); }
+
+std::string behaviourNamesText() { return agent::behaviour::behaviourNamesText(); }
 
 agent::program::RobotSetup robotSetup(const runner::Scenario& sc, int index) {
   const runner::RobotSpec& r = sc.robots[index];

@@ -49,6 +49,13 @@ void setBehaviour(ProgramPart& p, const std::string& kind, const std::string& ov
 void checkBehaviour(const std::string& kind, const std::string& overrides, const std::string& where);
 // The behaviour's kind name ("findball2017"); "script" if none.
 const char* behaviourName(const ProgramPart& p);
+// For the rest of sim/ (which names no robot-program type): every name a
+// robot's `behaviour:` may take, from agent/behaviour's table of kinds
+// (BehaviourConfig.hpp), then kScriptBehaviour; and the same as text,
+// "findball2016, ..., striker or script", for messages.
+inline constexpr const char* kScriptBehaviour = agent::behaviour::kScriptBehaviourName;
+const std::vector<std::string>& behaviourNames();
+std::string behaviourNamesText();
 
 // What robot `index` of `sc` is set up with (agent/program/RobotSetup.hpp):
 // what a builtin program is composed from and what a launched program's

@@ -38,7 +38,8 @@
 //                  {t: 9.0, push: {x: 3.0, y: 0.0}}]}   # impulse N*s at the torso (field axes)
 //      actions run the robot's Motion (agent/motion) from a timed list: walk, stand,
 //      kick, getup_front, getup_back, dead, crouch, limp, none.
-//      behaviour: findball2017 | findball2016 | striker | script (default), or a map
+//      behaviour: a kind of agent/behaviour's table (kBehaviourKinds: findball2017,
+//        findball2016, striker) or script (default), or a map
 //        {kind: findball2017, strategy: {distributed: off}, ...} overriding
 //        agent/behaviour/BehaviourConfig.hpp's fields (agent/behaviour/BehaviourYaml.hpp).
 //        script runs the actions list; the others run agent/behaviour, the

@@ -178,6 +178,15 @@ TEST(ExperimentFile, ActionsOnlyForScriptRobots) {
               "only a script robot takes actions");
 }
 
+// The behaviours an experiment takes are the robot program's table of kinds
+// (agent/behaviour/BehaviourConfig.hpp) and script, listed in its errors.
+TEST(ExperimentFile, BehaviourNamesComeFromTheKindsTable) {
+  expectError(replaced(kGood, "    behaviour: script\n", ""), "bad.yaml:11: setups[0].robots[0].behaviour",
+              "give the robot (or its setup) a behaviour: findball2016, findball2017, striker or script");
+  expectError(replaced(kGood, "    behaviour: script\n", "    behaviour: findball2018\n"),
+              "bad.yaml:10: setups[0].behaviour", "expected one of findball2016, findball2017, striker, script");
+}
+
 // The command line refuses a bad file with exit code 2 and runs nothing.
 TEST(ExperimentFile, CommandExitsWithTwoBeforeAnyTrial) {
   const std::string dir = exptest::freshDir("cli");
@@ -254,8 +263,8 @@ TEST(ExperimentFile, ShippedExperiments) {
   ASSERT_EQ(quick.setups.size(), 2u);
   EXPECT_EQ(quick.setups[0].thesis_table, "5.3");
   EXPECT_EQ(quick.setups[1].thesis_table, "5.4");
-  EXPECT_EQ(quick.setups[0].robots[0].behaviour, Behaviour::FindBall2016);
-  EXPECT_EQ(quick.setups[1].robots[0].behaviour, Behaviour::FindBall2017);
+  EXPECT_EQ(quick.setups[0].robots[0].behaviour, "findball2016");
+  EXPECT_EQ(quick.setups[1].robots[0].behaviour, "findball2017");
   EXPECT_DOUBLE_EQ(quick.time_limit, full.time_limit);
   EXPECT_DOUBLE_EQ(quick.found.distance, full.found.distance);
   for (const BallPosition& b : quick.balls) {

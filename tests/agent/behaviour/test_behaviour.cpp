@@ -6,6 +6,8 @@
 #include <numeric>
 
 #include "agent/behaviour/Behaviour.hpp"
+#include "agent/behaviour/BehaviourYaml.hpp"
+#include "agent/config/ConfigError.hpp"
 
 using namespace agent::behaviour;
 using agent::blackboard::ActionType;
@@ -53,6 +55,35 @@ TEST(Behaviour, NonFinitePoseStandsAndKeepsTheDistributionValid) {
   const auto& p = b.findBall()->distribution.probabilities();
   for (double v : p) EXPECT_TRUE(std::isfinite(v));
   EXPECT_NEAR(std::accumulate(p.begin(), p.end(), 0.0), 1.0, 1e-12);
+}
+
+// One table of kinds: names and kinds agree both ways, in the enum's order,
+// and every list of names is read from it.
+TEST(Behaviour, KindsTable) {
+  ASSERT_EQ(kNumBehaviourKinds, 3);
+  for (const BehaviourKindRow& r : kBehaviourKinds) {
+    BehaviourKind k = r.kind == BehaviourKind::STRIKER ? BehaviourKind::FINDBALL_2016 : BehaviourKind::STRIKER;
+    EXPECT_TRUE(parseBehaviourKind(r.name, &k)) << r.name;
+    EXPECT_EQ(k, r.kind) << r.name;
+    EXPECT_STREQ(behaviourKindName(r.kind), r.name);
+  }
+  EXPECT_STREQ(behaviourKindName(static_cast<BehaviourKind>(kNumBehaviourKinds)), "?");
+  EXPECT_STREQ(behaviourKindName(static_cast<BehaviourKind>(-1)), "?");
+  EXPECT_EQ(behaviourNames(), (std::vector<std::string>{"findball2016", "findball2017", "striker", "script"}));
+  EXPECT_EQ(behaviourNamesText(), "findball2016, findball2017, striker or script");
+  BehaviourKind k = BehaviourKind::STRIKER;
+  EXPECT_FALSE(parseBehaviourKind(kScriptBehaviourName, &k));  // script is no kind
+  EXPECT_EQ(k, BehaviourKind::STRIKER);
+  // The reader's error lists the table's names.
+  std::string error;
+  try {
+    behaviourFromText("findball2018", "", "x.yaml");
+  } catch (const agent::config::ConfigError& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("expected one of findball2016, findball2017, striker, script (got 'findball2018')"),
+            std::string::npos)
+      << error;
 }
 
 TEST(Behaviour, KindsFromScenarioNames) {
