@@ -40,7 +40,8 @@
 
 namespace {
 
-const char* kUsage =
+// The defaults it prints are the scenario's own (sim/runner/Scenario.hpp).
+const std::string kUsage =
     "usage: simswift run SCENARIO.yaml [options]\n"
     "       simswift experiment FILE.yaml [--out DIR] [--jobs N] [--shard K/N]   (see experiment --help)\n"
     "       simswift experiment merge DIR... --out DIR\n"
@@ -66,11 +67,13 @@ const char* kUsage =
     "  --duration S           simulated seconds (overrides the scenario)\n"
     "  --seed N               noise seed (overrides the scenario)\n"
     "  --no-noise             exact sensors\n"
-    "  --watchdog S|off       wall-clock seconds a robot thread may take to answer (default 5);\n"
+    "  --watchdog S|off       wall-clock seconds a robot thread may take to answer (default " +
+    simswift::runner::formatNumber("%g", simswift::runner::Scenario{}.watchdog_s) + ");\n"
     "                         off, or a debugger attached, never ends the run (README: Debugging in gdb)\n"
     "  --model URDF           robot model (overrides the scenario's model:)\n"
     "  --field YAML           field (overrides the scenario's field:)\n"
-    "  --attach-timeout S     wall-clock seconds to wait for external robots (default 30)\n"
+    "  --attach-timeout S     wall-clock seconds to wait for external robots (default " +
+    simswift::runner::formatNumber("%g", simswift::runner::Scenario{}.attach_timeout_s) + ")\n"
     "  --print-hash-every N   print the state hash every N ticks (10 ms each; 12 ms on a V6)\n"
     "  --quiet                no progress lines\n"
     "  --dump-frames DIR      render both cameras of every robot at 30 Hz and write\n"
@@ -83,7 +86,7 @@ const char* kUsage =
     "  --findball-view-rate HZ  frames per simulated second (default 2)\n";
 
 [[noreturn]] void usageError(const std::string& msg) {
-  std::fprintf(stderr, "simswift: %s\n\n%s", msg.c_str(), kUsage);
+  std::fprintf(stderr, "simswift: %s\n\n%s", msg.c_str(), kUsage.c_str());
   std::exit(2);
 }
 
@@ -188,7 +191,7 @@ int main(int argc, char** argv) {
   if (argc < 2) usageError("missing command");
   const std::string cmd = argv[1];
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-    std::printf("%s", kUsage);
+    std::printf("%s", kUsage.c_str());
     return 0;
   }
   if (cmd == "--version") {
@@ -230,9 +233,9 @@ int main(int argc, char** argv) {
         ++i;
         watchdog = 0.0;  // off
       } else {
-        watchdog = numberArg(i, argc, argv, "--watchdog", 1e-3, 3600);
+        watchdog = numberArg(i, argc, argv, "--watchdog", 1e-3, kMaxWallClockS);
       }
-    } else if (a == "--attach-timeout") attach = numberArg(i, argc, argv, "--attach-timeout", 1e-3, 3600);
+    } else if (a == "--attach-timeout") attach = numberArg(i, argc, argv, "--attach-timeout", 1e-3, kMaxWallClockS);
     else if (a == "--model") model = stringArg(i, "--model");
     else if (a == "--field") field = stringArg(i, "--field");
     else if (a == "--print-hash-every")
@@ -254,7 +257,7 @@ int main(int argc, char** argv) {
         usageError("--resolution: must be 640x480 or 1280x960 (got '" + *resolution + "')");
     }
     else if (a == "--help" || a == "-h") {
-      std::printf("%s", kUsage);
+      std::printf("%s", kUsage.c_str());
       return 0;
     } else if (!a.empty() && a[0] == '-') usageError("unknown option '" + a + "'");
     else if (path.empty()) path = a;

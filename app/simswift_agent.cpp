@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
   std::optional<ap::Posture> posture;
   std::optional<std::string> behaviour, config;
   std::optional<uint64_t> seed;
-  std::optional<agent::blackboard::FieldPose> start;
+  std::optional<ap::RobotSetup::StartPose> start;
   std::string move_joint;
   double move_angle = 0, move_at = 0, attach_timeout = 10;
   bool print = false, bare = false;
@@ -112,9 +112,9 @@ int main(int argc, char** argv) {
       if (!s) usageError(std::string("--seed must be ") + agent::config::kSeedRange + " (got '" + v + "')");
       seed = *s;
     } else if (a == "--start") {
-      agent::blackboard::FieldPose p;
-      p.x = number(next("--start"), "--start X") * 1000.0;  // m -> mm
-      p.y = number(next("--start"), "--start Y") * 1000.0;
+      ap::RobotSetup::StartPose p;  // m, m, rad (as RobotSetup holds it)
+      p.x = number(next("--start"), "--start X");
+      p.y = number(next("--start"), "--start Y");
       p.theta = number(next("--start"), "--start THETA");
       start = p;
     } else if (a == "--posture") {

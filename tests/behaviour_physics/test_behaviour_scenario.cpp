@@ -22,10 +22,10 @@ std::string errorOf(const std::string& text) {
 }  // namespace
 
 TEST(BehaviourScenario, KindsAndDefault) {
-  EXPECT_FALSE(Scenario::parse(robot("posture: stand"), "b.yaml").robots[0].behaviour);
-  EXPECT_FALSE(Scenario::parse(robot("behaviour: script"), "b.yaml").robots[0].behaviour);
+  EXPECT_FALSE(Scenario::parse(robot("posture: stand"), "b.yaml").robots[0].setup.behaviour);
+  EXPECT_FALSE(Scenario::parse(robot("behaviour: script"), "b.yaml").robots[0].setup.behaviour);
   const auto k = [](const std::string& name) {
-    return Scenario::parse(robot("behaviour: " + name), "b.yaml").robots[0].behaviour->kind;
+    return Scenario::parse(robot("behaviour: " + name), "b.yaml").robots[0].setup.behaviour->kind;
   };
   EXPECT_EQ(k("findball2016"), ab::BehaviourKind::FINDBALL_2016);
   EXPECT_EQ(k("findball2017"), ab::BehaviourKind::FINDBALL_2017);
@@ -39,7 +39,7 @@ TEST(BehaviourScenario, OverridesAreTyped) {
       "      search: {spin_at_point: no, points_2016: [{x: 0, y: 0}, {x: 1000, y: -500}]}\n"
       "      skills: {scan_speed: 1.5, kick_target: [4500, 500]}\n",
       "b.yaml");
-  const ab::BehaviourConfig& c = *s.robots[0].behaviour;
+  const ab::BehaviourConfig& c = *s.robots[0].setup.behaviour;
   EXPECT_EQ(c.kind, ab::BehaviourKind::FINDBALL_2016);
   EXPECT_EQ(c.grid.columns, 4);
   EXPECT_EQ(c.grid.rows, 2);
