@@ -1,4 +1,4 @@
-// Scenario `behaviour:` (sim/runner/BehaviourYaml): kinds, typed overrides,
+// Scenario `behaviour:` (agent/behaviour/BehaviourYaml): kinds, typed overrides,
 // errors naming file, line and field; the module in the Perception order;
 // the SearchPayload reaching teammates through the simulated network.
 #include <gtest/gtest.h>
@@ -104,7 +104,7 @@ TEST(BehaviourScenario, ShippedFindBallScenariosLoad) {
   for (const char* f : {"findball_three_2017.yaml", "findball_three_2016.yaml", "findball_search_long.yaml"}) {
     const Scenario s = Scenario::loadFile(std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/" + f);
     ASSERT_GE(s.robots.size(), 3u) << f;
-    for (const auto& r : s.robots) EXPECT_TRUE(r.behaviour) << f;
+    for (const auto& r : s.robots) EXPECT_TRUE(r.setup.behaviour) << f;
   }
 }
 
