@@ -30,6 +30,7 @@
 #include "sim/programs/Programs.hpp"
 #include "sim/programs/ProgramProcess.hpp"
 #include "sim/runner/Bodies.hpp"
+#include "sim/runner/RunStats.hpp"
 #include "sim/runner/Runner.hpp"
 
 namespace {
@@ -84,7 +85,8 @@ class RunCommand {
     cmd_->add_option("--seed", seed_, "noise seed (overrides the scenario)")->type_name("N")->transform(cli::seed());
     cmd_->add_flag("--no-noise", no_noise_, "exact sensors");
     cmd_->add_option("--watchdog", watchdog_,
-                     "wall-clock seconds a robot thread may take to answer (default 5);\n"
+                     "wall-clock seconds a robot thread may take to answer (default " +
+                         simswift::runner::formatNumber("%g", simswift::runner::Scenario{}.watchdog_s) + ");\n"
                      "off, or a debugger attached, never ends the run (README: Debugging in gdb)")
         ->type_name("S|off")
         ->transform(CLI::Validator(
@@ -93,7 +95,7 @@ class RunCommand {
                 text = "0";  // Scenario::watchdog_s: 0 = off
                 return "";
               }
-              return cli::number(1e-3, 3600)(text);
+              return cli::number(1e-3, simswift::runner::kMaxWallClockS)(text);
             },
             "", ""));
     cmd_->add_option("--model", model_, "robot model (overrides the scenario's model:)")
@@ -102,9 +104,11 @@ class RunCommand {
     cmd_->add_option("--field", field_, "field (overrides the scenario's field:)")
         ->type_name("YAML")
         ->transform(cli::nonEmpty());
-    cmd_->add_option("--attach-timeout", attach_, "wall-clock seconds to wait for external robots (default 30)")
+    cmd_->add_option("--attach-timeout", attach_,
+                     "wall-clock seconds to wait for external robots (default " +
+                         simswift::runner::formatNumber("%g", simswift::runner::Scenario{}.attach_timeout_s) + ")")
         ->type_name("S")
-        ->transform(cli::number(1e-3, 3600));
+        ->transform(cli::number(1e-3, simswift::runner::kMaxWallClockS));
     cmd_->add_option("--print-hash-every", opt_.print_hash_every,
                      "print the state hash every N ticks (10 ms each; 12 ms on a V6)")
         ->type_name("N")

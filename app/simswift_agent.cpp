@@ -137,9 +137,9 @@ int main(int argc, char** argv) {
   if (player) setup.player = *player;
   if (seed) setup.seed = *seed;
   if (start) {
-    agent::blackboard::FieldPose p;
-    p.x = std::get<0>(*start) * 1000.0;  // m -> mm
-    p.y = std::get<1>(*start) * 1000.0;
+    ap::RobotSetup::StartPose p;  // m, m, rad (as RobotSetup holds it)
+    p.x = std::get<0>(*start);
+    p.y = std::get<1>(*start);
     p.theta = std::get<2>(*start);
     setup.start = p;
   }

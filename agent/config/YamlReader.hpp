@@ -36,6 +36,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "agent/config/ConfigError.hpp"
@@ -106,6 +107,20 @@ class YamlReader {
   // One of `choices`.
   std::string choice(const std::string& key, const std::string& def,
                      const std::vector<std::string>& choices) const;
+  // One of an enum's values by its name in `names` (def: one of them).
+  template <class E>
+  E enumChoice(const std::string& key, E def, const std::vector<std::pair<std::string, E>>& names) const {
+    std::string def_name;
+    std::vector<std::string> choices;
+    for (const auto& [name, value] : names) {
+      choices.push_back(name);
+      if (value == def) def_name = name;
+    }
+    const std::string got = choice(key, def_name, choices);
+    for (const auto& [name, value] : names)
+      if (name == got) return value;
+    return def;
+  }
   // A fixed-length list of numbers, e.g. [x, y]. Required.
   std::vector<double> numbers(const std::string& key, size_t count,
                               const Range& r = Range::any()) const;

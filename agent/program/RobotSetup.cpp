@@ -49,7 +49,8 @@ ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::Mot
     bc.walk.max_left = pc.motion.walk.max_left;
     bc.walk.max_turn = pc.motion.walk.max_turn;
     pc.behaviour = std::make_unique<behaviour::BehaviourModule>(bc);
-    pc.localisation.known_start = s.start;
+    if (s.start)  // m -> mm (the blackboard's)
+      pc.localisation.known_start = blackboard::FieldPose{s.start->x * 1000.0, s.start->y * 1000.0, s.start->theta};
   } else if (!s.actions.empty()) {
     pc.actions = s.actions;
   } else {
@@ -86,6 +87,25 @@ ScriptStep readScriptStep(const YamlReader& r) {
   return s;
 }
 
+void readActions(const YamlReader& r, RobotSetup& s, const OutsideAction& outside) {
+  if (!r.has("actions")) return;
+  s.actions.clear();
+  for (const YamlReader& a : r.list("actions")) {
+    const double t = a.number("t", Range::closed(0, kMaxTime));
+    if (outside && outside(a, t)) continue;
+    s.actions.push_back(motion::readBodyAction(a, t));
+  }
+}
+
+void readProgramKeys(const YamlReader& r, RobotSetup& s, const OutsideAction& outside) {
+  if (r.has("script")) {
+    s.script.clear();
+    for (const YamlReader& st : r.list("script")) s.script.push_back(readScriptStep(st));
+  }
+  readActions(r, s, outside);
+  if (r.has("behaviour")) s.behaviour = behaviour::readBehaviour(r, &s.behaviour_yaml);
+}
+
 void readRobotSetup(const YamlReader& r, RobotSetup& s) {
   s.team = r.integer("team", s.team, Range::closed(libagent::kMinTeamNumber, libagent::kMaxTeamNumber));
   s.player = r.integer("player", s.player, Range::closed(libagent::kMinPlayer, libagent::kMaxPlayer));
@@ -98,29 +118,15 @@ void readRobotSetup(const YamlReader& r, RobotSetup& s) {
   }
   if (auto p = r.optionalMap("start")) {
     const Range pos = Range::closed(-kMaxPosition, kMaxPosition);
-    blackboard::FieldPose f;
-    f.x = p->number("x", pos) * 1000.0;  // m -> mm
-    f.y = p->number("y", pos) * 1000.0;
-    f.theta = p->number("theta", 0.0, Range::closed(-2 * M_PI, 2 * M_PI));
+    RobotSetup::StartPose f;
+    f.x = p->number("x", pos);  // m
+    f.y = p->number("y", pos);
+    f.theta = p->number("theta", f.theta, Range::closed(-2 * M_PI, 2 * M_PI));
     p->finish();
     s.start = f;
   }
-  if (r.has("behaviour")) {
-    s.behaviour = behaviour::readBehaviour(r);
-    YAML::Emitter e;
-    e << YAML::Flow << r.node()["behaviour"];
-    s.behaviour_yaml = e.c_str();
-  }
-  if (r.has("actions")) {
-    s.actions.clear();
-    for (const YamlReader& a : r.list("actions"))
-      s.actions.push_back(motion::readBodyAction(a, a.number("t", Range::closed(0, kMaxTime))));
-  }
   s.posture = *parsePosture(r.choice("posture", postureName(s.posture), postureNames()));
-  if (r.has("script")) {
-    s.script.clear();
-    for (const YamlReader& st : r.list("script")) s.script.push_back(readScriptStep(st));
-  }
+  readProgramKeys(r, s);
   r.finish();
 }
 
@@ -139,8 +145,8 @@ std::string robotSetupYaml(const RobotSetup& s) {
   o << "team: " << s.team << "\nplayer: " << s.player << "\nseed: " << s.seed << "\n";
   if (s.start) {
     // %.17g: reads back to the same double.
-    std::snprintf(buf, sizeof buf, "start: {x: %.17g, y: %.17g, theta: %.17g}\n", s.start->x / 1000.0,
-                  s.start->y / 1000.0, s.start->theta);
+    std::snprintf(buf, sizeof buf, "start: {x: %.17g, y: %.17g, theta: %.17g}\n", s.start->x, s.start->y,
+                  s.start->theta);
     o << buf;
   }
   if (!s.behaviour_yaml.empty()) o << "behaviour: " << s.behaviour_yaml << "\n";

@@ -12,16 +12,22 @@
 //   seed: 1000003            # the filters' random source
 //   start: {x: -3.0, y: 1.5, theta: 0}   # m, m, rad (field frame): a known
 //                                        # start pose for localisation
+//                                        # (written and read as held: m)
 //   behaviour: findball2017  # or {kind: findball2017, <overrides>}
 //                            # (agent/behaviour/BehaviourYaml.hpp)
 //   actions: [...]           # timed body actions (agent/motion/ActionYaml.hpp)
 //   posture: stand           # stand, crouch, limp, zero: held when nothing else
 //   script: [{t: 1, joint: HeadYaw, angle: 0.5}]  # joints over time
 //
-// Errors name the file, the line and the key (agent/config/ConfigError.hpp).
+// The simulator's scenario gives a robot's behaviour, actions and script
+// under the same keys (docs/runner.md), read by the same parser
+// (readProgramKeys), and writes a launched program's file with
+// robotSetupYaml. Errors name the file, the line and the key
+// (agent/config/ConfigError.hpp).
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,9 +45,14 @@ namespace agent::program {
 struct RobotSetup {
   int team = 0, player = 1;
   uint64_t seed = 1;
-  // Localisation's known start pose (mm, mm, rad; field frame); used with a
-  // behaviour, as a team placing its robots on a test field configures it.
-  std::optional<blackboard::FieldPose> start;
+  // Localisation's known start pose; used with a behaviour, as a team
+  // placing its robots on a test field configures it. In m, as the config
+  // file and the scenario give it, so writing and reading it back is exact;
+  // composeProgram converts it to the blackboard's mm, once.
+  struct StartPose {
+    double x = 0, y = 0, theta = 0;  // m, m, rad; field frame
+  };
+  std::optional<StartPose> start;
   std::optional<behaviour::BehaviourConfig> behaviour;  // wins over actions and script
   std::string behaviour_yaml;  // the behaviour as its file wrote it (flow YAML), to write it on
   std::vector<motion::ActionStep> actions;
@@ -62,6 +73,19 @@ ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::Mot
 
 // One `script:` entry: {t, joint, angle[, duration, stiffness]} or {t, posture}.
 ScriptStep readScriptStep(const config::YamlReader& r);
+
+// An `actions:` entry its caller takes itself (the simulator's pushes and
+// button presses, which act on the body from outside the program): returns
+// true if it took `entry`, whose `t` (s) is t_s.
+using OutsideAction = std::function<bool(const config::YamlReader& entry, double t_s)>;
+
+// The keys of what the program does, from map `r`: script, actions and
+// behaviour (absent keys keep s's values). The one parser of them: for the
+// config file (readRobotSetup) and a scenario's robot (sim/programs). `r`
+// is left unfinished (its other keys are the caller's).
+void readProgramKeys(const config::YamlReader& r, RobotSetup& s, const OutsideAction& outside = {});
+// The `actions:` list of `r` alone, the same way.
+void readActions(const config::YamlReader& r, RobotSetup& s, const OutsideAction& outside = {});
 
 // Reads the config file (format above). Throws config::ConfigError.
 RobotSetup readRobotSetup(const std::string& path);

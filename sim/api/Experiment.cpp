@@ -2,7 +2,6 @@
 #include "simswift/Experiment.hpp"
 
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include "sim/api/ConfigErrors.hpp"
@@ -13,25 +12,6 @@
 
 namespace simswift::api {
 
-namespace {
-
-// sim/experiment's own throw sites (the file's opening, its sweep) do not
-// give the fields yet, only "file:line: key: ..." in the message: for those
-// alone the parts are still read back from the text. To go once they pass
-// them as the YAML reader and the scenario do (issue 32).
-ConfigError experimentConfigError(const simswift::ConfigError& e) {
-  if (!e.file.empty()) return configError(e);
-  const std::string m = e.what();
-  static const std::regex form(R"(^(.*?):(\d+): ([^: ][^:]*): )");
-  std::smatch g;
-  if (std::regex_search(m, g, form)) return ConfigError(m, g[1].str(), std::stoi(g[2].str()), g[3].str());
-  static const std::regex file_line(R"(^(.*?):(\d+): )");
-  if (std::regex_search(m, g, file_line)) return ConfigError(m, g[1].str(), std::stoi(g[2].str()), "");
-  return ConfigError(m, "", 0, "");
-}
-
-}  // namespace
-
 ResultsTable runExperiment(const std::string& file, const ExperimentOptions& options) {
   namespace ex = simswift::experiment;
   ex::Experiment e;
@@ -39,7 +19,7 @@ ResultsTable runExperiment(const std::string& file, const ExperimentOptions& opt
     e = ex::Experiment::loadFile(file);
     ex::checkBehaviours(e, ex::behaviourHooks());
   } catch (const simswift::ConfigError& err) {
-    throw experimentConfigError(err);
+    throw configError(err);
   }
   ex::BatchOptions opt;
   opt.out_dir = options.out_dir.empty() ? "results/" + e.name : options.out_dir;

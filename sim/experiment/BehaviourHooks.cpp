@@ -14,7 +14,7 @@ void RobotBehaviours::configure(const Experiment& e, const TrialSpec& t, runner:
   for (size_t i = 0; i < s.robots.size() && i < sc.robots.size(); ++i) {
     const ExperimentRobot& r = s.robots[i];
     if (r.isScript()) continue;  // its actions are already set
-    programs::setBehaviour(sc.robots[i], r.behaviour, r.config_yaml, r.behaviour_where);
+    programs::setBehaviour(sc.robots[i].setup, r.behaviour, r.config_yaml, r.behaviour_where);
   }
 }
 

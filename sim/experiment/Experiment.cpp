@@ -58,7 +58,7 @@ namespace {
 // the field already loaded for the file's own tree (a sweep cannot change
 // it), else it is loaded here.
 Experiment parseTree(const YAML::Node& root, const std::string& source_name, const FieldConfig* field = nullptr) {
-  if (!root.IsMap()) throw ConfigError(source_name + ":1: an experiment file is a map (name:, seed:, balls:, ...)");
+  if (!root.IsMap()) throw ConfigError(source_name, 1, "", "an experiment file is a map (name:, seed:, balls:, ...)");
   YamlReader top(root, source_name);
   Experiment e;
   e.source = source_name;
@@ -68,10 +68,10 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
   e.base.source = source_name;
   // Relative paths resolve as a scenario's do: this file's folder, then the data folders.
   e.base.base_dir = top.string("base_dir", std::filesystem::path(source_name).parent_path().string());
-  e.base.model_path = top.string("model", "models/nao_v5.urdf");
-  e.base.field_path = top.string("field", "fields/spl_2017.yaml");
+  e.base.model_path = top.string("model", e.base.model_path);
+  e.base.field_path = top.string("field", e.base.field_path);
   runner::readNoise(top, e.base.noise);  // the scenario's noise: (on/off or a map)
-  runner::readPhysics(top, e.base);
+  runner::readPhysics(top, e.base.world);
   (void)top.has("sweep");  // Experiment::parse's
   try {
     e.field = field ? *field : FieldConfig::loadYaml(e.base.fieldFile());
@@ -293,7 +293,7 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
                           static_cast<long long>(expandedNodes(root["sweep"], kMaxConfigNodes));
   if (checks * nodes > kMaxSweepNodes) {
     const std::string what = one_axis ? "each value" : "each value alone, then each of the " + std::to_string(n) + " cells";
-    throw ConfigError(source_name + ":" + std::to_string(e.sweep_line) + ": sweep: " + std::to_string(checks) +
+    throw ConfigError(source_name, e.sweep_line, "sweep", std::to_string(checks) +
                       " checks (" + what + ") of a file of " + std::to_string(nodes) + " YAML nodes is more than " +
                       std::to_string(kMaxSweepNodes) + " nodes to read; sweep fewer values or shorten the file");
   }
@@ -326,7 +326,7 @@ Experiment Experiment::parse(const std::string& text, const std::string& source_
     tree.restore();
   }
   if (e.countTrials() > kMaxTrials)
-    throw ConfigError(source_name + ":" + std::to_string(e.sweep_line) + ": sweep: " + std::to_string(e.numCells()) +
+    throw ConfigError(source_name, e.sweep_line, "sweep", std::to_string(e.numCells()) +
                       " cells x " + std::to_string(e.countTrialsPerCell()) + " trials = " +
                       std::to_string(e.countTrials()) + " trials is more than " + std::to_string(kMaxTrials));
   return e;
@@ -357,14 +357,14 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   sc.source = e.source + " (trial " + std::to_string(t.index) + ")";
   sc.seed = t.seed;
   const Setup& s = e.setups[t.setup];
-  sc.tick_us = setupTickUs(s);
-  const double tick_s = static_cast<double>(sc.tick_us) * 1e-6;
-  sc.duration = static_cast<double>(playTick(e, sc.tick_us)) * tick_s + e.time_limit;
+  sc.world.tick_us = setupTickUs(s);
+  const double tick_s = static_cast<double>(sc.world.tick_us) * 1e-6;
+  sc.duration = static_cast<double>(playTick(e, sc.world.tick_us)) * tick_s + e.time_limit;
   const BallPosition& b = e.balls[t.ball];
   sc.ball = std::make_pair(b.x, b.y);
   // A V6 setup gets the V6 body unless the file names a model.
   const bool v6 = !s.robots.empty() && s.robots.front().v6;
-  if (v6 && !sc.model_named) sc.model_path = "models/nao_v6.urdf";
+  if (v6 && !sc.model_named) sc.model_path = runner::kV6Model;
   for (const ExperimentRobot& r : s.robots) {
     runner::RobotSpec rs;
     if (r.isScript()) rs = r.script;
@@ -392,7 +392,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   g.first_half = e.base.game.first_half;
   g.initial_state = agent::libagent::GameStateValue::Initial;
   g.on_unpenalise = GameConfig::Return::Sideline;  // stays where it stands
-  const double play_s = static_cast<double>(playTick(e, sc.tick_us)) * tick_s;
+  const double play_s = static_cast<double>(playTick(e, sc.world.tick_us)) * tick_s;
   g.timeline.push_back({play_s, agent::libagent::GameStateValue::Playing});
   const int n = static_cast<int>(s.robots.size());
   for (int i = 0; i < n; ++i) g.penalties.push_back({0.0, i, agent::libagent::Penalty::Manual, -1.0});

@@ -23,7 +23,7 @@
 //                                  # scenario's vision: block (sim/vision/VisionConfig.hpp),
 //                                  # read by its reader, given to every trial
 //   team_comms: {loss: 0.1}        # the scenario's blocks, read by its readers
-//   physics: {substeps: 2}         # (sim/runner/Scenario.hpp), given to every trial;
+//   physics: {substeps: 2}         # (docs/runner.md), given to every trial;
 //   game: {half_duration: 600}     # game: only kickoff_team, half_duration, first_half
 //                                  # (each trial sets the rest: penalised, then PLAYING)
 //   sweep:                         # optional: values by dotted path (Sweep.hpp); every

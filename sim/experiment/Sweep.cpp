@@ -16,9 +16,7 @@ const char* kSweepable =
     "sweepable paths: team_comms.<key>, game.<key>, vision.<...>, noise or noise.<key>, physics.<key>, "
     "setups.<name or index>.config.<...>, setups.<name or index>.robots.<index>.config.<...>";
 
-std::string lineOf(const YAML::Node& n) {
-  return std::to_string(n.Mark().is_null() ? 1 : n.Mark().line + 1);
-}
+int lineOf(const YAML::Node& n) { return n.Mark().is_null() ? 1 : n.Mark().line + 1; }
 
 std::vector<std::string> splitPath(const std::string& p) {
   std::vector<std::string> out(1);
@@ -82,36 +80,36 @@ std::vector<SweepAxis> readSweep(const YamlReader& top) {
   const std::string file = top.file();
   for (const auto& kv : sweep) {
     if (axes.size() == static_cast<size_t>(kMaxSweepPaths))
-      throw ConfigError(file + ":" + lineOf(kv.first) + ": sweep: more than " + std::to_string(kMaxSweepPaths) +
+      throw ConfigError(file, lineOf(kv.first), "sweep", "more than " + std::to_string(kMaxSweepPaths) +
                         " paths (1000 cells allow 9 with two values or more; a setting with one value belongs in "
                         "the experiment itself)");
     SweepAxis a;
     a.path = kv.first.IsScalar() ? kv.first.Scalar() : "";
     a.line = kv.first.Mark().is_null() ? 1 : kv.first.Mark().line + 1;
-    const std::string where = file + ":" + std::to_string(a.line) + ": sweep." + a.path + ": ";
+    const std::string key = "sweep." + a.path;
     for (const std::string& s : splitPath(a.path))
       if (s.empty() || !std::all_of(s.begin(), s.end(), [](char c) {
             return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
           }))
-        throw ConfigError(where + "not a dotted path of keys (letters, digits, _ and -; " + kSweepable + ")");
+        throw ConfigError(file, a.line, key,
+                          std::string("not a dotted path of keys (letters, digits, _ and -; ") + kSweepable + ")");
     const YAML::Node list = kv.second;
     if (!list.IsSequence())
-      throw ConfigError(where + "must be a list of values (got " + kindOf(list) + "; one value: [" +
+      throw ConfigError(file, a.line, key, "must be a list of values (got " + kindOf(list) + "; one value: [" +
                         (list.IsScalar() ? list.Scalar() : std::string("...")) + "])");
-    if (list.size() == 0) throw ConfigError(where + "an empty list: give at least one value");
+    if (list.size() == 0) throw ConfigError(file, a.line, key, "an empty list: give at least one value");
     std::set<std::string> seen;
     for (const YAML::Node& v : list) {
       SweepValue sv;
       sv.label = label(v);
-      sv.line = std::stoi(lineOf(v));
+      sv.line = lineOf(v);
       if (!seen.insert(sv.label).second)
-        throw ConfigError(file + ":" + std::to_string(sv.line) + ": sweep." + a.path + ": value " + sv.label +
-                          " appears twice");
+        throw ConfigError(file, sv.line, key, "value " + sv.label + " appears twice");
       a.values.push_back(sv);
     }
     for (const SweepAxis& b : axes) {
       const bool overlap = a.path == b.path || a.path.rfind(b.path + ".", 0) == 0 || b.path.rfind(a.path + ".", 0) == 0;
-      if (overlap) throw ConfigError(where + "overlaps sweep path " + b.path + " (line " + std::to_string(b.line) + ")");
+      if (overlap) throw ConfigError(file, a.line, key, "overlaps sweep path " + b.path + " (line " + std::to_string(b.line) + ")");
     }
     axes.push_back(std::move(a));
   }
@@ -126,7 +124,7 @@ std::vector<SweepAxis> readSweep(const YamlReader& top) {
     int line = 1;  // of the sweep: key (its map's mark is the line below)
     for (const auto& kv : top.node())
       if (kv.first.IsScalar() && kv.first.Scalar() == "sweep" && !kv.first.Mark().is_null()) line = kv.first.Mark().line + 1;
-    throw ConfigError(file + ":" + std::to_string(line) + ": sweep: more than " + std::to_string(kMaxSweepCells) + " cells (" + dims +
+    throw ConfigError(file, line, "sweep", "more than " + std::to_string(kMaxSweepCells) + " cells (" + dims +
                       " value combinations); sweep fewer values or split the file");
   }
   return axes;
@@ -159,7 +157,7 @@ std::string cellLabel(const std::vector<SweepAxis>& axes, int cell) {
 void applySweepValue(YAML::Node root, const SweepAxis& axis, int value, const std::string& file) {
   const std::vector<std::string> seg = splitPath(axis.path);
   auto fail = [&](const std::string& why) {
-    throw ConfigError(file + ":" + std::to_string(axis.line) + ": sweep." + axis.path + ": " + why);
+    throw ConfigError(file, axis.line, "sweep." + axis.path, why);
   };
   const YAML::Node v = root["sweep"][axis.path][value];
   // `at`: the map the rest of the path (from seg[next]) walks down.
@@ -252,14 +250,16 @@ void SweepTree::restore() {
 
 ConfigError blameValue(const std::string& file, const SweepAxis& axis, int value, const std::string& what) {
   const SweepValue& v = axis.values[value];
-  return ConfigError(file + ":" + std::to_string(v.line) + ": sweep." + axis.path + "[" + std::to_string(value) +
-                     "] = " + v.label + ": " + afterWhere(file, what));
+  const std::string key = "sweep." + axis.path + "[" + std::to_string(value) + "]";
+  ConfigError e(file, v.line, key + " = " + v.label, afterWhere(file, what));
+  e.key = key;  // the value's path; the message shows the value too
+  return e;
 }
 
 ConfigError blameCell(const std::string& file, int sweep_line, const std::vector<SweepAxis>& axes, int cell,
                       const std::string& what) {
-  return ConfigError(file + ":" + std::to_string(sweep_line) + ": sweep: cell " + std::to_string(cell) + " (" +
-                     cellLabel(axes, cell) + "): " + afterWhere(file, what));
+  return ConfigError(file, sweep_line, "sweep",
+                     "cell " + std::to_string(cell) + " (" + cellLabel(axes, cell) + "): " + afterWhere(file, what));
 }
 
 }  // namespace simswift::experiment

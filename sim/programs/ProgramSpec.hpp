@@ -1,20 +1,17 @@
 // The robot program's part of a scenario robot: what a program simswift
-// composes (builtin) or configures (launched: its {config} file) is set up
-// with -- a behaviour, timed body actions, or a joint script over the held
-// posture. The scenario (sim/runner/Scenario.hpp) reads these keys through
-// the readers here, so nothing outside sim/programs names the robot
-// program's types. The body's part (team, pose, posture, pushes, buttons,
-// libagent release) stays the scenario's.
+// composes (builtin) or configures (launched: its {config} file) does -- a
+// behaviour, timed body actions, or a joint script over the held posture.
+// It is the agent's own RobotSetup (agent/program/RobotSetup.hpp), read from
+// the robot's map by RobotSetup's parser and written into a launched
+// program's {config} by its writer. The body's part (team, pose, posture,
+// pushes, buttons, body interface) stays the scenario's
+// (sim/runner/Scenario.hpp), which gives the setup its identity when a
+// program is made (robotSetup below).
 #pragma once
 
-#include <optional>
 #include <string>
-#include <vector>
 
-#include "agent/behaviour/BehaviourConfig.hpp"
 #include "agent/config/YamlReader.hpp"
-#include "agent/motion/ActionScript.hpp"
-#include "agent/program/MotionGenerator.hpp"
 #include "agent/program/RobotSetup.hpp"
 
 namespace simswift::runner {
@@ -23,26 +20,14 @@ struct Scenario;
 
 namespace simswift::programs {
 
-struct ProgramPart {
-  // Joint steps over the held posture (script:).
-  std::vector<agent::program::ScriptStep> script;
-  // Body actions over time, run by the Motion module (agent/motion), e.g.
-  //   actions: [{t: 1, action: walk, forward: 300, left: 0, turn: 0},
-  //             {t: 6, action: kick, foot: right, power: 1, direction: 0}]
-  // forward/left mm/s, turn rad/s, direction rad.
-  std::vector<agent::motion::ActionStep> actions;
-  // behaviour: the robot code's behaviour (agent/behaviour); empty = script
-  // (the actions above).
-  std::optional<agent::behaviour::BehaviourConfig> behaviour;
-  std::string behaviour_yaml;  // the same as flow YAML (a launched program's {config} file)
-};
+// Of the setup, the scenario holds script, actions, behaviour and
+// behaviour_yaml; team, player, seed, start and posture are set by robotSetup.
+using ProgramPart = agent::program::RobotSetup;
 
-// One `script:` entry: {t, joint, angle[, duration, stiffness]} or {t, posture}.
-void readScriptStep(const agent::config::YamlReader& r, ProgramPart& p);
-// One `actions:` entry holding `action:` (t already read, s).
-void readBodyAction(const agent::config::YamlReader& r, double t_s, ProgramPart& p);
-// A robot map's `behaviour:` (which it must have).
-void readBehaviour(const agent::config::YamlReader& robot, ProgramPart& p);
+// A robot map's script:, actions: and behaviour: into p (absent keys keep
+// p's values; `outside`: the actions entries the scenario takes itself).
+void readProgramPart(const agent::config::YamlReader& robot, ProgramPart& p,
+                     const agent::program::OutsideAction& outside);
 // A behaviour from its kind name and overrides as YAML flow text (the
 // experiment's robots); errors name `where`. check: the same, kept nowhere.
 void setBehaviour(ProgramPart& p, const std::string& kind, const std::string& overrides, const std::string& where);
@@ -57,9 +42,11 @@ inline constexpr const char* kScriptBehaviour = agent::behaviour::kScriptBehavio
 const std::vector<std::string>& behaviourNames();
 std::string behaviourNamesText();
 
-// What robot `index` of `sc` is set up with (agent/program/RobotSetup.hpp):
-// what a builtin program is composed from and what a launched program's
-// {config} file holds.
+// What robot `index` of `sc` is set up with: its program part with the
+// identity its body and the run give it (team, player, the program's seed,
+// posture, and the start pose for a behaviour: the scenario's, in m). What a
+// builtin program is composed from and what a launched program's {config}
+// file holds (robotSetupYaml), the same for both.
 agent::program::RobotSetup robotSetup(const runner::Scenario& sc, int index);
 
 }  // namespace simswift::programs

@@ -150,12 +150,7 @@ void Runner::buildWorld() {
   model_ = std::make_shared<const RobotModel>(RobotModel::loadUrdf(scenario_.modelFile()));
   const FieldConfig field = FieldConfig::loadYaml(scenario_.fieldFile());
   scenario_.checkAgainstField(field);
-  WorldConfig wc;
-  wc.substeps = scenario_.substeps;
-  wc.solver = scenario_.solver == "quick" ? WorldConfig::Solver::Quick : WorldConfig::Solver::Exact;
-  wc.quick_iterations = scenario_.quick_iterations;
-  wc.tick_us = scenario_.tick_us;  // the robots' body cycle (Bodies.hpp)
-  world_ = std::make_unique<World>(field, wc);
+  world_ = std::make_unique<World>(field, scenario_.world);
   if (scenario_.no_ball) world_->removeBall();
   else if (scenario_.ball) world_->placeBall(scenario_.ball->first, scenario_.ball->second);
   if (scenario_.camera.any() && !camerasAvailable())

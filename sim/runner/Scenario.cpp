@@ -79,7 +79,6 @@ constexpr double kMaxTime = 1e6;           // s: durations and event times (11.6
 constexpr double kMinDuration = kTickSeconds;  // s: at least one tick
 constexpr double kMaxPosition = 50;        // m: before the field is known
 constexpr double kMaxHeading = 2 * M_PI;   // rad
-constexpr double kMaxWallClock = 3600;     // s: watchdog, attach timeout
 constexpr double kMaxSeed = 9007199254740992.0;  // 2^53: every whole number below is exact
 constexpr double kMaxJointAngle = 10;      // rad (the servos clamp to the joint's range)
 constexpr double kRobotRadius = agent::nao::kFootprintRadius / 1000;  // m
@@ -116,11 +115,11 @@ sensors::Button buttonNamed(const YamlReader& r, const std::string& key) {
 // series while the button is up for at most 18 cycles, 0.18 s, between).
 constexpr double kClickDown = 0.1, kClickUp = 0.1;  // s
 
-// One entry of a robot's `actions:` list: a body action, a push, or a
-// button click or press (the last three act on the body from outside, so
-// any robot program takes them).
-void readAction(const YamlReader& r, RobotSpec& rs) {
-  const double t = r.number("t", Range::closed(0, limits::kMaxTime));
+// One entry of a robot's `actions:` list (its t already read, s) that is
+// not the program's: a push, or a button click or press (they act on the
+// body from outside, so any robot program takes them). False for a body
+// action (agent/program's reader takes it).
+bool readBodyEvent(const YamlReader& r, double t, RobotSpec& rs) {
   const int kinds = r.has("action") + r.has("push") + r.has("click") + r.has("press");
   if (kinds > 1) r.fail("an actions entry holds one of 'action', 'push', 'click' or 'press'");
   if (r.has("click")) {
@@ -129,14 +128,14 @@ void readAction(const YamlReader& r, RobotSpec& rs) {
     for (int k = 0; k < count; ++k)
       rs.buttons.push_back({t + k * (kClickDown + kClickUp), kClickDown, b});
     r.finish();
-    return;
+    return true;
   }
   if (r.has("press")) {
     const sensors::Button b = buttonNamed(r, "press");
     const double held = r.number("for", Range::closed(0.01, limits::kMaxTime));  // s
     rs.buttons.push_back({t, held, b});
     r.finish();
-    return;
+    return true;
   }
   if (r.has("push")) {
     if (r.has("action")) r.fail("an actions entry holds either 'action' or 'push', not both");
@@ -144,23 +143,31 @@ void readAction(const YamlReader& r, RobotSpec& rs) {
     RobotSpec::Push push;
     push.t_s = t;
     const Range impulse = Range::closed(-World::kMaxPushImpulse, World::kMaxPushImpulse);  // N*s
-    push.jx = p.number("x", 0.0, impulse);
-    push.jy = p.number("y", 0.0, impulse);
+    push.jx = p.number("x", push.jx, impulse);
+    push.jy = p.number("y", push.jy, impulse);
     if (std::hypot(push.jx, push.jy) > World::kMaxPushImpulse)
       p.fail("x", "the push's impulse must be at most " + std::to_string(World::kMaxPushImpulse) + " N*s");
     p.finish();
     rs.pushes.push_back(push);
     r.finish();
-    return;
+    return true;
   }
-  programs::readBodyAction(r, t, rs);
+  return false;
+}
+
+// The program's keys of a robot map into rs.setup, its body events into rs.
+void readProgramKeys(const YamlReader& robot, RobotSpec& rs) {
+  programs::readProgramPart(robot, rs.setup,
+                            [&rs](const YamlReader& entry, double t) { return readBodyEvent(entry, t, rs); });
+  std::stable_sort(rs.pushes.begin(), rs.pushes.end(),
+                   [](const RobotSpec::Push& a, const RobotSpec::Push& b) { return a.t_s < b.t_s; });
 }
 
 // One entry of a robot's `buttons:` list.
 RobotSpec::ButtonPress readButton(const YamlReader& r) {
   RobotSpec::ButtonPress b;
   b.t_s = r.number("t", Range::closed(0, limits::kMaxTime));
-  b.duration_s = r.number("duration", 0.1, Range::closed(0, limits::kMaxTime));
+  b.duration_s = r.number("duration", b.duration_s, Range::closed(0, limits::kMaxTime));
   b.button = buttonNamed(r, "button");
   r.finish();
   return b;
@@ -168,8 +175,8 @@ RobotSpec::ButtonPress readButton(const YamlReader& r) {
 
 // libagent: {start: stiff | limp, release: 2016 | 2017 | 2018}
 void readLibagent(const YamlReader& r, RobotSpec& rs) {
-  rs.start = r.choice("start", "stiff", {"stiff", "limp"}) == "limp" ? bridge::StartMode::Limp : bridge::StartMode::Stiff;
-  const int year = r.integer("release", 2017, Range::closed(0, 1000000));
+  rs.start = r.enumChoice("start", rs.start, {{"stiff", bridge::StartMode::Stiff}, {"limp", bridge::StartMode::Limp}});
+  const int year = r.integer("release", bridge::releaseYear(rs.release), Range::closed(0, 1000000));
   if (!bridge::parseRelease(year, &rs.release))
     r.fail("release", "expected one of 2016, 2017, 2018 (the rUNSWift releases for the NAO V5; got " +
                           std::to_string(year) + ")");
@@ -183,7 +190,7 @@ network::TeamNetworkConfig readTeamComms(const YamlReader& r) {
   network::TeamNetworkConfig c;
   c.loss = r.number("loss", c.loss, Range::closed(0, 1));
   c.delay_ms = r.number("delay_ms", c.delay_ms, Range::closed(0, 60000));
-  c.budget = r.integer("budget", 0, Range::nonNegative());
+  c.budget = r.integer("budget", static_cast<int>(c.budget), Range::nonNegative());
   r.finish();
   return c;
 }
@@ -191,18 +198,18 @@ network::TeamNetworkConfig readTeamComms(const YamlReader& r) {
 // game: the GameController's timeline and penalties (robots already read).
 game::GameConfig readGame(const YamlReader& r, int num_robots) {
   game::GameConfig g;
-  auto state = [](const YamlReader& m, const std::string& key, const std::string& def) {
+  auto state = [](const YamlReader& m, const std::string& key, game::GameStateValue def) {
     game::GameStateValue v;
-    game::parseState(m.choice(key, def, game::stateNames()), &v);
+    game::parseState(m.choice(key, game::stateName(def), game::stateNames()), &v);
     return v;
   };
-  g.initial_state = state(r, "state", "playing");
-  g.kickoff_team = r.integer("kickoff_team", 0, Range::closed(0, 1));
-  g.half_duration_s = r.number("half_duration", 600.0, Range::closed(1, 3600));
-  g.first_half = r.boolean("first_half", true);
-  g.on_unpenalise = r.choice("on_unpenalise", "previous", {"previous", "sideline"}) == "sideline"
-                        ? game::GameConfig::Return::Sideline
-                        : game::GameConfig::Return::Previous;
+  g.initial_state = state(r, "state", g.initial_state);
+  g.kickoff_team = r.integer("kickoff_team", g.kickoff_team, Range::closed(0, 1));
+  g.half_duration_s = r.number("half_duration", g.half_duration_s, Range::closed(1, 3600));
+  g.first_half = r.boolean("first_half", g.first_half);
+  using Return = game::GameConfig::Return;
+  g.on_unpenalise =
+      r.enumChoice("on_unpenalise", g.on_unpenalise, {{"previous", Return::Previous}, {"sideline", Return::Sideline}});
   double last = 0;
   for (const YamlReader& e : r.list("timeline")) {
     game::GameConfig::StateChange c;
@@ -210,13 +217,13 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
     if (c.t_s < last) e.fail("t", "timeline entries must be in time order");
     last = c.t_s;
     if (!e.has("state")) e.fail("state", "a timeline entry needs a state");
-    c.state = state(e, "state", "playing");
-    const std::string sec = e.choice("secondary", "normal", {"normal", "penalty_shoot", "overtime", "timeout"});
-    c.secondary = sec == "normal"          ? game::SecondaryState::Normal
-                  : sec == "penalty_shoot" ? game::SecondaryState::PenaltyShoot
-                  : sec == "overtime"      ? game::SecondaryState::Overtime
-                                           : game::SecondaryState::Timeout;
-    c.kickoff_team = e.integer("kickoff_team", -1, Range::closed(-1, 1));
+    c.state = state(e, "state", c.state);
+    c.secondary = e.enumChoice("secondary", c.secondary,
+                               {{"normal", game::SecondaryState::Normal},
+                                {"penalty_shoot", game::SecondaryState::PenaltyShoot},
+                                {"overtime", game::SecondaryState::Overtime},
+                                {"timeout", game::SecondaryState::Timeout}});
+    c.kickoff_team = e.integer("kickoff_team", c.kickoff_team, Range::closed(-1, 1));
     e.finish();
     g.timeline.push_back(c);
   }
@@ -230,14 +237,14 @@ game::GameConfig readGame(const YamlReader& r, int num_robots) {
     if (p.robot >= num_robots)
       e.fail("robot", "no robot " + std::to_string(p.robot) + " (the scenario has " + std::to_string(num_robots) +
                           "; robot is the index in robots:)");
-    game::parsePenalty(e.choice("penalty", "request_for_pickup", game::penaltyNames()), &p.penalty);
-    p.duration_s = e.number("duration", 30.0, Range::atLeast(-1));
+    game::parsePenalty(e.choice("penalty", game::penaltyName(p.penalty), game::penaltyNames()), &p.penalty);
+    p.duration_s = e.number("duration", p.duration_s, Range::atLeast(-1));
     e.finish();
     g.penalties.push_back(p);
   }
   // udp: the SPL GameController's packets on the loopback network (ports
   // and address mean nothing without it, so they are refused alone).
-  g.udp.on = r.boolean("udp", false);
+  g.udp.on = r.boolean("udp", g.udp.on);
   for (const char* key : {"address", "port", "return_port", "version", "message_budget"})
     if (!g.udp.on && r.has(key)) r.fail(key, "needs udp: on");
   g.udp.address = r.string("address", g.udp.address);
@@ -288,35 +295,77 @@ void readNoise(const YamlReader& top, NoiseSwitches& noise) {
   if (!top.has("noise")) return;
   if (top.node()["noise"].IsMap()) {
     YamlReader n = top.map("noise");
-    noise.on = n.boolean("enabled", true);
-    noise.gyro = n.boolean("gyro", true);
-    noise.accel = n.boolean("accel", true);
-    noise.angle = n.boolean("angle", true);
-    noise.fsr = n.boolean("fsr", true);
-    noise.sonar = n.boolean("sonar", true);
-    noise.encoder = n.boolean("encoder", true);
+    const NoiseSwitches d;  // a map sets every switch: absent ones are on
+    noise.on = n.boolean("enabled", d.on);
+    noise.gyro = n.boolean("gyro", d.gyro);
+    noise.accel = n.boolean("accel", d.accel);
+    noise.angle = n.boolean("angle", d.angle);
+    noise.fsr = n.boolean("fsr", d.fsr);
+    noise.sonar = n.boolean("sonar", d.sonar);
+    noise.encoder = n.boolean("encoder", d.encoder);
     n.finish();
   } else {
     noise.on = top.boolean("noise");
   }
 }
 
-// physics: {substeps, solver, iterations}
-void readPhysics(const YamlReader& top, Scenario& sc) {
-  if (auto p = top.optionalMap("physics")) {
-    sc.substeps = p->integer("substeps", sc.substeps, Range::closed(1, 100));
-    sc.solver = p->choice("solver", sc.solver, {"exact", "quick"});
-    sc.quick_iterations = p->integer("iterations", sc.quick_iterations, Range::closed(1, 1000));
-    p->finish();
-  }
+namespace {
+
+// physics: the World's settings a user may tune, each key its WorldConfig
+// field's name but `iterations` (quick_iterations, its key from before).
+// The ranges are checkWorldConfig's (sim/world/World.hpp).
+struct PhysicsInt {
+  const char* key;
+  int WorldConfig::*field;
+  const char* field_name;
+};
+struct PhysicsNumber {
+  const char* key;
+  double WorldConfig::*field;
+  const char* field_name;
+};
+const PhysicsInt kPhysicsInts[] = {
+    {"substeps", &WorldConfig::substeps, "substeps"},
+    {"iterations", &WorldConfig::quick_iterations, "quick_iterations"},
+    {"joint_projection_sweeps", &WorldConfig::joint_projection_sweeps, "joint_projection_sweeps"},
+    {"sole_nx", &WorldConfig::sole_nx, "sole_nx"},
+    {"sole_ny", &WorldConfig::sole_ny, "sole_ny"},
+};
+const PhysicsNumber kPhysicsNumbers[] = {
+    {"quick_w", &WorldConfig::quick_w, "quick_w"},
+    {"erp", &WorldConfig::erp, "erp"},
+    {"cfm", &WorldConfig::cfm, "cfm"},
+    {"joint_projection_tolerance", &WorldConfig::joint_projection_tolerance, "joint_projection_tolerance"},
+    {"sole_stiffness", &WorldConfig::sole_stiffness, "sole_stiffness"},
+    {"sole_damping", &WorldConfig::sole_damping, "sole_damping"},
+    {"sole_anchor_erp", &WorldConfig::sole_anchor_erp, "sole_anchor_erp"},
+    {"sole_anchor_slip", &WorldConfig::sole_anchor_slip, "sole_anchor_slip"},
+};
+
+}  // namespace
+
+// physics: {substeps, solver, iterations, ...}; absent keys keep world's.
+void readPhysics(const YamlReader& top, WorldConfig& world) {
+  const std::optional<YamlReader> p = top.optionalMap("physics");
+  if (!p) return;
+  world.solver = p->enumChoice("solver", world.solver,
+                               {{"quick", WorldConfig::Solver::Quick}, {"exact", WorldConfig::Solver::Exact}});
+  for (const PhysicsInt& k : kPhysicsInts) world.*k.field = p->integer(k.key, world.*k.field);
+  for (const PhysicsNumber& k : kPhysicsNumbers) world.*k.field = p->number(k.key, world.*k.field);
+  p->finish();
+  const std::optional<WorldConfigProblem> bad = checkWorldConfig(world);
+  if (!bad) return;
+  std::string key = bad->field;  // a field the file cannot set (tick_us) is named as itself
+  for (const PhysicsInt& k : kPhysicsInts)
+    if (bad->field == k.field_name) key = k.key;
+  p->fail(key, bad->why);
 }
 
 void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir, bool any_body) {
   rs.program = RobotSpec::Program::Builtin;
   if (!robot.has("program") || !robot.node()["program"].IsMap()) {
-    rs.program = robot.choice("program", "builtin", {"builtin", "external"}) == "external"
-                     ? RobotSpec::Program::External
-                     : RobotSpec::Program::Builtin;
+    rs.program = robot.enumChoice("program", rs.program,
+                                  {{"builtin", RobotSpec::Program::Builtin}, {"external", RobotSpec::Program::External}});
     return;
   }
   rs.program = RobotSpec::Program::External;
@@ -329,7 +378,7 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
     rs.launch.command.push_back(a.Scalar());
   }
   (void)p.has("command");
-  rs.launch.cwd = p.string("cwd", "");
+  rs.launch.cwd = p.string("cwd", rs.launch.cwd);
   if (!rs.launch.cwd.empty() && rs.launch.cwd[0] != '/')
     rs.launch.cwd = (std::filesystem::path(base_dir.empty() ? "." : base_dir) / rs.launch.cwd).string();
   if (rs.launch.cwd.empty()) rs.launch.cwd = base_dir.empty() ? "." : base_dir;
@@ -342,7 +391,7 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
       rs.launch.env.emplace_back(key, kv.second.Scalar());
     }
   }
-  rs.launch.stop_grace_s = p.number("stop_grace", 2.0, Range::closed(0, 60));
+  rs.launch.stop_grace_s = p.number("stop_grace", rs.launch.stop_grace_s, Range::closed(0, 60));
   // Placeholders are checked now, not when the run starts: the run's, and
   // the body's (BodySide::placeholders: a LoLA body's socket, libagent's names).
   std::map<std::string, std::string> names;
@@ -364,7 +413,8 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
 uint64_t programSeed(uint64_t seed, int index) { return seed * 1000003ULL + static_cast<uint64_t>(index); }
 
 void readActions(const YamlReader& robot, RobotSpec& rs) {
-  for (const YamlReader& a : robot.list("actions")) readAction(a, rs);
+  agent::program::readActions(robot, rs.setup,
+                              [&rs](const YamlReader& entry, double t) { return readBodyEvent(entry, t, rs); });
   std::stable_sort(rs.pushes.begin(), rs.pushes.end(),
                    [](const RobotSpec::Push& a, const RobotSpec::Push& b) { return a.t_s < b.t_s; });
 }
@@ -411,25 +461,25 @@ void readRun(const YamlReader& top, Scenario& sc) {
   const YAML::Node& root = top.node();
   // Relative paths resolve against the scenario file's folder first.
   sc.base_dir = top.string("base_dir", std::filesystem::path(sc.source).parent_path().string());
-  sc.model_path = top.string("model", "models/nao_v5.urdf");
-  sc.field_path = top.string("field", "fields/spl_2017.yaml");
+  sc.model_path = top.string("model", sc.model_path);
+  sc.field_path = top.string("field", sc.field_path);
   auto lineOf = [&](const char* key) { return root[key] ? root[key].Mark().line + 1 : 1; };
   sc.model_line = lineOf("model");
   sc.model_named = top.has("model");
   sc.field_line = lineOf("field");
   // At least one tick, at most limits::kMaxTime (a run that would go on
   // for weeks is a typo).
-  sc.duration = top.number("duration", 10.0, Range::closed(limits::kMinDuration, limits::kMaxTime));
-  const double seed = top.number("seed", 1.0, Range::closed(0, limits::kMaxSeed));
+  sc.duration = top.number("duration", sc.duration, Range::closed(limits::kMinDuration, limits::kMaxTime));
+  const double seed = top.number("seed", static_cast<double>(sc.seed), Range::closed(0, limits::kMaxSeed));
   if (seed != std::floor(seed)) top.fail("seed", "must be a whole number (got " + std::to_string(seed) + ")");
   sc.seed = static_cast<uint64_t>(seed);
   if (top.has("watchdog") && root["watchdog"].IsScalar() &&
       (root["watchdog"].Scalar() == "off" || root["watchdog"].Scalar() == "false")) {
     sc.watchdog_s = 0;  // off: a run that sits at a debugger breakpoint is not ended
   } else {
-    sc.watchdog_s = top.number("watchdog", 5.0, Range::openClosed(0, limits::kMaxWallClock));
+    sc.watchdog_s = top.number("watchdog", sc.watchdog_s, Range::openClosed(0, kMaxWallClockS));
   }
-  sc.attach_timeout_s = top.number("attach_timeout", 30.0, Range::openClosed(0, limits::kMaxWallClock));
+  sc.attach_timeout_s = top.number("attach_timeout", sc.attach_timeout_s, Range::openClosed(0, kMaxWallClockS));
   sc.program_logs = top.string("program_logs", sc.program_logs);
   if (sc.program_logs.empty()) top.fail("program_logs", "must name a folder");
 }
@@ -439,21 +489,19 @@ void readRun(const YamlReader& top, Scenario& sc) {
 std::optional<YamlReader> readCamera(const YamlReader& top, CameraSpec& camera) {
   std::optional<YamlReader> overview_reader;
   if (auto c = top.optionalMap("camera")) {
-    camera.enabled = c->boolean("enabled", false);
-    const std::string res = c->choice("resolution", "640x480", {"640x480", "1280x960"});
-    camera.width = res == "640x480" ? 640 : 1280;
-    camera.height = res == "640x480" ? 480 : 960;
+    camera.enabled = c->boolean("enabled", camera.enabled);
+    const bool small = c->enumChoice("resolution", camera.width == 640, {{"640x480", true}, {"1280x960", false}});
+    camera.width = small ? 640 : 1280;
+    camera.height = small ? 480 : 960;
     if (auto o = c->optionalMap("overview")) {
       CameraSpec::Overview& ov = camera.overview;
-      ov.enabled = o->boolean("enabled", true);
-      const std::string mode = o->choice("mode", "fixed", {"fixed", "robot", "ball"});
-      ov.mode = mode == "fixed" ? CameraSpec::Overview::Mode::Fixed
-                : mode == "robot" ? CameraSpec::Overview::Mode::Robot
-                                  : CameraSpec::Overview::Mode::Ball;
-      ov.robot = o->integer("robot", 0, Range::nonNegative());
-      ov.rate_hz = o->number("rate_hz", 10.0, Range::closed(0.1, 100));
-      ov.width = o->integer("width", 960, Range::closed(16, 3840));
-      ov.height = o->integer("height", 540, Range::closed(16, 2160));
+      ov.enabled = o->boolean("enabled", true);  // an overview: map asks for one
+      using Mode = CameraSpec::Overview::Mode;
+      ov.mode = o->enumChoice("mode", ov.mode, {{"fixed", Mode::Fixed}, {"robot", Mode::Robot}, {"ball", Mode::Ball}});
+      ov.robot = o->integer("robot", ov.robot, Range::nonNegative());
+      ov.rate_hz = o->number("rate_hz", ov.rate_hz, Range::closed(0.1, 100));
+      ov.width = o->integer("width", ov.width, Range::closed(16, 3840));
+      ov.height = o->integer("height", ov.height, Range::closed(16, 2160));
       if (ov.width % 2 || ov.height % 2) o->fail("width", "width and height must be even (video encoders)");
       ov.dir = o->string("dir", ov.dir);
       overview_reader = *o;
@@ -572,32 +620,37 @@ void readNames(const YamlReader& r, RobotSpec& rs, RobotClaims& claims) {
 // x, y, theta (m, m, rad; field frame) and the start posture.
 void readPlacement(const YamlReader& r, RobotSpec& rs) {
   const Range pos = Range::closed(-limits::kMaxPosition, limits::kMaxPosition);
-  rs.x = r.number("x", 0.0, pos);
-  rs.y = r.number("y", 0.0, pos);
-  rs.theta = r.number("theta", 0.0, Range::closed(-limits::kMaxHeading, limits::kMaxHeading));
+  rs.x = r.number("x", rs.x, pos);
+  rs.y = r.number("y", rs.y, pos);
+  rs.theta = r.number("theta", rs.theta, Range::closed(-limits::kMaxHeading, limits::kMaxHeading));
   rs.posture = *agent::nao::parsePosture(r.choice("posture", "stand", agent::nao::postureNames()));
 }
 
-// script, buttons and actions: what the robot is told to do over time;
-// joints and Motion actions need a program simswift gives them to.
+// buttons, then script, actions and behaviour: what the robot is told to
+// do over time. Joints, Motion actions and behaviours need a program
+// simswift composes or configures; pushes and buttons any.
 void readTimedLists(const YamlReader& r, RobotSpec& rs) {
-  if (r.has("script")) {
-    if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
-      r.fail("script", "an external robot runs its own program; a script needs program: builtin (or a "
-                       "launched program, which gets it in its {config} file)");
-    for (const YamlReader& s : r.list("script")) programs::readScriptStep(s, rs);
-  }
   if (r.has("buttons"))
     for (const YamlReader& b : r.list("buttons")) rs.buttons.push_back(readButton(b));
-  if (r.has("actions")) {
-    readActions(r, rs);
-    if (!rs.actions.empty() && rs.program == RobotSpec::Program::External && !rs.launch.launched())
-      r.fail("actions", "an external robot runs its own program; body actions need program: builtin "
-                        "or a launched program, which gets them in its {config} file (pushes, clicks and "
-                        "presses are fine)");
-    if (!rs.actions.empty() && !rs.script.empty())
-      r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
-  }
+  const bool own_program = rs.program == RobotSpec::Program::External && !rs.launch.launched();
+  if (own_program && r.has("script"))
+    r.fail("script", "an external robot runs its own program; a script needs program: builtin (or a "
+                     "launched program, which gets it in its {config} file)");
+  if (own_program && r.has("behaviour"))
+    r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin (or a "
+                        "launched program, which gets it in its {config} file)");
+  readProgramKeys(r, rs);
+  const programs::ProgramPart& p = rs.setup;
+  if (own_program && !p.actions.empty())
+    r.fail("actions", "an external robot runs its own program; body actions need program: builtin "
+                      "or a launched program, which gets them in its {config} file (pushes, clicks and "
+                      "presses are fine)");
+  if (!p.actions.empty() && !p.script.empty())
+    r.fail("actions", "a robot takes either 'script' (joints) or 'actions' (Motion)");
+  if (p.behaviour && !p.actions.empty())
+    r.fail("actions", std::string("a robot with behaviour ") + programs::behaviourName(p) +
+                          " takes no body actions (pushes only); use behaviour: script");
+  if (p.behaviour && !p.script.empty()) r.fail("script", "a robot with a behaviour takes no joint script");
 }
 
 // The builtin program speaks the 2017 block only.
@@ -605,20 +658,6 @@ void checkBuiltinRelease(const YamlReader& r, const RobotSpec& rs) {
   if (rs.program == RobotSpec::Program::Builtin && rs.release != bridge::Release::R2017)
     r.fail("libagent", "the builtin robot program speaks the 2017 block; release " +
                            std::to_string(bridge::releaseYear(rs.release)) + " needs program: external");
-}
-
-// behaviour: agent/behaviour's, for a program simswift configures; it
-// excludes body actions and joint scripts.
-void readRobotBehaviour(const YamlReader& r, RobotSpec& rs) {
-  if (!r.has("behaviour")) return;
-  if (rs.program == RobotSpec::Program::External && !rs.launch.launched())
-    r.fail("behaviour", "an external robot runs its own program; a behaviour needs program: builtin (or a "
-                        "launched program, which gets it in its {config} file)");
-  programs::readBehaviour(r, rs);
-  if (rs.behaviour && !rs.actions.empty())
-    r.fail("actions", std::string("a robot with behaviour ") + programs::behaviourName(rs) +
-                          " takes no body actions (pushes only); use behaviour: script");
-  if (rs.behaviour && !rs.script.empty()) r.fail("script", "a robot with a behaviour takes no joint script");
 }
 
 // One entry of robots:, its keys in this order (the first error wins).
@@ -632,7 +671,6 @@ RobotSpec readRobot(const YamlReader& r, const std::string& base_dir, RobotClaim
   readLola(r, rs, claims);
   readTimedLists(r, rs);
   checkBuiltinRelease(r, rs);
-  readRobotBehaviour(r, rs);
   r.finish();
   return rs;
 }
@@ -641,9 +679,9 @@ void readRobots(const YamlReader& top, Scenario& sc) {
   RobotClaims claims;
   for (const YamlReader& r : top.list("robots")) sc.robots.push_back(readRobot(r, sc.base_dir, claims));
   if (sc.robots.empty()) top.fail("robots", "a scenario needs at least one robot");
-  sc.tick_us = bodyCycleUs(sc.robots.front().body);
+  sc.world.tick_us = bodyCycleUs(sc.robots.front().body);
   // A V6 world gets the V6 body unless the file names a model.
-  if (sc.robots.front().body == bridge::BodyInterface::Lola && !sc.model_named) sc.model_path = "models/nao_v6.urdf";
+  if (sc.robots.front().body == bridge::BodyInterface::Lola && !sc.model_named) sc.model_path = kV6Model;
 }
 
 }  // namespace
@@ -660,7 +698,7 @@ void checkRobotsApart(const Scenario& sc) {
     }
 }
 
-// The blocks in file order of the documentation (Scenario.hpp); the robots
+// The blocks in file order of the documentation (docs/runner.md); the robots
 // before team_comms and game, which may name them.
 Scenario Scenario::parse(const std::string& text, const std::string& source_name) {
   const YAML::Node root = YamlReader::parse(text, source_name);
@@ -673,7 +711,7 @@ Scenario Scenario::read(const YamlReader& top, const std::string& source_name) {
   readRun(top, sc);
   readNoise(top, sc.noise);
   readInertial(top, sc);
-  readPhysics(top, sc);
+  readPhysics(top, sc.world);
   const std::optional<YamlReader> overview_reader = readCamera(top, sc.camera);
   readVision(top, sc.vision);
   readBall(top, sc);

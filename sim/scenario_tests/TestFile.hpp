@@ -6,7 +6,7 @@
 //   defaults: {seeds: 20, required: 0.8, time_limit: 60}   # optional, for every test
 //   tests:
 //     - name: striker_kickoff       # [A-Za-z0-9_.-]+, unique
-//       scenario: {...}             # a scenario's keys (sim/runner/Scenario.hpp), or the
+//       scenario: {...}             # a scenario's keys (docs/runner.md), or the
 //                                   # name of a scenario file (relative to this file);
 //                                   # its duration is the time limit
 //       seeds: 20                   # runs, each with its own seed

@@ -19,7 +19,6 @@ namespace simswift {
 namespace {
 
 constexpr int kMaxContactsPerPair = 8;
-constexpr int kMaxSolePoints = 64;  // sole grid points (WorldConfig::sole_nx x sole_ny)
 constexpr double kBounceVelocity = 0.05;  // m/s: slower impacts do not bounce
 
 const GeomTag kUntagged{GeomTag::Ground, -1, -1};
@@ -100,10 +99,10 @@ void nearCallback(void* raw, dGeomID o1, dGeomID o2) {
   const bool sole_ground = (t1.sole && t2.kind == GeomTag::Ground && dGeomGetClass(o2) == dPlaneClass) ||
                            (t2.sole && t1.kind == GeomTag::Ground && dGeomGetClass(o1) == dPlaneClass);
   if (sole_ground && dGeomGetClass(t1.sole ? o1 : o2) == dBoxClass) {
-    dContactGeom cg[kMaxSolePoints];
-    int index[kMaxSolePoints];
-    const int n = t1.sole ? soleContacts(o1, o2, *data->cfg, cg, index, kMaxSolePoints)
-                          : soleContacts(o2, o1, *data->cfg, cg, index, kMaxSolePoints);
+    dContactGeom cg[WorldConfig::kMaxSolePoints];
+    int index[WorldConfig::kMaxSolePoints];
+    const int n = t1.sole ? soleContacts(o1, o2, *data->cfg, cg, index, WorldConfig::kMaxSolePoints)
+                          : soleContacts(o2, o1, *data->cfg, cg, index, WorldConfig::kMaxSolePoints);
     for (int i = 0; i < n; ++i)
       out->push_back(t1.sole ? ContactCandidate{cg[i], t1, t2, index[i]} : ContactCandidate{cg[i], t2, t1, index[i]});
     return;

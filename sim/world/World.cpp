@@ -119,7 +119,9 @@
 // then checkBlowUps once more and the tick counter + 1.
 #include <cmath>
 #include <mutex>
+#include <sstream>
 
+#include "sim/world/ConfigError.hpp"
 #include "sim/world/WorldImpl.hpp"
 
 namespace simswift {
@@ -144,21 +146,39 @@ Eigen::Isometry3d planarPose(double x, double y, double theta, double z) {
   return p;
 }
 
+std::optional<WorldConfigProblem> checkWorldConfig(const WorldConfig& c) {
+  std::optional<WorldConfigProblem> bad;
+  auto rule = [&](const char* field, double v, const Range& r) {
+    if (bad || r.contains(v)) return;
+    std::ostringstream got;
+    got << v;
+    bad = WorldConfigProblem{field, r.describe() + " (got " + got.str() + ")"};
+  };
+  const Range unit = Range::closed(0, 1);
+  rule("substeps", c.substeps, Range::closed(1, 100));
+  rule("tick_us", static_cast<double>(c.tick_us), Range::closed(1000, 100000));  // us
+  rule("quick_iterations", c.quick_iterations, Range::closed(1, 1000));
+  rule("quick_w", c.quick_w, Range{0.0, 2.0, true, true});  // QuickStep's over-relaxation converges in (0, 2)
+  rule("erp", c.erp, unit);
+  rule("cfm", c.cfm, unit);
+  rule("joint_projection_sweeps", c.joint_projection_sweeps, Range::closed(0, 1000));
+  rule("joint_projection_tolerance", c.joint_projection_tolerance, Range::positive());  // m
+  const int most = WorldConfig::kMaxSolePoints;
+  rule("sole_nx", c.sole_nx, Range::closed(1, most));
+  rule("sole_ny", c.sole_ny, Range::closed(1, most));
+  if (!bad && c.sole_nx * c.sole_ny > most)
+    bad = WorldConfigProblem{"sole_ny", "sole_nx x sole_ny must be at most " + std::to_string(most) + " points (got " +
+                                            std::to_string(c.sole_nx) + " x " + std::to_string(c.sole_ny) + ")"};
+  rule("sole_stiffness", c.sole_stiffness, Range::positive());  // N/m
+  rule("sole_damping", c.sole_damping, Range::nonNegative());  // N*s/m
+  rule("sole_anchor_erp", c.sole_anchor_erp, unit);
+  rule("sole_anchor_slip", c.sole_anchor_slip, Range::positive());  // m
+  return bad;
+}
+
 World::World(const FieldConfig& field, const WorldConfig& config)
     : impl_(std::make_unique<Impl>()), field_(field), config_(config) {
-  if (config_.substeps < 1) throw ConfigError("world: substeps must be >= 1");
-  if (config_.tick_us < 1000 || config_.tick_us > 100000)
-    throw ConfigError("world: tick_us must be in [1000, 100000] (got " + std::to_string(config_.tick_us) + ")");
-  if (!(config_.quick_w > 0 && config_.quick_w < 2)) throw ConfigError("world: quick_w must be in (0, 2)");
-  if (config_.sole_nx < 1 || config_.sole_ny < 1 || config_.sole_nx * config_.sole_ny > 64)
-    throw ConfigError("world: sole_nx x sole_ny must be 1..64 points");
-  if (!(config_.sole_stiffness > 0) || !(config_.sole_damping >= 0))
-    throw ConfigError("world: sole_stiffness must be > 0 and sole_damping >= 0");
-  if (!(config_.sole_anchor_erp >= 0 && config_.sole_anchor_erp <= 1) || !(config_.sole_anchor_slip > 0))
-    throw ConfigError("world: sole_anchor_erp must be in [0, 1] and sole_anchor_slip > 0");
-  if (config_.joint_projection_sweeps < 0 || config_.joint_projection_sweeps > 1000 ||
-      !(config_.joint_projection_tolerance > 0))
-    throw ConfigError("world: joint_projection_sweeps must be 0..1000 and joint_projection_tolerance > 0");
+  if (auto bad = checkWorldConfig(config_)) throw ConfigError("world: " + bad->field + ": " + bad->why);
   initOdeOnce();
   world_ = dWorldCreate();
   dWorldSetGravity(world_, 0, 0, -config_.gravity);

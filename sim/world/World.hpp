@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -52,6 +53,7 @@ struct WorldConfig {
   // points over the sole box's bottom face (corners included), each a
   // damped spring; together the sole's vertical stiffness and damping.
   int sole_nx = 4, sole_ny = 3;
+  static constexpr int kMaxSolePoints = 64;  // sole_nx x sole_ny at most (Contacts.cpp's per-sole arrays)
   double sole_stiffness = 2.0e5;     // N/m, whole sole: 52 N (the NAO) sinks 0.26 mm
   double sole_damping = 2.0e3;       // N*s/m, whole sole: about critical for 5.3 kg
   // Static friction that holds (Contacts.cpp): each sole point in contact
@@ -64,6 +66,17 @@ struct WorldConfig {
   double sole_anchor_slip = 0.005;   // m
   ServoConfig servo;
 };
+
+// The first value of `c` that breaks its rule: the field (named as in the
+// struct) and why ("must be in [1, 100] (got 0)"). The one home of the
+// rules: World's constructor refuses such a config (ConfigError "world:
+// field: why"), and the scenario's physics: reader (sim/runner/Scenario.cpp)
+// refuses it naming the file, line and key. Fields without a rule (gravity,
+// the blow-up limits, servo) are taken as given.
+struct WorldConfigProblem {
+  std::string field, why;
+};
+std::optional<WorldConfigProblem> checkWorldConfig(const WorldConfig& c);
 
 // A contact felt by a robot link during the last tick, averaged over its
 // substeps: the force the environment exerts on the link (N, world frame) at

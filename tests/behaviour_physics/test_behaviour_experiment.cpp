@@ -24,9 +24,9 @@ TEST(BehaviourExperiment, OverridesCheckedBeforeTrials) {
   TrialSpec t;
   t.setup = 0;
   RobotBehaviours().configure(good, t, sc);
-  ASSERT_TRUE(sc.robots[0].behaviour);
-  EXPECT_EQ(sc.robots[0].behaviour->kind, agent::behaviour::BehaviourKind::FINDBALL_2017);
-  EXPECT_FALSE(sc.robots[0].behaviour->strategy.distributed);
+  ASSERT_TRUE(sc.robots[0].setup.behaviour);
+  EXPECT_EQ(sc.robots[0].setup.behaviour->kind, agent::behaviour::BehaviourKind::FINDBALL_2017);
+  EXPECT_FALSE(sc.robots[0].setup.behaviour->strategy.distributed);
 
   const Experiment bad = Experiment::parse(experiment("{strategy: {distributd: off}}"), "exp.yaml");
   try {

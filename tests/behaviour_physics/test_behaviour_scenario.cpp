@@ -1,4 +1,4 @@
-// Scenario `behaviour:` (sim/runner/BehaviourYaml): kinds, typed overrides,
+// Scenario `behaviour:` (agent/behaviour/BehaviourYaml): kinds, typed overrides,
 // errors naming file, line and field; the module in the Perception order;
 // the SearchPayload reaching teammates through the simulated network.
 #include <gtest/gtest.h>
@@ -22,10 +22,10 @@ std::string errorOf(const std::string& text) {
 }  // namespace
 
 TEST(BehaviourScenario, KindsAndDefault) {
-  EXPECT_FALSE(Scenario::parse(robot("posture: stand"), "b.yaml").robots[0].behaviour);
-  EXPECT_FALSE(Scenario::parse(robot("behaviour: script"), "b.yaml").robots[0].behaviour);
+  EXPECT_FALSE(Scenario::parse(robot("posture: stand"), "b.yaml").robots[0].setup.behaviour);
+  EXPECT_FALSE(Scenario::parse(robot("behaviour: script"), "b.yaml").robots[0].setup.behaviour);
   const auto k = [](const std::string& name) {
-    return Scenario::parse(robot("behaviour: " + name), "b.yaml").robots[0].behaviour->kind;
+    return Scenario::parse(robot("behaviour: " + name), "b.yaml").robots[0].setup.behaviour->kind;
   };
   EXPECT_EQ(k("findball2016"), ab::BehaviourKind::FINDBALL_2016);
   EXPECT_EQ(k("findball2017"), ab::BehaviourKind::FINDBALL_2017);
@@ -39,7 +39,7 @@ TEST(BehaviourScenario, OverridesAreTyped) {
       "      search: {spin_at_point: no, points_2016: [{x: 0, y: 0}, {x: 1000, y: -500}]}\n"
       "      skills: {scan_speed: 1.5, kick_target: [4500, 500]}\n",
       "b.yaml");
-  const ab::BehaviourConfig& c = *s.robots[0].behaviour;
+  const ab::BehaviourConfig& c = *s.robots[0].setup.behaviour;
   EXPECT_EQ(c.kind, ab::BehaviourKind::FINDBALL_2016);
   EXPECT_EQ(c.grid.columns, 4);
   EXPECT_EQ(c.grid.rows, 2);
@@ -104,7 +104,7 @@ TEST(BehaviourScenario, ShippedFindBallScenariosLoad) {
   for (const char* f : {"findball_three_2017.yaml", "findball_three_2016.yaml", "findball_search_long.yaml"}) {
     const Scenario s = Scenario::loadFile(std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/" + f);
     ASSERT_GE(s.robots.size(), 3u) << f;
-    for (const auto& r : s.robots) EXPECT_TRUE(r.behaviour) << f;
+    for (const auto& r : s.robots) EXPECT_TRUE(r.setup.behaviour) << f;
   }
 }
 

@@ -61,7 +61,7 @@ TEST(ExperimentFile, GoodFileLoads) {
   ASSERT_EQ(e.setups.size(), 1u);
   ASSERT_EQ(e.setups[0].robots.size(), 2u);
   EXPECT_EQ(e.setups[0].robots[1].player, 3);
-  EXPECT_EQ(e.setups[0].robots[0].script.actions.size(), 1u);
+  EXPECT_EQ(e.setups[0].robots[0].script.setup.actions.size(), 1u);
   EXPECT_DOUBLE_EQ(e.found.distance, 0.3);
   EXPECT_TRUE(e.found.sees);
   EXPECT_NO_THROW(checkBehaviours(e, behaviourHooks()));
@@ -327,7 +327,7 @@ TEST(ExperimentFile, TrialSpecs) {
   EXPECT_DOUBLE_EQ(sc.duration, 1.0 + e.time_limit);
   ASSERT_EQ(sc.robots.size(), 1u);
   EXPECT_EQ(sc.robots[0].player, 2);
-  EXPECT_EQ(sc.robots[0].actions.size(), 1u);
+  EXPECT_EQ(sc.robots[0].setup.actions.size(), 1u);
   // findballexp's start: penalised from t = 0 (INITIAL), then PLAYING and
   // unpenalised at 1 s, left where they stand.
   EXPECT_EQ(sc.game.initial_state, agent::libagent::GameStateValue::Initial);

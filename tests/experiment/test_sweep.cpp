@@ -202,8 +202,8 @@ TEST(Sweep, BaseSettingsAndSweptSettingsReachTheTrialScenario) {
     const runner::Scenario sc = trialScenario(e, trialSpec(e, c * e.trialsPerCell() + 1));
     EXPECT_DOUBLE_EQ(sc.team_comms.loss, c < 2 ? 0.0 : 1.0);
     EXPECT_DOUBLE_EQ(sc.team_comms.delay_ms, 40);  // the base's, kept beside the swept key
-    EXPECT_EQ(sc.quick_iterations, c % 2 ? 30 : 10);
-    EXPECT_EQ(sc.substeps, 3);
+    EXPECT_EQ(sc.world.quick_iterations, c % 2 ? 30 : 10);
+    EXPECT_EQ(sc.world.substeps, 3);
     EXPECT_TRUE(sc.noise.on);
     EXPECT_FALSE(sc.noise.fsr);
     EXPECT_DOUBLE_EQ(sc.game.half_duration_s, 300);

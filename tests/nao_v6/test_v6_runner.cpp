@@ -120,11 +120,11 @@ TEST(V6Scenario, LolaBodyTicksAt12msOnTheV6Model) {
   const Scenario sc = v6Scenario("/tmp/x.sock", "external", 1);
   ASSERT_EQ(sc.robots.size(), 1u);
   EXPECT_EQ(sc.robots[0].body, simswift::bridge::BodyInterface::Lola);
-  EXPECT_EQ(sc.tick_us, 12000);
+  EXPECT_EQ(sc.world.tick_us, 12000);
   EXPECT_EQ(sc.robots[0].lola_socket, "/tmp/x.sock");
   EXPECT_NE(sc.modelFile().find("nao_v6.urdf"), std::string::npos) << sc.modelFile();
   const Scenario v5 = Scenario::parse("robots:\n  - {team: 19, player: 1}\n", "v5.yaml");
-  EXPECT_EQ(v5.tick_us, 10000);
+  EXPECT_EQ(v5.world.tick_us, 10000);
   EXPECT_EQ(v5.robots[0].body, simswift::bridge::BodyInterface::Libagent);
 }
 

@@ -16,6 +16,7 @@
 #include "agent/behaviour/BehaviourYaml.hpp"
 #include "agent/program/RobotSetup.hpp"
 #include "sim/programs/ProgramProcess.hpp"
+#include "sim/programs/ProgramSpec.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "tests/support/ConfigErrors.hpp"
@@ -167,7 +168,7 @@ TEST(RobotSetup, TheConfigFileReadsBackToTheSameSetup) {
   s.team = 19;
   s.player = 3;
   s.seed = 18446744073709551557ULL;  // beyond a double's exact range
-  s.start = agent::blackboard::FieldPose{-3250.0, 3000.0, -1.5708};
+  s.start = ap::RobotSetup::StartPose{-3.25, 3.0, -1.5708};  // m, m, rad
   s.behaviour = agent::behaviour::behaviourFromText("findball2016", "{search: {spin_at_point: off}}", "t",
                                                     &s.behaviour_yaml);
   s.posture = ap::Posture::Crouch;
@@ -178,7 +179,8 @@ TEST(RobotSetup, TheConfigFileReadsBackToTheSameSetup) {
   EXPECT_EQ(r.player, 3);
   EXPECT_EQ(r.seed, s.seed);
   ASSERT_TRUE(r.start);
-  EXPECT_EQ(r.start->x, -3250.0);
+  EXPECT_EQ(r.start->x, -3.25);
+  EXPECT_EQ(r.start->y, 3.0);
   EXPECT_EQ(r.start->theta, -1.5708);
   ASSERT_TRUE(r.behaviour);
   EXPECT_EQ(r.behaviour->kind, agent::behaviour::BehaviourKind::FINDBALL_2016);
@@ -211,6 +213,36 @@ TEST(RobotSetup, TheConfigFileReadsBackToTheSameSetup) {
   ASSERT_EQ(b.script.size(), 1u);
   EXPECT_EQ(b.script[0].angle, st.angle);
   EXPECT_EQ(b.script[0].stiffness, st.stiffness);
+}
+
+// A launched robot's {config} holds its pose in the scenario's unit (m),
+// so it reads back bit for bit and the program it configures starts its
+// localisation where the builtin program would. The values are ones whose
+// old m -> mm -> m trip through the file changed their last bit.
+TEST(RobotSetup, ALaunchedRobotsConfigRoundTripsItsPoseExactly) {
+  const Scenario sc = Scenario::parse(
+      "seed: 7\n"
+      "robots:\n"
+      "  - {team: 19, player: 2, x: -0.4915152535067868, y: 0.3727122551414688, theta: -0.701037000347263,\n"
+      "     behaviour: findball2017, program: {command: [simswift-agent, --config, '{config}']}}\n",
+      "pose.yaml");
+  const simswift::runner::RobotSpec& r = sc.robots[0];
+  const ap::RobotSetup s = simswift::programs::robotSetup(sc, 0);
+  const std::string d = tempDir("pose");
+  std::ofstream(d + "/r.yaml") << ap::robotSetupYaml(s);  // what Programs::makeLaunched writes
+  const ap::RobotSetup back = ap::readRobotSetup(d + "/r.yaml");
+  ASSERT_TRUE(back.start);
+  EXPECT_EQ(back.start->x, r.x);
+  EXPECT_EQ(back.start->y, r.y);
+  EXPECT_EQ(back.start->theta, r.theta);
+  EXPECT_EQ(back.seed, simswift::runner::programSeed(7, 0));
+  // The known start the two programs are composed with: the same doubles (mm).
+  const ap::ProgramConfig builtin = ap::composeProgram(s), launched = ap::composeProgram(back);
+  ASSERT_TRUE(builtin.localisation.known_start && launched.localisation.known_start);
+  EXPECT_EQ(launched.localisation.known_start->x, builtin.localisation.known_start->x);
+  EXPECT_EQ(launched.localisation.known_start->y, builtin.localisation.known_start->y);
+  EXPECT_EQ(launched.localisation.known_start->theta, builtin.localisation.known_start->theta);
+  EXPECT_EQ(builtin.localisation.known_start->x, r.x * 1000.0);  // m -> mm, once
 }
 
 TEST(RobotSetup, BadConfigNamesFileLineAndKey) {

@@ -34,8 +34,8 @@ TEST(Scenario, ReadsRobotsBallAndSwitches) {
   EXPECT_TRUE(s.noise.on);
   EXPECT_FALSE(s.noise.gyro);
   EXPECT_TRUE(s.noise.accel);
-  EXPECT_EQ(s.substeps, 4);
-  EXPECT_EQ(s.solver, "quick");
+  EXPECT_EQ(s.world.substeps, 4);
+  EXPECT_EQ(s.world.solver, simswift::WorldConfig::Solver::Quick);
   ASSERT_TRUE(s.ball.has_value());
   EXPECT_DOUBLE_EQ(s.ball->second, -0.5);
   ASSERT_EQ(s.robots.size(), 2u);
@@ -43,10 +43,10 @@ TEST(Scenario, ReadsRobotsBallAndSwitches) {
   EXPECT_EQ(s.robots[0].posture, agent::program::Posture::Crouch);
   EXPECT_EQ(s.robots[0].program, RobotSpec::Program::External);
   EXPECT_EQ(s.robots[1].posture, agent::program::Posture::Stand);  // default
-  ASSERT_EQ(s.robots[1].script.size(), 2u);
-  EXPECT_EQ(s.robots[1].script[0].joint, 0);  // HeadYaw
-  EXPECT_DOUBLE_EQ(s.robots[1].script[0].duration_s, 0.25);
-  EXPECT_EQ(s.robots[1].script[1].posture, agent::program::Posture::Limp);
+  ASSERT_EQ(s.robots[1].setup.script.size(), 2u);
+  EXPECT_EQ(s.robots[1].setup.script[0].joint, 0);  // HeadYaw
+  EXPECT_DOUBLE_EQ(s.robots[1].setup.script[0].duration_s, 0.25);
+  EXPECT_EQ(s.robots[1].setup.script[1].posture, agent::program::Posture::Limp);
   // Default model and field: found (scenario folder, then the data folder).
   EXPECT_NE(s.modelFile().find("models/nao_v5.urdf"), std::string::npos) << s.modelFile();
   EXPECT_NE(s.fieldFile().find("fields/spl_2017.yaml"), std::string::npos) << s.fieldFile();
