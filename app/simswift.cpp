@@ -1,8 +1,8 @@
 // simswift: runs a scenario headless, as fast as it can (or paced with
 // --realtime), and prints a one-line summary; and its other subcommands:
-// experiment [merge] (sim/experiment/Command.cpp), test
-// (sim/scenario_tests/TestCommand.cpp), clean, attach. The command line is
-// declared once, with CLI11 (sim/cli): `simswift [SUBCOMMAND] --help` prints
+// experiment [merge] (app/experiment/Command.cpp), test
+// (app/scenario_tests/TestCommand.cpp), clean, attach. The command line is
+// declared once, with CLI11 (app/cli): `simswift [SUBCOMMAND] --help` prints
 // what the parser reads.
 //
 // Exit codes: 0 success, 1 run failure (watchdog, I/O), 2 bad command line
@@ -21,10 +21,10 @@
 
 #include <unistd.h>
 
-#include "sim/cli/CommandLine.hpp"
-#include "sim/experiment/BehaviourHooks.hpp"
-#include "sim/experiment/Command.hpp"
-#include "sim/scenario_tests/TestCommand.hpp"
+#include "app/cli/CommandLine.hpp"
+#include "app/experiment/BehaviourHooks.hpp"
+#include "app/experiment/Command.hpp"
+#include "app/scenario_tests/TestCommand.hpp"
 #include "sim/lola/LolaServer.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"

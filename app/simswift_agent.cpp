@@ -37,7 +37,7 @@
 #include "agent/program/RobotSetup.hpp"
 #include "agent/behaviour/BehaviourYaml.hpp"
 #include "agent/config/ConfigError.hpp"
-#include "sim/cli/CommandLine.hpp"
+#include "app/cli/CommandLine.hpp"
 
 namespace {
 

@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "BenchResults.hpp"
-#include "sim/experiment/Experiment.hpp"
+#include "app/experiment/Experiment.hpp"
 #include "sim/nao_model/RobotModel.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/ConfigError.hpp"

@@ -30,7 +30,7 @@
 #include "BenchResults.hpp"
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/behaviour/RequestedBehaviour.hpp"
-#include "sim/api/WalkSampling.hpp"
+#include "app/api/WalkSampling.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "simswift/WalkTest.hpp"

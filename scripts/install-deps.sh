@@ -8,9 +8,9 @@ pkgs=(build-essential cmake pkg-config git
       gnuplot-nox parallel
       slurmctld slurmd slurm-client munge   # the Slurm scale-out test (tests/slurm, a one-node cluster)
       python3-dev python3-pybind11 python3-pytest python3-numpy   # Python bindings (python/)
-      libboost-math-dev   # the report's statistics (sim/experiment/Statistics.cpp)
+      libboost-math-dev   # the report's statistics (app/experiment/Statistics.cpp)
       libmsgpack-dev      # the LoLA protocol (sim/lola): msgpack-c
-      libcli11-dev        # the programs' command lines (sim/cli): CLI11, header-only
+      libcli11-dev        # the programs' command lines (app/cli): CLI11, header-only
       libxml2-utils       # xmllint: the JUnit XML of `simswift test` checked against its schema (tests/scenario_tests)
       clang libclang-rt-14-dev)   # libFuzzer targets (docs/testing.md, "Fuzzing the loaders")
 missing=()

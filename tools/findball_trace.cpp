@@ -16,9 +16,9 @@
 #include "agent/blackboard/FindBallInfo.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "sim/programs/Programs.hpp"
-#include "sim/experiment/BehaviourHooks.hpp"
-#include "sim/experiment/Experiment.hpp"
-#include "sim/experiment/Trial.hpp"
+#include "app/experiment/BehaviourHooks.hpp"
+#include "app/experiment/Experiment.hpp"
+#include "app/experiment/Trial.hpp"
 #include "sim/world/World.hpp"
 
 using namespace simswift;

@@ -58,7 +58,7 @@ struct Libagent {
 using LibagentController = std::function<void(const SensorValues& sensors, JointValues& joints, Libagent& libagent)>;
 
 class Simulation;
-struct SimulationAccess;  // the library's own helpers (sim/api), e.g. the walk test kit
+struct SimulationAccess;  // the library's own helpers (app/api), e.g. the walk test kit
 
 // A handle to robot i of a Simulation (valid while it lives).
 class Robot {

@@ -58,7 +58,7 @@ void InlineProgram::posted(Step step, int64_t tick) {
 namespace {
 
 // The controller as the program's Motion step (the public API's types are
-// libagent 2017's layout: sim/api/Simulation.cpp adapts them).
+// libagent 2017's layout: app/api/Simulation.cpp adapts them).
 class ControllerMotion : public agent::framework::MotionGenerator {
  public:
   explicit ControllerMotion(RawController c) : c_(std::move(c)) {}

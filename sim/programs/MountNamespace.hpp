@@ -1,5 +1,5 @@
 // A mount namespace of the calling process's own: an experiment worker's
-// private /dev/shm (sim/experiment/PrivateShm) and a launched LoLA program's
+// private /dev/shm (app/experiment/PrivateShm) and a launched LoLA program's
 // /tmp/robocup (ProgramProcess) start here. When the caller is not root (or
 // root may not unshare), a user namespace mapping it to itself comes first.
 // Syscalls only, so a forked child may call it between fork and exec; the

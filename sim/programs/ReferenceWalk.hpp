@@ -1,6 +1,6 @@
 // The reference robot program's walk (agent/motion/Walk2014Generator) as a
 // bare step, for the public walk test kit's referenceGait()
-// (sim/api/WalkTest.cpp): sim/api may not include the robot program itself.
+// (app/api/WalkTest.cpp): app/api may not include the robot program itself.
 #pragma once
 
 #include <functional>

@@ -34,7 +34,7 @@ std::unique_ptr<bridge::BodySide> makeBody(const RobotSpec& spec, const BodyOpti
     lola::LolaBodyOptions lo;
     // No socket named (an experiment's trial): one of this process's own,
     // so parallel trials of the same robot never meet; in /dev/shm, which a
-    // worker that launches programs makes its own (sim/experiment/
+    // worker that launches programs makes its own (app/experiment/
     // PrivateShm.hpp), so nothing is left there after a kill -9.
     lo.socket_path = !spec.lola_socket.empty() ? spec.lola_socket
                                                : "/dev/shm/simswift-lola-p" + std::to_string(::getpid()) + "-" +

@@ -166,7 +166,7 @@ struct Scenario {
 };
 
 // A robot entry's `actions:` list into rs.setup.actions, rs.pushes and
-// rs.buttons (also the experiment files' script robots, sim/experiment).
+// rs.buttons (also the experiment files' script robots, app/experiment).
 void readActions(const YamlReader& robot, RobotSpec& rs);
 
 // A robot entry's `program:` (builtin, external, or {command: [...], cwd,
@@ -178,7 +178,7 @@ void readActions(const YamlReader& robot, RobotSpec& rs);
 void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir, bool any_body = false);
 
 // The scenario's settings blocks, one reader each (also the experiment
-// files' base settings and their sweeps, sim/experiment): `noise:` (on/off
+// files' base settings and their sweeps, app/experiment): `noise:` (on/off
 // or a map of switches; absent: unchanged), `physics:` (absent: unchanged),
 // `team_comms:` and `game:` (a map each; num_robots: the robots a penalty
 // may name).

@@ -1,5 +1,5 @@
 // runExperiment's errors for a bad experiment file carry the file, line and
-// key as their throw site in sim/experiment set them (the API reads nothing
+// key as their throw site in app/experiment set them (the API reads nothing
 // back out of the message): the file's shape, a sweep path, a swept value.
 #include <gtest/gtest.h>
 

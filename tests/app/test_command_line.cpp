@@ -1,4 +1,4 @@
-// The command lines of simswift and simswift-agent (sim/cli, CLI11): --help
+// The command lines of simswift and simswift-agent (app/cli, CLI11): --help
 // is generated from the declarations the parser reads, so every option a
 // help lists is one the parser takes; an unknown option or a bad number
 // exits with code 2 and a message naming the option; a seed is read by the

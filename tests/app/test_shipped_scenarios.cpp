@@ -35,7 +35,7 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-// A top-level `balls:` key makes a file an experiment (sim/experiment/Experiment.hpp).
+// A top-level `balls:` key makes a file an experiment (app/experiment/Experiment.hpp).
 bool isExperiment(const std::string& text) { return text.rfind("balls:", 0) == 0 || text.find("\nballs:") != std::string::npos; }
 
 std::vector<fs::path> shippedFiles() {

@@ -1,10 +1,10 @@
-// The experiment's robots run agent/behaviour (sim/experiment/BehaviourHooks):
+// The experiment's robots run agent/behaviour (app/experiment/BehaviourHooks):
 // overrides are checked before any trial, naming the behaviour's file and line;
 // a trial's scenario carries the behaviour.
 #include <gtest/gtest.h>
 
-#include "sim/experiment/BehaviourHooks.hpp"
-#include "sim/experiment/Experiment.hpp"
+#include "app/experiment/BehaviourHooks.hpp"
+#include "app/experiment/Experiment.hpp"
 
 using namespace simswift::experiment;
 

@@ -17,8 +17,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "sim/experiment/Batch.hpp"
-#include "sim/experiment/BehaviourHooks.hpp"
+#include "app/experiment/Batch.hpp"
+#include "app/experiment/BehaviourHooks.hpp"
 
 namespace exptest {
 

@@ -21,10 +21,10 @@
 #include <unistd.h>
 
 #include "sim/programs/Programs.hpp"
-#include "sim/experiment/Batch.hpp"
-#include "sim/experiment/Report.hpp"
-#include "sim/experiment/ResultsFolder.hpp"
-#include "sim/experiment/Trial.hpp"
+#include "app/experiment/Batch.hpp"
+#include "app/experiment/Report.hpp"
+#include "app/experiment/ResultsFolder.hpp"
+#include "app/experiment/Trial.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
 
 using namespace simswift;

@@ -7,9 +7,9 @@
 
 #include <sys/wait.h>
 
-#include "sim/experiment/Experiment.hpp"
-#include "sim/experiment/ThesisTables.hpp"
-#include "sim/experiment/BehaviourHooks.hpp"
+#include "app/experiment/Experiment.hpp"
+#include "app/experiment/ThesisTables.hpp"
+#include "app/experiment/BehaviourHooks.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
 #include "tests/support/ConfigErrors.hpp"
 

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "ExperimentTestUtil.hpp"
-#include "sim/experiment/Batch.hpp"
-#include "sim/experiment/PrivateShm.hpp"
+#include "app/experiment/Batch.hpp"
+#include "app/experiment/PrivateShm.hpp"
 
 namespace fs = std::filesystem;
 using exptest::readAll;

@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
-#include "sim/experiment/Experiment.hpp"
-#include "sim/experiment/Sweep.hpp"
+#include "app/experiment/Experiment.hpp"
+#include "app/experiment/Sweep.hpp"
 #include "sim/nao_model/RobotModel.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/FieldConfig.hpp"

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "sim/experiment/Report.hpp"
-#include "sim/experiment/ThesisTables.hpp"
+#include "app/experiment/Report.hpp"
+#include "app/experiment/ThesisTables.hpp"
 
 using namespace simswift::experiment;
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/experiment/Report.hpp"
-#include "sim/experiment/Statistics.hpp"
+#include "app/experiment/Report.hpp"
+#include "app/experiment/Statistics.hpp"
 
 namespace st = simswift::experiment::stats;
 using simswift::experiment::TrialResult;

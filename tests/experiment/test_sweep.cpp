@@ -1,4 +1,4 @@
-// Sweeps (sim/experiment/Sweep.hpp): every combination of swept values is a
+// Sweeps (app/experiment/Sweep.hpp): every combination of swept values is a
 // cell with all the experiment's trials; results are a pure function of the
 // file across --jobs and shards + merge; a swept value changes what the
 // trial runs; bad sweeps are refused naming file, line and key; without a
@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "sim/experiment/Batch.hpp"
-#include "sim/experiment/BehaviourHooks.hpp"
-#include "sim/experiment/Report.hpp"
-#include "sim/experiment/Trial.hpp"
+#include "app/experiment/Batch.hpp"
+#include "app/experiment/BehaviourHooks.hpp"
+#include "app/experiment/Report.hpp"
+#include "app/experiment/Trial.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
 
 using namespace simswift;

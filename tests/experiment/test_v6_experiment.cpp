@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/experiment/Batch.hpp"
-#include "sim/experiment/Experiment.hpp"
+#include "app/experiment/Batch.hpp"
+#include "app/experiment/Experiment.hpp"
 #include "tests/experiment/ExperimentTestUtil.hpp"
 #include "tests/support/ConfigErrors.hpp"
 

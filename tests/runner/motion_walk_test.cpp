@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "sim/api/WalkSampling.hpp"
+#include "app/api/WalkSampling.hpp"
 #include "simswift/WalkTest.hpp"
 #include "tools/motion_harness.hpp"
 

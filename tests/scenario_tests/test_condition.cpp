@@ -3,7 +3,7 @@
 // time, and the errors of a bad condition at file:line: key.
 #include <gtest/gtest.h>
 
-#include "sim/scenario_tests/Condition.hpp"
+#include "app/scenario_tests/Condition.hpp"
 #include "tests/support/ConfigErrors.hpp"
 
 namespace {

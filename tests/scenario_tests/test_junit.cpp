@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "sim/scenario_tests/JUnit.hpp"
+#include "app/scenario_tests/JUnit.hpp"
 #include "tests/support/Shell.hpp"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "sim/scenario_tests/TestReport.hpp"
+#include "app/scenario_tests/TestReport.hpp"
 #include "tests/support/Shell.hpp"
 
 namespace {

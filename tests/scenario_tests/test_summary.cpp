@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "sim/experiment/Statistics.hpp"
-#include "sim/scenario_tests/Summary.hpp"
+#include "app/experiment/Statistics.hpp"
+#include "app/scenario_tests/Summary.hpp"
 
 namespace {
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "sim/scenario_tests/TestFile.hpp"
-#include "sim/scenario_tests/TestRun.hpp"
+#include "app/scenario_tests/TestFile.hpp"
+#include "app/scenario_tests/TestRun.hpp"
 #include "tests/support/ConfigErrors.hpp"
 
 namespace {

@@ -1,0 +1,143 @@
+#include "app/experiment/ForkPool.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <map>
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "sim/bridge/Cleanup.hpp"
+#include "app/experiment/BatchError.hpp"
+#include "app/experiment/Files.hpp"
+#include "app/experiment/PrivateShm.hpp"
+#include "sim/world/ConfigError.hpp"
+
+namespace simswift::experiment {
+
+namespace {
+
+volatile sig_atomic_t g_stop = 0;
+void onSignal(int) { g_stop = 1; }
+
+// The worker process: one trial, messages into its log, then _exit (robot
+// threads that did not answer a watchdog cannot be joined).
+[[noreturn]] void workerMain(const ForkJob& job, int t, bool private_shm) {
+  signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
+  const std::string log = job.logFile(t);
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd >= 0) {
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    close(fd);
+  }
+  int code = 0;
+  try {
+    if (private_shm) {
+      const pid_t parent = getppid();
+      const std::string err = enterPrivateShm();
+      if (!err.empty()) throw BatchError("a private /dev/shm for the trial: " + err);
+      // New credentials may clear the parent-death signal: set it again
+      // (and end if the batch died meanwhile).
+      prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (getppid() != parent) _exit(1);
+    }
+    job.run(t);
+  } catch (const ConfigError& ex) {
+    std::fprintf(stderr, "%s\n", ex.what());
+    code = 2;
+  } catch (const std::exception& ex) {
+    std::fprintf(stderr, "%s\n", ex.what());
+    code = 1;
+  }
+  std::fflush(stdout);
+  std::fflush(stderr);
+  if (code == 0) unlink(log.c_str());
+  bridge::cleanup::removeAll();
+  _exit(code);
+}
+
+// A worker ended: a finished trial is handed to the job, a failed one
+// reported with the end of its log; an interrupted one leaves no log.
+void collect(ForkJob& job, int t, int status, double peak_mb, ForkRun& run) {
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && job.done(t)) {
+    job.finished(t, peak_mb);
+    ++run.ran;
+  } else if (g_stop) {
+    unlink(job.logFile(t).c_str());  // interrupted, not failed
+  } else {
+    const std::string why = WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status))
+                                                : "exit code " + std::to_string(WEXITSTATUS(status));
+    job.failed(t, why + ": " + fileTail(job.logFile(t), 600) + " (log: " + job.logFile(t) + ")");
+    ++run.failed;
+  }
+}
+
+}  // namespace
+
+ForkRun runForked(ForkJob& job, const std::vector<int>& todo, int jobs, bool private_shm) {
+  struct sigaction sa {}, old_int{}, old_term{};
+  sa.sa_handler = onSignal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = 0;  // no SA_RESTART: waitpid returns on a signal
+  g_stop = 0;
+  sigaction(SIGINT, &sa, &old_int);
+  sigaction(SIGTERM, &sa, &old_term);
+
+  ForkRun run;
+  const auto wall0 = std::chrono::steady_clock::now();  // wall clock: reporting only
+  std::map<pid_t, int> running;
+  size_t next = 0;
+  while ((next < todo.size() && !g_stop) || !running.empty()) {
+    while (!g_stop && next < todo.size() && static_cast<int>(running.size()) < jobs) {
+      const int t = todo[next++];
+      const pid_t parent = getpid();
+      const pid_t pid = fork();
+      if (pid < 0) throw BatchError(std::string("fork: ") + std::strerror(errno));
+      if (pid == 0) {
+        // The batch killed (kill -9 included): the worker goes too, and with
+        // it the programs it launched (their own PR_SET_PDEATHSIG,
+        // ProgramProcess.cpp). A batch that died before the prctl: we are
+        // already an orphan, so end now.
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent) _exit(1);
+        workerMain(job, t, private_shm);
+      }
+      running[pid] = t;
+    }
+    if (running.empty()) break;
+    int status = 0;
+    rusage usage{};  // the trial process's own: its peak resident memory
+    const pid_t pid = wait4(-1, &status, 0, &usage);
+    if (pid < 0) {
+      if (errno == EINTR) {
+        if (g_stop)
+          for (const auto& [p, t] : running) kill(p, SIGTERM);  // a signal to us alone: pass it on
+        continue;
+      }
+      throw BatchError(std::string("waitpid: ") + std::strerror(errno));
+    }
+    auto it = running.find(pid);
+    if (it == running.end()) continue;  // not ours
+    const int t = it->second;
+    running.erase(it);
+    const double peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB -> MB
+    run.peak_mb = std::max(run.peak_mb, peak_mb);
+    collect(job, t, status, peak_mb, run);
+  }
+  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  sigaction(SIGINT, &old_int, nullptr);
+  sigaction(SIGTERM, &old_term, nullptr);
+  run.interrupted = g_stop != 0;
+  return run;
+}
+
+}  // namespace simswift::experiment
