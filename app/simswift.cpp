@@ -347,8 +347,7 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
       socket_.empty() ? simswift::runner::defaultLolaSocket(*robot_.team, *robot_.player, false) : socket_;
   const std::string error = simswift::programs::ProgramProcess::enterPrivateRobocup(socket);
   if (!error.empty()) {
-    std::fprintf(stderr, "simswift attach: %s (start the run first: the robot's socket exists while it runs)\n",
-                 error.c_str());
+    std::fprintf(stderr, "simswift attach: %s\n", error.c_str());
     return 1;
   }
   std::vector<char*> argv;

@@ -172,7 +172,7 @@ int main(int argc, char** argv) {
     if (motion_test::downOrGettingUp(st.posture)) fell = true;
     const float* s = h.checked().last_sensed.sensors;
     // Progress of the first attempt: high and upright is good.
-    if (h.motion().getupAttempts() == 1 && h.motion().mode() == agent::motion::MotionModule::Mode::Getup)
+    if (h.motion().getupAttempts() == 1 && h.motion().mode() == agent::motion::ActionMotion::Mode::Getup)
     {
       // Held for 0.5 s (the minimum over the last 50 ticks), so a throw that falls back does not count.
       // --roll scores how far the chest faces down (the torso x axis against
@@ -190,7 +190,7 @@ int main(int argc, char** argv) {
       if (window_h.size() > 50) window_h.erase(window_h.begin());
       if (window_h.size() == 50) best_h = std::max(best_h, *std::min_element(window_h.begin(), window_h.end()));
     }
-    if (one && h.motion().getupAttempts() >= 1 && h.motion().mode() != agent::motion::MotionModule::Mode::Getup &&
+    if (one && h.motion().getupAttempts() >= 1 && h.motion().mode() != agent::motion::ActionMotion::Mode::Getup &&
         !(fell && st.posture == agent::blackboard::BodyState::STANDING))
       break;
     if (!quiet && i % 10 == 0)

@@ -141,7 +141,7 @@ class MotionHarness {
   agent::blackboard::MotionState state() const { return runner_.programs().program(0)->board().motion.read(); }
   // The program's Motion module (its MotionThreadModule's), for what the
   // Motion section does not publish: mode(), getupAttempts(). Read between ticks.
-  const agent::motion::MotionModule& motion() const { return *motion_; }
+  const agent::motion::ActionMotion& motion() const { return *motion_; }
   simswift::runner::Runner& runner() { return runner_; }
   // The limit checks over every tick so far, the last command and sensors.
   const CommandCheck& checked() const { return checked_; }
@@ -156,7 +156,7 @@ class MotionHarness {
  private:
   simswift::runner::Runner runner_;
   std::shared_ptr<agent::behaviour::MotionRequestMailbox> mailbox_;
-  const agent::motion::MotionModule* motion_ = nullptr;
+  const agent::motion::ActionMotion* motion_ = nullptr;
   CommandCheck checked_;
 };
 

@@ -20,7 +20,8 @@
 // That holds for every module, not by convention: ModuleOf is the only class
 // that can derive from Module (its constructors are private), and ModuleOf's
 // run(Blackboard&), the one entry point that sees the whole Blackboard, is
-// final. A module cannot reach the Blackboard but through its In and Out.
+// final, so the framework hands a module only its In and Out. (A module
+// given a Blackboard& some other way could still write it; none is.)
 // tests/agent/framework: the static checks and the compile-fail cases.
 #pragma once
 

@@ -1,8 +1,8 @@
 // The Motion thread's replaceable step. Once per 10 ms tick the robot program
 // hands a generator the latest sensors and the simulated time and sends the
 // joint command it fills (angles rad, stiffnesses 0..1 or -1 limp). The
-// Motion module (agent/motion/MotionModule) is one; the program's held
-// postures and joint scripts (agent/program/MotionGenerator.hpp) are others.
+// Motion module (agent/motion/ActionMotion) is one; the program's held
+// postures and joint scripts (agent/program/ScriptedMotion.hpp) are others.
 #pragma once
 
 #include <cstdint>

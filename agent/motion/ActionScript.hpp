@@ -1,19 +1,13 @@
-// Scripted behaviour for scenarios and tests: a timed list of body actions
-// (walk at forward/left/turn, stand, kick, ...) written to the Blackboard's
-// motion request as simulated time passes. It is a Behaviour module in
-// the Perception thread (30 Hz, frame time), so a scripted robot and a
-// behaving robot reach Motion by the same path. Like any behaviour it obeys
-// the game: while the robot is penalised, or the game is INITIAL, SET or
-// FINISHED, it asks Motion to stand; when released the script's current
-// action resumes.
-// Units: s, mm/s, rad/s, rad.
+// A timed list of body actions (walk at forward/left/turn, stand, kick, ...):
+// what a scenario's or a setup file's `actions:` say, and the action names.
+// agent/behaviour/ActionsBehaviour.hpp plays the list. Units: s, mm/s,
+// rad/s, rad.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "agent/blackboard/Blackboard.hpp"
-#include "agent/framework/Module.hpp"
 
 namespace agent::motion {
 
@@ -22,28 +16,6 @@ struct ActionStep {
   blackboard::BodyCommand body;   // body.type = the action
   bool has_head = false;
   blackboard::HeadCommand head;
-};
-
-// frame (time) + game -> motion request.
-class ScriptedBehaviour
-    : public framework::ModuleOf<framework::Reads<blackboard::FrameInfo, blackboard::GameInfo>,
-                                 framework::Writes<blackboard::MotionRequest>> {
- public:
-  // Steps are sorted by time here; each applies at the first frame at or
-  // after its t. Until the first: STAND.
-  explicit ScriptedBehaviour(std::vector<ActionStep> steps);
-
-  const char* name() const override { return "behaviour (action script)"; }
-
- private:
-  void update(const In& in, Out& out) override;
-  static void request(blackboard::MotionRequest& r, const blackboard::BodyCommand& body,
-                      const blackboard::HeadCommand* head);
-  blackboard::BodyCommand current_;  // the script's action now (STAND before the first)
-  bool held_ = false;                // standing for the game (penalty, INITIAL/SET/FINISHED)
-  std::vector<ActionStep> steps_;
-  size_t next_ = 0;
-  bool started_ = false;
 };
 
 // Parses an action name ("walk", "stand", "kick", "getup_front", "getup_back",

@@ -1,5 +1,5 @@
 // One timed body action of an `actions:` list, as a scenario and the robot
-// program's config file write it (agent/motion/ActionScript.hpp runs them):
+// program's config file write it (agent/behaviour/ActionsBehaviour.hpp plays them):
 //
 //   {t: 1, action: walk, forward: 300, left: 0, turn: 0}       # mm/s, mm/s, rad/s
 //   {t: 6, action: kick, foot: right, power: 1, direction: 0}  # direction rad

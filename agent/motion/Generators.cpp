@@ -285,7 +285,7 @@ std::vector<Keyframe> getupBackFrames(const WalkConfig& cfg) {
                          {0.518f, -1.013f, 1.66f, -1.18f, -0.173f}, {-0.236f, -0.702f, 1.132f, 0.783f, -0.306f}),
                1.0f});
   // Face down now: the front get-up, unchanged (its crouch and stand are the
-  // last two frames, where MotionModule aborts into a safe fall if tipping).
+  // last two frames, where ActionMotion aborts into a safe fall if tipping).
   const std::vector<Keyframe> front = getupFrontFrames(cfg);
   f.insert(f.end(), front.begin(), front.end());
   return f;

@@ -68,8 +68,6 @@ struct CameraLens {
 };
 constexpr CameraLens kV5CameraLens{60.9 * kDeg, 47.6 * kDeg};
 constexpr CameraLens kV6CameraLens{56.3 * kDeg, 43.7 * kDeg};
-constexpr double kCameraHorizontalFov = kV5CameraLens.horizontal_fov;  // rad, the V5's
-constexpr double kCameraVerticalFov = kV5CameraLens.vertical_fov;      // rad, the V5's
 constexpr int kCameraFramesPerSecond = 30;            // both cameras; Perception's rate
 constexpr double kCameraRateHz = kCameraFramesPerSecond;  // Hz
 

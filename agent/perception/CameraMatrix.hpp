@@ -28,7 +28,7 @@ CameraPose cameraPose(const libagent::SensorValues& sensors, nao::Camera camera)
 bool viewAngles(const CameraPose& cam, double x, double y, double* horizontal, double* vertical);
 
 // Whether a ground point (mm, robot frame) lies inside the camera's field of
-// view (60.9 x 47.6 degrees).
+// view through `lens` (the V5's by default; agent/nao/NaoFacts.hpp).
 bool inFieldOfView(const CameraPose& cam, double x, double y,
                    const nao::CameraLens& lens = nao::kV5CameraLens);
 

@@ -1,5 +1,7 @@
 #include "agent/program/ModuleOrder.hpp"
 
+#include "agent/behaviour/ActionsBehaviour.hpp"
+
 #include "agent/random/SplitMix64.hpp"
 
 namespace agent::program {
@@ -28,7 +30,7 @@ void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const liba
   if (cfg.behaviour)
     s.add(T::Perception, std::move(cfg.behaviour));
   else if (!cfg.actions.empty())
-    s.add(T::Perception, std::make_unique<motion::ScriptedBehaviour>(std::move(cfg.actions)));
+    s.add(T::Perception, std::make_unique<behaviour::ActionsBehaviour>(std::move(cfg.actions)));
   s.add(T::Perception, std::make_unique<TeamSendModule>(cfg.team, cfg.player));
 
   // Motion.

@@ -25,7 +25,7 @@
 #include "agent/libagent/SimExtensions.hpp"
 #include "agent/localisation/LocalisationModule.hpp"
 #include "agent/motion/ActionScript.hpp"
-#include "agent/motion/MotionModule.hpp"
+#include "agent/motion/ActionMotion.hpp"
 #include "agent/perception/PerceptionModules.hpp"
 #include "agent/framework/ModuleSchedule.hpp"
 #include "agent/framework/MotionGenerator.hpp"

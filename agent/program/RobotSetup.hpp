@@ -37,7 +37,7 @@
 #include "agent/config/YamlReader.hpp"
 #include "agent/motion/ActionScript.hpp"
 #include "agent/program/ModuleOrder.hpp"
-#include "agent/program/MotionGenerator.hpp"
+#include "agent/program/ScriptedMotion.hpp"
 #include "agent/program/Postures.hpp"
 
 namespace agent::program {

@@ -10,8 +10,8 @@
 #include "agent/comms/TeamReceiver.hpp"
 #include "agent/comms/TeamSender.hpp"
 #include "agent/libagent/GameState.hpp"
-#include "agent/motion/MotionModule.hpp"
-#include "agent/program/MotionGenerator.hpp"
+#include "agent/motion/ActionMotion.hpp"
+#include "agent/program/ScriptedMotion.hpp"
 #include "agent/framework/Module.hpp"
 #include "agent/framework/PerceptionStep.hpp"
 
@@ -30,11 +30,11 @@ class MotionThreadModule
  public:
   explicit MotionThreadModule(const motion::MotionConfig& cfg) : motion_(cfg) {}
   const char* name() const override { return "motion"; }
-  motion::MotionModule& motion() { return motion_; }
+  motion::ActionMotion& motion() { return motion_; }
 
  private:
   void update(const In& in, Out& out) override;
-  motion::MotionModule motion_;
+  motion::ActionMotion motion_;
   libagent::JointValues cmd_{};
 };
 

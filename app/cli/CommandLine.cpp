@@ -47,8 +47,12 @@ CLI::Validator number(double lo, double hi, bool whole) {
                             shortNumber(hi) + "]";
   return CLI::Validator(
       [lo, hi, whole, range](std::string& text) -> std::string {
+        // A whole number is written in decimal digits (a leading '-' allowed),
+        // as a seed is (agent/config/Seed.hpp): no hex, exponent or spaces.
+        const bool digits = !text.empty() && text.find_first_not_of("0123456789", text[0] == '-' ? 1 : 0) ==
+                                                 std::string::npos && text != "-";
         const std::optional<double> v = parseNumber(text);
-        if (!v || !(*v >= lo && *v <= hi) || (whole && *v != std::floor(*v)))
+        if (!v || !(*v >= lo && *v <= hi) || (whole && (*v != std::floor(*v) || !digits)))
           return "bad value '" + text + "' (must be " + range + ")";
         text = whole ? wholeText(*v) : exactText(*v);
         return "";

@@ -22,6 +22,11 @@ std::string enterPrivateShm() {
 }
 
 bool privateShmAvailable(std::string* why) {
+  // No namespace at all (or SIMSWIFT_MOUNT_NAMESPACE=off): no private /dev/shm.
+  if (const programs::NamespaceSupport ns = programs::mountNamespaceSupport(); !ns.available) {
+    if (why) *why = ns.why;
+    return false;
+  }
   int pipefd[2];
   if (pipe(pipefd) != 0) {
     if (why) *why = std::strerror(errno);

@@ -27,7 +27,7 @@ struct Intrinsics {
   // The NAO camera at the given resolution through `lens` (the V5's 60.9 x
   // 47.6 deg, the V6's 56.3 x 43.7 deg: agent/nao/NaoFacts.hpp), principal
   // point at the image centre. fx = (w/2)/tan(hfov/2): ~544.2 px at 640 wide
-  // on a V5, ~599.8 px on a V6; fy from the vertical FOV.
+  // on a V5, ~598.1 px on a V6; fy from the vertical FOV.
   static Intrinsics nao(int width = 640, int height = 480,
                         const agent::nao::CameraLens& lens = agent::nao::kV5CameraLens);
   // A free camera with the given horizontal FOV (rad) and square pixels.

@@ -53,8 +53,9 @@ int enterOwnMountNamespace(const IdMaps& maps, const char** step) {
 
 namespace {
 
-// The probe: a child tries, and reports the step that failed (an index into
-// kSteps) and its errno through its exit status and a pipe.
+// The probe: a child tries, and writes the step that failed (an index into
+// kSteps) and its errno into a pipe; a child that writes nothing (killed)
+// counts as no.
 NamespaceSupport probe() {
   static const char* const kSteps[] = {"unshare(user + mount namespace)", "uid_map/gid_map",
                                        "mount --make-rprivate /"};

@@ -189,12 +189,15 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
 ProgramProcess::~ProgramProcess() { stop(); }
 
 std::string ProgramProcess::enterPrivateRobocup(const std::string& socket_path) {
-  if (access(socket_path.c_str(), F_OK) != 0) return "its LoLA socket " + socket_path + ": " + std::strerror(errno);
+  if (access(socket_path.c_str(), F_OK) != 0)
+    return "its LoLA socket " + socket_path + ": " + std::strerror(errno) +
+           " (start the run first: the robot's socket exists while it runs)";
   if (const int e = robocupMountPoint()) return std::string("/tmp/robocup: ") + std::strerror(e);
   const int err = privateRobocup(socket_path.c_str(), selfIdMaps());
   if (err != 0)
     return std::string("its own /tmp/robocup (mount namespace): ") + std::strerror(err) +
-           " (a program that takes a socket path can be started with " + socket_path + " itself)";
+           " (a program that takes a socket path can be started with " + socket_path +
+           " itself; or give the robot names: bare, its socket is then /tmp/robocup itself)";
   return "";
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "agent/config/YamlReader.hpp"
 #include "agent/program/RobotSetup.hpp"

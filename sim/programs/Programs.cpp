@@ -74,6 +74,10 @@ void Programs::setThreading(ap::Threading threading) {
 void Programs::build(const runner::Scenario& sc, const std::vector<RobotSlot>& slots) {
   if (built_) return;
   built_ = true;
+  // A launched LoLA program this machine cannot give its view is refused
+  // before any program starts.
+  for (const RobotSlot& slot : slots)
+    if (slot.spec->program != RobotSpec::Program::Builtin && slot.spec->launch.launched()) lolaView(slot);
   for (const RobotSlot& slot : slots) {
     Robot& r = robots_[slot.index];
     const RobotSpec& spec = *slot.spec;
@@ -126,6 +130,32 @@ std::unique_ptr<ProgramDriver> Programs::makeBuiltin(const runner::Scenario& sc,
   return std::make_unique<ThreadedProgram>(slot, std::move(pc));
 }
 
+// A launched LoLA program sees its robot's socket at /tmp/robocup, in a
+// mount namespace of its own (ProgramProcess). Not needed when the robot's
+// socket is the machine's /tmp/robocup itself (names: bare). Where the
+// machine gives no namespace, a program that takes its socket's path
+// ({socket} in its command or environment) is given the real path instead;
+// an unchanged one cannot run (docs/lola.md): ProgramError.
+Programs::LolaView Programs::lolaView(const RobotSlot& slot) {
+  LolaView view;
+  if (slot.host->interface() != bridge::BodyInterface::Lola) return view;
+  const std::string socket = slot.host->endpoint();
+  if (socket == agent::lola::kDefaultSocketPath) return view;
+  const NamespaceSupport ns = mountNamespaceSupport();
+  if (ns.available) {
+    view.robocup = socket;
+  } else if (slot.spec->launch.names("socket")) {
+    view.socket_placeholder = socket;
+  } else {
+    throw ProgramError("robot " + slot.tag + ": this machine gives its program no mount namespace of its own (" +
+                           ns.why + "), so an unchanged LoLA program cannot see its robot's socket at " +
+                           "/tmp/robocup: put {socket} in its command (it becomes " + socket +
+                           ") or give the robot names: bare (its socket is then /tmp/robocup itself)",
+                       slot.tag + ": program could not be started");
+  }
+  return view;
+}
+
 // A launched robot's program: started with its names, seed and setup
 // filled into its command, its output in program_logs/<tag>.log. It
 // attaches by name like any external program (the first tick waits).
@@ -147,30 +177,9 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const runner::Scenario& sc
                  {"player", std::to_string(spec.player)},
                  {"seed", std::to_string(runner::programSeed(sc.seed, slot.index))},
                  {"config", std::filesystem::absolute(config).string()}});
-  // A LoLA program sees its robot's socket at /tmp/robocup, in a mount
-  // namespace of its own (ProgramProcess). Not needed when the robot's
-  // socket is the machine's /tmp/robocup itself (names: bare). Where the
-  // machine gives no namespace, a program that takes its socket's path
-  // ({socket} in its command or environment) is given the real path
-  // instead; an unchanged one cannot run (docs/lola.md).
-  std::string robocup;
-  if (slot.host->interface() == bridge::BodyInterface::Lola) {
-    const std::string socket = slot.host->endpoint();
-    if (socket != agent::lola::kDefaultSocketPath) {
-      const NamespaceSupport ns = mountNamespaceSupport();
-      if (ns.available) {
-        robocup = socket;
-      } else if (spec.launch.names("socket")) {
-        values["socket"] = socket;
-      } else {
-        throw ProgramError("robot " + slot.tag + ": this machine gives its program no mount namespace of its own (" +
-                               ns.why + "), so an unchanged LoLA program cannot see its robot's socket at " +
-                               "/tmp/robocup: put {socket} in its command (it becomes " + socket +
-                               ") or give the robot names: bare (its socket is then /tmp/robocup itself)",
-                           slot.tag + ": program could not be started");
-      }
-    }
-  }
+  const LolaView view = lolaView(slot);
+  if (!view.socket_placeholder.empty()) values["socket"] = view.socket_placeholder;
+  const std::string& robocup = view.robocup;
   std::vector<std::string> argv;
   for (const std::string& a : spec.launch.command) argv.push_back(ProgramProcess::fill(a, values));
   argv[0] = ProgramProcess::resolveCommand(argv[0], sc.base_dir);

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/program/MotionGenerator.hpp"
+#include "agent/program/ScriptedMotion.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "sim/programs/BuiltinProgram.hpp"
 #include "sim/programs/ProgramDriver.hpp"
@@ -95,6 +95,14 @@ class Programs {
   Robot& overrideSlot(int robot, const char* what);
   std::unique_ptr<ProgramDriver> makeBuiltin(const runner::Scenario& sc, const RobotSlot& slot, Robot& r);
   std::unique_ptr<ProgramDriver> makeLaunched(const runner::Scenario& sc, const RobotSlot& slot);
+  // How a launched LoLA program sees its socket: `robocup` to bind onto
+  // /tmp/robocup in its own mount namespace (empty: none needed), or the
+  // socket's real path as {socket} where the machine gives no namespace.
+  struct LolaView {
+    std::string robocup;
+    std::string socket_placeholder;
+  };
+  static LolaView lolaView(const RobotSlot& slot);
 
   std::vector<Robot> robots_;
   agent::program::Threading threading_ = agent::program::Threading::Named;

@@ -1,7 +1,7 @@
 // The simulator's one fall detector (run statistics, tests): a robot is down
 // once its torso frame origin drops below kFallHeight and up again above
 // kStandHeight (hysteresis, so lying still or getting up counts one fall).
-// The robot code has its own, from its sensors (agent/motion MotionModule);
+// The robot code has its own, from its sensors (agent/motion ActionMotion);
 // this one is ground truth from the physics.
 //
 // Attribution: a fall counts as a robot-contact fall too (contact_falls) if

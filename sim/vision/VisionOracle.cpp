@@ -116,7 +116,7 @@ CameraMount cameraMount(int camera) {
   if (camera != 0 && camera != 1) throw std::invalid_argument("vision: camera must be 0 (top) or 1 (bottom)");
   const agent::nao::CameraMount& m =
       agent::nao::cameraMount(camera == 0 ? agent::nao::Camera::Top : agent::nao::Camera::Bottom);
-  return {Eigen::Vector3d(m.x, m.y, m.z) * 1e-3, m.pitch_down};
+  return {Eigen::Vector3d(m.x, m.y, m.z) / 1000.0, m.pitch_down};  // mm -> m (exact for these four)
 }
 
 VisionOracle::VisionOracle(const FieldConfig& field, VisionConfig config, uint64_t seed)

@@ -14,8 +14,8 @@
 // Per camera, in this fixed order (observeCamera, one stage per kind of object):
 //  1. Camera pose = head link pose (HeadPitch child) x mounting (rUNSWift 2017 release, robot/libagent
 //     section 1), plus the per-robot camera position error (table 3.1).
-//  2. Candidates, each tested for: inside the image rectangle (60.9 x 47.6
-//     deg), distance from the feet within [min, max], no robot (other than
+//  2. Candidates, each tested for: inside the image rectangle (the robot's
+//     lens: VisionConfig::hfov_deg x vfov_deg), distance from the feet within [min, max], no robot (other than
 //     the observer and the object itself) or goal post within
 //     occlusion_margin_mm of the line of sight from the camera, and a Bernoulli draw with the detection probability.
 //     Ball; goal posts (base); robots (torso, reported at the feet); marks;

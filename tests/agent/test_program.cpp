@@ -8,7 +8,7 @@
 #include <thread>
 
 #include "agent/libagent/SharedNames.hpp"
-#include "agent/program/MotionGenerator.hpp"
+#include "agent/program/ScriptedMotion.hpp"
 #include "agent/program/Postures.hpp"
 #include "agent/program/RobotProgram.hpp"
 

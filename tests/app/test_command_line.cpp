@@ -116,6 +116,8 @@ TEST(CommandLine, ABadNumberExitsTwoNamingTheOption) {
   expectRefused(run + " --seed 0x10", "--seed: must be a whole number");
   expectRefused(run + " --watchdog soon", "--watchdog: bad value 'soon'");
   expectRefused(run + " --dump-frames /tmp/x --every 1.5", "--every: bad value '1.5' (must be a whole number");
+  expectRefused(kSimswift + " clean --team 0x13 --player 1", "--team: bad value '0x13' (must be a whole number");
+  expectRefused(kSimswift + " clean --team 1.9e1 --player 1", "--team: bad value '1.9e1' (must be a whole number");
   expectRefused(run + " --print-hash-every 0", "--print-hash-every: bad value '0'");
   expectRefused(run + " --resolution 320x240", "--resolution: must be 640x480 or 1280x960 (got '320x240')");
   expectRefused(kSimswift + " experiment x.yaml --jobs 0", "--jobs: must be a whole number in [1, 1000000] (got '0')");

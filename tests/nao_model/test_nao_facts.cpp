@@ -104,8 +104,9 @@ TEST(NaoFacts, CamerasSitOnTheFaceOfTheHead) {
   // The bottom camera looks further down than the top one and the two views
   // overlap only a little (the bottom's upper edge is above the top's lower edge).
   EXPECT_GT(nao::kBottomCamera.pitch_down, nao::kTopCamera.pitch_down);
-  EXPECT_LT(nao::kBottomCamera.pitch_down - nao::kCameraVerticalFov / 2,
-            nao::kTopCamera.pitch_down + nao::kCameraVerticalFov / 2);
+  // The same with the V6's narrower lens (the same mounts).
+  for (const nao::CameraLens& lens : {nao::kV5CameraLens, nao::kV6CameraLens})
+    EXPECT_LT(nao::kBottomCamera.pitch_down - lens.vertical_fov / 2, nao::kTopCamera.pitch_down + lens.vertical_fov / 2);
 }
 
 TEST(NaoFacts, LegKinematicsReachTheUrdfSole) {

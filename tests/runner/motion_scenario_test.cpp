@@ -1,5 +1,5 @@
 // The scenario hook for Motion: a robot's `actions:` list (body actions over
-// time and pushes) drives the MotionModule inside the runner.
+// time and pushes) drives the ActionMotion inside the runner.
 #include <gtest/gtest.h>
 
 #include <cmath>

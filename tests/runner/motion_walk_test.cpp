@@ -1,4 +1,4 @@
-// Motion in physics: the MotionModule drives the simulated NAO
+// Motion in physics: the ActionMotion drives the simulated NAO
 // through the libagent block only; the test plays Behaviour through the
 // Blackboard. Seeded, noise on. Achieved figures are printed.
 // Units: m / rad in the field frame, mm/s and rad/s for commands.

@@ -57,7 +57,7 @@ struct NoMotion : agent::framework::MotionGenerator {
 
 // The behaviour takes the scenario's posture's place in the Perception
 // thread; Motion is the standard Motion module, not the posture generator.
-TEST(RunnerBehaviour, RunsInTheBehaviourSlotWithTheStandardMotionModule) {
+TEST(RunnerBehaviour, RunsInTheBehaviourSlotWithTheStandardActionMotion) {
   Runner r(standingRobot());
   r.programs().setThreading(ap::Threading::Inline);
   r.programs().setBehaviour(0, std::make_unique<ab::RequestedBehaviour>());
@@ -122,7 +122,7 @@ TEST(RunnerBehaviour, LastCommandIsWhatTheProgramSent) {
 }
 
 // The test's MotionConfig is the Motion module's.
-TEST(RunnerBehaviour, MotionConfigReachesTheMotionModule) {
+TEST(RunnerBehaviour, MotionConfigReachesTheActionMotion) {
   agent::motion::MotionConfig cfg;
   cfg.max_getup_attempts = 2;
   cfg.kick.ankle_roll_margin = -1.0;

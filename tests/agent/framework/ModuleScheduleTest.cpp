@@ -102,9 +102,10 @@ namespace {
 // Compiles case `n` of compile_fail/module_contract.cc with the build's
 // compiler; returns the exit status and the compiler's messages.
 int compileCase(int n, std::string* messages) {
-  const std::string cmd = std::string(SIMSWIFT_CXX_COMPILER) + " -std=c++17 -fsyntax-only -x c++ -I" +
-                          SIMSWIFT_SOURCE_DIR + " -DCASE=" + std::to_string(n) + " " + SIMSWIFT_SOURCE_DIR +
-                          "/tests/agent/framework/compile_fail/module_contract.cc 2>&1";
+  const std::string src = SIMSWIFT_SOURCE_DIR;
+  const std::string cmd = "'" + std::string(SIMSWIFT_CXX_COMPILER) + "' -std=c++17 -fsyntax-only -x c++ '-I" + src +
+                          "' -DCASE=" + std::to_string(n) + " '" + src +
+                          "/tests/agent/framework/compile_fail/module_contract.cc' 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return -1;
   char buf[512];
@@ -132,7 +133,10 @@ TEST(ModuleOf, EveryWayRoundTheContractIsACompileError) {
   for (const auto& c : cases) {
     std::string m;
     EXPECT_NE(compileCase(c.n, &m), 0) << c.what << " compiled";
+#if defined(__GNUC__) && !defined(__clang__)
+    // The reason, in GCC's words (the build's compiler is the test's).
     EXPECT_NE(m.find(c.expect), std::string::npos) << c.what << ":\n" << m;
+#endif
   }
 }
 

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "agent/libagent/Inertial.hpp"
-#include "agent/motion/MotionModule.hpp"
+#include "agent/motion/ActionMotion.hpp"
 #include "agent/motion/Walk2014Generator.hpp"
 
 using namespace agent::motion;
@@ -70,7 +70,7 @@ TEST(InertialReaders, HeadingRateOfALeftTurnIsPositive) {
 // give a positive turn of about 0.4 rad/s times the stepping time.
 TEST(InertialReaders, WalkOdometryTurnsTheWayTheBodyTurns) {
   for (double wz : {0.4, -0.4}) {
-    MotionModule motion;
+    ActionMotion motion;
     bb::MotionRequest req;
     req.body.type = bb::ActionType::WALK;
     req.body.turn = static_cast<float>(wz);
@@ -95,7 +95,7 @@ TEST(InertialReaders, WalkOdometryTurnsTheWayTheBodyTurns) {
 // settle_rate (0.6 rad/s). On a V5 the raw GyrY holds counts (~134.6 per
 // rad/s): 0.3 rad/s is 40 counts, which is still.
 TEST(InertialReaders, LyingStillIsReadFromTheCalibratedGyroscope) {
-  MotionModule motion;
+  ActionMotion motion;
   bb::MotionRequest req;
   req.body.type = bb::ActionType::STAND;
   motion.setRequest(req);
@@ -105,11 +105,11 @@ TEST(InertialReaders, LyingStillIsReadFromTheCalibratedGyroscope) {
   s.sensors[S::InertialSensor_AngleY] = 0.9f;  // tipping forward fast
   setRates(s, 0, 3.0, 0);
   motion.tickSeconds(s, 0.5, cmd);
-  ASSERT_EQ(motion.mode(), MotionModule::Mode::Falling);
+  ASSERT_EQ(motion.mode(), ActionMotion::Mode::Falling);
   s.sensors[S::InertialSensor_AngleY] = 1.5f;  // face down, rocking slightly
   setRates(s, 0.1, 0.3, 0);
   double t = 0.51;
   for (int i = 0; i < 60; ++i, t += 0.01) motion.tickSeconds(s, t, cmd);
-  EXPECT_EQ(motion.mode(), MotionModule::Mode::Getup);
+  EXPECT_EQ(motion.mode(), ActionMotion::Mode::Getup);
   EXPECT_EQ(motion.state().active, bb::ActionType::GETUP_FRONT);
 }

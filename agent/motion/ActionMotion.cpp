@@ -1,4 +1,4 @@
-#include "agent/motion/MotionModule.hpp"
+#include "agent/motion/ActionMotion.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,23 +12,23 @@ namespace S = libagent::Sensors;
 using blackboard::ActionType;
 using blackboard::BodyState;
 
-MotionModule::MotionModule(const MotionConfig& cfg)
+ActionMotion::ActionMotion(const MotionConfig& cfg)
     : cfg_(cfg), walk_(cfg.walk), kick_(cfg.walk, cfg.kick) {
   body_.type = ActionType::STAND;
 }
 
-void MotionModule::tick(const libagent::SensorValues& sensors, int64_t sim_time_us, libagent::JointValues& out) {
+void ActionMotion::tick(const libagent::SensorValues& sensors, int64_t sim_time_us, libagent::JointValues& out) {
   tickSeconds(sensors, static_cast<double>(sim_time_us) * 1e-6, out);
 }
 
-void MotionModule::startTransitionToStand(const libagent::JointValues& from) {
+void ActionMotion::startTransitionToStand(const libagent::JointValues& from) {
   JointArray a{};
   for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = from.angles[i];
   keyframes_.start({{cfg_.transition_time, walkStandAngles(cfg_.walk), 1.0f}}, a);
   mode_ = Mode::Transition;
 }
 
-void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double time_s, libagent::JointValues& out) {
+void ActionMotion::tickSeconds(const libagent::SensorValues& sensors, double time_s, libagent::JointValues& out) {
   // The tick length from the simulated clock; 10 ms if it did not advance.
   double dt = kMotionTick;
   if (last_time_ >= 0 && time_s > last_time_) dt = std::min(0.1, time_s - last_time_);
@@ -252,7 +252,7 @@ void MotionModule::tickSeconds(const libagent::SensorValues& sensors, double tim
   publish(req, time_s, stepping);
 }
 
-void MotionModule::publish(const blackboard::MotionRequest& req, double time_s, bool stepping) {
+void ActionMotion::publish(const blackboard::MotionRequest& req, double time_s, bool stepping) {
   blackboard::MotionState st;
   st.odometry = odometry_;
   st.posture = posture_;

@@ -39,9 +39,9 @@ struct MotionConfig {
   std::vector<Keyframe> getup_front, getup_back;
 };
 
-class MotionModule : public framework::MotionGenerator {
+class ActionMotion : public framework::MotionGenerator {
  public:
-  explicit MotionModule(const MotionConfig& cfg = MotionConfig());
+  explicit ActionMotion(const MotionConfig& cfg = MotionConfig());
 
   // The Behaviour's request, followed from the next tick on (a NONE body
   // keeps the current body command).

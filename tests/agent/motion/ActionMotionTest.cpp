@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "agent/motion/MotionModule.hpp"
+#include "agent/motion/ActionMotion.hpp"
 
 using namespace agent::motion;
 namespace J = agent::libagent::Joints;
@@ -176,8 +176,8 @@ TEST(Kick, ArmsSwingAgainstTheLegAndNoJointIsSentToItsStop) {
   }
 }
 
-TEST(MotionModule, WalksPublishesOdometryAndStaysWithinLimits) {
-  MotionModule motion;
+TEST(ActionMotion, WalksPublishesOdometryAndStaysWithinLimits) {
+  ActionMotion motion;
   bb::MotionRequest req;
   req.body.type = bb::ActionType::WALK;
   req.body.forward = 250;
@@ -209,8 +209,8 @@ TEST(MotionModule, WalksPublishesOdometryAndStaysWithinLimits) {
   EXPECT_EQ(st.tick, 500);
 }
 
-TEST(MotionModule, FallGoesLimpThenGetsUpFromTheRightSide) {
-  MotionModule motion;
+TEST(ActionMotion, FallGoesLimpThenGetsUpFromTheRightSide) {
+  ActionMotion motion;
   bb::MotionRequest req;
   req.body.type = bb::ActionType::STAND;
   motion.setRequest(req);
@@ -221,7 +221,7 @@ TEST(MotionModule, FallGoesLimpThenGetsUpFromTheRightSide) {
   s.sensors[S::InertialSensor_AngleY] = 0.9f;
   s.sensors[S::InertialSensor_GyrY] = 3.0f;
   motion.tickSeconds(s, 0.5, cmd);
-  EXPECT_EQ(motion.mode(), MotionModule::Mode::Falling);
+  EXPECT_EQ(motion.mode(), ActionMotion::Mode::Falling);
   EXPECT_EQ(motion.state().posture, bb::BodyState::FALLING);
   for (int i = 0; i < agent::libagent::kNumJoints; ++i) EXPECT_LE(cmd.stiffnesses[i], 0.0f);
   // Lying face down and still: the front get-up starts.
@@ -229,19 +229,19 @@ TEST(MotionModule, FallGoesLimpThenGetsUpFromTheRightSide) {
   s.sensors[S::InertialSensor_GyrY] = 0.0f;
   double t = 0.51;
   for (int i = 0; i < 40; ++i, t += 0.01) motion.tickSeconds(s, t, cmd);
-  EXPECT_EQ(motion.mode(), MotionModule::Mode::Getup);
+  EXPECT_EQ(motion.mode(), ActionMotion::Mode::Getup);
   EXPECT_EQ(motion.state().active, bb::ActionType::GETUP_FRONT);
   // Pretend it worked: upright again at the end of the sequence.
   s.sensors[S::InertialSensor_AngleY] = 0.0f;
-  for (int i = 0; i < 800 && motion.mode() == MotionModule::Mode::Getup; ++i, t += 0.01)
+  for (int i = 0; i < 800 && motion.mode() == ActionMotion::Mode::Getup; ++i, t += 0.01)
     motion.tickSeconds(s, t, cmd);
-  EXPECT_EQ(motion.mode(), MotionModule::Mode::Walk);
+  EXPECT_EQ(motion.mode(), ActionMotion::Mode::Walk);
   EXPECT_EQ(motion.state().posture, bb::BodyState::STANDING);
   EXPECT_EQ(motion.getupAttempts(), 1);
 }
 
-TEST(MotionModule, BackFallChoosesBackGetupAndDeadIsLimp) {
-  MotionModule motion;
+TEST(ActionMotion, BackFallChoosesBackGetupAndDeadIsLimp) {
+  ActionMotion motion;
   agent::libagent::JointValues cmd{};
   agent::libagent::SensorValues s = standingSensors(cmd);
   s.sensors[S::InertialSensor_AngleY] = -1.5f;
@@ -255,8 +255,8 @@ TEST(MotionModule, BackFallChoosesBackGetupAndDeadIsLimp) {
   for (int i = 0; i < agent::libagent::kNumJoints; ++i) EXPECT_EQ(cmd.stiffnesses[i], -1.0f);
 }
 
-TEST(MotionModule, KickRequestRunsTheKickOnce) {
-  MotionModule motion;
+TEST(ActionMotion, KickRequestRunsTheKickOnce) {
+  ActionMotion motion;
   bb::MotionRequest req;
   req.body.type = bb::ActionType::KICK;
   req.body.foot = bb::Foot::LEFT;
@@ -269,21 +269,21 @@ TEST(MotionModule, KickRequestRunsTheKickOnce) {
   for (int i = 0; i < 600; ++i, t += 0.01) {
     motion.tickSeconds(s, t, cmd);
     s.joints = cmd;
-    if (motion.mode() == MotionModule::Mode::Kick) {
+    if (motion.mode() == ActionMotion::Mode::Kick) {
       kicked = true;
       EXPECT_EQ(motion.state().support_foot, bb::Foot::RIGHT);
     }
   }
   EXPECT_TRUE(kicked);
-  EXPECT_EQ(motion.mode(), MotionModule::Mode::Walk);  // once, not repeated
+  EXPECT_EQ(motion.mode(), ActionMotion::Mode::Walk);  // once, not repeated
 }
 
 // lifted_weight is compared with the FSRs' sum in kg (their unit): a robot
 // walking on its 5.3 kg keeps stepping; one whose feet carry 2.4 kg (picked
 // up by the torso) for more than 0.5 s is asked to stop.
-TEST(MotionModule, PickedUpInKgStopsWalkingFullWeightDoesNot) {
+TEST(ActionMotion, PickedUpInKgStopsWalkingFullWeightDoesNot) {
   for (const float per_sensor : {0.66f, 0.3f}) {  // kg each of 8: 5.3 kg, 2.4 kg
-    MotionModule motion;
+    ActionMotion motion;
     bb::MotionRequest req;
     req.body.type = bb::ActionType::WALK;
     req.body.forward = 200;

@@ -1,4 +1,4 @@
-#include "agent/program/MotionGenerator.hpp"
+#include "agent/program/ScriptedMotion.hpp"
 
 #include <algorithm>
 
