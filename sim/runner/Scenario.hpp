@@ -13,7 +13,8 @@
 //   attach_timeout: 30             # s of wall clock to wait for external robots
 //   program_logs: simswift-logs    # folder of launched programs' logs (<tag>.log) and setups
 //   base_dir: /path/to/simswift    # optional; where relative model/field paths resolve first
-//   physics: {substeps: 2, solver: quick|exact, iterations: 20}  (defaults: WorldConfig)
+//   physics: {substeps: 3, solver: quick|exact, iterations: 20}  (defaults: WorldConfig;
+//                                  substeps per tick, default: steps of at most 5 ms)
 //   camera:                        # rendering is off unless asked (here or by CLI flags)
 //     enabled: on                  # render both NAO cameras of every robot at 30 Hz
 //     resolution: 640x480          # or 1280x960
@@ -185,8 +186,9 @@ struct Scenario {
   double watchdog_s = 5.0;        // wall-clock s per robot thread answer; 0 = off (watchdog: off)
   double attach_timeout_s = 30.0; // wall-clock s to wait for external robots
   std::string program_logs = "simswift-logs";  // launched programs' logs (relative: to the working folder)
-  // Physics defaults follow WorldConfig (QuickStep, 2 x 5 ms; World.cpp says why).
-  int substeps = WorldConfig{}.substeps;
+  // Physics defaults follow WorldConfig (QuickStep, steps of at most 5 ms:
+  // 2 per 10 ms tick, 3 per 12 ms; World.cpp says why).
+  int substeps = WorldConfig{}.substeps;  // 0: WorldConfig's rule
   std::string solver = WorldConfig{}.solver == WorldConfig::Solver::Quick ? "quick" : "exact";
   int quick_iterations = WorldConfig{}.quick_iterations;
   CameraSpec camera;
