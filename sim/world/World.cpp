@@ -3,7 +3,8 @@
 // FieldGeometry.cpp, the hash in StateHash.cpp.
 //
 // SOLVER AND SUBSTEPS (WorldConfig defaults): dWorldQuickStep, 20
-// iterations, over-relaxation 1.7, 2 substeps of 5 ms, with RobotBody's inertia floor
+// iterations, over-relaxation 1.7, substeps of at most 5 ms (2 x 5 ms per
+// 10 ms tick; "Step length" below for other ticks), with RobotBody's inertia floor
 // (ServoConfig::min_link_inertia = 5e-4 kg m^2, the motors' reflected rotor
 // inertia). Why, measured with the URDF NAO holding a knee-bent stand for
 // 10 s (CPU-time real-time factor for 1 / 3 / 10 robots, no sensors, on a
@@ -101,8 +102,36 @@
 // 100-109 / 150-159). Without the creep the walk needs no lengthened
 // steps: WalkConfig::horizontal_fraction went from 0.9 back toward
 // Walk2014's 1.0 (0.97).
+//
+// Step length (WorldConfig::max_substep_us). Everything above was measured
+// with 5 ms steps; the V6's 12 ms tick (LoLA) first ran as 2 x 6 ms, and
+// at 20 iterations QuickStep's residual grows with the step. Measured with
+// walk_one.yaml's push at 18 s (seeds 101-140; torso pitch AngleY, rad, as
+// the front get-up hands over to the stand: the robot's own figure, < 0
+// leaning back; "again": fell or aborted a get-up after standing up):
+//
+//   body  tick, steps           mean    sd     lowest  again
+//   V6    10 ms, 2 x 5 ms      -0.035  0.021  -0.107   0 / 40
+//   V6    10 ms, 3 x 3.3 ms    -0.029  0.022  -0.074   0
+//   V6    12 ms, 2 x 6 ms      -0.071  0.058  -0.290   3      (the V6 before)
+//   V6    12 ms, 3 x 4 ms      -0.021  0.018  -0.060   0      (CHOSEN)
+//   V6    12 ms, 4 x 3 ms      -0.020  0.026  -0.157   1
+//   V6    12 ms, 2 x 6 ms, 30 / 40 iterations: -0.039 / -0.029, sd 0.020 / 0.021, 0
+//   V5    10 ms, 2 x 5 ms      -0.046  0.017  -0.082   0
+//   V5    12 ms, 2 x 6 ms      -0.077  0.024  -0.147   0
+//   V5    12 ms, 3 x 4 ms      -0.041  0.019  -0.080   0
+//
+// Steps of 5 ms and shorter agree; 6 ms steps end the get-up leaning
+// back 0.04 rad more on either body, spread three times as wide on the V6,
+// whose stand then rolls back over its heels. Making the step-dependent
+// constants per second instead (the contact surface's ERP/CFM, the world's,
+// the sole anchors' 0.2, the servo's discrete P loop) did not help; more
+// iterations or shorter steps did. Shorter steps keep every setting above
+// where it was measured, so a tick takes the fewest steps of at most 5 ms
+// (the V5's 10 ms: 2, unchanged; the V6's 12 ms: 3, a quarter more physics
+// per simulated second than the V5).
 
-// ORDER OF ONE TICK (step()), fixed; each substep of dt = 10 ms / substeps:
+// ORDER OF ONE TICK (step()), fixed; each substep of dt = tick / substeps:
 //   1. checkBlowUps      a robot or the ball with NaN/inf, absurd speed or far
 //                        away is reset (+ WorldEvent) BEFORE it is integrated:
 //                        ODE aborts (dxNormalize3/4) rather than returning
@@ -155,7 +184,8 @@ std::optional<WorldConfigProblem> checkWorldConfig(const WorldConfig& c) {
     bad = WorldConfigProblem{field, r.describe() + " (got " + got.str() + ")"};
   };
   const Range unit = Range::closed(0, 1);
-  rule("substeps", c.substeps, Range::closed(1, 100));
+  rule("substeps", c.substeps, Range::closed(0, 100));  // 0: the fewest steps of at most max_substep_us
+  rule("max_substep_us", static_cast<double>(c.max_substep_us), Range::closed(100, 100000));  // us
   rule("tick_us", static_cast<double>(c.tick_us), Range::closed(1000, 100000));  // us
   rule("quick_iterations", c.quick_iterations, Range::closed(1, 1000));
   rule("quick_w", c.quick_w, Range{0.0, 2.0, true, true});  // QuickStep's over-relaxation converges in (0, 2)
@@ -206,7 +236,7 @@ World::World(const FieldConfig& field, const WorldConfig& config)
   dMassSetSphereTotal(&m, field_.ball.mass, r);
   dBodySetMass(impl_->ball, &m);
   // ODE's damping is a per-step fraction of velocity removed: rate (1/s) * dt.
-  dBodySetLinearDamping(impl_->ball, field_.ball.linear_damping * tickSeconds() / config_.substeps);
+  dBodySetLinearDamping(impl_->ball, field_.ball.linear_damping * tickSeconds() / substeps());
   impl_->ball_geom = dCreateSphere(space_, r);
   dGeomSetBody(impl_->ball_geom, impl_->ball);
   dGeomSetData(impl_->ball_geom, &impl_->ball_tag);
@@ -317,7 +347,7 @@ void World::applyImpulse(int robot, const Eigen::Vector3d& impulse) {
 }
 
 void World::step() {
-  const int n = config_.substeps;
+  const int n = substeps();
   const double dt = tickSeconds() / n;
   contacts_.clear();
   for (int sub = 0; sub < n; ++sub) {

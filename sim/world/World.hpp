@@ -1,7 +1,7 @@
 // The ODE world: field, ball, robots, contacts, fixed-step stepping and the
-// state hash. One world, single-threaded. `step()` advances one 10 ms motion
-// tick made of a whole number of substeps; its order is fixed and commented in
-// World.cpp.
+// state hash. One world, single-threaded. `step()` advances one tick
+// (WorldConfig::tick_us: 10 ms on the V5, 12 ms on the V6) made of a whole
+// number of substeps; its order is fixed and commented in World.cpp.
 #pragma once
 
 #include <ode/ode.h>
@@ -33,7 +33,18 @@ struct WorldConfig {
   // us per tick: the robots' cycle, their body interface's (libagent on the
   // V5 10 ms, LoLA on the V6 12 ms; sim/runner/Bodies.hpp bodyCycleUs).
   int64_t tick_us = agent::nao::kMotionTickUs;
-  int substeps = 2;                  // physics steps per tick
+  // Physics steps per tick. 0: the fewest that keep each step within
+  // max_substep_us (a 10 ms tick: 2 x 5 ms; the V6's 12 ms: 3 x 4 ms); a
+  // positive count is taken as given (a scenario's `physics: {substeps}`).
+  // Every setting here was measured with 5 ms steps (World.cpp), and
+  // QuickStep's residual at its 20 iterations grows with the step: 2 x 6 ms
+  // tipped pushed-over V6s and V5s back at the end of their get-ups, and
+  // some V6s fell (World.cpp, "Step length").
+  int substeps = 0;
+  int64_t max_substep_us = 5000;     // us
+  int substepsPerTick() const {
+    return substeps > 0 ? substeps : static_cast<int>((tick_us + max_substep_us - 1) / max_substep_us);
+  }
   int quick_iterations = 20;
   double quick_w = 1.7;              // QuickStep's over-relaxation (ODE's default 1.3), see World.cpp
   double erp = 0.8;
@@ -147,7 +158,7 @@ class World {
   // The ball body's orientation (world frame); drawn by the cameras.
   Eigen::Quaterniond ballOrientation() const;
 
-  // Advances one 10 ms tick. Detects blow-ups before every substep and after
+  // Advances one tick (tickUs()). Detects blow-ups before every substep and after
   // the last (NaN/inf, speed beyond the limits, farther than max_distance),
   // before ODE can reach a state it aborts on: the robot (or ball) is reset
   // to where it was last placed and an event is recorded; the run goes on.
@@ -156,6 +167,7 @@ class World {
   double time() const { return tick_ * tickSeconds(); }  // s
   int64_t tickUs() const { return config_.tick_us; }    // us per tick (WorldConfig::tick_us)
   double tickSeconds() const { return config_.tick_us * 1e-6; }
+  int substeps() const { return config_.substepsPerTick(); }  // physics steps per tick
   // Ticks in `seconds` of simulated time (rounded to the nearest).
   int64_t ticksIn(double seconds) const { return agent::nao::ticksIn(seconds, config_.tick_us); }
 

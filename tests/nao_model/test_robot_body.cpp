@@ -23,7 +23,7 @@ namespace {
 
 constexpr double kDt = simswift::kTickSeconds;  // s, one World::step (a tick)
 // s, one physics substep of the production World (5 ms)
-const double kSubstep = simswift::kTickSeconds / simswift::WorldConfig{}.substeps;
+const double kSubstep = simswift::kTickSeconds / simswift::WorldConfig{}.substepsPerTick();
 const double kDeg = M_PI / 180.0;
 
 std::shared_ptr<const RobotModel> naoModel() {
@@ -212,7 +212,7 @@ TEST(RobotBody, HingeStopHoldsALimpJointAgainstTorque) {
   // 0.3 N*m yawing left, as a tick's mean: ODE clears a body's added torque
   // after each substep, so the tick's angular impulse (0.3 N*m x 10 ms) goes
   // in during its first substep, as World::applyImpulse delivers a push.
-  const double torque = 0.3 * simswift::WorldConfig{}.substeps;  // N*m in the first substep
+  const double torque = 0.3 * simswift::WorldConfig{}.substepsPerTick();  // N*m in the first substep
   for (int i = 0; i < 100; ++i) {  // 1 s
     dBodyAddTorque(r.body(head), torque * up.x(), torque * up.y(), torque * up.z());
     sim.step();

@@ -112,7 +112,7 @@ TEST(TinyModels, HingeAtItsLimitStopsThere) {
 
   const RobotBody& r = w.robot(i);
   const double stop = model->joints()[0].upper + RobotBody::kStopBeyondLimit;  // rad
-  const double h = kTickSeconds / WorldConfig{}.substeps;                      // s, one substep
+  const double h = kTickSeconds / WorldConfig{}.substepsPerTick();  // s, one substep
   double highest = -10, fastest = 0;
   for (int k = 0; k < 200; ++k) {  // 2 s: it arrives after 0.2 s and settles
     w.step();

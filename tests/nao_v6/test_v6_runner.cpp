@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "agent/libagent/Inertial.hpp"
+#include "agent/program/StandardModules.hpp"
 #include "sim/lola/LolaBody.hpp"
 #include "sim/nao_model/RobotModel.hpp"
 #include "sim/runner/Bodies.hpp"
@@ -126,6 +127,11 @@ TEST(V6Scenario, LolaBodyTicksAt12msOnTheV6Model) {
   const Scenario v5 = Scenario::parse("robots:\n  - {team: 19, player: 1}\n", "v5.yaml");
   EXPECT_EQ(v5.world.tick_us, 10000);
   EXPECT_EQ(v5.robots[0].body, simswift::bridge::BodyInterface::Libagent);
+  // Physics in steps of at most 5 ms: the V6's tick in 3 x 4 ms (2 x 6 ms
+  // tipped its get-ups back: World.cpp, "Step length"), the V5's in 2 x 5 ms.
+  auto steps = [](const Scenario& s) { return s.world.substepsPerTick(); };
+  EXPECT_EQ(steps(sc), 3);
+  EXPECT_EQ(steps(v5), 2);
 }
 
 TEST(V6Scenario, DefaultSocketsAndBareNames) {
@@ -453,6 +459,7 @@ TEST(V6Builtin, StandsAndWalksAtTwelveMilliseconds) {
                      5.0));
   const simswift::runner::RunStats s = r.run(quiet());
   EXPECT_EQ(s.ticks, 417);  // 5 s / 12 ms
+  EXPECT_EQ(r.world().substeps(), 3);  // 4 ms physics steps
   EXPECT_EQ(s.falls, 0);
   auto& body = dynamic_cast<LolaBody&>(r.body(0));
   EXPECT_EQ(body.answers(), s.ticks);
@@ -656,5 +663,56 @@ TEST(MotionPhysics, V6GetsUpAfterAPush) {
   std::printf("[motion] V6 pushed over (3.7 N*s forward), seeds 711-720: %d / 10 fell, %d / 10 up at 12 s\n", fell,
               up);
   EXPECT_EQ(fell, 10);  // the push topples it (as the V5: scenarios/walk_one.yaml)
+  EXPECT_EQ(up, 10);
+}
+
+// Pushed over and up again, the V6 stands: its get-up hands over to the
+// stand upright and it stays up. With 2 x 6 ms physics steps per 12 ms tick
+// the get-ups ended leaning back (AngleY -0.071 rad on average over seeds
+// 101-140, sd 0.058, down to -0.29) and 3 of 40 robots then rolled back over
+// their heels and fell again while standing; with 3 x 4 ms: -0.021, sd
+// 0.018, none (World.cpp, "Step length"). AngleY is what the program reads
+// on the tick its Motion leaves the get-up (< 0: leaning back).
+TEST(MotionPhysics, V6StandsUprightAfterGettingUp) {
+  double sum = 0, lowest = 0;
+  int handovers = 0, falls = 0, up = 0;
+  for (uint64_t seed = 721; seed <= 730; ++seed) {
+    std::ostringstream y;
+    y << "duration: 12\nseed: " << seed << "\nrobots:\n"
+      << "  - {team: 19, player: 1, x: -3.0, y: 0.0, theta: 0.0, lola: {socket: "
+      << socketPath("upright" + std::to_string(seed)) << "}, actions: [{t: 1.0, push: {x: 3.7, y: 0.0}}]}\n";
+    Runner r(Scenario::parse(y.str(), "v6_upright.yaml"));
+    r.programs().setThreading(agent::program::Threading::Inline);  // Motion's mode read between ticks
+    r.start();
+    auto* m = dynamic_cast<agent::program::MotionThreadModule*>(r.programs().program(0)->schedule().find("motion"));
+    ASSERT_NE(m, nullptr);
+    using Mode = agent::motion::ActionMotion::Mode;
+    Mode before = m->motion().mode();
+    int here = 0;
+    while (r.world().time() < 12.0 - 1e-9) {
+      r.tick();
+      const Mode now = m->motion().mode();
+      if (before == Mode::Getup && now == Mode::Walk) {
+        const double pitch = r.lastSensors(0).sensors[S::InertialSensor_AngleY];  // rad
+        sum += pitch;
+        lowest = std::min(lowest, pitch);
+        ++here;
+      }
+      before = now;
+    }
+    EXPECT_EQ(here, 1) << "seed " << seed << ": get-ups finished";
+    handovers += here;
+    falls += r.robotFall(0).falls;
+    up += !r.robotFall(0).fallen;
+    r.shutdown();
+  }
+  ASSERT_GT(handovers, 0);
+  const double mean = sum / handovers;
+  std::printf("[motion] V6 up after a push, seeds 721-730: AngleY at the hand-over mean %.3f, lowest %.3f rad; "
+              "%d falls, %d / 10 up at 12 s\n",
+              mean, lowest, falls, up);
+  EXPECT_GT(mean, -0.05);    // rad: 4 ms steps -0.021 (seeds 101-140); 6 ms -0.071
+  EXPECT_GT(lowest, -0.15);  // rad: 4 ms steps down to -0.06; 6 ms to -0.29
+  EXPECT_EQ(falls, 10);      // the push only
   EXPECT_EQ(up, 10);
 }

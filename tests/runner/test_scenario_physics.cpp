@@ -66,7 +66,7 @@ TEST(ScenarioPhysics, ABadValueIsRefusedAtReadTimeWithFileLineAndKey) {
   };
   const std::vector<Bad> bad = {
       {"solver", "fast", "expected one of quick, exact (got 'fast')"},
-      {"substeps", "0", "must be in [1, 100] (got 0)"},
+      {"substeps", "-1", "must be in [0, 100] (got -1)"},
       {"substeps", "2.5", "expected an integer"},
       {"iterations", "1001", "must be in [1, 1000] (got 1001)"},
       {"quick_w", "2", "must be in (0, 2) (got 2)"},

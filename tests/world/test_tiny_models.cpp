@@ -153,7 +153,7 @@ TEST(TinyModels, PendulumSwingsWithTheSmallAnglePeriod) {
   EXPECT_NEAR(p.angle(), theta0, 1e-9);
   const double t0 = 2 * M_PI * std::sqrt(kLength / kG);  // s
   const double w = 2 * M_PI / t0;                         // rad/s
-  const double h = kTickSeconds / WorldConfig{}.substeps;  // s, one substep
+  const double h = kTickSeconds / WorldConfig{}.substepsPerTick();  // s, one substep
   const double m = 1.0, inertia = ServoConfig{}.min_link_inertia;
   const int periods = 5;
   const double tolerance = (std::sqrt(1 + inertia / (m * kLength * kLength)) - 1) + theta0 * theta0 / 16 +

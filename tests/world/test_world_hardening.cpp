@@ -145,7 +145,34 @@ TEST(WorldHardening, RefusesAbsurdSolverSettings) {
   refused([](WorldConfig& c) { c.quick_w = 2.5; }, "quick_w");
   refused([](WorldConfig& c) { c.sole_anchor_erp = 1.5; }, "sole_anchor_erp");
   refused([](WorldConfig& c) { c.sole_anchor_slip = 0; }, "sole_anchor_slip");
+  refused([](WorldConfig& c) { c.substeps = -1; }, "substeps");
+  refused([](WorldConfig& c) { c.max_substep_us = 0; }, "max_substep_us");
   refused([](WorldConfig& c) { c.joint_projection_sweeps = -1; }, "joint_projection_sweeps");
   refused([](WorldConfig& c) { c.joint_projection_tolerance = std::numeric_limits<double>::quiet_NaN(); },
           "joint_projection_tolerance");
+}
+
+// Physics steps of at most 5 ms whatever the tick (WorldConfig::
+// max_substep_us): the settings were measured with 5 ms steps, and the V6's
+// 12 ms tick stepped 2 x 6 ms, where QuickStep's residual tipped pushed-over
+// robots back at the end of their get-ups (World.cpp, "Step length"). The
+// V5's 10 ms tick keeps its 2 x 5 ms (its state hash is pinned).
+TEST(WorldStepLength, EveryTickStepsAtMostFiveMilliseconds) {
+  auto steps = [](int64_t tick_us, int substeps = 0) {
+    WorldConfig c;
+    c.tick_us = tick_us;
+    c.substeps = substeps;
+    return World(FieldConfig::spl2017(), c).substeps();
+  };
+  EXPECT_EQ(steps(10000), 2);  // the V5 (libagent): 2 x 5 ms, as before
+  EXPECT_EQ(steps(12000), 3);  // the V6 (LoLA): 3 x 4 ms, not 2 x 6 ms
+  EXPECT_EQ(WorldConfig{}.substepsPerTick(), 2);
+  for (int64_t tick : {1000, 4999, 5000, 5001, 7000, 12000, 16000, 100000}) {
+    const int n = steps(tick);
+    EXPECT_LE(tick, n * 5000) << tick << " us in " << n << " steps";        // each within 5 ms
+    if (n > 1) EXPECT_GT(tick, (n - 1) * 5000) << tick << " us in " << n;  // and the fewest
+  }
+  // A count given (a scenario's physics: {substeps}) is taken as it is.
+  EXPECT_EQ(steps(12000, 2), 2);
+  EXPECT_EQ(steps(10000, 4), 4);
 }
