@@ -1,103 +1,60 @@
 // One find-ball trial: a pure function of (experiment, trial index).
 //
-// runTrial builds the trial's scenario (robots at their start poses, the
-// ball at its position, the trial's seed, the game: penalised, then
-// PLAYING), lets the BehaviourFactory set behaviours up, starts the Runner
-// (its t = 0 penalties take the robots to the sideline), puts the robots back
-// on their start poses, penalised, and ticks until the FoundRule names a
-// finder or the time limit after PLAYING passes. Each tick, in this order:
-//   1. Runner::tick() (robots, physics, sensors, vision, game);
-//   2. the fallen-robot rule: a robot down (torso below kFallHeight, until
-//      above kStandHeight) for `fallen.sideline_after` s is moved to its
-//      nearest touch line, standing, facing the field;
-//   (until playTick nothing else: the robots are penalised; at playTick
-//   they are unpenalised and the trial's clock starts at 0)
-//   3. track sample every `tracks.every` s of play (walked distance is
-//      summed over these samples, which also averages out the walk's sway);
-//   4. the found rule.
+// runTrial is a straight line of stages, in this order (Trial.cpp; this is
+// the one place the order is written down). The trial passes through them
+// as one value (Trial.cpp's TrialState: spec, scenario, runner, clock, the
+// result row), each stage reading and writing parts of it:
+//   1. setUpTrial       the trial's spec (setup, ball, repeat, seed, sweep
+//                       cell) and scenario (trialScenario: robots at their
+//                       start poses, the ball at its position, the seed, the
+//                       game: penalised, then PLAYING), the BehaviourFactory's
+//                       behaviours; the result's header (which trial, its robots)
+//   2. startRunner      the Runner built and started (its t = 0 penalties
+//                       take the robots to the sideline), the robots put back
+//                       on their start poses, penalised
+//   3. playUntilFound   ticks until the FoundRule names a finder or the time
+//                       limit after PLAYING has run. Each tick, in this order:
+//        1. Runner::tick() (robots, physics, sensors, vision, game: Runner.hpp)
+//        2. the fallen-robot rule: a robot down (torso below kFallHeight,
+//           until above kStandHeight) for `fallen.sideline_after` s is moved
+//           to its nearest touch line, standing, facing the field
+//        (until playTick nothing else: the robots are penalised; at the end
+//        of playTick they are unpenalised, the trial's clock starts at 0 and
+//        every robot's track starts)
+//        3. the found rule
+//        4. track samples every `tracks.every` s of play and at the trial's
+//           last tick (found or the limit); walked distance is summed over
+//           them, which also averages out the walk's sway
+//   4. classifyOutcome  found or not; if found, when and by whom
+//   5. recordRunStats   the runner's falls, contact falls, resets and
+//                       simulated time; the runner shut down
+//   6. the wall-clock time (timing only)
+// A launched robot program that fails (runner::ProgramError) in 2-5 ends
+// the trial there: its result is the header and the reason (`failed`).
 // Find times and track times are s since PLAYING.
 //
-// Results are written as one CSV row (deterministic) plus a track file and
-// a timing line (wall clock: never part of the results).
+// The result and its rows in results.csv (deterministic), tracks.csv and
+// timing.csv (wall clock: never part of the results): TrialResult.hpp.
 #pragma once
 
-#include <cstdint>
 #include <memory>
 #include <string>
-#include <vector>
 
 #include "app/experiment/Experiment.hpp"
 #include "app/experiment/TrialHooks.hpp"
+#include "app/experiment/TrialResult.hpp"
 
 namespace simswift::experiment {
-
-struct RobotOutcome {
-  int team = 0, player = 0;   // SPL numbers
-  double distance_m = 0;      // walked (track samples, teleports excluded)
-  int falls = 0;              // Runner's fall count
-  int contact_falls = 0;      // of falls, those right after touching another robot (runner::FallDetector)
-  int sideline_moves = 0;
-};
-
-struct TrackSample {
-  int robot = 0;              // index in the setup
-  double t = 0;               // s since PLAYING
-  double x = 0, y = 0, theta = 0;  // m, m, rad; field frame, torso
-};
-
-struct TrialResult {
-  int trial = 0;
-  // With a sweep: the trial's cell and its values, as the sweep lists them
-  // (results.csv columns after `trial`); -1 without one (no such columns).
-  int cell = -1;
-  std::vector<std::string> cell_values;
-  std::string setup;
-  int position = 0;           // ball position number (table 5.2)
-  int repeat = 0;
-  uint64_t seed = 0;
-  bool found = false;
-  double seconds = 0;         // find time (s since PLAYING) if found
-  std::string finder;         // "t19p3" if found
-  int resets = 0;             // world resets after a numerical blow-up
-  // Why the trial failed ("" = it ran): a launched robot program crashed,
-  // exited or never attached. A failed trial is neither found nor not found.
-  std::string failed;
-  std::vector<RobotOutcome> robots;
-  std::vector<TrackSample> tracks;
-  // Timing (wall clock) and memory, reporting only (they depend on the machine).
-  double sim_s = 0, wall_s = 0;
-  double peak_mb = 0;  // MB (MiB): peak resident memory of the trial's process, 0 = not recorded
-  double realTimeFactor() const { return wall_s > 0 ? sim_s / wall_s : 0; }
-};
 
 // Runs trial `index`. Launched robot programs (program: {command: ...})
 // start fresh for the trial, their logs and setups in program_logs ("" =
 // the experiment's default); if one fails the result says so in `failed`.
 TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs = "");
 
-// Trial `index` set up as runTrial sets it up: its scenario with the
+// Trial `index` through runTrial's stages 1-2: its scenario with the
 // behaviour hooks, the robot programs inline, the robots on their start
 // poses, penalised until playTick(e). The caller ticks it and watches what
 // it likes (tools/findball_trace.cpp, tests); no found or sideline rule.
 std::unique_ptr<runner::Runner> startTrial(const Experiment& e, int index, const TrialHooks& hooks);
-
-// results.csv: header for up to `robots` robots, one row per trial. With a
-// sweep, `cell` and one column per swept path follow `trial`.
-std::string csvHeader(int robots, const std::vector<SweepAxis>& sweep = {});
-std::string csvRow(const TrialResult& r, int robots);  // with '\n'
-// Parses a csvRow back (tracks and timing stay empty); `swept_paths`: the
-// sweep's path count (0 without one). Throws std::runtime_error.
-TrialResult parseCsvRow(const std::string& line, int swept_paths = 0);
-// tracks.csv
-std::string tracksHeader();
-std::string tracksRows(const TrialResult& r, const Experiment& e);
-// timing.csv (wall clock; peak_mb: the trial process's peak resident memory)
-std::string timingHeader();
-std::string timingRow(const TrialResult& r);
-// Reads sim_s, wall_s and peak_mb (absent in folders written before it: 0)
-// of a timingRow into `r`.
-void parseTimingRow(const std::string& row, TrialResult& r);
-
-std::string fixed(double v, int decimals);  // "%.*f", locale-free
 
 }  // namespace simswift::experiment

@@ -3,9 +3,9 @@
 //  - BehaviourFactory: says which behaviours this build can run (refused at
 //    validation, before any trial) and sets each robot up for a trial: its
 //    behaviour and overrides. The start itself (penalised at the start
-//    poses, then PLAYING) is the trial's (Experiment.hpp, runTrial).
+//    poses, then PLAYING) is the trial's (runTrial's stages 1-2, Trial.hpp).
 //  - FoundRule: after every tick of play, which robot (if any) has found
-//    the ball.
+//    the ball (the tick's stage 3, Trial.hpp).
 //
 // behaviourHooks() (BehaviourHooks.hpp): the agent/behaviour behaviours and
 // the VisionFoundRule.
@@ -25,9 +25,11 @@ class BehaviourFactory {
   // robot r's behaviour. Called for every robot before any trial runs.
   virtual void check(const Experiment& e, const ExperimentRobot& r) const = 0;
   // The trial's scenario: robots are placed and their scripts set
-  // (trialScenario); set behaviours, overrides and the vision block here.
+  // (trialScenario); set behaviours, overrides and the vision block here
+  // (runTrial's stage 1, setUpTrial).
   virtual void configure(const Experiment& e, const TrialSpec& t, runner::Scenario& sc) const = 0;
-  // Before Runner::start(): motion / perception replacements, if any.
+  // Before Runner::start() (stage 2, startRunner): motion / perception
+  // replacements, if any.
   virtual void attach(const Experiment& e, const TrialSpec& t, runner::Runner& r) const {}
   // After start(), before the first tick: penalised -> PLAYING, ball
   // knowledge cleared. Nothing to do for script robots.
