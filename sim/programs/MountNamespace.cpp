@@ -53,12 +53,10 @@ int enterOwnMountNamespace(const IdMaps& maps, const char** step) {
 
 namespace {
 
-// The probe: a child tries, and writes the step that failed (an index into
-// kSteps) and its errno into a pipe; a child that writes nothing (killed)
-// counts as no.
+// The probe: a child tries and writes into a pipe its errno, then the name
+// of the step that failed (enterOwnMountNamespace's own words); a child that
+// writes nothing (killed) counts as no.
 NamespaceSupport probe() {
-  static const char* const kSteps[] = {"unshare(user + mount namespace)", "uid_map/gid_map",
-                                       "mount --make-rprivate /"};
   const IdMaps maps = selfIdMaps();
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) return {false, std::string("pipe: ") + std::strerror(errno)};
@@ -69,16 +67,17 @@ NamespaceSupport probe() {
     return {false, std::string("fork: ") + std::strerror(e)};
   }
   if (pid == 0) {
-    const char* step = nullptr;
-    int report[2] = {0, enterOwnMountNamespace(maps, &step)};
-    for (int i = 0; i < 3; ++i)
-      if (step == kSteps[i] || (step && std::strcmp(step, kSteps[i]) == 0)) report[0] = i;
+    const char* step = "";
+    char report[128] = {};
+    const int err = enterOwnMountNamespace(maps, &step);
+    std::memcpy(report, &err, sizeof err);
+    std::strncpy(report + sizeof err, step ? step : "", sizeof report - sizeof err - 1);
     ssize_t w = write(fds[1], report, sizeof report);
     (void)w;
     _exit(0);
   }
   close(fds[1]);
-  int report[2] = {0, EIO};
+  char report[128] = {};
   ssize_t n;
   do n = read(fds[0], report, sizeof report);
   while (n < 0 && errno == EINTR);
@@ -87,8 +86,11 @@ NamespaceSupport probe() {
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   if (n != static_cast<ssize_t>(sizeof report)) return {false, "the probe's child gave no answer"};
-  if (report[1] == 0) return {true, ""};
-  return {false, std::string(kSteps[report[0]]) + ": " + std::strerror(report[1])};
+  int err = 0;
+  std::memcpy(&err, report, sizeof err);
+  if (err == 0) return {true, ""};
+  report[sizeof report - 1] = '\0';
+  return {false, std::string(report + sizeof err) + ": " + std::strerror(err)};
 }
 
 }  // namespace
