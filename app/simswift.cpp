@@ -35,7 +35,7 @@
 
 namespace {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace cli = simswift::cli;
 
 // --team T --player P: a robot by its SPL numbers (clean, attach).
@@ -292,7 +292,7 @@ int CleanCommand::run() const {
     const std::vector<std::string> trials = simswift::lola::removeStaleSockets({"/dev/shm"}, "simswift-lola-p");
     std::printf("removed %zu LoLA socket(s) left by killed runs\n", sockets.size() + trials.size());
   } else {
-    const std::string tag = agent::libagent::robotTag(*robot_.team, *robot_.player);
+    const std::string tag = common::libagent::robotTag(*robot_.team, *robot_.player);
     const auto sockets = simswift::lola::removeStaleSockets({"/tmp/simswift-lola"}, tag);
     std::printf("removed %zu LoLA socket(s) of %s left by killed runs\n", sockets.size(), tag.c_str());
   }

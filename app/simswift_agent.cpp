@@ -31,18 +31,18 @@
 #include <tuple>
 #include <utility>
 
-#include "agent/libagent/AgentConnection.hpp"
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/AgentConnection.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "agent/program/RobotSetup.hpp"
 #include "agent/behaviour/BehaviourYaml.hpp"
-#include "agent/config/ConfigError.hpp"
+#include "common/config/ConfigError.hpp"
 #include "app/cli/CommandLine.hpp"
 
 namespace {
 
-void printSensors(const agent::libagent::SensorValues& s, int64_t t_us) {
-  namespace al = agent::libagent;
+void printSensors(const common::libagent::SensorValues& s, int64_t t_us) {
+  namespace al = common::libagent;
   std::printf("t %.2f s\n  joints (rad):", static_cast<double>(t_us) * 1e-6);
   for (int i = 0; i < al::kNumJoints; ++i) std::printf(" %s=%.3f", al::Joints::kNames[i], s.joints.angles[i]);
   std::printf("\n  sensors:");
@@ -54,7 +54,7 @@ void printSensors(const agent::libagent::SensorValues& s, int64_t t_us) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  namespace al = agent::libagent;
+  namespace al = common::libagent;
   namespace ap = agent::program;
   namespace cli = simswift::cli;
   std::optional<int> team, player;
@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
   app.add_option("--lola", lola, "a NAO V6: Motion over LoLA's socket")
       ->type_name("[SOCKET]")
       ->expected(0, 1)
-      ->default_str(std::string(agent::lola::kDefaultSocketPath));
+      ->default_str(std::string(common::lola::kDefaultSocketPath));
   if (const std::optional<int> code = cli::parse(app, argc, argv)) return *code;
 
   // The setup: the config file, then the flags.
@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
     if (config) setup = ap::readRobotSetup(*config);
     if (behaviour)
       setup.behaviour = agent::behaviour::behaviourFromText(*behaviour, "", "--behaviour", &setup.behaviour_yaml);
-  } catch (const agent::config::ConfigError& e) {
+  } catch (const common::config::ConfigError& e) {
     std::fprintf(stderr, "simswift-agent: %s\n", e.what());
     return 2;
   }
@@ -175,7 +175,7 @@ int main(int argc, char** argv) {
       std::unique_ptr<ap::BodyConnection> body;
       if (lola) {
         // The V6: the joints over LoLA's socket; the block found above is not used.
-        body = ap::lolaBody(agent::lola::LolaConnection::connect(*lola, attach_timeout), std::move(conn));
+        body = ap::lolaBody(common::lola::LolaConnection::connect(*lola, attach_timeout), std::move(conn));
         std::fprintf(stderr, "simswift-agent: connected to LoLA at %s\n", lola->c_str());
       } else {
         body = ap::libagentBody(std::move(conn));
@@ -202,7 +202,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "simswift-agent: run ended after %lld ticks\n",
                    static_cast<long long>(program.motionTicks()));
       return program.error().empty() ? 0 : 1;
-    } catch (const agent::lola::LolaError& e) {
+    } catch (const common::lola::LolaError& e) {
       std::fprintf(stderr, "simswift-agent: %s\n", e.what());
       return 1;
     } catch (const al::AgentError& e) {

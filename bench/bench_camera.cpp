@@ -70,8 +70,8 @@ int main(int argc, char** argv) {
     world.placeBall(0.0, 0.0);
     world.setBallVelocity({-0.5, 0.1, 0});
     RobotCameras cams(world);
-    auto images = std::make_unique<agent::libagent::CameraImages>();
-    const int64_t ticks = agent::nao::ticksIn(sim_seconds);
+    auto images = std::make_unique<common::libagent::CameraImages>();
+    const int64_t ticks = common::nao::ticksIn(sim_seconds);
     int64_t next_frame = 0, rendered = 0;
     const auto t0 = Clock::now();
     for (int64_t t = 0; t < ticks; ++t) {

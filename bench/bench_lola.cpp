@@ -33,7 +33,7 @@
 #include <thread>
 
 #include "BenchResults.hpp"
-#include "agent/nao/Postures.hpp"
+#include "common/nao/Postures.hpp"
 #include "sim/lola/LolaBody.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
@@ -81,8 +81,8 @@ double handoverMicroseconds(int cycles) {
     }
     ::close(fd);
   });
-  agent::libagent::SensorValues values{};
-  values.joints = agent::nao::postureCommand(agent::nao::Posture::Stand);
+  common::libagent::SensorValues values{};
+  values.joints = common::nao::postureCommand(common::nao::Posture::Stand);
   const lola::LolaBodyOptions options;
   auto cycle = [&] {
     const lola::Exchange e =

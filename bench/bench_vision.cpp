@@ -51,8 +51,8 @@ Walking walking(double sim_s) {
   r.start();
   vision::VisionOracle extra(r.world().field(), sc.vision, sc.seed);
   extra.setTeams({0, 0, 1}, {0, 0, 1});
-  agent::libagent::CameraFrame f{};
-  const int64_t ticks = agent::nao::ticksIn(sim_s);
+  common::libagent::CameraFrame f{};
+  const int64_t ticks = common::nao::ticksIn(sim_s);
   int64_t last = -1, frames = 0;
   double oracle_s = 0;
   int64_t obs = 0;
@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
     world.placeBall(0.2, 0.1);
     vision::VisionOracle oracle(world.field(), vision::VisionConfig{}, 1);
     oracle.setTeams({0, 0, 1}, {0, 0, 1});
-    agent::libagent::CameraFrame f{};
+    common::libagent::CameraFrame f{};
     int64_t observations = 0;
     const auto t0 = Clock::now();
     for (int k = 0; k < frames; ++k) {

@@ -40,8 +40,8 @@ int main(int argc, char** argv) {
   std::printf("# trial %d setup %s ball %d (%.2f, %.2f) seed %llu\n", t.index, setup.name.c_str(), t.ball + 1,
               e.balls[t.ball].x, e.balls[t.ball].y, static_cast<unsigned long long>(t.seed));
   const int64_t play = playTick(e);
-  const int64_t limit = play + agent::nao::ticksIn(e.time_limit);
-  const int64_t step = std::max<int64_t>(1, agent::nao::ticksIn(every));
+  const int64_t limit = play + common::nao::ticksIn(e.time_limit);
+  const int64_t step = std::max<int64_t>(1, common::nao::ticksIn(every));
   std::vector<int> contacts(n, 0), falls(n, 0);
   while (run.ticks() < limit) {
     run.tick();

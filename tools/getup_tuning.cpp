@@ -31,8 +31,8 @@
 
 using agent::blackboard::ActionType;
 using motion_test::MotionHarness;
-namespace J = agent::libagent::Joints;
-namespace S = agent::libagent::Sensors;
+namespace J = common::libagent::Joints;
+namespace S = common::libagent::Sensors;
 
 namespace {
 

@@ -168,7 +168,7 @@ void diagnose(const Options& o) {
         const Eigen::Vector3d ax = sp.rotation().col(0), tx = body.linkPose(torso).rotation().col(0);
         const Eigen::Vector3d kv = body.linkLinearVelocity(kick_link, Eigen::Vector3d(0.03, 0.0, -0.038));
         const auto& cmd = h.checked().last_command.angles;
-        namespace JJ = agent::libagent::Joints;
+        namespace JJ = common::libagent::Joints;
         const bool r = foot == Foot::RIGHT;
         double ground = 0;  // N on the kicking foot from the carpet
         for (const auto& c : w.contacts())
@@ -176,8 +176,8 @@ void diagnose(const Options& o) {
         const Eigen::Vector3d kw = body.linkAngularVelocity(kick_link);
         const int ar = body.model().jointIndex(foot == Foot::RIGHT ? "RAnkleRoll" : "LAnkleRoll");
         std::printf("ground %.0f N w(%.1f %.1f %.1f) aroll cmd %.3f sensed %.3f %.3f %.1f %.2fNm ", ground, kw.x(), kw.y(), kw.z(),
-                    h.checked().last_command.angles[foot == Foot::RIGHT ? agent::libagent::Joints::RAnkleRoll : agent::libagent::Joints::LAnkleRoll],
-                    h.checked().last_sensed.joints.angles[foot == Foot::RIGHT ? agent::libagent::Joints::RAnkleRoll : agent::libagent::Joints::LAnkleRoll],
+                    h.checked().last_command.angles[foot == Foot::RIGHT ? common::libagent::Joints::RAnkleRoll : common::libagent::Joints::LAnkleRoll],
+                    h.checked().last_sensed.joints.angles[foot == Foot::RIGHT ? common::libagent::Joints::RAnkleRoll : common::libagent::Joints::LAnkleRoll],
                     body.jointAngle(ar),
                     body.jointVelocity(ar), body.jointTorque(ar));
         std::printf("t %.2f stance(%.1f %.1f yaw %.3f) torso yaw %.3f kick foot(%.3f %.3f %.3f) v %.2f | hip %.2f/%.2f %.1f knee %.2f/%.2f %.1f ankle %.2f/%.2f %.1f\n",
@@ -213,7 +213,7 @@ void diagnose(const Options& o) {
         const auto& lim = agent::motion::jointLimits();
         const auto& c = h.checked().last_command;
         if (h.state().posture == agent::blackboard::BodyState::KICKING)
-          for (int j = 0; j < agent::libagent::kNumJoints; ++j)
+          for (int j = 0; j < common::libagent::kNumJoints; ++j)
             if (c.stiffnesses[j] > 0 && (c.angles[j] < lim[j].lower + 0.005 || c.angles[j] > lim[j].upper - 0.005)) {
               if (at_limit.empty() || at_limit.back() != j) at_limit.push_back(j);
             }

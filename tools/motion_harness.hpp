@@ -39,11 +39,11 @@ inline bool downOrGettingUp(agent::blackboard::BodyState p) {
 class CommandCheck {
  public:
   // After each tick: `cmd` latched this tick, `sensed` published this tick.
-  void check(const agent::libagent::ActuatorCommand& cmd, const agent::libagent::SensorValues& sensed) {
+  void check(const common::libagent::ActuatorCommand& cmd, const common::libagent::SensorValues& sensed) {
     last_command = cmd.joints;
     last_sensed = sensed;
     const auto& lim = agent::motion::jointLimits();
-    for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
+    for (int i = 0; i < common::libagent::kNumJoints; ++i) {
       const float a = cmd.joints.angles[i];
       if (!(a >= lim[i].lower && a <= lim[i].upper)) ++limit_violations;
       if (have_prev_ && std::fabs(a - prev_[i]) > lim[i].max_velocity * agent::motion::kMotionTick + 1e-6)
@@ -54,11 +54,11 @@ class CommandCheck {
     ++ticks;
   }
   int64_t limit_violations = 0, speed_violations = 0, ticks = 0;
-  agent::libagent::JointValues last_command{};
-  agent::libagent::SensorValues last_sensed{};
+  common::libagent::JointValues last_command{};
+  common::libagent::SensorValues last_sensed{};
 
  private:
-  float prev_[agent::libagent::kNumJoints] = {};
+  float prev_[common::libagent::kNumJoints] = {};
   bool have_prev_ = false;
 };
 

@@ -10,16 +10,16 @@
 #include <vector>
 
 #include "agent/behaviour/Geometry.hpp"
-#include "agent/field/FieldFacts.hpp"
+#include "common/field/FieldFacts.hpp"
 
 namespace agent::behaviour {
 
-// Field geometry the behaviour plans with (SPL 2017, agent/field/FieldFacts.hpp).
+// Field geometry the behaviour plans with (SPL 2017, common/field/FieldFacts.hpp).
 struct FieldGeometry {
-  double length = field::kLength;  // mm, goal line to goal line
-  double width = field::kWidth;    // mm, touch line to touch line
-  double goal_post_y = field::kGoalPostSeparation / 2;     // mm, post centres at x = +-length/2, y = +-goal_post_y
-  double goal_post_radius = field::kGoalPostDiameter / 2;  // mm
+  double length = common::field::kLength;  // mm, goal line to goal line
+  double width = common::field::kWidth;    // mm, touch line to touch line
+  double goal_post_y = common::field::kGoalPostSeparation / 2;     // mm, post centres at x = +-length/2, y = +-goal_post_y
+  double goal_post_radius = common::field::kGoalPostDiameter / 2;  // mm
 };
 
 // PositionalDistribution's grid (thesis 4.2.1).
@@ -249,7 +249,7 @@ struct SkillConfig {
   double kick_power = 1.0;            // 0..1
   double ball_lost_time = 3.0;        // s without a sighting before the ball counts as lost
   double team_ball_max_age = 2.0;     // s: a teammate's sighting older than this is ignored
-  Point2 kick_target{field::kLength / 2, 0};  // mm, opponent goal centre
+  Point2 kick_target{common::field::kLength / 2, 0};  // mm, opponent goal centre
   // Strikers of one team: the one nearest the ball plays it (by this
   // robot's ball and its teammates' heard poses), by more than role_margin;
   // within it, the lower player number does, so two robots closing in do

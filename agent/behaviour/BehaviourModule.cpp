@@ -59,7 +59,7 @@ BehaviourInputs BehaviourModule::inputsFrom(const In& board) const {
 void BehaviourModule::update(const In& board, Out& written) {
   BehaviourInputs in = inputsFrom(board);
   // The chest sonars' first echoes (Left0, Right0; m -> mm), this frame.
-  const libagent::SensorValues& sv = board.get<blackboard::SensorFrame>().values;
+  const common::libagent::SensorValues& sv = board.get<blackboard::SensorFrame>().values;
   in.sonar = sonar_.update(sv.sonar[0] * 1000.0, sv.sonar[10] * 1000.0);
   BehaviourOutput out = behaviour_.tick(in);
   written.get<blackboard::MotionRequest>() = out.request;

@@ -5,8 +5,8 @@
 namespace agent::behaviour {
 
 namespace ab = agent::behaviour;
-using config::Range;
-using config::YamlReader;
+using common::config::Range;
+using common::config::YamlReader;
 
 namespace {
 

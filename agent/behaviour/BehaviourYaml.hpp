@@ -17,14 +17,14 @@
 #include <optional>
 
 #include "agent/behaviour/BehaviourConfig.hpp"
-#include "agent/config/YamlReader.hpp"
+#include "common/config/YamlReader.hpp"
 
 namespace agent::behaviour {
 
 // `behaviour` of robot map `robot` (which must have the key). Returns empty
 // for `script`. `yaml` (if not null): the behaviour as flow YAML, kind
 // included, to write into another file (a robot program's config).
-std::optional<BehaviourConfig> readBehaviour(const config::YamlReader& robot, std::string* yaml = nullptr);
+std::optional<BehaviourConfig> readBehaviour(const common::config::YamlReader& robot, std::string* yaml = nullptr);
 
 // The same from a kind name and the overrides as YAML flow text (e.g.
 // "{strategy: {distributed: off}}"; "" = none), for callers holding them

@@ -13,15 +13,15 @@
 
 #include "agent/behaviour/BehaviourConfig.hpp"
 #include "agent/behaviour/Geometry.hpp"
-#include "agent/field/FieldFacts.hpp"
+#include "common/field/FieldFacts.hpp"
 
 namespace agent::behaviour {
 
 class PositionalDistribution {
  public:
   // Uniform over a columns x rows grid over a length x width field (mm).
-  PositionalDistribution(int columns = 3, int rows = 3, double length = field::kLength,
-                         double width = field::kWidth);
+  PositionalDistribution(int columns = 3, int rows = 3, double length = common::field::kLength,
+                         double width = common::field::kWidth);
   static PositionalDistribution fromConfig(const GridConfig& grid, const FieldGeometry& field);
 
   // The smallest grid whose segments' centre-to-corner distance is at most

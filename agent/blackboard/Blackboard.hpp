@@ -36,7 +36,7 @@
 #include "agent/blackboard/Odometry.hpp"
 #include "agent/blackboard/Team.hpp"
 #include "agent/blackboard/Vision.hpp"
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 
 namespace agent::blackboard {
 
@@ -105,7 +105,7 @@ struct BodyCommand {
 struct MotionRequest {
   HeadCommand head;
   BodyCommand body;
-  libagent::LedCommand leds{};
+  common::libagent::LedCommand leds{};
   int64_t sequence = 0;  // incremented by the writer on every new request
 };
 
@@ -141,8 +141,8 @@ struct MotionState {
 
 // The joint command Motion computed this tick (the effector sends it).
 struct ActuatorRequest {
-  libagent::JointValues joints{};  // angles rad, stiffnesses 0..1 (-1 limp)
-  libagent::LedCommand leds{};
+  common::libagent::JointValues joints{};  // angles rad, stiffnesses 0..1 (-1 limp)
+  common::libagent::LedCommand leds{};
   int64_t tick = 0;
 };
 

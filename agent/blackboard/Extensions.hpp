@@ -4,14 +4,14 @@
 // copies the devices in before the Perception modules run (as it copies the
 // camera frame) and puts the outbox on the team transport after them, so the
 // game state and team modules read and write sections only, never a device
-// (agent/libagent/SimExtension.hpp has the devices; on a NAO they are the
+// (common/libagent/SimExtension.hpp has the devices; on a NAO they are the
 // GameController's UDP packets and the team's broadcast socket).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "agent/libagent/GameState.hpp"
+#include "common/libagent/GameState.hpp"
 
 namespace agent::blackboard {
 
@@ -19,7 +19,7 @@ namespace agent::blackboard {
 // program has one (without it the game is unknown: a test field, PLAYING).
 struct GameControllerData {
   bool present = false;
-  libagent::GameStateBlock block{};
+  common::libagent::GameStateBlock block{};
 };
 
 // One team packet: opaque bytes (agent/comms/SplMessage parses them).

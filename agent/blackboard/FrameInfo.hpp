@@ -11,8 +11,8 @@
 
 #include <cstdint>
 
-#include "agent/libagent/AgentShared.hpp"
-#include "agent/libagent/CameraShared.hpp"
+#include "common/libagent/AgentShared.hpp"
+#include "common/libagent/CameraShared.hpp"
 
 namespace agent::blackboard {
 
@@ -22,16 +22,16 @@ struct FrameInfo {
   double time = 0;          // s, the same time as a double
   double dt = 0;            // s since the previous frame (0 on the first)
   // Sensors at frame time (the Motion tick that ended just before the frame).
-  libagent::SensorValues sensors{};
+  common::libagent::SensorValues sensors{};
   int32_t num_observations = 0;
-  libagent::Observation observations[libagent::kMaxObservations]{};
+  common::libagent::Observation observations[common::libagent::kMaxObservations]{};
   bool images_valid = false;  // the CameraImages block holds this frame
 };
 
 // The latest sensors the Motion thread read (written every 10 ms tick by the
 // robot program before the Motion modules run).
 struct SensorFrame {
-  libagent::SensorValues values{};
+  common::libagent::SensorValues values{};
   int64_t sim_time_us = 0;
   double time = 0;  // s
 };

@@ -2,7 +2,7 @@
 
 namespace agent::comms {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 GameState GameStateReader::read(const al::GameStateBlock* block) const {
   GameState g;

@@ -4,16 +4,16 @@
 
 #include <cstdint>
 
-#include "agent/libagent/GameState.hpp"
+#include "common/libagent/GameState.hpp"
 
 namespace agent::comms {
 
 struct GameState {
   bool valid = false;  // false until the block has been written once
-  agent::libagent::GameStateValue state = agent::libagent::GameStateValue::Initial;
-  agent::libagent::SecondaryState secondary = agent::libagent::SecondaryState::Normal;
+  common::libagent::GameStateValue state = common::libagent::GameStateValue::Initial;
+  common::libagent::SecondaryState secondary = common::libagent::SecondaryState::Normal;
   bool penalised = false;                 // this robot
-  agent::libagent::Penalty penalty = agent::libagent::Penalty::None;
+  common::libagent::Penalty penalty = common::libagent::Penalty::None;
   int secs_till_unpenalised = 0;          // s
   int secs_remaining = 0;                 // s in the half
   int kickoff_team = -1;                  // SPL team number, -1 drop ball / unknown
@@ -25,7 +25,7 @@ struct GameState {
   // The robot may move: PLAYING (or READY) and not penalised.
   bool mayMove() const {
     return valid && !penalised &&
-           (state == agent::libagent::GameStateValue::Playing || state == agent::libagent::GameStateValue::Ready);
+           (state == common::libagent::GameStateValue::Playing || state == common::libagent::GameStateValue::Ready);
   }
 };
 
@@ -37,7 +37,7 @@ class GameStateReader {
   // A copy of `block` is taken first, so a half-written block cannot mix two
   // states (the simulator writes between ticks anyway). Null or a bad magic
   // gives an invalid GameState (INITIAL: the robot stands).
-  GameState read(const agent::libagent::GameStateBlock* block) const;
+  GameState read(const common::libagent::GameStateBlock* block) const;
 
  private:
   int team_, player_;

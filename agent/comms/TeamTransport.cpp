@@ -4,7 +4,7 @@
 
 namespace agent::comms {
 
-static_assert(kSplMaxPacketBytes == agent::libagent::kMaxTeamPacketBytes,
+static_assert(kSplMaxPacketBytes == common::libagent::kMaxTeamPacketBytes,
               "the team link's slots hold one SPL standard message");
 
 bool TeamLinkTransport::send(const std::vector<uint8_t>& bytes) {
@@ -15,7 +15,7 @@ bool TeamLinkTransport::send(const std::vector<uint8_t>& bytes) {
 std::vector<ReceivedPacket> TeamLinkTransport::receive() {
   std::vector<ReceivedPacket> out;
   if (!link_) return out;
-  agent::libagent::TeamPacket p;
+  common::libagent::TeamPacket p;
   while (link_->inbox.pop(p)) out.push_back({std::vector<uint8_t>(p.bytes, p.bytes + p.size), p.time_us});
   return out;
 }

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "agent/blackboard/Extensions.hpp"
-#include "agent/libagent/TeamLink.hpp"
+#include "common/libagent/TeamLink.hpp"
 
 namespace agent::comms {
 
@@ -29,12 +29,12 @@ class TeamTransport {
 // robot's TeamLink (see TeamLink.hpp for when the simulator touches them).
 class TeamLinkTransport : public TeamTransport {
  public:
-  explicit TeamLinkTransport(agent::libagent::TeamLink* link) : link_(link) {}
+  explicit TeamLinkTransport(common::libagent::TeamLink* link) : link_(link) {}
   bool send(const std::vector<uint8_t>& bytes) override;
   std::vector<ReceivedPacket> receive() override;
 
  private:
-  agent::libagent::TeamLink* link_;
+  common::libagent::TeamLink* link_;
 };
 
 // In-memory loopback for tests: what is sent is kept; receive() returns what

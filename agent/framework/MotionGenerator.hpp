@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 
 namespace agent::framework {
 
@@ -16,8 +16,8 @@ class MotionGenerator {
   virtual ~MotionGenerator() = default;
   // `out` arrives holding the previous command (the posture it started from
   // on the first tick); fill angles and stiffnesses.
-  virtual void tick(const agent::libagent::SensorValues& sensors, int64_t sim_time_us,
-                    agent::libagent::JointValues& out) = 0;
+  virtual void tick(const common::libagent::SensorValues& sensors, int64_t sim_time_us,
+                    common::libagent::JointValues& out) = 0;
 };
 
 }  // namespace agent::framework

@@ -3,8 +3,8 @@
 
 #include <cstdint>
 
-#include "agent/libagent/CameraImages.hpp"
-#include "agent/libagent/CameraShared.hpp"
+#include "common/libagent/CameraImages.hpp"
+#include "common/libagent/CameraShared.hpp"
 
 namespace agent::framework {
 
@@ -13,16 +13,16 @@ namespace agent::framework {
 class PerceptionStep {
  public:
   virtual ~PerceptionStep() = default;
-  virtual void step(const agent::libagent::CameraFrame& frame) { ++frames_; }
+  virtual void step(const common::libagent::CameraFrame& frame) { ++frames_; }
   int64_t frames() const { return frames_; }
   // The rendered images (null unless the simulator renders); hold the frame
   // passed to step() when frame.images_valid is 1. Set by RobotProgram.
-  void setImages(const agent::libagent::CameraImages* images) { images_ = images; }
-  const agent::libagent::CameraImages* images() const { return images_; }
+  void setImages(const common::libagent::CameraImages* images) { images_ = images; }
+  const common::libagent::CameraImages* images() const { return images_; }
 
  protected:
   int64_t frames_ = 0;
-  const agent::libagent::CameraImages* images_ = nullptr;
+  const common::libagent::CameraImages* images_ = nullptr;
 };
 
 }  // namespace agent::framework

@@ -1,5 +1,5 @@
 // The robot code's model of the SPL 2017 field for localisation: the
-// dimensions of agent/field/FieldFacts.hpp and the landmarks and lines they
+// dimensions of common/field/FieldFacts.hpp and the landmarks and lines they
 // give. The simulator's field lives in fields/spl_2017.yaml;
 // tests/world/test_field_model_agreement.cpp holds the two against each other.
 //
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "agent/blackboard/Vision.hpp"
-#include "agent/field/FieldFacts.hpp"
+#include "common/field/FieldFacts.hpp"
 
 namespace agent::localisation {
 
@@ -31,12 +31,12 @@ struct Landmark {
 };
 
 struct FieldModel {
-  double length = field::kLength, width = field::kWidth;  // mm, between the lines' centres
-  double penalty_area_depth = field::kPenaltyAreaDepth, penalty_area_width = field::kPenaltyAreaWidth;  // mm
-  double penalty_mark_distance = field::kPenaltyMarkDistance;     // mm, from the goal line
-  double centre_circle_radius = field::kCentreCircleDiameter / 2;  // mm
-  double goal_post_separation = field::kGoalPostSeparation;       // mm, between the posts' centres
-  double line_width = field::kLineWidth;                          // mm
+  double length = common::field::kLength, width = common::field::kWidth;  // mm, between the lines' centres
+  double penalty_area_depth = common::field::kPenaltyAreaDepth, penalty_area_width = common::field::kPenaltyAreaWidth;  // mm
+  double penalty_mark_distance = common::field::kPenaltyMarkDistance;     // mm, from the goal line
+  double centre_circle_radius = common::field::kCentreCircleDiameter / 2;  // mm
+  double goal_post_separation = common::field::kGoalPostSeparation;       // mm, between the posts' centres
+  double line_width = common::field::kLineWidth;                          // mm
 
   // The SPL 2017 field.
   static FieldModel spl2017() { return FieldModel{}; }

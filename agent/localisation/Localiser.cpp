@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "agent/field/FieldFacts.hpp"
+#include "common/field/FieldFacts.hpp"
 
 namespace agent::localisation {
 
@@ -181,7 +181,7 @@ void Localiser::resample() {
 void Localiser::candidates(std::vector<Particle>& out) const {
   out.clear();
   // Poses on the carpet: the lines plus the border strip (mm).
-  const double hx = field_.halfLength() + field::kBorderStripWidth, hy = field_.halfWidth() + field::kBorderStripWidth;
+  const double hx = field_.halfLength() + common::field::kBorderStripWidth, hy = field_.halfWidth() + common::field::kBorderStripWidth;
   auto add = [&](double x, double y, double theta) {
     if (std::fabs(x) < hx && std::fabs(y) < hy && static_cast<int>(out.size()) < cfg_.max_candidates)
       out.push_back({x, y, wrapAngle(theta), 0});
@@ -285,7 +285,7 @@ void Localiser::update(double forward, double left, double turn, const blackboar
   predict(forward, left, turn);
   if (bound_x_ != kNoBound) {
     bound_x_ += cfg_.bound_walk_factor * std::hypot(forward, left);
-    if (bound_x_ > field_.halfLength() + field::kBorderStripWidth) bound_x_ = kNoBound;  // any x now
+    if (bound_x_ > field_.halfLength() + common::field::kBorderStripWidth) bound_x_ = kNoBound;  // any x now
   }
   if (fallen) {
     // Falling turns the body unpredictably: widen the heading.

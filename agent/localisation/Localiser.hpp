@@ -41,7 +41,7 @@
 
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/localisation/FieldModel.hpp"
-#include "agent/random/Random.hpp"
+#include "common/random/Random.hpp"
 
 namespace agent::localisation {
 
@@ -162,7 +162,7 @@ class Localiser {
   FieldLines lines_;  // the straight lines and the centre circle, for line points
   std::vector<Vec2> by_kind_[static_cast<int>(blackboard::FeatureKind::NUM_KINDS)];  // landmark positions
   std::vector<Vec2> corners_by_shape_[4];  // indexed by CornerShape
-  random::Random rng_;
+  common::random::Random rng_;
   std::vector<Particle> particles_;
   // Cost of a pose under the current belief's modes (smaller = more
   // believable): min over modes of d^2 / (2 sigma^2) - log(weight).

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 
 namespace agent::motion {
 
-namespace J = libagent::Joints;
-namespace S = libagent::Sensors;
+namespace J = common::libagent::Joints;
+namespace S = common::libagent::Sensors;
 using blackboard::ActionType;
 using blackboard::BodyState;
 
@@ -17,18 +17,18 @@ ActionMotion::ActionMotion(const MotionConfig& cfg)
   body_.type = ActionType::STAND;
 }
 
-void ActionMotion::tick(const libagent::SensorValues& sensors, int64_t sim_time_us, libagent::JointValues& out) {
+void ActionMotion::tick(const common::libagent::SensorValues& sensors, int64_t sim_time_us, common::libagent::JointValues& out) {
   tickSeconds(sensors, static_cast<double>(sim_time_us) * 1e-6, out);
 }
 
-void ActionMotion::startTransitionToStand(const libagent::JointValues& from) {
+void ActionMotion::startTransitionToStand(const common::libagent::JointValues& from) {
   JointArray a{};
-  for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = from.angles[i];
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) a[i] = from.angles[i];
   keyframes_.start({{cfg_.transition_time, walkStandAngles(cfg_.walk), 1.0f}}, a);
   mode_ = Mode::Transition;
 }
 
-void ActionMotion::tickSeconds(const libagent::SensorValues& sensors, double time_s, libagent::JointValues& out) {
+void ActionMotion::tickSeconds(const common::libagent::SensorValues& sensors, double time_s, common::libagent::JointValues& out) {
   // The tick length from the simulated clock; 10 ms if it did not advance.
   double dt = kMotionTick;
   if (last_time_ >= 0 && time_s > last_time_) dt = std::min(0.1, time_s - last_time_);
@@ -43,8 +43,8 @@ void ActionMotion::tickSeconds(const libagent::SensorValues& sensors, double tim
   const double ax = s[S::InertialSensor_AngleX], ay = s[S::InertialSensor_AngleY];
   const double tilt = std::max(std::fabs(ax), std::fabs(ay));
   // Roll and pitch rate magnitude, rad/s, from the calibrated GyroscopeX/Y
-  // (agent/libagent/Inertial.hpp); float arithmetic as the slots.
-  const libagent::inertial::BodyRates w = libagent::inertial::bodyRates(s);
+  // (common/libagent/Inertial.hpp); float arithmetic as the slots.
+  const common::libagent::inertial::BodyRates w = common::libagent::inertial::bodyRates(s);
   const float wx = static_cast<float>(w.x), wy = static_cast<float>(w.y);
   const double rate = std::sqrt(wx * wx + wy * wy);
   const FootPressure feet = footPressure(s);
@@ -53,7 +53,7 @@ void ActionMotion::tickSeconds(const libagent::SensorValues& sensors, double tim
   // Start every tick from the previous command (or the measured angles).
   if (!have_last_) {
     last_cmd_ = sensors.joints;
-    for (int i = 0; i < libagent::kNumJoints; ++i) last_cmd_.stiffnesses[i] = 1.0f;
+    for (int i = 0; i < common::libagent::kNumJoints; ++i) last_cmd_.stiffnesses[i] = 1.0f;
     have_last_ = true;
   }
   out = last_cmd_;
@@ -88,7 +88,7 @@ void ActionMotion::tickSeconds(const libagent::SensorValues& sensors, double tim
           walk_.setRequest(false, {});
           if (walk_.standing()) {
             JointArray a{};
-            for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = out.angles[i];
+            for (int i = 0; i < common::libagent::kNumJoints; ++i) a[i] = out.angles[i];
             keyframes_.start({{1.0, crouchAngles(), 0.6f}}, a);
             mode_ = Mode::Crouch;
           }
@@ -183,7 +183,7 @@ void ActionMotion::tickSeconds(const libagent::SensorValues& sensors, double tim
         if (want == ActionType::GETUP_FRONT) front = true;
         if (want == ActionType::GETUP_BACK) front = false;
         JointArray a{};
-        for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = sensors.joints.angles[i];
+        for (int i = 0; i < common::libagent::kNumJoints; ++i) a[i] = sensors.joints.angles[i];
         const std::vector<Keyframe>& custom = front ? cfg_.getup_front : cfg_.getup_back;
         keyframes_.start(!custom.empty() ? custom
                          : front         ? getupFrontFrames(cfg_.walk)

@@ -50,10 +50,10 @@ class ActionMotion : public framework::MotionGenerator {
   const blackboard::MotionState& state() const { return state_; }
 
   // framework::MotionGenerator: one tick at sim_time_us; `out` is the command.
-  void tick(const libagent::SensorValues& sensors, int64_t sim_time_us, libagent::JointValues& out) override;
+  void tick(const common::libagent::SensorValues& sensors, int64_t sim_time_us, common::libagent::JointValues& out) override;
 
   // Same, by time in s, for tests and tools.
-  void tickSeconds(const libagent::SensorValues& sensors, double time_s, libagent::JointValues& out);
+  void tickSeconds(const common::libagent::SensorValues& sensors, double time_s, common::libagent::JointValues& out);
 
   enum class Mode { Walk, Kick, Crouch, Transition, Falling, Fallen, Getup, Limp, Dead };
   Mode mode() const { return mode_; }
@@ -62,7 +62,7 @@ class ActionMotion : public framework::MotionGenerator {
   const MotionConfig& config() const { return cfg_; }
 
  private:
-  void startTransitionToStand(const libagent::JointValues& from);
+  void startTransitionToStand(const common::libagent::JointValues& from);
   void publish(const blackboard::MotionRequest& req, double time_s, bool stepping);
 
   MotionConfig cfg_;
@@ -78,7 +78,7 @@ class ActionMotion : public framework::MotionGenerator {
   blackboard::Odometry odometry_;
   blackboard::BodyState posture_ = blackboard::BodyState::STANDING;
   blackboard::Foot support_ = blackboard::Foot::LEFT;
-  libagent::JointValues last_cmd_{};
+  common::libagent::JointValues last_cmd_{};
   bool have_last_ = false;
   double last_time_ = -1;
   double still_time_ = 0;   // s the body has been still while falling

@@ -7,7 +7,7 @@
 
 namespace agent::motion {
 
-using config::Range;
+using common::config::Range;
 
 const std::vector<std::string>& actionNames() {
   static const std::vector<std::string> names = {"walk", "stand",  "kick", "getup_front", "getup_back",
@@ -15,7 +15,7 @@ const std::vector<std::string>& actionNames() {
   return names;
 }
 
-ActionStep readBodyAction(const config::YamlReader& r, double t_s) {
+ActionStep readBodyAction(const common::config::YamlReader& r, double t_s) {
   ActionStep a;
   a.t = t_s;
   const std::string name = r.choice("action", "stand", actionNames());

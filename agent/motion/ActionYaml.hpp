@@ -7,13 +7,13 @@
 //
 // Actions: walk, stand, kick, getup_front, getup_back, dead, crouch, limp,
 // none. Speeds beyond the walk's own limits (WalkConfig) are refused, not
-// clamped. Errors name file, line and key (agent/config/ConfigError.hpp).
+// clamped. Errors name file, line and key (common/config/ConfigError.hpp).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "agent/config/YamlReader.hpp"
+#include "common/config/YamlReader.hpp"
 #include "agent/motion/ActionScript.hpp"
 
 namespace agent::motion {
@@ -23,7 +23,7 @@ const std::vector<std::string>& actionNames();
 
 // The body action of entry `r` at simulated time t_s (the caller read `t`);
 // reads every action key and finishes the map.
-ActionStep readBodyAction(const config::YamlReader& r, double t_s);
+ActionStep readBodyAction(const common::config::YamlReader& r, double t_s);
 
 // The same entry as YAML flow text, read back exactly by readBodyAction.
 std::string bodyActionYaml(const ActionStep& a);

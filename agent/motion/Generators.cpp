@@ -3,15 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 #include "agent/motion/JointLimits.hpp"
 #include "agent/motion/Kinematics.hpp"
 #include "agent/motion/Walk2014Generator.hpp"
 
 namespace agent::motion {
 
-namespace J = libagent::Joints;
-namespace S = libagent::Sensors;
+namespace J = common::libagent::Joints;
+namespace S = common::libagent::Sensors;
 
 namespace {
 
@@ -44,7 +44,7 @@ void setLegs(JointArray& a, float hyp, float roll, float hip, float knee, float 
   a[J::RAnkleRoll] = -ankle_roll;
 }
 
-void writeLegs(const std::array<LegAngles, 2>& q, libagent::JointValues& out) {
+void writeLegs(const std::array<LegAngles, 2>& q, common::libagent::JointValues& out) {
   out.angles[J::LHipYawPitch] = static_cast<float>(q[0].hip_yaw_pitch);
   out.angles[J::LHipRoll] = static_cast<float>(q[0].hip_roll);
   out.angles[J::LHipPitch] = static_cast<float>(q[0].hip_pitch);
@@ -62,20 +62,20 @@ void writeLegs(const std::array<LegAngles, 2>& q, libagent::JointValues& out) {
 
 JointArray walkStandAngles(const WalkConfig& cfg) {
   Walk2014Generator walk(cfg);
-  libagent::SensorValues s{};
-  libagent::JointValues out{};
+  common::libagent::SensorValues s{};
+  common::libagent::JointValues out{};
   walk.tick(s, kMotionTick, out);
   JointArray a{};
-  for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = out.angles[i];
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) a[i] = out.angles[i];
   a[J::HeadYaw] = a[J::HeadPitch] = 0;
   return a;
 }
 
 JointArray crouchAngles() {
-  libagent::JointValues out{};
+  common::libagent::JointValues out{};
   writeLegs(legsInverse(footPose(-10, 0, -160, 0), footPose(-10, 0, -160, 0)), out);
   JointArray a{};
-  for (int i = 0; i < libagent::kNumJoints; ++i) a[i] = out.angles[i];
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) a[i] = out.angles[i];
   setArms(a, 1.5f, 0.15f, -1.2f, -0.4f);
   return a;
 }
@@ -95,7 +95,7 @@ void headPitchRange(float yaw, float* lower, float* upper) {
 }
 
 void HeadGenerator::tick(const blackboard::HeadCommand& cmd, int64_t sequence,
-                         const libagent::SensorValues& sensors, double dt, libagent::JointValues& out) {
+                         const common::libagent::SensorValues& sensors, double dt, common::libagent::JointValues& out) {
   const float yaw_now = sensors.joints.angles[J::HeadYaw];
   const float pitch_now = sensors.joints.angles[J::HeadPitch];
   if (!primed_) {
@@ -141,12 +141,12 @@ void KeyframeGenerator::start(const std::vector<Keyframe>& frames, const JointAr
   elapsed_ = 0;
 }
 
-void KeyframeGenerator::tick(double dt, libagent::JointValues& out, bool with_head) {
+void KeyframeGenerator::tick(double dt, common::libagent::JointValues& out, bool with_head) {
   if (frames_.empty()) return;
   const int first = with_head ? 0 : J::LShoulderPitch;
   if (done()) {
     const Keyframe& last = frames_.back();
-    for (int i = first; i < libagent::kNumJoints; ++i) {
+    for (int i = first; i < common::libagent::kNumJoints; ++i) {
       out.angles[i] = last.angles[i];
       out.stiffnesses[i] = last.stiffness;
     }
@@ -157,7 +157,7 @@ void KeyframeGenerator::tick(double dt, libagent::JointValues& out, bool with_he
   const Keyframe& k = frames_[frame_];
   const JointArray& a = frame_ == 0 ? from_ : frames_[frame_ - 1].angles;
   const double f = k.duration > 0 ? ease(t_ / k.duration) : 1.0;
-  for (int i = first; i < libagent::kNumJoints; ++i) {
+  for (int i = first; i < common::libagent::kNumJoints; ++i) {
     out.angles[i] = static_cast<float>(a[i] + (k.angles[i] - a[i]) * f);
     out.stiffnesses[i] = k.stiffness;
   }
@@ -333,9 +333,9 @@ double KickGenerator::phaseDuration(int phase) const {
   }
 }
 
-void KickGenerator::tick(const libagent::SensorValues& sensors, double dt, libagent::JointValues& out) {
-  // Roll and pitch rates, rad/s, right-handed (agent/libagent/Inertial.hpp).
-  const libagent::inertial::BodyRates w = libagent::inertial::bodyRates(sensors.sensors);
+void KickGenerator::tick(const common::libagent::SensorValues& sensors, double dt, common::libagent::JointValues& out) {
+  // Roll and pitch rates, rad/s, right-handed (common/libagent/Inertial.hpp).
+  const common::libagent::inertial::BodyRates w = common::libagent::inertial::bodyRates(sensors.sensors);
   gyro_x_ = 0.8 * gyro_x_ + 0.2 * w.x;
   gyro_y_ = 0.8 * gyro_y_ + 0.2 * w.y;
   if (started_ && !done()) {
@@ -405,14 +405,14 @@ void KickGenerator::tick(const libagent::SensorValues& sensors, double dt, libag
   out.angles[J::RElbowRoll] = 0.4f;
   out.angles[J::LWristYaw] = out.angles[J::RWristYaw] = 0;
   out.angles[J::LHand] = out.angles[J::RHand] = 0;
-  for (int i = J::LShoulderPitch; i < libagent::kNumJoints; ++i)
+  for (int i = J::LShoulderPitch; i < common::libagent::kNumJoints; ++i)
     out.stiffnesses[i] = static_cast<float>(cfg_.stiffness);
 }
 
 // ------------------------------------------------------------------ limp
 
-void limpJoints(const libagent::SensorValues& sensors, float stiffness, libagent::JointValues& out) {
-  for (int i = 0; i < libagent::kNumJoints; ++i) {
+void limpJoints(const common::libagent::SensorValues& sensors, float stiffness, common::libagent::JointValues& out) {
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) {
     const float a = sensors.joints.angles[i];
     if (std::isfinite(a)) out.angles[i] = a;
     out.stiffnesses[i] = stiffness;

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "agent/blackboard/Blackboard.hpp"
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "agent/motion/WalkConfig.hpp"
 
 namespace agent::motion {
 
-using JointArray = std::array<float, libagent::kNumJoints>;
+using JointArray = std::array<float, common::libagent::kNumJoints>;
 
 // The walk's standing posture (stand hip height, feet together) as angles.
 JointArray walkStandAngles(const WalkConfig& cfg);
@@ -27,8 +27,8 @@ JointArray crouchAngles();
 // measured angles once, when a new request sequence arrives.
 class HeadGenerator {
  public:
-  void tick(const blackboard::HeadCommand& cmd, int64_t sequence, const libagent::SensorValues& sensors,
-            double dt, libagent::JointValues& out);
+  void tick(const blackboard::HeadCommand& cmd, int64_t sequence, const common::libagent::SensorValues& sensors,
+            double dt, common::libagent::JointValues& out);
   void reset() { primed_ = false; }
   float targetYaw() const { return target_yaw_; }
 
@@ -56,7 +56,7 @@ class KeyframeGenerator {
  public:
   void start(const std::vector<Keyframe>& frames, const JointArray& from);
   // Fills all joints but the head (head too if `with_head`).
-  void tick(double dt, libagent::JointValues& out, bool with_head = false);
+  void tick(double dt, common::libagent::JointValues& out, bool with_head = false);
   bool done() const { return frame_ >= frames_.size(); }
   bool active() const { return !frames_.empty() && !done(); }
   double elapsed() const { return elapsed_; }
@@ -108,7 +108,7 @@ class KickGenerator {
       : walk_(walk_cfg), cfg_(cfg) {}
   // power 0..1, direction rad (robot frame, 0 = ahead), kicking foot.
   void start(blackboard::Foot foot, double power, double direction);
-  void tick(const libagent::SensorValues& sensors, double dt, libagent::JointValues& out);
+  void tick(const common::libagent::SensorValues& sensors, double dt, common::libagent::JointValues& out);
   bool done() const { return phase_ >= kPhases; }
   bool active() const { return started_ && !done(); }
   blackboard::Foot foot() const { return foot_; }
@@ -133,6 +133,6 @@ class KickGenerator {
 // ------------------------------------------------------------------ limp
 
 // Holds the measured angles at low stiffness (LIMP): the robot can be posed.
-void limpJoints(const libagent::SensorValues& sensors, float stiffness, libagent::JointValues& out);
+void limpJoints(const common::libagent::SensorValues& sensors, float stiffness, common::libagent::JointValues& out);
 
 }  // namespace agent::motion

@@ -5,9 +5,9 @@
 
 namespace agent::motion {
 
-void Clipper::clip(libagent::JointValues& cmd, const libagent::JointValues& sensed, double tick_s) {
+void Clipper::clip(common::libagent::JointValues& cmd, const common::libagent::JointValues& sensed, double tick_s) {
   const auto& lim = jointLimits();
-  for (int i = 0; i < libagent::kNumJoints; ++i) {
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) {
     // 1e-5 rad inside the limits: a float at the limit may round past the
     // body side's double-precision limit.
     const float lo = lim[i].lower + 1e-5f, hi = lim[i].upper - 1e-5f;

@@ -10,12 +10,12 @@
 
 #include <array>
 
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 
 namespace agent::motion {
 
-// Link lengths (mm): the NAO hardware facts (agent/nao/NaoFacts.hpp).
-namespace NaoDims = nao::links;
+// Link lengths (mm): the NAO hardware facts (common/nao/NaoFacts.hpp).
+namespace NaoDims = common::nao::links;
 
 struct Vec3 {
   double x = 0, y = 0, z = 0;

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 #include "agent/motion/Kinematics.hpp"
 
 namespace agent::motion {
 
-namespace J = libagent::Joints;
-namespace S = libagent::Sensors;
+namespace J = common::libagent::Joints;
+namespace S = common::libagent::Sensors;
 
 namespace {
 
@@ -50,7 +50,7 @@ double headingRate(const float* s) {
   // yaw of R = Rz(yaw) Ry(pitch) Rx(roll), with roll = AngleX and pitch =
   // AngleY. The walk rolls and pitches the torso by a few degrees every
   // step; the bare yaw rate then misreads the heading rate by a few mrad/s.
-  const libagent::inertial::BodyRates w = libagent::inertial::bodyRates(s);
+  const common::libagent::inertial::BodyRates w = common::libagent::inertial::bodyRates(s);
   const double roll = s[S::InertialSensor_AngleX], pitch = s[S::InertialSensor_AngleY];
   const double c = std::cos(pitch);
   if (!(std::fabs(c) > 0.3)) return w.z;  // lying down: not walking anyway
@@ -90,11 +90,11 @@ FootPressure footPressure(const float* s) {
     const double fr = std::max(0.0f, s[rbase + i]);
     p.left += fl;
     p.right += fr;
-    // Sensor positions in each ankle frame (agent/nao/NaoFacts.hpp), shifted
+    // Sensor positions in each ankle frame (common/nao/NaoFacts.hpp), shifted
     // by the hips' offset: y of the centre of pressure about the torso (mm).
-    const auto which = static_cast<nao::Fsr>(i);
-    moment += fl * (NaoDims::kHipOffsetY + nao::fsrPosition(nao::Side::Left, which).y);
-    moment += fr * (-NaoDims::kHipOffsetY + nao::fsrPosition(nao::Side::Right, which).y);
+    const auto which = static_cast<common::nao::Fsr>(i);
+    moment += fl * (NaoDims::kHipOffsetY + common::nao::fsrPosition(common::nao::Side::Left, which).y);
+    moment += fr * (-NaoDims::kHipOffsetY + common::nao::fsrPosition(common::nao::Side::Right, which).y);
   }
   p.total = p.left + p.right;
   p.cop_y = p.total > 1e-6 ? moment / p.total : 0.0;
@@ -174,13 +174,13 @@ void Walk2014Generator::beginStep() {
   ++steps_;
 }
 
-void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, libagent::JointValues& out) {
+void Walk2014Generator::tick(const common::libagent::SensorValues& sensors, double dt, common::libagent::JointValues& out) {
   odo_ = WalkSpeed{};
   const float* s = sensors.sensors;
   const double f = cfg_.gyro_filter;
   // Roll and pitch rates in rad/s from the calibrated GyroscopeX/Y (the raw
-  // GyrX/GyrY counts' sign is not settled: agent/libagent/Inertial.hpp).
-  const libagent::inertial::BodyRates w = libagent::inertial::bodyRates(s);
+  // GyrX/GyrY counts' sign is not settled: common/libagent/Inertial.hpp).
+  const common::libagent::inertial::BodyRates w = common::libagent::inertial::bodyRates(s);
   gyro_x_ = f * gyro_x_ + (1 - f) * w.x;
   gyro_y_ = f * gyro_y_ + (1 - f) * w.y;
 
@@ -295,7 +295,7 @@ void Walk2014Generator::tick(const libagent::SensorValues& sensors, double dt, l
   computeLegs(sensors, out);
 }
 
-void Walk2014Generator::computeLegs(const libagent::SensorValues& sensors, libagent::JointValues& out) {
+void Walk2014Generator::computeLegs(const common::libagent::SensorValues& sensors, common::libagent::JointValues& out) {
   const bool walking = state_ == State::Walking;
   const double frac = walking ? std::min(1.0, t_ / period_) : 0.0;
   const double lift = walking ? lift_ * parabolicLift(frac) : 0.0;

@@ -19,7 +19,7 @@
 
 #include <cstdint>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "agent/motion/WalkConfig.hpp"
 
 namespace agent::motion {
@@ -77,7 +77,7 @@ class Walk2014Generator {
 
   // One 10 ms tick: fills the leg and arm joints of `out` (angles,
   // stiffnesses); leaves the head alone. dt in s.
-  void tick(const libagent::SensorValues& sensors, double dt, libagent::JointValues& out);
+  void tick(const common::libagent::SensorValues& sensors, double dt, common::libagent::JointValues& out);
 
   // Restart at stand with feet together (no steps in progress).
   void reset();
@@ -104,7 +104,7 @@ class Walk2014Generator {
 
  private:
   void beginStep();
-  void computeLegs(const libagent::SensorValues& sensors, libagent::JointValues& out);
+  void computeLegs(const common::libagent::SensorValues& sensors, common::libagent::JointValues& out);
 
   WalkConfig cfg_;
   SupportSwitch switch_;

@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 
 namespace agent::motion {
 
@@ -62,7 +62,7 @@ struct WalkConfig {
   double switch_forced_periods = 3.0; // switch regardless after this many periods
   // kg on both feet together to trust the FSRs (2 N); below it (robot
   // lifted) switch on time (1 period)
-  double min_foot_weight = 2.0 / agent::libagent::kFsrNewtonsPerKilogram;
+  double min_foot_weight = 2.0 / common::libagent::kFsrNewtonsPerKilogram;
 
   // --- Gyro balance feedback on the support ankle
   double gyro_filter = 0.8;        // filtered = f * filtered + (1 - f) * gyro

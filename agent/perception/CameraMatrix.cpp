@@ -7,8 +7,8 @@ namespace agent::perception {
 
 using motion::Mat3;
 using motion::Vec3;
-namespace J = libagent::Joints;
-namespace S = libagent::Sensors;
+namespace J = common::libagent::Joints;
+namespace S = common::libagent::Sensors;
 
 namespace {
 motion::LegAngles legAngles(const float* a, bool left) {
@@ -23,8 +23,8 @@ motion::LegAngles legAngles(const float* a, bool left) {
 }
 }  // namespace
 
-CameraPose cameraPose(const libagent::SensorValues& sensors, nao::Camera camera) {
-  namespace L = nao::links;
+CameraPose cameraPose(const common::libagent::SensorValues& sensors, common::nao::Camera camera) {
+  namespace L = common::nao::links;
   const float* a = sensors.joints.angles;
   // The torso's tilt (roll about x, then pitch about y) from the inertial unit.
   const Mat3 tilt = Mat3::rotY(sensors.sensors[S::InertialSensor_AngleY]) *
@@ -37,7 +37,7 @@ CameraPose cameraPose(const libagent::SensorValues& sensors, nao::Camera camera)
   // The ground is under the lower sole (the support foot).
   const Vec3 origin{0.5 * (left.x + right.x), 0.5 * (left.y + right.y), std::min(left.z, right.z)};
   // Torso -> neck -> head (HeadYaw about z, HeadPitch about y) -> camera.
-  const nao::CameraMount& m = nao::cameraMount(camera);
+  const common::nao::CameraMount& m = common::nao::cameraMount(camera);
   const Mat3 head = Mat3::rotZ(a[J::HeadYaw]) * Mat3::rotY(a[J::HeadPitch]);
   const Vec3 in_torso = Vec3{0, 0, L::kNeckOffsetZ} + head * Vec3{m.x, m.y, m.z};
   CameraPose p;
@@ -54,7 +54,7 @@ bool viewAngles(const CameraPose& cam, double x, double y, double* horizontal, d
   return true;
 }
 
-bool inFieldOfView(const CameraPose& cam, double x, double y, const nao::CameraLens& lens) {
+bool inFieldOfView(const CameraPose& cam, double x, double y, const common::nao::CameraLens& lens) {
   const Vec3 d = cam.rotation.transposed() * (Vec3{x, y, 0} - cam.position);
   if (d.x <= 1.0) return false;
   // Pinhole: the image plane coordinates are d.y / d.x and d.z / d.x.

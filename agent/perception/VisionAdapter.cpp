@@ -6,11 +6,11 @@
 namespace agent::perception {
 
 using blackboard::FeatureKind;
-using libagent::ObservationType;
+using common::libagent::ObservationType;
 
 namespace {
 // Completes a detection: x, y from distance/heading when only those are set.
-bool toPoint(const libagent::Observation& o, double max_distance, blackboard::RRPoint& p) {
+bool toPoint(const common::libagent::Observation& o, double max_distance, blackboard::RRPoint& p) {
   double x = o.x, y = o.y;
   if (x == 0 && y == 0 && o.distance > 0) {
     x = o.distance * std::cos(o.heading);
@@ -33,9 +33,9 @@ blackboard::VisionMeasurements adaptVision(const blackboard::FrameInfo& frame, b
   v.frame_index = frame.frame_index;
   v.time = frame.time;
   if (fallen) return v;
-  const int n = std::min<int>(frame.num_observations, libagent::kMaxObservations);
+  const int n = std::min<int>(frame.num_observations, common::libagent::kMaxObservations);
   for (int i = 0; i < n; ++i) {
-    const libagent::Observation& o = frame.observations[i];
+    const common::libagent::Observation& o = frame.observations[i];
     blackboard::RRPoint p;
     if (!toPoint(o, cfg.max_distance, p)) continue;
     FeatureKind kind;
@@ -46,7 +46,7 @@ blackboard::VisionMeasurements adaptVision(const blackboard::FrameInfo& frame, b
         continue;
       case ObservationType::Robot:
         if (v.num_robots < blackboard::kMaxSeenRobots)
-          v.robots[v.num_robots++] = {p, o.team, o.colour, (o.flags & libagent::kObservationRobotFallen) != 0};
+          v.robots[v.num_robots++] = {p, o.team, o.colour, (o.flags & common::libagent::kObservationRobotFallen) != 0};
         continue;
       case ObservationType::GoalPost: kind = FeatureKind::GoalPost; break;
       case ObservationType::LineCorner: kind = FeatureKind::Corner; break;
@@ -59,7 +59,7 @@ blackboard::VisionMeasurements adaptVision(const blackboard::FrameInfo& frame, b
         for (int k = 0; k <= n && v.num_features < blackboard::kMaxFeatures; ++k) {
           if (k == n && len == 0) break;
           const double f = n > 0 && len > 0 ? static_cast<double>(k) / n : 0.0;
-          libagent::Observation q = o;
+          common::libagent::Observation q = o;
           q.x = static_cast<float>(p.x + f * dx);
           q.y = static_cast<float>(p.y + f * dy);
           q.distance = 0;

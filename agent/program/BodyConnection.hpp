@@ -1,7 +1,7 @@
 // What the robot program's threads hold of the body: Motion's ticks,
 // sensors and command, Perception's camera frames. Chosen at start, one of:
-//   libagent  the NAO V5: the libagent block (agent/libagent/AgentConnection)
-//   LoLA      the NAO V6: LoLA's socket for Motion (agent/lola/LolaConnection,
+//   libagent  the NAO V5: the libagent block (common/libagent/AgentConnection)
+//   LoLA      the NAO V6: LoLA's socket for Motion (common/lola/LolaConnection,
 //             the sensors in the V5's slot layout), simswift's extension
 //             object for the camera frames, game state and team link
 // Everything above it (the modules, Motion's walk and kicks, Perception) is
@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "agent/libagent/AgentConnection.hpp"
-#include "agent/lola/LolaConnection.hpp"
+#include "common/libagent/AgentConnection.hpp"
+#include "common/lola/LolaConnection.hpp"
 
 namespace agent::program {
 
@@ -27,24 +27,24 @@ class BodyConnection {
   // when the run is over or the body has gone.
   virtual bool waitTick() = 0;
   virtual bool takeTick() = 0;
-  virtual libagent::SensorValues readSensors() = 0;
+  virtual common::libagent::SensorValues readSensors() = 0;
   // Simulated time of the sensors read, us.
   virtual int64_t timeUs() const = 0;
-  virtual void writeActuators(const libagent::JointValues& joints, bool stiffen) = 0;
+  virtual void writeActuators(const common::libagent::JointValues& joints, bool stiffen) = 0;
   // libagent's block (standing, buttons: LibagentIO); null for other bodies.
-  virtual libagent::AgentConnection* libagent() { return nullptr; }
+  virtual common::libagent::AgentConnection* libagent() { return nullptr; }
 
   // Perception: simswift's extension object (AgentConnection's camera side).
-  virtual libagent::AgentConnection& camera() = 0;
-  const libagent::AgentConnection& camera() const { return const_cast<BodyConnection*>(this)->camera(); }
+  virtual common::libagent::AgentConnection& camera() = 0;
+  const common::libagent::AgentConnection& camera() const { return const_cast<BodyConnection*>(this)->camera(); }
   // The run is over (set by the body side), or a body attached by name has gone.
   virtual bool shutdown() const = 0;
   virtual bool simulatorAlive() const = 0;
 };
 
-std::unique_ptr<BodyConnection> libagentBody(libagent::AgentConnection connection);
+std::unique_ptr<BodyConnection> libagentBody(common::libagent::AgentConnection connection);
 // `camera`: the extension object's connection (AgentConnection::extensionOnly
 // in this process).
-std::unique_ptr<BodyConnection> lolaBody(lola::LolaConnection motion, libagent::AgentConnection camera);
+std::unique_ptr<BodyConnection> lolaBody(common::lola::LolaConnection motion, common::libagent::AgentConnection camera);
 
 }  // namespace agent::program

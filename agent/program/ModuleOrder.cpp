@@ -2,11 +2,11 @@
 
 #include "agent/behaviour/ActionsBehaviour.hpp"
 
-#include "agent/random/SplitMix64.hpp"
+#include "common/random/SplitMix64.hpp"
 
 namespace agent::program {
 
-void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const libagent::CameraImages* images,
+void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const common::libagent::CameraImages* images,
                    framework::ModuleSchedule& s) {
   using T = framework::ThreadId;
   using framework::SectionId;
@@ -23,7 +23,7 @@ void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const liba
   s.add(T::Perception, std::make_unique<GameStateModule>(cfg.team, cfg.player));
   s.add(T::Perception, std::make_unique<perception::VisionAdapterModule>(cfg.vision));
   localisation::LocalisationModuleConfig lc = cfg.localisation;
-  lc.filter.seed = lc.filter.seed * random::kGoldenGamma + cfg.seed;  // per robot, from the scenario
+  lc.filter.seed = lc.filter.seed * common::random::kGoldenGamma + cfg.seed;  // per robot, from the scenario
   s.add(T::Perception, std::make_unique<localisation::LocalisationModule>(lc));
   s.add(T::Perception, std::make_unique<perception::BallTrackerModule>(cfg.ball));
   s.add(T::Perception, std::make_unique<TeamReceiveModule>(cfg.team, cfg.player));

@@ -22,7 +22,7 @@
 #include <optional>
 #include <vector>
 
-#include "agent/libagent/SimExtensions.hpp"
+#include "common/libagent/SimExtensions.hpp"
 #include "agent/localisation/LocalisationModule.hpp"
 #include "agent/motion/ActionScript.hpp"
 #include "agent/motion/ActionMotion.hpp"
@@ -49,7 +49,7 @@ struct ProgramConfig {
   perception::VisionAdapterConfig vision;
   // The simulator's extension objects (game state, team link), the program's
   // devices; null: no game (unknown, PLAYING) and no teammates.
-  libagent::SimExtensions* extensions = nullptr;
+  common::libagent::SimExtensions* extensions = nullptr;
   // Called by each thread before every step (Motion tick, Perception frame),
   // from that thread. For tests (seeded sleeps that scramble thread timing);
   // empty: nothing.
@@ -58,7 +58,7 @@ struct ProgramConfig {
 
 // Fills `schedule` in the standard order. `effector` sends the actuators;
 // `images` are the rendered camera images a PerceptionStep sees (null: none).
-void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const libagent::CameraImages* images,
+void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const common::libagent::CameraImages* images,
                    framework::ModuleSchedule& schedule);
 
 }  // namespace agent::program

@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/SharedNames.hpp"
 
 namespace agent::program {
 
-using agent::libagent::JointValues;
-using agent::libagent::SensorValues;
+using common::libagent::JointValues;
+using common::libagent::SensorValues;
 
 namespace {
 void nameThisThread(const std::string& name) {
@@ -36,12 +36,12 @@ ProgramConfig shorthand(int team, int player, std::unique_ptr<framework::MotionG
 }  // namespace
 
 RobotProgram::RobotProgram(std::unique_ptr<BodyConnection> connection, ProgramConfig cfg)
-    : conn_(std::move(connection)), tag_(agent::libagent::robotTag(cfg.team, cfg.player)), cfg_(std::move(cfg)) {}
+    : conn_(std::move(connection)), tag_(common::libagent::robotTag(cfg.team, cfg.player)), cfg_(std::move(cfg)) {}
 
-RobotProgram::RobotProgram(agent::libagent::AgentConnection connection, ProgramConfig cfg)
+RobotProgram::RobotProgram(common::libagent::AgentConnection connection, ProgramConfig cfg)
     : RobotProgram(libagentBody(std::move(connection)), std::move(cfg)) {}
 
-RobotProgram::RobotProgram(agent::libagent::AgentConnection connection, int team, int player,
+RobotProgram::RobotProgram(common::libagent::AgentConnection connection, int team, int player,
                            std::unique_ptr<framework::MotionGenerator> motion,
                            std::unique_ptr<framework::PerceptionStep> perception)
     : RobotProgram(std::move(connection), shorthand(team, player, std::move(motion), std::move(perception))) {}
@@ -151,7 +151,7 @@ void RobotProgram::perceptionLoop() {
 }
 
 void RobotProgram::perceptionStep() {
-  const agent::libagent::CameraFrame& cf = conn_->camera().frame();
+  const common::libagent::CameraFrame& cf = conn_->camera().frame();
   // The Motion thread is between ticks while a frame is processed (the
   // body side waits for its answer before posting a frame), so the
   // sensors section holds the sensors of the tick at frame time.
@@ -162,7 +162,7 @@ void RobotProgram::perceptionStep() {
   f.dt = last_frame_time_ < 0 ? 0 : f.time - last_frame_time_;
   last_frame_time_ = f.time;
   f.sensors = board_.sensors.read().values;
-  f.num_observations = std::clamp<int32_t>(cf.num_observations, 0, agent::libagent::kMaxObservations);
+  f.num_observations = std::clamp<int32_t>(cf.num_observations, 0, common::libagent::kMaxObservations);
   std::copy(cf.observations, cf.observations + f.num_observations, f.observations);
   f.images_valid = cf.images_valid != 0;
   board_.frame.write(f);

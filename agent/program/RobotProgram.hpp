@@ -37,7 +37,7 @@
 
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/comms/TeamTransport.hpp"
-#include "agent/libagent/AgentConnection.hpp"
+#include "common/libagent/AgentConnection.hpp"
 #include "agent/program/BodyConnection.hpp"
 #include "agent/program/ModuleOrder.hpp"
 #include "agent/framework/ModuleSchedule.hpp"
@@ -62,10 +62,10 @@ class RobotProgram {
   // The standard modules; `cfg` says which motion and behaviour.
   RobotProgram(std::unique_ptr<BodyConnection> connection, ProgramConfig cfg);
   // On libagent's block (libagentBody).
-  RobotProgram(agent::libagent::AgentConnection connection, ProgramConfig cfg);
+  RobotProgram(common::libagent::AgentConnection connection, ProgramConfig cfg);
   // Shorthand: a MotionGenerator for Motion, no behaviour, an optional
   // PerceptionStep run first in the Perception thread.
-  RobotProgram(agent::libagent::AgentConnection connection, int team, int player,
+  RobotProgram(common::libagent::AgentConnection connection, int team, int player,
                std::unique_ptr<framework::MotionGenerator> motion,
                std::unique_ptr<framework::PerceptionStep> perception = nullptr);
   ~RobotProgram();  // joins (call the body side's shutdown first)
@@ -95,7 +95,7 @@ class RobotProgram {
   void setLibagentIO(std::shared_ptr<LibagentIO> io) { io_ = std::move(io); }
 
   // Optional hook run by Motion after each command is sent (e.g. printing).
-  void setAfterTick(std::function<void(const agent::libagent::SensorValues&, int64_t)> f) {
+  void setAfterTick(std::function<void(const common::libagent::SensorValues&, int64_t)> f) {
     after_tick_ = std::move(f);
   }
 
@@ -103,7 +103,7 @@ class RobotProgram {
   int64_t motionTicks() const { return motion_ticks_.load(); }
   int64_t perceptionFrames() const { return perception_frames_.load(); }
   // The camera images the Perception thread reads (null: no rendering).
-  const agent::libagent::CameraImages* images() const { return conn_->camera().images(); }
+  const common::libagent::CameraImages* images() const { return conn_->camera().images(); }
   // Attached by name: the simulator process has gone (killed) without ending the run.
   bool simulatorGone() const { return !conn_->shutdown() && !conn_->simulatorAlive(); }
   // First exception a thread died of (empty if none).
@@ -128,9 +128,9 @@ class RobotProgram {
   framework::ModuleSchedule schedule_;
   // The team transport over the extension object's team link (null: none).
   std::unique_ptr<comms::TeamTransport> team_link_;
-  agent::libagent::JointValues pending_{};  // the effector's command, sent after the Motion modules
+  common::libagent::JointValues pending_{};  // the effector's command, sent after the Motion modules
   std::shared_ptr<LibagentIO> io_;           // libagent's extras for the Motion step (null: none)
-  std::function<void(const agent::libagent::SensorValues&, int64_t)> after_tick_;
+  std::function<void(const common::libagent::SensorValues&, int64_t)> after_tick_;
   Threading threading_ = Threading::Named;
   bool with_perception_ = false;
   bool failed_ = false;          // inline: a step threw; no more steps

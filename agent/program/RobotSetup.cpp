@@ -8,14 +8,14 @@
 
 #include "agent/behaviour/BehaviourModule.hpp"
 #include "agent/behaviour/BehaviourYaml.hpp"
-#include "agent/config/Seed.hpp"
-#include "agent/libagent/SharedNames.hpp"
+#include "common/config/Seed.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "agent/motion/ActionYaml.hpp"
 
 namespace agent::program {
 
-using config::Range;
-using config::YamlReader;
+using common::config::Range;
+using common::config::YamlReader;
 
 namespace {
 
@@ -107,13 +107,13 @@ void readProgramKeys(const YamlReader& r, RobotSetup& s, const OutsideAction& ou
 }
 
 void readRobotSetup(const YamlReader& r, RobotSetup& s) {
-  s.team = r.integer("team", s.team, Range::closed(libagent::kMinTeamNumber, libagent::kMaxTeamNumber));
-  s.player = r.integer("player", s.player, Range::closed(libagent::kMinPlayer, libagent::kMaxPlayer));
+  s.team = r.integer("team", s.team, Range::closed(common::libagent::kMinTeamNumber, common::libagent::kMaxTeamNumber));
+  s.player = r.integer("player", s.player, Range::closed(common::libagent::kMinPlayer, common::libagent::kMaxPlayer));
   if (r.has("seed")) {
     // Up to 64 bits (the simulator derives robot seeds by multiplying).
     const std::string v = r.string("seed");
-    const std::optional<uint64_t> seed = config::parseSeed(v);
-    if (!seed) r.fail("seed", std::string("must be ") + config::kSeedRange + " (got '" + v + "')");
+    const std::optional<uint64_t> seed = common::config::parseSeed(v);
+    if (!seed) r.fail("seed", std::string("must be ") + common::config::kSeedRange + " (got '" + v + "')");
     s.seed = *seed;
   }
   if (auto p = r.optionalMap("start")) {
@@ -164,7 +164,7 @@ std::string robotSetupYaml(const RobotSetup& s) {
         continue;
       }
       std::snprintf(buf, sizeof buf, "  - {t: %.17g, joint: %s, angle: %.9g, duration: %.17g", st.t_s,
-                    libagent::Joints::kNames[st.joint], st.angle, st.duration_s);
+                    common::libagent::Joints::kNames[st.joint], st.angle, st.duration_s);
       o << buf;
       if (st.stiffness >= -1) {
         std::snprintf(buf, sizeof buf, ", stiffness: %.9g", st.stiffness);

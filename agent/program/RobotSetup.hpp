@@ -23,7 +23,7 @@
 // under the same keys (docs/runner.md), read by the same parser
 // (readProgramKeys), and writes a launched program's file with
 // robotSetupYaml. Errors name the file, the line and the key
-// (agent/config/ConfigError.hpp).
+// (common/config/ConfigError.hpp).
 #pragma once
 
 #include <cstdint>
@@ -34,7 +34,7 @@
 
 #include "agent/behaviour/BehaviourConfig.hpp"
 #include "agent/blackboard/Localisation.hpp"
-#include "agent/config/YamlReader.hpp"
+#include "common/config/YamlReader.hpp"
 #include "agent/motion/ActionScript.hpp"
 #include "agent/program/ModuleOrder.hpp"
 #include "agent/program/ScriptedMotion.hpp"
@@ -72,25 +72,25 @@ ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::Mot
                              const motion::MotionConfig& motion_config = motion::MotionConfig());
 
 // One `script:` entry: {t, joint, angle[, duration, stiffness]} or {t, posture}.
-ScriptStep readScriptStep(const config::YamlReader& r);
+ScriptStep readScriptStep(const common::config::YamlReader& r);
 
 // An `actions:` entry its caller takes itself (the simulator's pushes and
 // button presses, which act on the body from outside the program): returns
 // true if it took `entry`, whose `t` (s) is t_s.
-using OutsideAction = std::function<bool(const config::YamlReader& entry, double t_s)>;
+using OutsideAction = std::function<bool(const common::config::YamlReader& entry, double t_s)>;
 
 // The keys of what the program does, from map `r`: script, actions and
 // behaviour (absent keys keep s's values). The one parser of them: for the
 // config file (readRobotSetup) and a scenario's robot (sim/programs). `r`
 // is left unfinished (its other keys are the caller's).
-void readProgramKeys(const config::YamlReader& r, RobotSetup& s, const OutsideAction& outside = {});
+void readProgramKeys(const common::config::YamlReader& r, RobotSetup& s, const OutsideAction& outside = {});
 // The `actions:` list of `r` alone, the same way.
-void readActions(const config::YamlReader& r, RobotSetup& s, const OutsideAction& outside = {});
+void readActions(const common::config::YamlReader& r, RobotSetup& s, const OutsideAction& outside = {});
 
-// Reads the config file (format above). Throws config::ConfigError.
+// Reads the config file (format above). Throws common::config::ConfigError.
 RobotSetup readRobotSetup(const std::string& path);
 // Reads map `r` into `s` (keys absent keep s's values) and finishes it.
-void readRobotSetup(const config::YamlReader& r, RobotSetup& s);
+void readRobotSetup(const common::config::YamlReader& r, RobotSetup& s);
 // The config file's text for `s` (read back by readRobotSetup to an equal
 // setup; the behaviour from behaviour_yaml).
 std::string robotSetupYaml(const RobotSetup& s);

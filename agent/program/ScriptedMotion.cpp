@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 
 
 namespace agent::program {
@@ -13,8 +13,8 @@ ScriptedMotion::ScriptedMotion(Posture start, std::vector<ScriptStep> steps)
                    [](const ScriptStep& a, const ScriptStep& b) { return a.t_s < b.t_s; });
 }
 
-void ScriptedMotion::tick(const agent::libagent::SensorValues& sensors, int64_t sim_time_us,
-                          agent::libagent::JointValues& out) {
+void ScriptedMotion::tick(const common::libagent::SensorValues& sensors, int64_t sim_time_us,
+                          common::libagent::JointValues& out) {
   // Integer microseconds to seconds only for comparison with the script.
   const double t = static_cast<double>(sim_time_us) * 1e-6;
   while (next_ < steps_.size() && steps_[next_].t_s <= t + 1e-9) {
@@ -40,10 +40,10 @@ void ScriptedMotion::tick(const agent::libagent::SensorValues& sensors, int64_t 
   }
   out = cmd_;
   if (ankle_gain_ != 0) {
-    namespace J = agent::libagent::Joints;
+    namespace J = common::libagent::Joints;
     // First-order low pass, 0.2 per 10 ms tick (time constant ~45 ms), of the
-    // pitch rate (GyroscopeY, rad/s, right-handed: agent/libagent/Inertial.hpp).
-    const float pitch_rate = static_cast<float>(agent::libagent::inertial::bodyRates(sensors.sensors).y);
+    // pitch rate (GyroscopeY, rad/s, right-handed: common/libagent/Inertial.hpp).
+    const float pitch_rate = static_cast<float>(common::libagent::inertial::bodyRates(sensors.sensors).y);
     gyro_filtered_ += 0.2f * (pitch_rate - gyro_filtered_);
     const float d = ankle_gain_ * gyro_filtered_;
     if (out.stiffnesses[J::LAnklePitch] > 0) out.angles[J::LAnklePitch] += d;

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "agent/framework/MotionGenerator.hpp"
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "agent/program/Postures.hpp"
 
 namespace agent::program {
@@ -16,13 +16,13 @@ namespace agent::program {
 class PoseGenerator : public framework::MotionGenerator {
  public:
   explicit PoseGenerator(Posture p) : cmd_(postureCommand(p)) {}
-  explicit PoseGenerator(const agent::libagent::JointValues& cmd) : cmd_(cmd) {}
-  void tick(const agent::libagent::SensorValues&, int64_t, agent::libagent::JointValues& out) override {
+  explicit PoseGenerator(const common::libagent::JointValues& cmd) : cmd_(cmd) {}
+  void tick(const common::libagent::SensorValues&, int64_t, common::libagent::JointValues& out) override {
     out = cmd_;
   }
 
  private:
-  agent::libagent::JointValues cmd_;
+  common::libagent::JointValues cmd_;
 };
 
 // One scripted change at simulated time t_s: either one joint moves to
@@ -48,15 +48,15 @@ struct ScriptStep {
 class ScriptedMotion : public framework::MotionGenerator {
  public:
   ScriptedMotion(Posture start, std::vector<ScriptStep> steps = {});
-  void tick(const agent::libagent::SensorValues& sensors, int64_t sim_time_us,
-            agent::libagent::JointValues& out) override;
+  void tick(const common::libagent::SensorValues& sensors, int64_t sim_time_us,
+            common::libagent::JointValues& out) override;
   void setAnkleGyroDamping(float gain_s) { ankle_gain_ = gain_s; }
 
  private:
   float ankle_gain_ = 0;     // s
   float gyro_filtered_ = 0;  // rad/s
   struct Ramp { int joint; float from, to; double t0, t1; };
-  agent::libagent::JointValues cmd_;
+  common::libagent::JointValues cmd_;
   std::vector<ScriptStep> steps_;
   std::vector<Ramp> ramps_;
   size_t next_ = 0;

@@ -7,7 +7,7 @@
 
 namespace agent::program {
 
-namespace S = libagent::Sensors;
+namespace S = common::libagent::Sensors;
 
 void MotionThreadModule::update(const In& in, Out& out) {
   const blackboard::SensorFrame& s = in.get<blackboard::SensorFrame>();
@@ -24,7 +24,7 @@ void GeneratorModule::update(const In& in, Out& out) {
   if (first_) {
     // Start from the measured angles, so a generator that only touches some
     // joints leaves the others where they are.
-    for (int i = 0; i < libagent::kNumJoints; ++i) {
+    for (int i = 0; i < common::libagent::kNumJoints; ++i) {
       cmd_.angles[i] = s.values.joints.angles[i];
       cmd_.stiffnesses[i] = 1.0f;
     }

@@ -9,7 +9,7 @@
 #include "agent/comms/GameStateReader.hpp"
 #include "agent/comms/TeamReceiver.hpp"
 #include "agent/comms/TeamSender.hpp"
-#include "agent/libagent/GameState.hpp"
+#include "common/libagent/GameState.hpp"
 #include "agent/motion/ActionMotion.hpp"
 #include "agent/program/ScriptedMotion.hpp"
 #include "agent/framework/Module.hpp"
@@ -35,7 +35,7 @@ class MotionThreadModule
  private:
   void update(const In& in, Out& out) override;
   motion::ActionMotion motion_;
-  libagent::JointValues cmd_{};
+  common::libagent::JointValues cmd_{};
 };
 
 // sensors -> motion + actuators: a replaceable MotionGenerator (a held
@@ -50,7 +50,7 @@ class GeneratorModule : public ModuleOf<Reads<bb::SensorFrame>, Writes<bb::Motio
  private:
   void update(const In& in, Out& out) override;
   std::unique_ptr<framework::MotionGenerator> gen_;
-  libagent::JointValues cmd_{};
+  common::libagent::JointValues cmd_{};
   bool first_ = true;
   int64_t ticks_ = 0;
 };
@@ -72,7 +72,7 @@ class EffectorModule : public ModuleOf<Reads<bb::ActuatorRequest>, Writes<>> {
 // frame section, and the rendered images (null: none rendered).
 class PerceptionStepModule : public ModuleOf<Reads<bb::FrameInfo>, Writes<>> {
  public:
-  PerceptionStepModule(std::unique_ptr<framework::PerceptionStep> step, const libagent::CameraImages* images)
+  PerceptionStepModule(std::unique_ptr<framework::PerceptionStep> step, const common::libagent::CameraImages* images)
       : step_(std::move(step)) {
     step_->setImages(images);
   }
@@ -82,7 +82,7 @@ class PerceptionStepModule : public ModuleOf<Reads<bb::FrameInfo>, Writes<>> {
  private:
   void update(const In& in, Out&) override;
   std::unique_ptr<framework::PerceptionStep> step_;
-  libagent::CameraFrame frame_{};
+  common::libagent::CameraFrame frame_{};
 };
 
 // game controller data -> game state (GameStateReader). Without a

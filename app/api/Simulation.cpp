@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <cstring>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/Scenario.hpp"
@@ -20,7 +20,7 @@
 
 namespace simswift::api {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 // The public types are libagent 2017's layout.
 static_assert(sizeof(JointValues) == sizeof(al::JointValues));

@@ -17,8 +17,8 @@
 
 #include <unistd.h>
 
-#include "agent/libagent/AgentShared.hpp"
-#include "agent/nao/NaoFacts.hpp"
+#include "common/libagent/AgentShared.hpp"
+#include "common/nao/NaoFacts.hpp"
 #include "sim/programs/ReferenceWalk.hpp"
 #include "app/api/SimulationAccess.hpp"
 #include "app/api/WalkSampling.hpp"
@@ -188,7 +188,7 @@ void WalkTest::command(const WalkCommand& c) { impl_->command = c; }
 WalkCommand WalkTest::command() const { return impl_->command; }
 
 void WalkTest::run(double seconds) {
-  const long n = agent::nao::ticksIn(seconds);
+  const long n = common::nao::ticksIn(seconds);
   for (long k = 0; k < n; ++k) {
     impl_->sim.step();
     if (impl_->trace.is_open()) impl_->row();
@@ -201,9 +201,9 @@ WalkFigures WalkTest::walk(const WalkCommand& c, double settle, double window) {
   run(settle);
   WalkMeter meter;
   meter.begin(sample(), c);
-  const long n = agent::nao::ticksIn(window);
+  const long n = common::nao::ticksIn(window);
   for (long k = 0; k < n; ++k) {
-    run(agent::nao::kMotionTickSeconds);
+    run(common::nao::kMotionTickSeconds);
     meter.add(sample());
   }
   WalkFigures f = meter.figures();
@@ -230,8 +230,8 @@ void WalkTest::trace(const std::string& csv_path) {
        "#   simulator's sensor block gives for the NAO V5 (each slot's sign and source: docs/libagent.md).\n"
        "# falls: the simulator's fall count so far (torso origin below 0.20 m).\n";
   o << "t,x,y,z,theta,cmd_forward,cmd_left,cmd_turn,cmd_walk";
-  for (int j = 0; j < kNumJoints; ++j) o << ",cmd_" << agent::libagent::Joints::kNames[j];
-  for (int j = 0; j < kNumJoints; ++j) o << ",meas_" << agent::libagent::Joints::kNames[j];
+  for (int j = 0; j < kNumJoints; ++j) o << ",cmd_" << common::libagent::Joints::kNames[j];
+  for (int j = 0; j < kNumJoints; ++j) o << ",meas_" << common::libagent::Joints::kNames[j];
   for (const char* f : kFsrNames) o << ',' << f;
   o << ",GyroscopeX,GyroscopeY,GyroscopeZ,falls\n";
 }
@@ -338,8 +338,8 @@ bool plotTrace(const std::string& csv_path, const std::string& png_path, std::st
 Gait referenceGait() {
   programs::ReferenceWalkStep walk = programs::referenceWalk();
   return [walk](const WalkCommand& c, const SensorValues& s, JointValues& j) {
-    agent::libagent::SensorValues in;
-    agent::libagent::JointValues out;
+    common::libagent::SensorValues in;
+    common::libagent::JointValues out;
     std::memcpy(&in, &s, sizeof in);
     std::memcpy(&out, &j, sizeof out);
     walk(c.walk, c.forward, c.left, c.turn, in, out);

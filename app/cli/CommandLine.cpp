@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "agent/config/Seed.hpp"
+#include "common/config/Seed.hpp"
 
 namespace simswift::cli {
 
@@ -48,7 +48,7 @@ CLI::Validator number(double lo, double hi, bool whole) {
   return CLI::Validator(
       [lo, hi, whole, range](std::string& text) -> std::string {
         // A whole number is written in decimal digits (a leading '-' allowed),
-        // as a seed is (agent/config/Seed.hpp): no hex, exponent or spaces.
+        // as a seed is (common/config/Seed.hpp): no hex, exponent or spaces.
         const bool digits = !text.empty() && text.find_first_not_of("0123456789", text[0] == '-' ? 1 : 0) ==
                                                  std::string::npos && text != "-";
         const std::optional<double> v = parseNumber(text);
@@ -74,7 +74,7 @@ CLI::Validator number() {
 CLI::Validator wholeNumber(uint64_t lo, uint64_t hi) {
   return CLI::Validator(
       [lo, hi](std::string& text) -> std::string {
-        const std::optional<uint64_t> v = agent::config::parseSeed(text);
+        const std::optional<uint64_t> v = common::config::parseSeed(text);
         if (!v || *v < lo || *v > hi)
           return "must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got '" +
                  text + "')";
@@ -87,8 +87,8 @@ CLI::Validator wholeNumber(uint64_t lo, uint64_t hi) {
 CLI::Validator seed() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        const std::optional<uint64_t> v = agent::config::parseSeed(text);
-        if (!v) return std::string("must be ") + agent::config::kSeedRange + " (got '" + text + "')";
+        const std::optional<uint64_t> v = common::config::parseSeed(text);
+        if (!v) return std::string("must be ") + common::config::kSeedRange + " (got '" + text + "')";
         text = std::to_string(*v);
         return "";
       },
@@ -116,8 +116,8 @@ CLI::Validator nonEmpty() {
 std::optional<Shard> parseShard(const std::string& text, int max) {
   const size_t slash = text.find('/');
   if (slash == std::string::npos) return std::nullopt;
-  const std::optional<uint64_t> k = agent::config::parseSeed(text.substr(0, slash));
-  const std::optional<uint64_t> n = agent::config::parseSeed(text.substr(slash + 1));
+  const std::optional<uint64_t> k = common::config::parseSeed(text.substr(0, slash));
+  const std::optional<uint64_t> n = common::config::parseSeed(text.substr(slash + 1));
   if (!k || !n || *k < 1 || *k > *n || *n > static_cast<uint64_t>(max)) return std::nullopt;
   return Shard{static_cast<int>(*k), static_cast<int>(*n)};
 }

@@ -24,7 +24,7 @@ std::optional<double> parseNumber(const std::string& text);
 CLI::Validator number(double lo, double hi, bool whole = false);
 // Any finite number ("not a number: 'x'").
 CLI::Validator number();
-// A whole number in [lo, hi] by the seed reader's rule (agent/config/Seed.hpp:
+// A whole number in [lo, hi] by the seed reader's rule (common/config/Seed.hpp:
 // digits only, every 64-bit value exact).
 CLI::Validator wholeNumber(uint64_t lo, uint64_t hi);
 // A seed: any 64-bit value, the seed reader's rule and its message.

@@ -7,16 +7,16 @@
 #include <set>
 #include <sstream>
 
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "sim/runner/Bodies.hpp"
-#include "agent/nao/NaoFacts.hpp"
-#include "agent/random/SplitMix64.hpp"
+#include "common/nao/NaoFacts.hpp"
+#include "common/random/SplitMix64.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 
 namespace simswift::experiment {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 
@@ -189,7 +189,7 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
       rob.x = r.number("x");
       rob.y = r.number("y");
       rob.theta = r.number("theta", Range::closed(-2 * M_PI, 2 * M_PI));
-      onCarpet(r, rob.x, rob.y, agent::nao::kFootprintRadius / 1000, "the robot");  // m
+      onCarpet(r, rob.x, rob.y, common::nao::kFootprintRadius / 1000, "the robot");  // m
       if (r.has("behaviour")) {
         rob.behaviour = r.choice("behaviour", programs::kScriptBehaviour, programs::behaviourNames());
         rob.behaviour_where = where(r, "behaviour");
@@ -343,7 +343,7 @@ TrialSpec trialSpec(const Experiment& e, int index) {
   t.repeat = within % e.trials_per_position;
   // Stateless: a pure function of (experiment seed, trial index), the same
   // in every cell (common random numbers: cells differ by their settings only).
-  t.seed = agent::random::splitmix64(agent::random::splitmix64(e.seed) ^ static_cast<uint64_t>(within)) % 2147483647ull;
+  t.seed = common::random::splitmix64(common::random::splitmix64(e.seed) ^ static_cast<uint64_t>(within)) % 2147483647ull;
   return t;
 }
 
@@ -374,7 +374,7 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
     rs.x = r.x;
     rs.y = r.y;
     rs.theta = r.theta;
-    rs.posture = agent::nao::Posture::Stand;
+    rs.posture = common::nao::Posture::Stand;
     rs.program = r.launch.launched() ? runner::RobotSpec::Program::External : runner::RobotSpec::Program::Builtin;
     rs.launch = r.launch;
     if (r.v6) rs.body = bridge::BodyInterface::Lola;  // lola_socket empty: the process's own (Bodies.hpp)
@@ -390,18 +390,18 @@ runner::Scenario trialScenario(const Experiment& top, const TrialSpec& t) {
   g.kickoff_team = e.base.game.kickoff_team;  // the experiment's game: (defaults without one)
   g.half_duration_s = e.base.game.half_duration_s;
   g.first_half = e.base.game.first_half;
-  g.initial_state = agent::libagent::GameStateValue::Initial;
+  g.initial_state = common::libagent::GameStateValue::Initial;
   g.on_unpenalise = GameConfig::Return::Sideline;  // stays where it stands
   const double play_s = static_cast<double>(playTick(e, sc.world.tick_us)) * tick_s;
-  g.timeline.push_back({play_s, agent::libagent::GameStateValue::Playing});
+  g.timeline.push_back({play_s, common::libagent::GameStateValue::Playing});
   const int n = static_cast<int>(s.robots.size());
-  for (int i = 0; i < n; ++i) g.penalties.push_back({0.0, i, agent::libagent::Penalty::Manual, -1.0});
-  for (int i = 0; i < n; ++i) g.penalties.push_back({play_s, i, agent::libagent::Penalty::None, -1.0});
+  for (int i = 0; i < n; ++i) g.penalties.push_back({0.0, i, common::libagent::Penalty::Manual, -1.0});
+  for (int i = 0; i < n; ++i) g.penalties.push_back({play_s, i, common::libagent::Penalty::None, -1.0});
   return sc;
 }
 
 int64_t playTick(const Experiment& e, int64_t tick_us) {
-  return std::max<int64_t>(1, agent::nao::ticksIn(e.start.penalised, tick_us));
+  return std::max<int64_t>(1, common::nao::ticksIn(e.start.penalised, tick_us));
 }
 
 int64_t setupTickUs(const Setup& s) {

@@ -200,7 +200,7 @@ runner::Scenario trialScenario(const Experiment& e, const TrialSpec& t);
 // The tick at whose end the robots are unpenalised and PLAYING begins; the
 // trial's clock counts from it. tick_us: the setup's robots' (10 ms on the
 // V5, 12 ms on the V6: setupTickUs).
-int64_t playTick(const Experiment& e, int64_t tick_us = agent::nao::kMotionTickUs);
+int64_t playTick(const Experiment& e, int64_t tick_us = common::nao::kMotionTickUs);
 // The tick of a setup's robots, us (sim/runner/Bodies.hpp).
 int64_t setupTickUs(const Setup& s);
 

@@ -15,7 +15,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 
 extern char** environ;
 
@@ -138,7 +138,7 @@ void drawRoutes(const Experiment& e, int setup, const std::vector<RouteSamples>&
     cairo_set_source_rgb(cr, c.r, c.g, c.b);
     cairo_set_line_width(cr, 3);
     cairo_new_sub_path(cr);
-    cairo_arc(cr, px(r.x), py(r.y), agent::nao::kFootprintRadius / 1000 * kPxPerM, 0, 2 * M_PI);
+    cairo_arc(cr, px(r.x), py(r.y), common::nao::kFootprintRadius / 1000 * kPxPerM, 0, 2 * M_PI);
     cairo_move_to(cr, px(r.x), py(r.y));
     cairo_line_to(cr, px(r.x + 0.3 * std::cos(r.theta)), py(r.y + 0.3 * std::sin(r.theta)));
     cairo_stroke(cr);

@@ -4,7 +4,7 @@
 #include <map>
 #include <sstream>
 
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "app/experiment/Figures.hpp"
 #include "app/experiment/Files.hpp"
 
@@ -21,7 +21,7 @@ std::vector<std::vector<RouteSamples>> routesOf(const Experiment& e, const std::
   std::vector<std::vector<RouteSamples>> routes(e.setups.size());
   for (size_t s = 0; s < e.setups.size(); ++s)
     for (const ExperimentRobot& r : e.setups[s].robots)
-      routes[s].push_back({agent::libagent::robotTag(r.team, r.player), {}});
+      routes[s].push_back({common::libagent::robotTag(r.team, r.player), {}});
   std::istringstream in(tracks);
   std::string line;
   std::getline(in, line);  // header

@@ -6,7 +6,7 @@
 #include <set>
 #include <sstream>
 
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "app/experiment/Statistics.hpp"
 #include "app/experiment/SweepReport.hpp"
 #include "app/experiment/ThesisTables.hpp"
@@ -314,7 +314,7 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
         falls[k] += r.robots[k].falls;
         contact_falls[k] += r.robots[k].contact_falls;
         moves[k] += r.robots[k].sideline_moves;
-        if (r.found && r.finder == agent::libagent::robotTag(r.robots[k].team, r.robots[k].player))
+        if (r.found && r.finder == common::libagent::robotTag(r.robots[k].team, r.robots[k].player))
           ++finds[k];
       }
     }

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "sim/programs/Programs.hpp"
 
 namespace simswift::experiment {
@@ -225,7 +225,7 @@ void classifyOutcome(TrialState& s) {
     const ExperimentRobot& r = s.cell->setups[s.spec.setup].robots[s.finder];
     s.result.found = true;
     s.result.seconds = s.clock.since(s.found_tick);
-    s.result.finder = agent::libagent::robotTag(r.team, r.player);
+    s.result.finder = common::libagent::robotTag(r.team, r.player);
   }
 }
 

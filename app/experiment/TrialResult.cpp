@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "app/experiment/Csv.hpp"
 
 namespace simswift::experiment {
@@ -40,7 +40,7 @@ std::string csvRow(const TrialResult& r, int robots) {
   for (int k = 0; k < robots; ++k) {
     if (k < static_cast<int>(r.robots.size())) {
       const RobotOutcome& o = r.robots[k];
-      s << ',' << agent::libagent::robotTag(o.team, o.player) << ',' << fixed(o.distance_m, 3) << ',' << o.falls << ','
+      s << ',' << common::libagent::robotTag(o.team, o.player) << ',' << fixed(o.distance_m, 3) << ',' << o.falls << ','
         << o.contact_falls << ',' << o.sideline_moves;
     } else {
       s << ",,,,,";
@@ -81,7 +81,7 @@ TrialResult parseCsvRow(const std::string& line, int swept_paths) {
     for (size_t k = 10; k + 4 < f.size(); k += 5) {
       if (f[k].empty()) continue;
       RobotOutcome o;
-      if (!agent::libagent::parseRobotTag(f[k], &o.team, &o.player)) throw std::runtime_error("player " + f[k]);
+      if (!common::libagent::parseRobotTag(f[k], &o.team, &o.player)) throw std::runtime_error("player " + f[k]);
       o.distance_m = std::stod(f[k + 1]);
       o.falls = std::stoi(f[k + 2]);
       o.contact_falls = std::stoi(f[k + 3]);
@@ -100,7 +100,7 @@ std::string tracksRows(const TrialResult& r, const Experiment& e) {
   std::ostringstream s;
   for (const TrackSample& p : r.tracks) {
     const RobotOutcome& o = r.robots[p.robot];
-    s << r.trial << ',' << r.setup << ',' << agent::libagent::robotTag(o.team, o.player) << ',' << fixed(p.t, 2) << ',' << fixed(p.x, 3)
+    s << r.trial << ',' << r.setup << ',' << common::libagent::robotTag(o.team, o.player) << ',' << fixed(p.t, 2) << ',' << fixed(p.x, 3)
       << ',' << fixed(p.y, 3) << ',' << fixed(p.theta, 3) << '\n';
   }
   return s.str();

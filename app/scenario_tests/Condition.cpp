@@ -8,8 +8,8 @@
 
 namespace simswift::scenario_tests {
 
-using agent::config::Range;
-using agent::config::YamlReader;
+using common::config::Range;
+using common::config::YamlReader;
 
 namespace {
 
@@ -137,7 +137,7 @@ StateNode readStateOp(const YamlReader& m, const std::string& op, int num_robots
     const std::string v = m.choice(op, "", names);
     if (v.empty()) m.missing(op, "required");
     for (int k = 0; k < static_cast<int>(names.size()); ++k)
-      if (names[k] == v) s.state = static_cast<agent::libagent::GameStateValue>(k);
+      if (names[k] == v) s.state = static_cast<common::libagent::GameStateValue>(k);
   } else if (op == "team_packets") {
     s.kind = K::TeamPackets;
     const YamlReader z = m.map(op);

@@ -40,7 +40,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/config/YamlReader.hpp"
+#include "common/config/YamlReader.hpp"
 #include "app/scenario_tests/Truth.hpp"
 
 namespace simswift::scenario_tests {
@@ -61,7 +61,7 @@ struct StateNode {
   double distance = 0;               // m
   int64_t count = 1;                 // NearBall: robots; Falls: at_least; TeamPackets: at_most
   double seconds = 0;                // Time: at_least
-  agent::libagent::GameStateValue state = agent::libagent::GameStateValue::Playing;
+  common::libagent::GameStateValue state = common::libagent::GameStateValue::Playing;
   std::string text;                  // as written, for messages ("fallen: any")
 
   bool eval(const Truth& t, const FieldConfig& f) const;
@@ -83,7 +83,7 @@ struct TimeNode {
 // a misspelt or misplaced operator ("did you mean"), a state predicate
 // outside a temporal operator, a robot the scenario lacks, bad ranges.
 // time_limit: s (within's seconds must not exceed it).
-TimeNode readCondition(const agent::config::YamlReader& parent, const std::string& key, int num_robots,
+TimeNode readCondition(const common::config::YamlReader& parent, const std::string& key, int num_robots,
                        double time_limit);
 
 bool hasEventually(const TimeNode& n);

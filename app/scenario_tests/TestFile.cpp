@@ -5,14 +5,14 @@
 #include <set>
 #include <sstream>
 
-#include "agent/random/Random.hpp"
-#include "agent/random/SplitMix64.hpp"
+#include "common/random/Random.hpp"
+#include "common/random/SplitMix64.hpp"
 #include "app/experiment/Statistics.hpp"
 
 namespace simswift::scenario_tests {
 
-using agent::config::Range;
-using agent::config::YamlReader;
+using common::config::Range;
+using common::config::YamlReader;
 
 namespace {
 
@@ -169,7 +169,7 @@ uint64_t fnv1a(const std::string& s) {
   return h;
 }
 
-double draw(agent::random::Random& rng, const Range2& r) { return r.any() ? rng.uniform(r.lo, r.hi) : 0.0; }
+double draw(common::random::Random& rng, const Range2& r) { return r.any() ? rng.uniform(r.lo, r.hi) : 0.0; }
 
 }  // namespace
 
@@ -239,7 +239,7 @@ bool selectTests(TestFile& f, const std::string& names, std::string* error) {
 }
 
 uint64_t runSeed(uint64_t file_seed, const std::string& test, int run) {
-  using agent::random::splitmix64;
+  using common::random::splitmix64;
   return splitmix64(splitmix64(file_seed ^ fnv1a(test)) ^ static_cast<uint64_t>(run)) % 2147483647ull;
 }
 
@@ -270,7 +270,7 @@ runner::Scenario runScenario(const ScenarioTest& t, uint64_t seed) {
   runner::Scenario sc = t.scenario;
   sc.seed = seed;
   // The fuzz's own stream: its draws do not depend on anything the run draws.
-  agent::random::Random rng(agent::random::splitmix64(seed ^ 0x66757a7a00000000ull));
+  common::random::Random rng(common::random::splitmix64(seed ^ 0x66757a7a00000000ull));
   for (size_t i = 0; i < sc.robots.size(); ++i) {
     const PoseFuzz& f = t.robot_fuzz[i];
     sc.robots[i].x += draw(rng, f.x);

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "agent/libagent/GameState.hpp"
+#include "common/libagent/GameState.hpp"
 #include "sim/world/FieldConfig.hpp"
 
 namespace simswift::runner {
@@ -29,7 +29,7 @@ struct Truth {
   bool has_ball = false;
   double ball_x = 0, ball_y = 0, ball_z = 0;  // m, field frame (centre)
   std::vector<RobotTruth> robots;   // scenario order
-  agent::libagent::GameStateValue state = agent::libagent::GameStateValue::Playing;
+  common::libagent::GameStateValue state = common::libagent::GameStateValue::Playing;
   int64_t team_sent[2] = {0, 0};    // team packets each side's programs sent so far (over budget too)
 };
 

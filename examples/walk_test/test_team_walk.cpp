@@ -15,7 +15,7 @@
 #include <cstring>
 #include <string>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "agent/motion/Walk2014Generator.hpp"
 #include "simswift/WalkTest.hpp"
 
@@ -27,8 +27,8 @@ struct TeamWalk {
   agent::motion::Walk2014Generator walk;
 
   void tick(const simswift::WalkCommand& c, const simswift::SensorValues& s, simswift::JointValues& j) {
-    agent::libagent::SensorValues in;
-    agent::libagent::JointValues out;
+    common::libagent::SensorValues in;
+    common::libagent::JointValues out;
     static_assert(sizeof in == sizeof s && sizeof out == sizeof j, "libagent layout");
     std::memcpy(&in, &s, sizeof in);
     std::memcpy(&out, &j, sizeof out);

@@ -15,14 +15,14 @@
 #include <ctime>
 #include <new>
 
-#include "agent/libagent/TripleBuffer.hpp"
+#include "common/libagent/TripleBuffer.hpp"
 #include "sim/bridge/AttachedProcesses.hpp"
 #include "sim/bridge/ExtensionObject.hpp"
 #include "sim/bridge/WaitStrategy.hpp"
 
 namespace simswift::bridge {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 std::string sysError(const std::string& what) { return what + ": " + std::strerror(errno); }

@@ -3,7 +3,7 @@
 // libagent block and semaphore, simswift's extension object and, when
 // rendering, the camera images), either in this process's memory (builtin
 // robot programs) or as named POSIX objects another process attaches to
-// (external robot programs; names in agent/libagent/SharedNames.hpp).
+// (external robot programs; names in common/libagent/SharedNames.hpp).
 //
 // Per 10 ms cycle: publishSensors() fills a sensor slot and posts the tick
 // semaphore -- only if its value is <= 0, otherwise the program did not take
@@ -47,12 +47,12 @@
 #include <string>
 #include <vector>
 
-#include "agent/libagent/AgentConnection.hpp"
-#include "agent/libagent/AgentShared.hpp"
-#include "agent/libagent/CameraImages.hpp"
-#include "agent/libagent/SharedNames.hpp"
-#include "agent/libagent/SimExtension.hpp"
-#include "agent/nao/Postures.hpp"
+#include "common/libagent/AgentConnection.hpp"
+#include "common/libagent/AgentShared.hpp"
+#include "common/libagent/CameraImages.hpp"
+#include "common/libagent/SharedNames.hpp"
+#include "common/libagent/SimExtension.hpp"
+#include "common/nao/Postures.hpp"
 #include "sim/bridge/BodySide.hpp"
 #include "sim/bridge/Cleanup.hpp"
 #include "sim/bridge/ExtensionObject.hpp"
@@ -62,12 +62,12 @@
 
 namespace simswift::bridge {
 
-using agent::libagent::ActuatorCommand;
-using agent::libagent::AgentData;
-using agent::libagent::CameraBlock;
-using agent::libagent::SensorValues;
-using agent::libagent::SimExtension;
-using agent::libagent::SyncMode;
+using common::libagent::ActuatorCommand;
+using common::libagent::AgentData;
+using common::libagent::CameraBlock;
+using common::libagent::SensorValues;
+using common::libagent::SimExtension;
+using common::libagent::SyncMode;
 
 struct BridgeError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -89,7 +89,7 @@ class BodyHost final : public BodySide {
   // writes one. Throws BridgeError (bad team/player, objects owned by a
   // live simulator, system errors).
   BodyHost(int team, int player, Mode mode,
-           const agent::libagent::JointValues& initial = agent::nao::postureCommand(agent::nao::Posture::Stand),
+           const common::libagent::JointValues& initial = common::nao::postureCommand(common::nao::Posture::Stand),
            const BodyHostOptions& options = {});
   ~BodyHost();  // unlinks the named objects
   BodyHost(const BodyHost&) = delete;
@@ -103,7 +103,7 @@ class BodyHost final : public BodySide {
   const std::string& endpoint() const override { return names_.memory; }
   std::string attachHint() const override;
   std::map<std::string, std::string> placeholders() const override;
-  const agent::libagent::RobotNames& names() const { return names_; }
+  const common::libagent::RobotNames& names() const { return names_; }
   const std::string& memoryName() const { return names_.memory; }
 
   AgentData* block() { return block_; }  // the 2017 block; null for other releases
@@ -114,9 +114,9 @@ class BodyHost final : public BodySide {
   CameraBlock* camera() { return &ext_->camera; }
   sem_t* tickSemaphore() { return tick_; }
   // The camera images (null unless options.images).
-  agent::libagent::CameraImages* images() override { return images_; }
+  common::libagent::CameraImages* images() override { return images_; }
   // An in-process connection for a builtin robot program (2017 block only).
-  agent::libagent::AgentConnection connect();
+  common::libagent::AgentConnection connect();
 
   void setSync(SyncMode mode) override;
   SyncMode sync() const override { return sync_; }
@@ -138,7 +138,7 @@ class BodyHost final : public BodySide {
   bool clientAnnounced() const { return ext_->client_pid.load() != 0; }
   // 30 Hz camera handshake (only if the program has a Perception thread).
   bool hasPerception() const override { return camera_.consumer(); }
-  void publishFrame(const agent::libagent::CameraFrame& frame) override;
+  void publishFrame(const common::libagent::CameraFrame& frame) override;
   bool waitPerceptionDone(double timeout_s) override;
 
   // Sets shutdown and wakes the program's threads.
@@ -153,21 +153,21 @@ class BodyHost final : public BodySide {
  private:
   void setUpNamed();
   void takeOwnership(int fd);
-  void initialise(const agent::libagent::JointValues& initial);
+  void initialise(const common::libagent::JointValues& initial);
   void releaseNamed();
 
   int team_, player_;
   Mode mode_;
   BodyHostOptions options_;
-  agent::libagent::RobotNames names_;
+  common::libagent::RobotNames names_;
   void* raw_ = nullptr;                 // the release's block
   AgentData* block_ = nullptr;          // raw_ as the 2017 block (null otherwise)
   SimExtension* ext_ = nullptr;
-  agent::libagent::CameraImages* images_ = nullptr;
+  common::libagent::CameraImages* images_ = nullptr;
   // In-process storage.
   std::unique_ptr<unsigned char[]> own_block_;
   std::unique_ptr<SimExtension> own_ext_;
-  std::unique_ptr<agent::libagent::CameraImages> own_images_;
+  std::unique_ptr<common::libagent::CameraImages> own_images_;
   sem_t tick_local_{};
   sem_t* tick_ = nullptr;
   bool named_set_up_ = false;
@@ -181,7 +181,7 @@ class BodyHost final : public BodySide {
   ActuatorCommand last_;                 // the program's latest command
   bool commanded_ = false;               // it has sent one
   LibagentBehaviour libagent_;
-  std::array<float, agent::libagent::kNumJoints> measured_{};  // angles of the last sensor slot (rad)
+  std::array<float, common::libagent::kNumJoints> measured_{};  // angles of the last sensor slot (rad)
   int skipped_run_ = 0;
   int64_t skipped_total_ = 0;
   int64_t contact_lost_events_ = 0;

@@ -11,7 +11,7 @@
 // (sim/runner/Bodies.hpp, bodyCycleUs).
 //
 // The currency across it is the simulator's own sensor slot and command
-// (agent/libagent's SensorValues and ActuatorCommand: the V5 layout and units,
+// (common/libagent's SensorValues and ActuatorCommand: the V5 layout and units,
 // sim/sensors fills them); an implementation translates them into its
 // robot's protocol.
 #pragma once
@@ -20,9 +20,9 @@
 #include <map>
 #include <string>
 
-#include "agent/libagent/AgentConnection.hpp"
-#include "agent/libagent/CameraImages.hpp"
-#include "agent/libagent/SimExtension.hpp"
+#include "common/libagent/AgentConnection.hpp"
+#include "common/libagent/CameraImages.hpp"
+#include "common/libagent/SimExtension.hpp"
 
 namespace simswift::bridge {
 
@@ -50,13 +50,13 @@ class BodySide {
 
   // Lock-step (default) or free-running (--realtime: the program is never
   // waited for after it attached; a missed cycle keeps the last command).
-  virtual void setSync(agent::libagent::SyncMode mode) = 0;
-  virtual agent::libagent::SyncMode sync() const = 0;
+  virtual void setSync(common::libagent::SyncMode mode) = 0;
+  virtual common::libagent::SyncMode sync() const = 0;
 
   // One tick: the robot's sensors as measured after this tick's physics, at
   // sim time t_us. True if the program was given the tick (false: it had
   // not taken the last one, or no program is connected yet).
-  virtual bool publishSensors(const agent::libagent::SensorValues& values, int64_t sim_time_us, int64_t tick) = 0;
+  virtual bool publishSensors(const common::libagent::SensorValues& values, int64_t sim_time_us, int64_t tick) = 0;
   // The program has answered the last tick.
   virtual bool answered() const = 0;
   // Lock-step: waits up to timeout_s (wall clock; for the watchdog only,
@@ -64,16 +64,16 @@ class BodySide {
   virtual bool waitAnswer(double timeout_s) = 0;
   // The command the body gets: the program's answer (consumed), or the last
   // one, or what the interface does on its own (libagent's limp start and sit).
-  virtual agent::libagent::ActuatorCommand readActuators() = 0;
+  virtual common::libagent::ActuatorCommand readActuators() = 0;
 
   // The simulator's extension object beside the body (game state, team
   // link, camera frames); every body has one, a program may not read it.
-  virtual agent::libagent::SimExtension* extension() = 0;
+  virtual common::libagent::SimExtension* extension() = 0;
   // The camera images block (null unless rendered for this robot's program).
-  virtual agent::libagent::CameraImages* images() = 0;
+  virtual common::libagent::CameraImages* images() = 0;
   // 30 Hz camera hand-over: the program has a Perception thread.
   virtual bool hasPerception() const = 0;
-  virtual void publishFrame(const agent::libagent::CameraFrame& frame) = 0;
+  virtual void publishFrame(const common::libagent::CameraFrame& frame) = 0;
   virtual bool waitPerceptionDone(double timeout_s) = 0;
 
   // The run ends: the program is told (where the interface can tell it).

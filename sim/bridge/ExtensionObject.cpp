@@ -7,7 +7,7 @@
 
 namespace simswift::bridge {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 void initialiseExtension(al::SimExtension& x, al::SyncMode sync, al::CameraImages* images) {
   const int32_t pid = x.simulator_pid.load();

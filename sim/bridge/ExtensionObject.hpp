@@ -1,4 +1,4 @@
-// simswift's extension object (agent/libagent/SimExtension.hpp) as the body
+// simswift's extension object (common/libagent/SimExtension.hpp) as the body
 // side serves it: BodyHost keeps it beside the block, in this process or in
 // named shared memory (also for a V6 robot: sim/lola/LolaBody keeps a
 // BodyHost for it). It carries the 30 Hz camera hand-over, the game state
@@ -7,8 +7,8 @@
 
 #include <cstdint>
 
-#include "agent/libagent/CameraImages.hpp"
-#include "agent/libagent/SimExtension.hpp"
+#include "common/libagent/CameraImages.hpp"
+#include "common/libagent/SimExtension.hpp"
 
 namespace simswift::bridge {
 
@@ -16,20 +16,20 @@ namespace simswift::bridge {
 // it up: the semaphores (process-shared), the team link, the sync mode, the
 // version, the images block's magic (if any); the magic last, so a program
 // that sees it sees an initialised robot.
-void initialiseExtension(agent::libagent::SimExtension& x, agent::libagent::SyncMode sync,
-                         agent::libagent::CameraImages* images = nullptr);
+void initialiseExtension(common::libagent::SimExtension& x, common::libagent::SyncMode sync,
+                         common::libagent::CameraImages* images = nullptr);
 // Destroys the semaphores initialiseExtension made.
-void destroyExtension(agent::libagent::SimExtension& x);
+void destroyExtension(common::libagent::SimExtension& x);
 
 // The 30 Hz camera hand-over on one extension object. Every hand-over is
 // ordered by an atomic the program loads after its wait (frames_posted,
 // frames_done), so ThreadSanitizer sees it and a stray post is never an answer.
 class CameraHandover {
  public:
-  explicit CameraHandover(agent::libagent::SimExtension* x = nullptr) : x_(x) {}
+  explicit CameraHandover(common::libagent::SimExtension* x = nullptr) : x_(x) {}
   // The program has a Perception thread (it said so when it announced itself).
   bool consumer() const { return x_->camera.consumer.load() != 0; }
-  void publish(const agent::libagent::CameraFrame& frame);
+  void publish(const common::libagent::CameraFrame& frame);
   // Waits (wall clock, for the watchdog only) until Perception answered the
   // last frame published. False on timeout.
   bool waitDone(double timeout_s);
@@ -37,7 +37,7 @@ class CameraHandover {
   void shutdown();
 
  private:
-  agent::libagent::SimExtension* x_;
+  common::libagent::SimExtension* x_;
   int64_t frames_posted_ = 0;
 };
 

@@ -5,7 +5,7 @@
 
 namespace simswift::bridge {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 using Angles = LibagentBehaviour::Angles;
 
 namespace {
@@ -15,7 +15,7 @@ constexpr float deg(float d) { return d * static_cast<float>(M_PI) / 180.0f; }
 // Degrees from each release's libagent.hpp (`sit_angles`, and in 2017/2018
 // `sit_angles_middle`), libagent joint order: head; left arm; left leg;
 // right leg; right arm. The legs are the same in all three; the 2016 arms
-// rest lower and rolled in (rUNSWift-2016-release robot/libagent/libagent.hpp).
+// rest lower and rolled in (rUNSWift-2016-release robot/libcommon/libagent.hpp).
 const Angles& LibagentBehaviour::sitAngles(Release release) {
   static const Angles a2017 = {0, 0,                                                   // HeadYaw, HeadPitch
                                deg(72), deg(2), deg(-33), deg(-47), deg(55), 0,        // left arm, LHand

@@ -1,5 +1,5 @@
 // What libagent does on the NAO beyond passing bytes, as the simulator's
-// body side does it, per rUNSWift release (robot/libagent/libagent.cpp and
+// body side does it, per rUNSWift release (robot/libcommon/libagent.cpp and
 // libagent.hpp of the public 2016, 2017 and 2018 releases; numbers below
 // are theirs):
 //
@@ -36,7 +36,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "sim/bridge/Releases.hpp"
 
 namespace simswift::bridge {
@@ -59,7 +59,7 @@ class LibagentBehaviour {
   static constexpr float kSit2016Stiffness = 1.0f;
   // The release's sit pose and (2017, 2018) the middle pose on the way
   // (rad, libagent joint order); sitMiddleAngles(R2016) is null.
-  using Angles = std::array<float, agent::libagent::kNumJoints>;
+  using Angles = std::array<float, common::libagent::kNumJoints>;
   static const Angles& sitAngles(Release release = Release::R2017);
   static const Angles* sitMiddleAngles(Release release);
   static const Angles& sitMiddleAngles() { return *sitMiddleAngles(Release::R2017); }
@@ -76,7 +76,7 @@ class LibagentBehaviour {
 
   // The sensor side of one cycle (libagent's postCallback): counts chest
   // clicks. Returns the cycle's ButtonPresses; may ask to set `standing`.
-  agent::libagent::ButtonPresses onSensors(const agent::libagent::SensorValues& v, Standing& standing);
+  common::libagent::ButtonPresses onSensors(const common::libagent::SensorValues& v, Standing& standing);
   // A STIFFEN request read from the program's slot (2017, 2018; the 2016
   // block has none, and this logs and ignores one).
   void stiffen(Standing& standing);
@@ -84,7 +84,7 @@ class LibagentBehaviour {
   // The joints the body gets this cycle (libagent's preCallback), from the
   // program's latest command (`commanded`: it has sent one), the block's
   // `standing`, whether contact is lost, and the measured angles (rad).
-  agent::libagent::JointValues body(const agent::libagent::JointValues& program, bool commanded, bool standing,
+  common::libagent::JointValues body(const common::libagent::JointValues& program, bool commanded, bool standing,
                                     bool contact_lost, const float* measured);
 
   bool limp() const { return limp_; }
@@ -94,15 +94,15 @@ class LibagentBehaviour {
   std::vector<std::string> takeLog();
 
  private:
-  void series(int clicks, bool bumper, Standing& standing, agent::libagent::ButtonPresses& out);
-  void sitStep(agent::libagent::JointValues& out);  // one cycle of the sit (sit_cycle_ counted already)
+  void series(int clicks, bool bumper, Standing& standing, common::libagent::ButtonPresses& out);
+  void sitStep(common::libagent::JointValues& out);  // one cycle of the sit (sit_cycle_ counted already)
 
   StartMode start_;
   Release release_;
   bool limp_;
   bool head_limp_ = false;
   int sit_cycle_ = -1;  // -1: not sitting
-  std::array<float, agent::libagent::kNumJoints> sit_from_{};
+  std::array<float, common::libagent::kNumJoints> sit_from_{};
   int chest_down_ = 0, chest_up_ = 0, presses_ = 0;
   bool shut_down_press_ = false;  // the current press passed kShutdownCycles
   std::vector<std::string> log_;

@@ -2,7 +2,7 @@
 
 namespace simswift::bridge {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 size_t blockSize(Release r) {
   switch (r) {

@@ -1,6 +1,6 @@
 // The libagent block of each rUNSWift release that targets the NAO V5, as
 // the simulator serves it. The robot code's own block is the 2017 one
-// (agent/libagent/AgentShared.hpp); 2016 and 2018 differ only after the
+// (common/libagent/AgentShared.hpp); 2016 and 2018 differ only after the
 // sonar commands (offsets from the public rUNSWift 2016, 2017 and 2018
 // releases' AgentData.hpp, compiled on x86-64; i386 gives the same):
 //
@@ -19,21 +19,21 @@
 #include <string>
 #include <type_traits>
 
-#include "agent/libagent/AgentShared.hpp"
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/AgentShared.hpp"
+#include "common/libagent/SharedNames.hpp"
 
 namespace simswift::bridge {
 
 enum class Release { R2016 = 2016, R2017 = 2017, R2018 = 2018 };
 
 namespace release {
-using agent::libagent::ButtonPresses;
-using agent::libagent::JointValues;
-using agent::libagent::LedCommand;
-using agent::libagent::SensorValues;
-using agent::libagent::SonarMode;
-using agent::libagent::StiffenCommand;
-constexpr int kSlots = agent::libagent::kSlots;
+using common::libagent::ButtonPresses;
+using common::libagent::JointValues;
+using common::libagent::LedCommand;
+using common::libagent::SensorValues;
+using common::libagent::SonarMode;
+using common::libagent::StiffenCommand;
+constexpr int kSlots = common::libagent::kSlots;
 
 // rUNSWift 2016: no stiffen requests.
 struct AgentData2016 {
@@ -54,7 +54,7 @@ static_assert(offsetof(AgentData2016, sayTexts) == 3164, "2016 sayTexts at 3164"
 static_assert(offsetof(AgentData2016, standing) == 3269, "2016 standing at 3269");
 static_assert(sizeof(AgentData2016) == 3272, "the 2016 block is 3272 bytes");
 
-using AgentData2017 = agent::libagent::AgentData;
+using AgentData2017 = common::libagent::AgentData;
 static_assert(offsetof(AgentData2017, stiffen) == 3164, "2017 stiffen at 3164");
 static_assert(offsetof(AgentData2017, sayTexts) == 3176, "2017 sayTexts at 3176");
 static_assert(offsetof(AgentData2017, standing) == 3281, "2017 standing at 3281");
@@ -105,6 +105,6 @@ bool parseRelease(int year, Release* out);
 
 // The release's names for one robot. 2016 has only the robot build (bare
 // names); 2017 and 2018 have both (`bare` picks the robot build's).
-agent::libagent::RobotNames releaseNames(Release r, int team, int player, bool bare);
+common::libagent::RobotNames releaseNames(Release r, int team, int player, bool bare);
 
 }  // namespace simswift::bridge

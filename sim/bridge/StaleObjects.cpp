@@ -15,12 +15,12 @@
 
 #include "sim/bridge/StaleObjects.hpp"
 
-#include "agent/libagent/SharedNames.hpp"
-#include "agent/libagent/SimExtension.hpp"
+#include "common/libagent/SharedNames.hpp"
+#include "common/libagent/SimExtension.hpp"
 
 namespace simswift::bridge {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 // The suffix of an extension object's file name ("" for the bare names), or

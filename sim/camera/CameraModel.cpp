@@ -3,11 +3,11 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 
 namespace simswift::camera {
 
-Intrinsics Intrinsics::nao(int width, int height, const agent::nao::CameraLens& lens) {
+Intrinsics Intrinsics::nao(int width, int height, const common::nao::CameraLens& lens) {
   Intrinsics k;
   k.width = width;
   k.height = height;
@@ -29,11 +29,11 @@ Intrinsics Intrinsics::fromHorizontalFov(int width, int height, double hfov) {
 }
 
 NaoCameraMount naoCameraMount(CameraId id) {
-  // The robot code's hardware facts (agent/nao/NaoFacts.hpp: mm in the
+  // The robot code's hardware facts (common/nao/NaoFacts.hpp: mm in the
   // HeadPitch frame, rad down), in m.
   if (id == kTop || id == kBottom) {
-    const agent::nao::CameraMount& m = agent::nao::cameraMount(id == kTop ? agent::nao::Camera::Top
-                                                                         : agent::nao::Camera::Bottom);
+    const common::nao::CameraMount& m = common::nao::cameraMount(id == kTop ? common::nao::Camera::Top
+                                                                         : common::nao::Camera::Bottom);
     return {Eigen::Vector3d(m.x, m.y, m.z) * 1e-3, m.pitch_down};
   }
   throw std::invalid_argument("naoCameraMount: camera id must be 0 (top) or 1 (bottom)");
@@ -49,7 +49,7 @@ Eigen::Isometry3d cameraInHead(CameraId id) {
 }
 
 CameraModel CameraModel::naoCamera(const Eigen::Isometry3d& head_pose, CameraId id, int width,
-                                   int height, const agent::nao::CameraLens& lens) {
+                                   int height, const common::nao::CameraLens& lens) {
   CameraModel c;
   c.pose = head_pose * cameraInHead(id);
   c.intrinsics = Intrinsics::nao(width, height, lens);

@@ -13,7 +13,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 
 namespace simswift::camera {
 
@@ -25,11 +25,11 @@ struct Intrinsics {
   double cx = 0, cy = 0;          // principal point, px (continuous coordinates)
 
   // The NAO camera at the given resolution through `lens` (the V5's 60.9 x
-  // 47.6 deg, the V6's 56.3 x 43.7 deg: agent/nao/NaoFacts.hpp), principal
+  // 47.6 deg, the V6's 56.3 x 43.7 deg: common/nao/NaoFacts.hpp), principal
   // point at the image centre. fx = (w/2)/tan(hfov/2): ~544.2 px at 640 wide
   // on a V5, ~598.1 px on a V6; fy from the vertical FOV.
   static Intrinsics nao(int width = 640, int height = 480,
-                        const agent::nao::CameraLens& lens = agent::nao::kV5CameraLens);
+                        const common::nao::CameraLens& lens = common::nao::kV5CameraLens);
   // A free camera with the given horizontal FOV (rad) and square pixels.
   static Intrinsics fromHorizontalFov(int width, int height, double hfov);
 };
@@ -51,7 +51,7 @@ struct CameraModel {
 
   static CameraModel naoCamera(const Eigen::Isometry3d& head_pose, CameraId id,
                                int width = 640, int height = 480,
-                               const agent::nao::CameraLens& lens = agent::nao::kV5CameraLens);
+                               const common::nao::CameraLens& lens = common::nao::kV5CameraLens);
 
   // Pixel (continuous) of a world point; nullopt if it is not in front of
   // the camera (x <= 1 mm in the camera frame). May fall outside the image.

@@ -33,9 +33,9 @@ void FrameDumper::write(int team, int player, int camera, int64_t frame_index, c
   ++written_;
 }
 
-void FrameDumper::dump(int team, int player, const agent::libagent::CameraImages& images) {
+void FrameDumper::dump(int team, int player, const common::libagent::CameraImages& images) {
   if (!wants(images.frame_index)) return;
-  for (int c = 0; c < agent::libagent::kNumCameras; ++c)
+  for (int c = 0; c < common::libagent::kNumCameras; ++c)
     if (images.valid[c]) write(team, player, c, images.frame_index, images.rgb[c], images.width, images.height);
 }
 

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-#include "agent/libagent/CameraImages.hpp"
+#include "common/libagent/CameraImages.hpp"
 
 namespace simswift::camera {
 
@@ -20,7 +20,7 @@ class FrameDumper {
 
   bool wants(int64_t frame_index) const { return frame_index % every_ == 0; }
   // Both cameras' RGB images of `images` (those marked valid), if wanted.
-  void dump(int team, int player, const agent::libagent::CameraImages& images);
+  void dump(int team, int player, const common::libagent::CameraImages& images);
   // One image; always written.
   void write(int team, int player, int camera, int64_t frame_index, const uint8_t* rgb, int width,
              int height);

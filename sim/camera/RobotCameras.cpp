@@ -21,8 +21,8 @@ RobotCameras::RobotCameras(const World& world, RobotCamerasConfig config)
 void RobotCameras::setTeams(std::vector<int> team_of_robot) { teams_ = std::move(team_of_robot); }
 
 void RobotCameras::setResolution(int width, int height) {
-  if (width <= 0 || height <= 0 || width % 2 != 0 || width > agent::libagent::kMaxImageWidth ||
-      height > agent::libagent::kMaxImageHeight)
+  if (width <= 0 || height <= 0 || width % 2 != 0 || width > common::libagent::kMaxImageWidth ||
+      height > common::libagent::kMaxImageHeight)
     throw std::invalid_argument("RobotCameras: resolution " + std::to_string(width) + "x" +
                                 std::to_string(height) + " is not an even width up to 1280x960");
   width_ = width;
@@ -65,18 +65,18 @@ CameraView RobotCameras::view(const World& world, int robot, CameraId id) const 
   return v;
 }
 
-void RobotCameras::fillImages(const World& world, int robot, agent::libagent::CameraImages& out,
+void RobotCameras::fillImages(const World& world, int robot, common::libagent::CameraImages& out,
                               int64_t frame_index, int64_t sim_time_us) {
   if (robot < 0 || robot >= world.numRobots())
     throw std::out_of_range("RobotCameras::fillImages: no robot " + std::to_string(robot));
   syncScene(world);
   const double t = world.time();  // s
-  out.magic = agent::libagent::kCameraImagesMagic;
+  out.magic = common::libagent::kCameraImagesMagic;
   out.width = width_;
   out.height = height_;
   out.frame_index = frame_index >= 0 ? frame_index : static_cast<int64_t>(std::floor(t * kCameraHz + 1e-9));
   out.sim_time_us = sim_time_us >= 0 ? sim_time_us : static_cast<int64_t>(std::llround(t * 1e6));
-  for (int c = 0; c < agent::libagent::kNumCameras; ++c) {
+  for (int c = 0; c < common::libagent::kNumCameras; ++c) {
     out.valid[c] = 0;
     renderer_.render(scene_, view(world, robot, static_cast<CameraId>(c)), out.rgb[c]);
     rgbToYuyv(out.rgb[c], width_, height_, out.yuv422[c]);

@@ -14,7 +14,7 @@
 #include <memory>
 #include <vector>
 
-#include "agent/libagent/CameraImages.hpp"
+#include "common/libagent/CameraImages.hpp"
 #include "sim/camera/CameraModel.hpp"
 #include "sim/camera/Renderer.hpp"
 #include "sim/camera/Scene.hpp"
@@ -24,7 +24,7 @@ namespace simswift::camera {
 
 struct RobotCamerasConfig {
   int width = 640, height = 480;  // 640x480 (default) or 1280x960
-  agent::nao::CameraLens lens = agent::nao::kV5CameraLens;  // the robots' (one kind per world)
+  common::nao::CameraLens lens = common::nao::kV5CameraLens;  // the robots' (one kind per world)
   SceneOptions scene;
 };
 
@@ -51,7 +51,7 @@ class RobotCameras {
   // (RGB and YUYV, valid flags, size, frame index, time). frame_index < 0
   // means "the 30 Hz frame at the world's time"; sim_time_us < 0 means the
   // world's time.
-  void fillImages(const World& world, int robot, agent::libagent::CameraImages& out,
+  void fillImages(const World& world, int robot, common::libagent::CameraImages& out,
                   int64_t frame_index = -1, int64_t sim_time_us = -1);
 
   Scene& scene() { return scene_; }
@@ -65,7 +65,7 @@ class RobotCameras {
   Renderer renderer_;
   std::vector<int> teams_;
   int width_, height_;
-  agent::nao::CameraLens lens_;
+  common::nao::CameraLens lens_;
 };
 
 }  // namespace simswift::camera

@@ -5,7 +5,7 @@
 
 namespace simswift::game::spl {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 GameControlData encode(const al::GameStateBlock& b, uint8_t packet_number) {
   GameControlData d;

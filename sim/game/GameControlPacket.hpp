@@ -13,7 +13,7 @@
 // pinned by the static_asserts below.
 //
 // The packet carries what GameController::fill() writes into the
-// game-state extension block (agent/libagent/GameState.hpp): one home for
+// game-state extension block (common/libagent/GameState.hpp): one home for
 // the game's state, two ways for a robot to read it.
 #pragma once
 
@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <string>
 
-#include "agent/libagent/GameState.hpp"
+#include "common/libagent/GameState.hpp"
 
 namespace simswift::game::spl {
 
@@ -43,7 +43,7 @@ constexpr int64_t kSendIntervalUs = 500000;  // us between packets (the GameCont
 enum class ReturnMessage : uint8_t { ManualPenalise = 0, ManualUnpenalise = 1, Alive = 2 };
 
 struct PlayerInfo {
-  uint8_t penalty;                // SPL penalty number (agent::libagent::Penalty)
+  uint8_t penalty;                // SPL penalty number (common::libagent::Penalty)
   uint8_t secs_till_unpenalised;  // s
 };
 
@@ -65,10 +65,10 @@ struct GameControlData {
   uint8_t packet_number;      // +1 per packet sent, wrapping at 256
   uint8_t players_per_team;
   uint8_t game_type;          // 0 round robin, 1 play-off, 2/3 mixed team
-  uint8_t state;              // agent::libagent::GameStateValue
+  uint8_t state;              // common::libagent::GameStateValue
   uint8_t first_half;         // 1 = first half
   uint8_t kickoff_team;       // SPL team number with the kick-off, or kDropBall
-  uint8_t secondary_state;    // agent::libagent::SecondaryState
+  uint8_t secondary_state;    // common::libagent::SecondaryState
   uint8_t drop_in_team;       // team colour that caused the last drop-in
   uint16_t drop_in_time;      // s since the last drop-in (kNoDropIn: none yet)
   uint16_t secs_remaining;    // s left in the half
@@ -112,7 +112,7 @@ static_assert(offsetof(ReturnData, message) == 7);
 // The packet for the game state `b` (GameController::fill's block); the
 // fields simswift does not model (score, penalty shots, coach, drop-in) are
 // zero / "none".
-GameControlData encode(const agent::libagent::GameStateBlock& b, uint8_t packet_number);
+GameControlData encode(const common::libagent::GameStateBlock& b, uint8_t packet_number);
 ReturnData makeReturn(uint8_t team, uint8_t player, ReturnMessage message);
 
 // Decoders for bytes off a socket: false (and why, if asked) unless the

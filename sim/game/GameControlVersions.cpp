@@ -6,7 +6,7 @@
 
 namespace simswift::game::spl {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 

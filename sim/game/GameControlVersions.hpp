@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/libagent/GameState.hpp"
+#include "common/libagent/GameState.hpp"
 
 namespace simswift::game::spl {
 
@@ -52,17 +52,17 @@ const PacketVersion* findPacketVersion(int data_version);
 std::string packetVersionList();
 
 // A penalty (simswift's numbers are the 2017 season's:
-// agent/libagent/GameState.hpp) as version `v`'s packets number it, or -1
+// common/libagent/GameState.hpp) as version `v`'s packets number it, or -1
 // if that season has no such penalty. The public headers (commits above):
 // 2019 (12) numbers 1-8 as 2017 does; from 2020 (13 on) 5 is "illegal
 // position" (taken here for 2017's illegal defender, the positioning rule
 // it replaced: an assumption), request for pickup moves from 8 to 7, and
 // the kick-off goal penalty is gone. Substitute 14 and manual 15 throughout.
-int penaltyCode(const PacketVersion& v, agent::libagent::Penalty p);
+int penaltyCode(const PacketVersion& v, common::libagent::Penalty p);
 
 // The game data of version `v` for the game state `b`; message_budget: what
 // each team may still send (2022 on).
-std::vector<std::uint8_t> encodeGameData(const PacketVersion& v, const agent::libagent::GameStateBlock& b,
+std::vector<std::uint8_t> encodeGameData(const PacketVersion& v, const common::libagent::GameStateBlock& b,
                                          std::uint8_t packet_number, std::uint16_t message_budget);
 
 // A return packet of version `v` read off a socket: team and player

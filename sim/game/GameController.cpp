@@ -6,7 +6,7 @@
 
 namespace simswift::game {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 constexpr double kReadySeconds = 45;  // SPL: READY lasts at most 45 s

@@ -1,7 +1,7 @@
 // The simulator's GameController: plays the SPL GameController for a run.
 // A scenario gives a timeline of game states and timed penalties; update()
 // advances them in simulated time and fill() writes what a robot would be
-// told into its GameStateBlock (agent/libagent/GameState.hpp).
+// told into its GameStateBlock (common/libagent/GameState.hpp).
 //
 // Clock rules (as the GameController does): the half's seconds remaining
 // count down only while PLAYING; READY shows a 45 s secondary countdown.
@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "agent/libagent/GameState.hpp"
+#include "common/libagent/GameState.hpp"
 #include "sim/game/GameControllerUdp.hpp"
 
 namespace simswift::game {
 
-using agent::libagent::GameStateValue;
-using agent::libagent::Penalty;
-using agent::libagent::SecondaryState;
+using common::libagent::GameStateValue;
+using common::libagent::Penalty;
+using common::libagent::SecondaryState;
 
 struct GameConfig {
   struct StateChange {
@@ -68,7 +68,7 @@ class GameController {
   // the robots penalised / unpenalised by this call, in a fixed order.
   std::vector<GameEvent> update(int64_t t_us);
   // Writes the current game state into `b` (also magic and update count).
-  void fill(agent::libagent::GameStateBlock& b) const;
+  void fill(common::libagent::GameStateBlock& b) const;
 
   GameStateValue state() const { return state_; }
   SecondaryState secondary() const { return secondary_; }

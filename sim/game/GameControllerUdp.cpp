@@ -76,7 +76,7 @@ GameControllerUdp::~GameControllerUdp() {
   if (recv_fd_ >= 0) close(recv_fd_);
 }
 
-void GameControllerUdp::update(int64_t t_us, const agent::libagent::GameStateBlock& b) {
+void GameControllerUdp::update(int64_t t_us, const common::libagent::GameStateBlock& b) {
   if (t_us >= next_send_us_) {
     const std::vector<uint8_t> d =
         spl::encodeGameData(*version_, b, packet_number_++, static_cast<uint16_t>(config_.message_budget));

@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "agent/libagent/GameState.hpp"
+#include "common/libagent/GameState.hpp"
 
 namespace simswift::game {
 
@@ -60,7 +60,7 @@ class GameControllerUdp {
 
   // Stage 11: sends `b` (GameController::fill's block) if a packet is due
   // at simulated time t_us, then counts the return packets waiting.
-  void update(int64_t t_us, const agent::libagent::GameStateBlock& b);
+  void update(int64_t t_us, const common::libagent::GameStateBlock& b);
 
   // Return packets from one robot (team: SPL team number in the packet).
   struct Returns {

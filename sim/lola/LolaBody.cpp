@@ -6,13 +6,13 @@
 #include <cstring>
 #include <filesystem>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 
 namespace simswift::lola {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace S = al::Sensors;
-using agent::libagent::SyncMode;
+using common::libagent::SyncMode;
 
 namespace {
 
@@ -44,9 +44,9 @@ SensorPacket toLolaPacket(const al::SensorValues& v, const LolaBodyOptions& opti
     p.status[l] = status(v.joints.temperatures[j], options);
   }
   const float* s = v.sensors;
-  // Inertial: the slots hold the V5's signs (agent/libagent/Inertial.hpp);
+  // Inertial: the slots hold the V5's signs (common/libagent/Inertial.hpp);
   // back to the physical body rate w and specific force f, then with LoLA's
-  // signs (agent/lola/Protocol.hpp: the gyroscope +w, the accelerometer -f).
+  // signs (common/lola/Protocol.hpp: the gyroscope +w, the accelerometer -f).
   for (int a = 0; a < 3; ++a) {
     const double w = al::inertial::kGyroscopeSign[a] * s[S::InertialSensor_GyroscopeX + a];
     const double f = al::inertial::kAccelerometerSign[a] * s[S::InertialSensor_AccelerometerX + a];

@@ -48,29 +48,29 @@ struct LolaBodyOptions {
 
 // The simulator's sensor slot (V5 layout and signs) as LoLA reports it.
 // Pure: tests check each slot's translation.
-SensorPacket toLolaPacket(const agent::libagent::SensorValues& values, const LolaBodyOptions& options);
+SensorPacket toLolaPacket(const common::libagent::SensorValues& values, const LolaBodyOptions& options);
 
 class LolaBody final : public bridge::BodySide {
  public:
   // Throws ServerError (socket path taken by a live server, too long, ...).
-  LolaBody(int team, int player, const agent::libagent::JointValues& initial, LolaBodyOptions options);
+  LolaBody(int team, int player, const common::libagent::JointValues& initial, LolaBodyOptions options);
   ~LolaBody() override;
 
   bridge::BodyInterface interface() const override { return bridge::BodyInterface::Lola; }
   const std::string& endpoint() const override { return server_.path(); }
   std::string attachHint() const override;
   std::map<std::string, std::string> placeholders() const override;
-  void setSync(agent::libagent::SyncMode mode) override { sync_ = mode; }
-  agent::libagent::SyncMode sync() const override { return sync_; }
+  void setSync(common::libagent::SyncMode mode) override { sync_ = mode; }
+  common::libagent::SyncMode sync() const override { return sync_; }
 
-  bool publishSensors(const agent::libagent::SensorValues& values, int64_t sim_time_us, int64_t tick) override;
+  bool publishSensors(const common::libagent::SensorValues& values, int64_t sim_time_us, int64_t tick) override;
   bool answered() const override { return answered_; }
   bool waitAnswer(double timeout_s) override;
-  agent::libagent::ActuatorCommand readActuators() override;
-  agent::libagent::SimExtension* extension() override { return objects_->extension(); }
-  agent::libagent::CameraImages* images() override { return objects_->images(); }
+  common::libagent::ActuatorCommand readActuators() override;
+  common::libagent::SimExtension* extension() override { return objects_->extension(); }
+  common::libagent::CameraImages* images() override { return objects_->images(); }
   bool hasPerception() const override { return objects_->hasPerception(); }
-  void publishFrame(const agent::libagent::CameraFrame& frame) override { objects_->publishFrame(frame); }
+  void publishFrame(const common::libagent::CameraFrame& frame) override { objects_->publishFrame(frame); }
   bool waitPerceptionDone(double timeout_s) override { return objects_->waitPerceptionDone(timeout_s); }
   void shutdown() override;
   int64_t skippedCycles() const override { return skipped_; }
@@ -88,7 +88,7 @@ class LolaBody final : public bridge::BodySide {
   // reference program reads on a V6 as on a V5. Its libagent block is not
   // used (the joints go over the socket).
   std::unique_ptr<bridge::BodyHost> objects_;
-  agent::libagent::SyncMode sync_ = agent::libagent::SyncMode::LockStep;
+  common::libagent::SyncMode sync_ = common::libagent::SyncMode::LockStep;
   PacketBytes packet_{};
   bool sent_ = false;      // this cycle's packet went out
   bool answered_ = false;  // and its answer is in `pending_`

@@ -7,7 +7,7 @@
 
 namespace simswift {
 
-namespace la = agent::libagent;
+namespace la = common::libagent;
 
 namespace {
 

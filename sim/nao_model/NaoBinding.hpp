@@ -1,5 +1,5 @@
 // The NAO's binding to libagent: which model joint each of libagent's 25
-// joint slots drives (agent/libagent/AgentShared.hpp, Joints::kNames), and
+// joint slots drives (common/libagent/AgentShared.hpp, Joints::kNames), and
 // the one motor the two HipYawPitch joints share. A RobotModel
 // (RobotModel.hpp) is any URDF; it must pass this check before a robot
 // program drives it through libagent (the runner checks it when it
@@ -11,7 +11,7 @@
 #include <array>
 #include <vector>
 
-#include "agent/libagent/AgentShared.hpp"  // kNumJoints: the 25 libagent joints
+#include "common/libagent/AgentShared.hpp"  // kNumJoints: the 25 libagent joints
 #include "sim/nao_model/RobotModel.hpp"
 
 namespace simswift {
@@ -20,7 +20,7 @@ class RobotBody;
 
 class NaoBinding {
  public:
-  using SlotArray = std::array<float, agent::libagent::kNumJoints>;
+  using SlotArray = std::array<float, common::libagent::kNumJoints>;
 
   // Checks that `model` has every libagent joint (none of them a mimic) and
   // that RHipYawPitch mimics LHipYawPitch with multiplier 1. Throws
@@ -44,7 +44,7 @@ class NaoBinding {
 
  private:
   const RobotModel* model_;
-  std::array<int, agent::libagent::kNumJoints> slot_to_joint_{};
+  std::array<int, common::libagent::kNumJoints> slot_to_joint_{};
   std::vector<int> joint_to_slot_;
 };
 

@@ -17,7 +17,7 @@
 #include <mutex>
 #include <sstream>
 
-#include "agent/libagent/AgentShared.hpp"  // the NAO's joint names, for the joint order only
+#include "common/libagent/AgentShared.hpp"  // the NAO's joint names, for the joint order only
 #include "sim/nao_model/UrdfLines.hpp"
 
 namespace simswift {
@@ -31,7 +31,7 @@ Eigen::Isometry3d Pose3::isometry() const {
 
 namespace {
 
-namespace la = agent::libagent;
+namespace la = common::libagent;
 
 // urdfdom reports problems through console_bridge, not through its return
 // value; this handler collects them so the ModelError can quote them.

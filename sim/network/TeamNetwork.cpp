@@ -7,7 +7,7 @@
 
 namespace simswift::network {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 TeamNetwork::TeamNetwork(const TeamNetworkConfig& config, uint64_t seed)
     : config_(config),

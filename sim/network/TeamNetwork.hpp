@@ -23,7 +23,7 @@
 #include <utility>
 #include <vector>
 
-#include "agent/libagent/TeamLink.hpp"
+#include "common/libagent/TeamLink.hpp"
 
 namespace simswift::network {
 
@@ -65,7 +65,7 @@ class TeamNetwork {
   // The runner's once-per-tick call: drains every link's outbox (endpoint
   // order, FIFO) as sent at t_us, then writes the packets due by t_us into
   // the receivers' inboxes. links[i] belongs to endpoint i (null: none).
-  void exchange(int64_t t_us, const std::vector<agent::libagent::TeamLink*>& links);
+  void exchange(int64_t t_us, const std::vector<common::libagent::TeamLink*>& links);
 
   const TeamNetworkStats& stats() const { return stats_; }
   const TeamNetworkConfig& config() const { return config_; }

@@ -7,7 +7,7 @@
 
 namespace simswift::programs {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace ap = agent::program;
 
 BuiltinProgram::BuiltinProgram(RobotSlot slot, ap::ProgramConfig config, ap::Threading threading)
@@ -24,8 +24,8 @@ BuiltinProgram::BuiltinProgram(RobotSlot slot, ap::ProgramConfig config, ap::Thr
     al::AgentConnection camera = al::AgentConnection::extensionOnly(slot_.host->extension());
     camera.setImages(slot_.host->images());
     try {
-      body = ap::lolaBody(agent::lola::LolaConnection::connect(slot_.host->endpoint(), 1.0), std::move(camera));
-    } catch (const agent::lola::LolaError& e) {
+      body = ap::lolaBody(common::lola::LolaConnection::connect(slot_.host->endpoint(), 1.0), std::move(camera));
+    } catch (const common::lola::LolaError& e) {
       throw runner::RunnerError("robot " + slot_.tag + ": " + e.what());
     }
   }

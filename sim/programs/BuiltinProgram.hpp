@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "agent/framework/MotionGenerator.hpp"
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "sim/programs/ProgramDriver.hpp"
 
@@ -48,13 +48,13 @@ class InlineProgram : public BuiltinProgram {
 // The public API's controller (include/simswift/Simulation.hpp): sensors in,
 // joint command out, each tick, on the simulator's thread. It goes through
 // the same libagent block, in the same tick stage, as every other program.
-using RawController = std::function<void(const agent::libagent::SensorValues&, agent::libagent::JointValues&)>;
+using RawController = std::function<void(const common::libagent::SensorValues&, common::libagent::JointValues&)>;
 // A controller that also sees libagent's `standing` and chest-button series
 // and may send STIFFEN with its command (agent::program::LibagentIO: filled
 // by the program before each Motion step, as an external program reads the block).
 using LibagentExtras = agent::program::LibagentIO;
 using RawLibagentController =
-    std::function<void(const agent::libagent::SensorValues&, agent::libagent::JointValues&, LibagentExtras&)>;
+    std::function<void(const common::libagent::SensorValues&, common::libagent::JointValues&, LibagentExtras&)>;
 
 class ApiController final : public InlineProgram {
  public:

@@ -26,7 +26,7 @@ void setDistribution(FindBallViewData& d, const agent::behaviour::PositionalDist
 ViewRobot viewRobot(const agent::blackboard::FindBallTeammate& t);
 // The view of one robot's findball section (field mm, rad).
 FindBallViewData viewFromInfo(const agent::blackboard::FindBallInfo& fb, int player, const std::string& tag,
-                              double field_length = agent::field::kLength, double field_width = agent::field::kWidth);
+                              double field_length = common::field::kLength, double field_width = common::field::kWidth);
 // The same, or nothing when the section is not active (no search runs).
 std::optional<FindBallViewData> observedView(const agent::blackboard::FindBallInfo& fb, int player,
                                              const std::string& tag);

@@ -5,7 +5,7 @@
 
 namespace simswift::programs {
 
-void readProgramPart(const agent::config::YamlReader& robot, ProgramPart& p,
+void readProgramPart(const common::config::YamlReader& robot, ProgramPart& p,
                      const agent::program::OutsideAction& outside) {
   agent::program::readProgramKeys(robot, p, outside);
 }

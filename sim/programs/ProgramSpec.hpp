@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/config/YamlReader.hpp"
+#include "common/config/YamlReader.hpp"
 #include "agent/program/RobotSetup.hpp"
 
 namespace simswift::runner {
@@ -27,7 +27,7 @@ using ProgramPart = agent::program::RobotSetup;
 
 // A robot map's script:, actions: and behaviour: into p (absent keys keep
 // p's values; `outside`: the actions entries the scenario takes itself).
-void readProgramPart(const agent::config::YamlReader& robot, ProgramPart& p,
+void readProgramPart(const common::config::YamlReader& robot, ProgramPart& p,
                      const agent::program::OutsideAction& outside);
 // A behaviour from its kind name and overrides as YAML flow text (the
 // experiment's robots); errors name `where`. check: the same, kept nowhere.

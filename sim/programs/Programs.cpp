@@ -4,8 +4,8 @@
 #include <fstream>
 #include <map>
 
-#include "agent/libagent/SharedNames.hpp"
-#include "agent/lola/Protocol.hpp"
+#include "common/libagent/SharedNames.hpp"
+#include "common/lola/Protocol.hpp"
 #include "agent/program/RobotSetup.hpp"
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/programs/ExternalProgram.hpp"
@@ -16,7 +16,7 @@
 
 namespace simswift::programs {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace ap = agent::program;
 using runner::ProgramError;
 using runner::RobotSpec;
@@ -140,7 +140,7 @@ Programs::LolaView Programs::lolaView(const RobotSlot& slot) {
   LolaView view;
   if (slot.host->interface() != bridge::BodyInterface::Lola) return view;
   const std::string socket = slot.host->endpoint();
-  if (socket == agent::lola::kDefaultSocketPath) return view;
+  if (socket == common::lola::kDefaultSocketPath) return view;
   const NamespaceSupport ns = mountNamespaceSupport();
   if (ns.available) {
     view.robocup = socket;

@@ -5,15 +5,15 @@
 
 #include <functional>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 
 namespace simswift::programs {
 
 // One Motion tick of a fresh walk: the request (mm/s, mm/s, rad/s; walk
 // false: stand), the sensors in, the joint command out.
 using ReferenceWalkStep = std::function<void(bool walk, double forward, double left, double turn,
-                                             const agent::libagent::SensorValues& sensors,
-                                             agent::libagent::JointValues& joints)>;
+                                             const common::libagent::SensorValues& sensors,
+                                             common::libagent::JointValues& joints)>;
 ReferenceWalkStep referenceWalk();
 
 }  // namespace simswift::programs

@@ -2,9 +2,9 @@
 
 #include <unistd.h>
 
-#include "agent/libagent/SharedNames.hpp"
-#include "agent/nao/NaoFacts.hpp"
-#include "agent/nao/Postures.hpp"
+#include "common/libagent/SharedNames.hpp"
+#include "common/nao/NaoFacts.hpp"
+#include "common/nao/Postures.hpp"
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/lola/LolaBody.hpp"
 #include "sim/runner/Scenario.hpp"
@@ -16,20 +16,20 @@ const char* bodyInterfaceName(bridge::BodyInterface b) {
 }
 
 int64_t bodyCycleUs(bridge::BodyInterface b) {
-  return b == bridge::BodyInterface::Lola ? lola::kCycleUs : agent::nao::kMotionTickUs;
+  return b == bridge::BodyInterface::Lola ? lola::kCycleUs : common::nao::kMotionTickUs;
 }
 
-agent::nao::CameraLens bodyCameraLens(bridge::BodyInterface b) {
-  return b == bridge::BodyInterface::Lola ? agent::nao::kV6CameraLens : agent::nao::kV5CameraLens;
+common::nao::CameraLens bodyCameraLens(bridge::BodyInterface b) {
+  return b == bridge::BodyInterface::Lola ? common::nao::kV6CameraLens : common::nao::kV5CameraLens;
 }
 
 std::string defaultLolaSocket(int team, int player, bool bare) {
   if (bare) return std::string(lola::kDefaultSocketPath);
-  return "/tmp/simswift-lola/" + agent::libagent::robotTag(team, player);
+  return "/tmp/simswift-lola/" + common::libagent::robotTag(team, player);
 }
 
 std::unique_ptr<bridge::BodySide> makeBody(const RobotSpec& spec, const BodyOptions& options) {
-  const agent::libagent::JointValues initial = agent::nao::postureCommand(spec.posture);
+  const common::libagent::JointValues initial = common::nao::postureCommand(spec.posture);
   if (spec.body == bridge::BodyInterface::Lola) {
     lola::LolaBodyOptions lo;
     // No socket named (an experiment's trial): one of this process's own,
@@ -38,13 +38,13 @@ std::unique_ptr<bridge::BodySide> makeBody(const RobotSpec& spec, const BodyOpti
     // PrivateShm.hpp), so nothing is left there after a kill -9.
     lo.socket_path = !spec.lola_socket.empty() ? spec.lola_socket
                                                : "/dev/shm/simswift-lola-p" + std::to_string(::getpid()) + "-" +
-                                                     agent::libagent::robotTag(spec.team, spec.player);
+                                                     common::libagent::robotTag(spec.team, spec.player);
     lo.images = options.images;
     lo.named = options.named;
     try {
       return std::make_unique<lola::LolaBody>(spec.team, spec.player, initial, lo);
     } catch (const lola::ServerError& e) {
-      throw bridge::BridgeError("robot " + agent::libagent::robotTag(spec.team, spec.player) + ": " + e.what());
+      throw bridge::BridgeError("robot " + common::libagent::robotTag(spec.team, spec.player) + ": " + e.what());
     }
   }
   bridge::BodyHostOptions ho;

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 #include "sim/bridge/BodySide.hpp"
 
 namespace simswift::runner {
@@ -14,14 +14,14 @@ namespace simswift::runner {
 struct RobotSpec;
 
 const char* bodyInterfaceName(bridge::BodyInterface b);  // "libagent", "lola"
-// us: the NAO V5's DCM cycle, 10 ms (agent::nao::kMotionTickUs: libagent
+// us: the NAO V5's DCM cycle, 10 ms (common::nao::kMotionTickUs: libagent
 // serves the robot program once per DCM cycle); LoLA's 12 ms
 // (sim/lola/Protocol.hpp kCycleUs). One world runs one cycle: the scenario
 // refuses robots whose cycles differ.
 int64_t bodyCycleUs(bridge::BodyInterface b);
 // The cameras' lens of the robot behind each interface: the V5's behind
-// libagent, the V6's behind LoLA (agent/nao/NaoFacts.hpp).
-agent::nao::CameraLens bodyCameraLens(bridge::BodyInterface b);
+// libagent, the V6's behind LoLA (common/nao/NaoFacts.hpp).
+common::nao::CameraLens bodyCameraLens(bridge::BodyInterface b);
 // The V6's LoLA socket a robot gets when the scenario names none:
 // /tmp/robocup with names: bare (what an unchanged program opens), else
 // /tmp/simswift-lola/t<team>p<player> (a second live run with the same robot

@@ -8,8 +8,8 @@
 #include <sstream>
 #include <thread>
 
-#include "agent/libagent/SharedNames.hpp"
-#include "agent/nao/Postures.hpp"
+#include "common/libagent/SharedNames.hpp"
+#include "common/nao/Postures.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Bodies.hpp"
@@ -30,9 +30,9 @@ class OverviewCamera {};
 
 namespace simswift::runner {
 
-namespace al = agent::libagent;
-namespace an = agent::nao;
-using agent::libagent::SyncMode;
+namespace al = common::libagent;
+namespace an = common::nao;
+using common::libagent::SyncMode;
 using Clock = std::chrono::steady_clock;
 
 Runner::Runner(Scenario scenario)
@@ -233,8 +233,8 @@ void Runner::buildTeamAndGame() {
   teamAndGame(0);
 }
 
-agent::nao::CameraLens Runner::camerasLens() const {
-  return scenario_.robots.empty() ? agent::nao::kV5CameraLens : bodyCameraLens(scenario_.robots.front().body);
+common::nao::CameraLens Runner::camerasLens() const {
+  return scenario_.robots.empty() ? common::nao::kV5CameraLens : bodyCameraLens(scenario_.robots.front().body);
 }
 
 // The vision oracle: its noise follows the scenario's master switch too;
@@ -242,9 +242,9 @@ agent::nao::CameraLens Runner::camerasLens() const {
 void Runner::buildVision() {
   vision::VisionConfig vc = scenario_.vision;
   vc.noise = vc.noise && scenario_.noise.on;
-  const agent::nao::CameraLens lens = camerasLens();
-  if (!vc.hfov_deg) vc.hfov_deg = lens.horizontal_fov / agent::nao::kDeg;
-  if (!vc.vfov_deg) vc.vfov_deg = lens.vertical_fov / agent::nao::kDeg;
+  const common::nao::CameraLens lens = camerasLens();
+  if (!vc.hfov_deg) vc.hfov_deg = lens.horizontal_fov / common::nao::kDeg;
+  if (!vc.vfov_deg) vc.vfov_deg = lens.vertical_fov / common::nao::kDeg;
   vision_ = std::make_unique<vision::VisionOracle>(world_->field(), vc, scenario_.seed);
   std::vector<int> teams, colours;
   for (auto& r : robots_) {
@@ -392,7 +392,7 @@ void Runner::updateFalls() {
 
 void Runner::cameraFrame(int64_t t_us) {
   // Integer arithmetic: frame k is due once t_us * 30 / 1e6 reaches k.
-  const int64_t frame = t_us * agent::nao::kCameraFramesPerSecond / 1000000;
+  const int64_t frame = t_us * common::nao::kCameraFramesPerSecond / 1000000;
   if (frame <= last_frame_) return;
   last_frame_ = frame;
   al::CameraFrame f{};
@@ -470,7 +470,7 @@ void Runner::teamAndGame(int64_t t_us) {
   }
   for (auto& r : robots_) game_->fill(r->ext->game);
   if (gc_udp_) {
-    agent::libagent::GameStateBlock b{};
+    common::libagent::GameStateBlock b{};
     game_->fill(b);
     gc_udp_->update(t_us, b);
   }

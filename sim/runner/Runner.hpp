@@ -73,8 +73,8 @@
 #include <string>
 #include <vector>
 
-#include "agent/libagent/SimExtensions.hpp"
-#include "agent/nao/NaoFacts.hpp"
+#include "common/libagent/SimExtensions.hpp"
+#include "common/nao/NaoFacts.hpp"
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/game/GameControllerUdp.hpp"
@@ -152,12 +152,12 @@ class Runner {
   int64_t ticks() const { return world_ ? world_->tick() : 0; }
   RunStats stats() const;  // so far
   // Robot i's sensor values as published this tick (what its program read).
-  const agent::libagent::SensorValues& lastSensors(int i) const { return robots_[i]->values; }
+  const common::libagent::SensorValues& lastSensors(int i) const { return robots_[i]->values; }
   // Robot i's command latched this tick (tick stage 8), applied to its
   // servos at the start of the next: what its program sent, unless libagent
   // acted on its own (limp, the sit after a lost contact); before the first
   // tick, what the body gets before any command.
-  const agent::libagent::ActuatorCommand& lastCommand(int i) const { return robots_[i]->latched; }
+  const common::libagent::ActuatorCommand& lastCommand(int i) const { return robots_[i]->latched; }
   // Robot i's fall bookkeeping (statistics only).
   const FallDetector& robotFall(int i) const { return robots_[i]->fall; }
   // The vision oracle (after start()): what each robot was shown in the
@@ -165,7 +165,7 @@ class Runner {
   const vision::VisionOracle& visionOracle() const { return *vision_; }
   // The robots' camera lens (one kind of robot per world: the scenario
   // refuses robots whose ticks differ), the V5's if there are no robots.
-  agent::nao::CameraLens camerasLens() const;
+  common::nao::CameraLens camerasLens() const;
   int64_t lastFrame() const { return last_frame_; }  // index of the last camera frame (-1: none yet)
   // Teleports robot i, standing, to (x, y) m facing theta rad (field frame)
   // and restarts its sensors from rest (the experiment's sideline rule).
@@ -175,15 +175,15 @@ class Runner {
   // build with SIMSWIFT_HAVE_CAMERAS; start() throws RunnerError otherwise.
   static bool camerasAvailable();
   // Robot i's images block (null unless its cameras are rendered).
-  const agent::libagent::CameraImages* images(int i) const { return robots_[i]->images; }
+  const common::libagent::CameraImages* images(int i) const { return robots_[i]->images; }
   int64_t framesDumped() const;     // PNGs written by --dump-frames
   int64_t overviewFrames() const;   // overview PNGs written
 
   // Team communication and game states (after start()). Robot i's extension
   // objects beside its libagent block: the game state and the team link
-  // (see agent/libagent/SimExtensions.hpp). The runner touches them only in
+  // (see common/libagent/SimExtensions.hpp). The runner touches them only in
   // tick stage 11 (teamAndGame), while no robot thread runs.
-  agent::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext; }
+  common::libagent::SimExtensions* extensions(int i) { return robots_[i]->ext; }
   const network::TeamNetwork& teamNetwork() const { return *network_; }
   const game::GameController& gameController() const { return *game_; }
   // The UDP GameController (null unless the scenario's game: has udp: on).
@@ -204,15 +204,15 @@ class Runner {
     std::unique_ptr<bridge::BodySide> body;
     std::unique_ptr<sensors::SensorSuite> sensors;
     // Camera images (set up by the host when rendering).
-    agent::libagent::CameraImages* images = nullptr;
-    agent::libagent::SensorValues values{};
-    agent::libagent::ActuatorCommand latched;
+    common::libagent::CameraImages* images = nullptr;
+    common::libagent::SensorValues values{};
+    common::libagent::ActuatorCommand latched;
     bool perception = false;
     bool attached = false;  // has answered its first tick
     FallDetector fall;  // torso-height fall bookkeeping (statistics only)
     double last_robot_contact_s = -1e9;  // s (world time) this robot last touched another robot
     size_t next_push = 0;  // next of spec.pushes to apply
-    agent::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
+    common::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
   };
 
   // Build stages (start(), in this order).
@@ -224,7 +224,7 @@ class Runner {
   void buildVision();       // the vision oracle
   sensors::SensorConfig sensorConfig() const;
 
-  std::vector<double> modelPosture(const agent::nao::JointArray& angles) const;
+  std::vector<double> modelPosture(const common::nao::JointArray& angles) const;
   // Robot i's answer to what its body side posted (a tick or a camera
   // frame), through its driver: the watchdog ends the run if none comes.
   void awaitAnswer(int i, bool motion);
@@ -249,13 +249,13 @@ class Runner {
   bool overview_finished_ = false;
   std::string overview_message_;
   bool free_running_ = false;
-  void renderFrame(int64_t frame, int64_t t_us, agent::libagent::CameraFrame& f, Robot& r, int index);
+  void renderFrame(int64_t frame, int64_t t_us, common::libagent::CameraFrame& f, Robot& r, int index);
   int blowups_ = 0;
   std::unique_ptr<network::TeamNetwork> network_;
   std::unique_ptr<game::GameController> game_;
   std::unique_ptr<game::PenaltyPlacer> placer_;
   std::unique_ptr<game::GameControllerUdp> gc_udp_;
-  std::vector<agent::libagent::TeamLink*> links_;  // by robot index, for the network
+  std::vector<common::libagent::TeamLink*> links_;  // by robot index, for the network
   // Tick stages (see the top of this file).
   void applyCommands();
   void applyPushes();

@@ -10,10 +10,10 @@
 #include <map>
 #include <set>
 
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "sim/game/GameControlVersions.hpp"
 #include "sim/runner/Bodies.hpp"
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 #include "sim/world/ConfigError.hpp"
 
 // The data folder's path below an install prefix (CMAKE_INSTALL_DATADIR,
@@ -24,7 +24,7 @@
 
 namespace simswift::runner {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 using programs::ProgramProcess;
 
 namespace {
@@ -81,7 +81,7 @@ constexpr double kMaxPosition = 50;        // m: before the field is known
 constexpr double kMaxHeading = 2 * M_PI;   // rad
 constexpr double kMaxSeed = 9007199254740992.0;  // 2^53: every whole number below is exact
 constexpr double kMaxJointAngle = 10;      // rad (the servos clamp to the joint's range)
-constexpr double kRobotRadius = agent::nao::kFootprintRadius / 1000;  // m
+constexpr double kRobotRadius = common::nao::kFootprintRadius / 1000;  // m
 }  // namespace limits
 
 namespace {
@@ -623,7 +623,7 @@ void readPlacement(const YamlReader& r, RobotSpec& rs) {
   rs.x = r.number("x", rs.x, pos);
   rs.y = r.number("y", rs.y, pos);
   rs.theta = r.number("theta", rs.theta, Range::closed(-limits::kMaxHeading, limits::kMaxHeading));
-  rs.posture = *agent::nao::parsePosture(r.choice("posture", "stand", agent::nao::postureNames()));
+  rs.posture = *common::nao::parsePosture(r.choice("posture", "stand", common::nao::postureNames()));
 }
 
 // buttons, then script, actions and behaviour: what the robot is told to

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/nao/Postures.hpp"
+#include "common/nao/Postures.hpp"
 #include "sim/bridge/BodySide.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/bridge/LibagentBehaviour.hpp"
@@ -28,11 +28,11 @@
 #include "sim/world/FieldConfig.hpp"
 #include "sim/world/World.hpp"
 
-namespace agent::config {
+namespace common::config {
 class YamlReader;
 }
 namespace simswift {
-using agent::config::YamlReader;
+using common::config::YamlReader;
 }
 
 namespace simswift::runner {
@@ -67,7 +67,7 @@ struct RobotSpec {
   bridge::BodyInterface body = bridge::BodyInterface::Libagent;
   std::string lola_socket;  // absolute path; empty: one of the process's own (an experiment's trial)
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame (a behaviour's start pose too)
-  agent::nao::Posture posture = agent::nao::Posture::Stand;  // the body's start; a composed program holds it
+  common::nao::Posture posture = common::nao::Posture::Stand;  // the body's start; a composed program holds it
   // builtin: agent/'s program in this process; external: a program
   // attached by name (started by hand, or by simswift when `launch` has a
   // command: sim/programs/ProgramProcess.hpp). What drives the body either

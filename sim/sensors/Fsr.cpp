@@ -3,17 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 
 namespace simswift::sensors {
 
 FsrLayout FsrLayout::left() {
   // NAO V5 left foot in the ankle frame: the robot code's hardware facts
-  // (agent/nao/NaoFacts.hpp, mm) in m. The sensors do not form an exact
+  // (common/nao/NaoFacts.hpp, mm) in m. The sensors do not form an exact
   // rectangle, hence the inverse bilinear map below.
   FsrLayout l;
   for (int i = 0; i < 4; ++i) {
-    const agent::nao::Point2 p = agent::nao::fsrPosition(agent::nao::Side::Left, static_cast<agent::nao::Fsr>(i));
+    const common::nao::Point2 p = common::nao::fsrPosition(common::nao::Side::Left, static_cast<common::nao::Fsr>(i));
     l.sensor[i] = {p.x * 1e-3, p.y * 1e-3};
   }
   return l;

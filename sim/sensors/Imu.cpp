@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 
 namespace simswift::sensors {
 
-namespace la = agent::libagent;
+namespace la = common::libagent;
 
 Eigen::Vector2d torsoRollPitch(const Eigen::Matrix3d& r) {
   // Row 2 of R holds the world-z components of the torso's axes.

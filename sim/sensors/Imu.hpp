@@ -26,7 +26,7 @@
 //   angle_x ~ +pi/2, on its left ~ -pi/2. Both independent of yaw.
 //
 // writeV5InertialSlots() turns such a sample into the V5's libagent slots,
-// with the V5's signs and units (agent/libagent/Inertial.hpp: GyroscopeZ and
+// with the V5's signs and units (common/libagent/Inertial.hpp: GyroscopeZ and
 // AccelerometerX/Z negated, GyrX/GyrY and AccX/Y/Z in raw counts).
 #pragma once
 

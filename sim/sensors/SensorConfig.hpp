@@ -33,7 +33,7 @@ struct SensorConfig {
                                  // is below one count, so quantisation is the error)
 
   // ---- The V5's legacy raw inertial values, GyrX/GyrY and AccX/Y/Z (counts;
-  // agent/libagent/Inertial.hpp): their sign against GyroscopeX/Y and
+  // common/libagent/Inertial.hpp): their sign against GyroscopeX/Y and
   // AccelerometerX/Y/Z is not settled by a public source. +1 (default) = the
   // same sign as the calibrated values, -1 = the opposite.
   int gyr_raw_sign = +1;

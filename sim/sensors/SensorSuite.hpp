@@ -1,6 +1,6 @@
 // All non-camera sensors of one simulated NAO, computed from the ODE world
 // once per 10 ms tick (call update() right after World::step()). The output
-// is in libagent order (agent/libagent/AgentShared.hpp) and units: rad,
+// is in libagent order (common/libagent/AgentShared.hpp) and units: rad,
 // rad/s, m/s^2 (inertial slots as a V5 gives them: Imu.hpp), N (FSRs;
 // copyToAgent() converts them to the NAO's kg), m, deg C, A.
 //
@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "sim/sensors/Battery.hpp"
 #include "sim/sensors/Buttons.hpp"
 #include "sim/sensors/Fsr.hpp"
@@ -28,7 +28,7 @@ class World;
 
 namespace simswift::sensors {
 
-namespace la = agent::libagent;
+namespace la = common::libagent;
 
 struct SensorReading {
   std::array<float, la::kNumJoints> joint_angles{};        // rad (hands: 0..1 open)

@@ -6,13 +6,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 
 namespace sim::views {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kRobotRadius = agent::nao::kFootprintRadius;  // mm, drawn size of a robot
+constexpr double kRobotRadius = common::nao::kFootprintRadius;  // mm, drawn size of a robot
 constexpr double kTargetRadius = 120.0;  // mm, drawn size of a search point
 
 void setColour(cairo_t* cr, Rgb c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
@@ -92,7 +92,7 @@ bool FindBallView::writePng(const FindBallViewData& d, const std::string& path,
 
   // Field lines (white, 50 mm): outline, halfway line, centre circle, penalty areas.
   cairo_set_source_rgba(cr, 1, 1, 1, 0.8);
-  cairo_set_line_width(cr, std::max(1.0, agent::field::kLineWidth * scale_));
+  cairo_set_line_width(cr, std::max(1.0, common::field::kLineWidth * scale_));
   toPixel(d, -d.field_length / 2, d.field_width / 2, &x0, &y0);
   cairo_rectangle(cr, x0, y0, d.field_length * scale_, d.field_width * scale_);
   toPixel(d, 0, d.field_width / 2, &x0, &y0);
@@ -101,12 +101,12 @@ bool FindBallView::writePng(const FindBallViewData& d, const std::string& path,
   cairo_line_to(cr, x1, y1);
   cairo_stroke(cr);
   toPixel(d, 0, 0, &x0, &y0);
-  cairo_arc(cr, x0, y0, agent::field::kCentreCircleDiameter / 2 * scale_, 0, 2 * kPi);
+  cairo_arc(cr, x0, y0, common::field::kCentreCircleDiameter / 2 * scale_, 0, 2 * kPi);
   cairo_stroke(cr);
   for (double side : {-1.0, 1.0}) {
-    const double half_area = agent::field::kPenaltyAreaWidth / 2;  // mm
+    const double half_area = common::field::kPenaltyAreaWidth / 2;  // mm
     toPixel(d, side * d.field_length / 2, half_area, &x0, &y0);
-    toPixel(d, side * (d.field_length / 2 - agent::field::kPenaltyAreaDepth), -half_area, &x1, &y1);
+    toPixel(d, side * (d.field_length / 2 - common::field::kPenaltyAreaDepth), -half_area, &x1, &y1);
     cairo_rectangle(cr, std::min(x0, x1), y0, std::abs(x1 - x0), y1 - y0);
     cairo_stroke(cr);
   }

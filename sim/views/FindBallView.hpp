@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/field/FieldFacts.hpp"
+#include "common/field/FieldFacts.hpp"
 
 namespace sim::views {
 
@@ -26,10 +26,10 @@ struct ViewRobot {
 };
 
 struct FindBallViewData {
-  // The field the robot believes in (its behaviour's, agent/field/FieldFacts.hpp).
-  double field_length = agent::field::kLength;      // mm, between the lines
-  double field_width = agent::field::kWidth;        // mm
-  double border = agent::field::kBorderStripWidth;  // mm of carpet drawn round the lines
+  // The field the robot believes in (its behaviour's, common/field/FieldFacts.hpp).
+  double field_length = common::field::kLength;      // mm, between the lines
+  double field_width = common::field::kWidth;        // mm
+  double border = common::field::kBorderStripWidth;  // mm of carpet drawn round the lines
   // The distribution: columns x rows, row by row from the top-left (most
   // negative x, most positive y), as agent::behaviour::PositionalDistribution.
   int columns = 3, rows = 3;

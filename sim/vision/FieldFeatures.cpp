@@ -4,7 +4,7 @@
 
 namespace simswift::vision {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 

@@ -9,14 +9,14 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "agent/libagent/CameraShared.hpp"
+#include "common/libagent/CameraShared.hpp"
 #include "sim/world/FieldConfig.hpp"
 
 namespace simswift::vision {
 
 struct FieldCorner {
   Eigen::Vector2d at;                  // m, field
-  agent::libagent::CornerKind kind;    // L, T or X
+  common::libagent::CornerKind kind;    // L, T or X
   double orientation;                  // rad, field (see Observation::orientation)
 };
 

@@ -32,11 +32,11 @@
 #include <optional>
 #include <string>
 
-namespace agent::config {
+namespace common::config {
 class YamlReader;
 }
 namespace simswift {
-using agent::config::YamlReader;
+using common::config::YamlReader;
 }
 
 namespace simswift::vision {
@@ -96,7 +96,7 @@ struct VisionConfig {
   double thesis_ball_half_angle_deg = 30;  // Thesis2017: either side of the camera's heading
   bool noise = true;                 // false: exact, no misses, no false positives
   // Each camera's field of view, deg; unset: the robot's own lens (the V5's
-  // 60.9 x 47.6, the V6's 56.3 x 43.7: agent/nao/NaoFacts.hpp), which the
+  // 60.9 x 47.6, the V6's 56.3 x 43.7: common/nao/NaoFacts.hpp), which the
   // runner fills in from the robots' body interface.
   std::optional<double> hfov_deg, vfov_deg;
   double camera_offset_mm = 5;       // table 3.1: camera position error, uniform +-, once per robot

@@ -5,13 +5,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "agent/nao/NaoFacts.hpp"
-#include "agent/random/SplitMix64.hpp"
+#include "common/nao/NaoFacts.hpp"
+#include "common/random/SplitMix64.hpp"
 #include "sim/sensors/Noise.hpp"
 
 namespace simswift::vision {
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 
@@ -37,7 +37,7 @@ class Draws {
   }
 
  private:
-  uint64_t next() { return agent::random::splitmix64(key_ ^ agent::random::splitmix64(++n_)); }
+  uint64_t next() { return common::random::splitmix64(key_ ^ common::random::splitmix64(++n_)); }
   uint64_t key_;
   uint64_t n_ = 0;
 };
@@ -111,11 +111,11 @@ Eigen::Vector2d GroundFrame::toRobot(const Eigen::Vector2d& p) const {
 }
 
 CameraMount cameraMount(int camera) {
-  // The robot code's hardware facts (agent/nao/NaoFacts.hpp: mm from the
+  // The robot code's hardware facts (common/nao/NaoFacts.hpp: mm from the
   // HeadPitch frame, rad down; the V5's and the V6's are the same), in m.
   if (camera != 0 && camera != 1) throw std::invalid_argument("vision: camera must be 0 (top) or 1 (bottom)");
-  const agent::nao::CameraMount& m =
-      agent::nao::cameraMount(camera == 0 ? agent::nao::Camera::Top : agent::nao::Camera::Bottom);
+  const common::nao::CameraMount& m =
+      common::nao::cameraMount(camera == 0 ? common::nao::Camera::Top : common::nao::Camera::Bottom);
   return {Eigen::Vector3d(m.x, m.y, m.z) / 1000.0, m.pitch_down};  // mm -> m (exact for these four)
 }
 
@@ -124,8 +124,8 @@ VisionOracle::VisionOracle(const FieldConfig& field, VisionConfig config, uint64
       config_(std::move(config)),
       seed_(seed),
       // Unset: the V5's lens (the runner sets a V6 run's: sim/runner/Bodies.hpp).
-      tan_half_h_(std::tan(config_.hfov_deg.value_or(agent::nao::kV5CameraLens.horizontal_fov / kDeg) * kDeg / 2)),
-      tan_half_v_(std::tan(config_.vfov_deg.value_or(agent::nao::kV5CameraLens.vertical_fov / kDeg) * kDeg / 2)),
+      tan_half_h_(std::tan(config_.hfov_deg.value_or(common::nao::kV5CameraLens.horizontal_fov / kDeg) * kDeg / 2)),
+      tan_half_v_(std::tan(config_.vfov_deg.value_or(common::nao::kV5CameraLens.vertical_fov / kDeg) * kDeg / 2)),
       ball_radius_(field.ball.diameter / 2),
       line_half_width_(field.line_width / 2) {
   margin_ = std::max(1e-4, config_.occlusion_margin_mm * 1e-3);
@@ -390,12 +390,12 @@ VisionOracle::CameraView::CameraView(VisionOracle& oracle, const World& world, i
     off_.y() = (2 * c.uniform() - 1) * config_.camera_offset_mm * 1e-3;
   }
   frame_key_ = sensors::streamSeed(o_.seed_, robot, kVisionStream);
-  frame_key_ = agent::random::splitmix64(frame_key_ ^ (static_cast<uint64_t>(camera) + 1));
-  frame_key_ = agent::random::splitmix64(frame_key_ ^ static_cast<uint64_t>(frame));
+  frame_key_ = common::random::splitmix64(frame_key_ ^ (static_cast<uint64_t>(camera) + 1));
+  frame_key_ = common::random::splitmix64(frame_key_ ^ static_cast<uint64_t>(frame));
 }
 
 Draws VisionOracle::CameraView::drawsFor(Feature f, uint64_t index) const {
-  return Draws(agent::random::splitmix64(frame_key_ ^ agent::random::splitmix64((static_cast<uint64_t>(f) << 40) ^ index)));
+  return Draws(common::random::splitmix64(frame_key_ ^ common::random::splitmix64((static_cast<uint64_t>(f) << 40) ^ index)));
 }
 
 Eigen::Vector2d VisionOracle::CameraView::noisyPoint(const DetectorSpec& s, Eigen::Vector2d rel, double height,

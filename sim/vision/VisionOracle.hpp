@@ -34,7 +34,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "agent/libagent/CameraShared.hpp"
+#include "common/libagent/CameraShared.hpp"
 #include "sim/vision/FieldFeatures.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/World.hpp"
@@ -56,7 +56,7 @@ struct GroundFrame {
 // One observation plus what only the simulator knows (for tests and logs,
 // never handed to the robot code).
 struct SeenObject {
-  agent::libagent::Observation obs;
+  common::libagent::Observation obs;
   bool false_positive = false;
   int source = -1;  // index of the true object: robot index, post, mark, corner, line; -1 for the ball or a phantom
 };
@@ -86,7 +86,7 @@ class VisionOracle {
   // Writes `robot`'s observations into frame.observations / num_observations,
   // highest priority first (ball, posts, robots, marks, circle, corners,
   // lines), at most kMaxObservations. Returns how many did not fit.
-  int fill(const World& world, int robot, agent::libagent::CameraFrame& frame);
+  int fill(const World& world, int robot, common::libagent::CameraFrame& frame);
 
   // What fill() last told `robot` of the true ball (false positives never
   // count): the camera frame index it was in (-1: never) and the detected

@@ -16,7 +16,7 @@
 
 #include <cmath>
 
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 #include "sim/nao_model/RobotModel.hpp"
 #include "sim/nao_model/RobotBody.hpp"
 #include "sim/world/FieldConfig.hpp"
@@ -25,14 +25,14 @@ namespace simswift {
 
 // s: the NAO V5's DCM / Motion cycle, WorldConfig::tick_us's default (a
 // V6 world ticks at LoLA's 12 ms: sim/runner/Bodies.hpp).
-constexpr double kTickSeconds = agent::nao::kMotionTickSeconds;
+constexpr double kTickSeconds = common::nao::kMotionTickSeconds;
 
 struct WorldConfig {
   enum class Solver { Exact, Quick };
   Solver solver = Solver::Quick;     // see World.cpp for why (measured)
   // us per tick: the robots' cycle, their body interface's (libagent on the
   // V5 10 ms, LoLA on the V6 12 ms; sim/runner/Bodies.hpp bodyCycleUs).
-  int64_t tick_us = agent::nao::kMotionTickUs;
+  int64_t tick_us = common::nao::kMotionTickUs;
   // Physics steps per tick. 0: the fewest that keep each step within
   // max_substep_us (a 10 ms tick: 2 x 5 ms; the V6's 12 ms: 3 x 4 ms); a
   // positive count is taken as given (a scenario's `physics: {substeps}`).
@@ -169,7 +169,7 @@ class World {
   double tickSeconds() const { return config_.tick_us * 1e-6; }
   int substeps() const { return config_.substepsPerTick(); }  // physics steps per tick
   // Ticks in `seconds` of simulated time (rounded to the nearest).
-  int64_t ticksIn(double seconds) const { return agent::nao::ticksIn(seconds, config_.tick_us); }
+  int64_t ticksIn(double seconds) const { return common::nao::ticksIn(seconds, config_.tick_us); }
 
   const std::vector<LinkContact>& contacts() const { return contacts_; }
   std::vector<WorldEvent> takeEvents();

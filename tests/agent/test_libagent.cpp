@@ -14,11 +14,11 @@
 #include <memory>
 #include <thread>
 
-#include "agent/libagent/AgentConnection.hpp"
-#include "agent/libagent/SharedNames.hpp"
-#include "agent/libagent/TripleBuffer.hpp"
+#include "common/libagent/AgentConnection.hpp"
+#include "common/libagent/SharedNames.hpp"
+#include "common/libagent/TripleBuffer.hpp"
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 

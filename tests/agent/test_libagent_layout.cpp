@@ -7,9 +7,9 @@
 #include <cstddef>
 #include <type_traits>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 TEST(LibagentLayout, AgentDataIsThe2017BlockByteForByte) {
   EXPECT_EQ(sizeof(al::AgentData), 3284u);

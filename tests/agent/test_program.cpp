@@ -7,12 +7,12 @@
 #include <set>
 #include <thread>
 
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "agent/program/ScriptedMotion.hpp"
 #include "agent/program/Postures.hpp"
 #include "agent/program/RobotProgram.hpp"
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace ap = agent::program;
 namespace J = al::Joints;
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "agent/motion/Walk2014Generator.hpp"
 #include "simswift/WalkTest.hpp"
 
@@ -123,8 +123,8 @@ namespace {
 struct MemcpyWalk {
   agent::motion::Walk2014Generator walk;
   void operator()(const simswift::WalkCommand& c, const simswift::SensorValues& s, simswift::JointValues& j) {
-    agent::libagent::SensorValues in;
-    agent::libagent::JointValues out;
+    common::libagent::SensorValues in;
+    common::libagent::JointValues out;
     std::memcpy(&in, &s, sizeof in);
     std::memcpy(&out, &j, sizeof out);
     walk.setRequest(c.walk, {c.forward, c.left, c.turn});

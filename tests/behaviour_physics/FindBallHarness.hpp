@@ -72,7 +72,7 @@ inline Found foundBy(simswift::runner::Runner& r, int i) {
   const agent::blackboard::FrameInfo frame = board.frame.read();
   bool detected = false;
   for (int k = 0; k < frame.num_observations; ++k)
-    detected = detected || frame.observations[k].type == agent::libagent::ObservationType::Ball;
+    detected = detected || frame.observations[k].type == common::libagent::ObservationType::Ball;
   const simswift::game::PlanarPose p = simswift::game::robotPose(r.world(), i);
   const Eigen::Vector3d b = r.world().ballPosition();
   const double d_truth = std::hypot(b.x() - p.x, b.y() - p.y);  // m

@@ -34,7 +34,7 @@ TEST(HalfwayEntryPhysics, RobotsEnteringBesideTheHalfwayLineKeepTheirSide) {
   runner::Runner& run = *owned;
   const int n = static_cast<int>(setup.robots.size());
   const int64_t play = playTick(e);
-  const int64_t per_s = agent::nao::ticksIn(1.0);
+  const int64_t per_s = common::nao::ticksIn(1.0);
   while (run.ticks() < play + 5 * per_s) {
     run.tick();
     const int64_t since = run.ticks() - play;

@@ -16,12 +16,12 @@
 #include <thread>
 #include <vector>
 
-#include "agent/libagent/AgentConnection.hpp"
-#include "agent/libagent/TripleBuffer.hpp"
+#include "common/libagent/AgentConnection.hpp"
+#include "common/libagent/TripleBuffer.hpp"
 #include "sim/bridge/BodyHost.hpp"
 
-namespace al = agent::libagent;
-namespace an = agent::nao;  // the named postures (agent/nao/Postures.hpp, via BodyHost.hpp)
+namespace al = common::libagent;
+namespace an = common::nao;  // the named postures (common/nao/Postures.hpp, via BodyHost.hpp)
 namespace bridge = simswift::bridge;
 using simswift::bridge::BodyHost;
 using simswift::bridge::BridgeError;

@@ -10,7 +10,7 @@
 
 #include "sim/bridge/LibagentBehaviour.hpp"
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 using simswift::bridge::LibagentBehaviour;
 using simswift::bridge::StartMode;
 

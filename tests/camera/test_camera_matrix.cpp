@@ -46,13 +46,13 @@ TEST(CameraMatrix, MatchesTheSimulatedCameraPose) {
       world.step();
       suite.update(world);
     }
-    agent::libagent::SensorValues v{};
+    common::libagent::SensorValues v{};
     sensors::copyToAgent(suite.reading(), v);
 
     // The robot frame in the world: midway between the soles, on the lower
     // one, heading along the torso's x axis.
     const RobotBody& body = world.robot(r);
-    const Eigen::Vector3d sole_offset(0, 0, -agent::nao::links::kFootHeight * 1e-3);
+    const Eigen::Vector3d sole_offset(0, 0, -common::nao::links::kFootHeight * 1e-3);
     const Eigen::Vector3d ls = body.linkPose(m.linkIndex("LFoot")) * sole_offset;
     const Eigen::Vector3d rs = body.linkPose(m.linkIndex("RFoot")) * sole_offset;
     const Eigen::Vector3d fwd = body.linkPose(m.rootLink()).linear().col(0);
@@ -60,8 +60,8 @@ TEST(CameraMatrix, MatchesTheSimulatedCameraPose) {
     const Eigen::Matrix3d to_robot = Eigen::AngleAxisd(-heading, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     const Eigen::Vector3d origin(0.5 * (ls.x() + rs.x()), 0.5 * (ls.y() + rs.y()), std::min(ls.z(), rs.z()));
 
-    for (auto [agent_cam, sim_cam] : {std::pair{agent::nao::Camera::Top, camera::kTop},
-                                      std::pair{agent::nao::Camera::Bottom, camera::kBottom}}) {
+    for (auto [agent_cam, sim_cam] : {std::pair{common::nao::Camera::Top, camera::kTop},
+                                      std::pair{common::nao::Camera::Bottom, camera::kBottom}}) {
       const camera::CameraModel truth = camera::CameraModel::naoCamera(body.linkPose(m.linkIndex("Head")), sim_cam);
       const Eigen::Vector3d p = to_robot * (truth.pose.translation() - origin) * 1000.0;  // mm
       const Eigen::Vector3d axis = to_robot * truth.pose.linear().col(0);

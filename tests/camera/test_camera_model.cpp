@@ -23,7 +23,7 @@ TEST(CameraModel, NaoIntrinsicsMatchThePublishedFieldOfView) {
 // The V6's OV5640 lens, 56.3 x 43.7 deg (Aldebaran's NAOqi 2.8 NAO V6 camera
 // specifications): about 598 px at 640x480, 10 % longer than the V5's.
 TEST(CameraModel, V6IntrinsicsMatchItsPublishedFieldOfView) {
-  const Intrinsics k = Intrinsics::nao(640, 480, agent::nao::kV6CameraLens);
+  const Intrinsics k = Intrinsics::nao(640, 480, common::nao::kV6CameraLens);
   EXPECT_NEAR(k.fx, 598.05, 0.05);  // 320 / tan(28.15 deg), worked by hand
   EXPECT_NEAR(k.fy, 598.53, 0.05);  // 240 / tan(21.85 deg)
   EXPECT_DOUBLE_EQ(k.cx, 320.0);

@@ -18,7 +18,7 @@
 using namespace simswift;
 using namespace simswift::camera;
 using namespace camtest;
-using agent::libagent::CameraImages;
+using common::libagent::CameraImages;
 
 namespace {
 
@@ -83,7 +83,7 @@ TEST(RobotCameras, AV6RendersThroughItsNarrowerLens) {
     RobotCamerasConfig cfg;
     cfg.scene.sky = {0, 0, 1};
     cfg.scene.draw_net = false;
-    cfg.lens = k == 0 ? agent::nao::kV5CameraLens : agent::nao::kV6CameraLens;
+    cfg.lens = k == 0 ? common::nao::kV5CameraLens : common::nao::kV6CameraLens;
     RobotCameras cams(world, cfg);
     auto images = std::make_unique<CameraImages>();
     cams.fillImages(world, robot, *images);
@@ -118,7 +118,7 @@ TEST(RobotCameras, IdenticalWorldsRenderIdenticalFramesAndYuvMatchesRgb) {
       std::vector<uint8_t> yuv(images->yuvBytes());
       rgbToYuyv(images->rgb[0], images->width, images->height, yuv.data());
       EXPECT_EQ(fnv1a(yuv), hashes[0][0]);
-      EXPECT_EQ(images->magic, agent::libagent::kCameraImagesMagic);
+      EXPECT_EQ(images->magic, common::libagent::kCameraImagesMagic);
       EXPECT_EQ(images->frame_index, 6);  // 0.2 s at 30 Hz
       EXPECT_EQ(images->sim_time_us, 200000);
       // The other robot (team 1, red) stands in the top camera's view.

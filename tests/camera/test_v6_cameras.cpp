@@ -30,9 +30,9 @@ TEST(V6Cameras, TheProgramGetsFramesAndRenderedImages) {
   EXPECT_EQ(r.ticks(), 83);
   EXPECT_EQ(r.lastFrame(), 29);
   EXPECT_EQ(p->perceptionFrames(), 30);
-  const agent::libagent::CameraImages* im = r.images(0);
+  const common::libagent::CameraImages* im = r.images(0);
   ASSERT_NE(im, nullptr);
-  EXPECT_EQ(im->magic, agent::libagent::kCameraImagesMagic);
+  EXPECT_EQ(im->magic, common::libagent::kCameraImagesMagic);
   EXPECT_EQ(im->width, 640);
   EXPECT_EQ(im->valid[0], 1);
   // A rendered field: not one flat colour.

@@ -10,7 +10,7 @@
 #include "agent/comms/TeamSender.hpp"
 
 using namespace agent::comms;
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 SplMessage from(int team, int player, float x = 0) {

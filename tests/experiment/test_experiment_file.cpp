@@ -330,16 +330,16 @@ TEST(ExperimentFile, TrialSpecs) {
   EXPECT_EQ(sc.robots[0].setup.actions.size(), 1u);
   // findballexp's start: penalised from t = 0 (INITIAL), then PLAYING and
   // unpenalised at 1 s, left where they stand.
-  EXPECT_EQ(sc.game.initial_state, agent::libagent::GameStateValue::Initial);
+  EXPECT_EQ(sc.game.initial_state, common::libagent::GameStateValue::Initial);
   ASSERT_EQ(sc.game.timeline.size(), 1u);
-  EXPECT_EQ(sc.game.timeline[0].state, agent::libagent::GameStateValue::Playing);
+  EXPECT_EQ(sc.game.timeline[0].state, common::libagent::GameStateValue::Playing);
   EXPECT_DOUBLE_EQ(sc.game.timeline[0].t_s, 1.0);
   ASSERT_EQ(sc.game.penalties.size(), 2u);
   EXPECT_DOUBLE_EQ(sc.game.penalties[0].t_s, 0.0);
-  EXPECT_NE(sc.game.penalties[0].penalty, agent::libagent::Penalty::None);
+  EXPECT_NE(sc.game.penalties[0].penalty, common::libagent::Penalty::None);
   EXPECT_LT(sc.game.penalties[0].duration_s, 0);  // until lifted
   EXPECT_DOUBLE_EQ(sc.game.penalties[1].t_s, 1.0);
-  EXPECT_EQ(sc.game.penalties[1].penalty, agent::libagent::Penalty::None);
+  EXPECT_EQ(sc.game.penalties[1].penalty, common::libagent::Penalty::None);
   EXPECT_EQ(sc.game.on_unpenalise, game::GameConfig::Return::Sideline);
   // start: {penalised: 2.5}
   const Experiment late = Experiment::parse(exptest::tinyExperiment(3) + "start: {penalised: 2.5}\n", "tiny.yaml");

@@ -209,7 +209,7 @@ TEST(Sweep, BaseSettingsAndSweptSettingsReachTheTrialScenario) {
     EXPECT_DOUBLE_EQ(sc.game.half_duration_s, 300);
     EXPECT_EQ(sc.game.kickoff_team, 1);
     // The trial's own start stays: penalised, then PLAYING.
-    EXPECT_EQ(sc.game.initial_state, agent::libagent::GameStateValue::Initial);
+    EXPECT_EQ(sc.game.initial_state, common::libagent::GameStateValue::Initial);
     ASSERT_EQ(sc.game.timeline.size(), 1u);
   }
   expectError(kTiny + "game: {state: ready}\n", "bad.yaml:16: game.state", "set by each trial");

@@ -20,7 +20,7 @@
 
 using simswift::runner::Runner;
 using simswift::runner::Scenario;
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace spl = simswift::game::spl;
 
 namespace {
@@ -102,7 +102,7 @@ TEST(GameControlVersions, EachSeasonsBytesWhereItsHeaderPutsThem) {
 // commits GameControlVersions.hpp names): 2017 and 2019 alike for 1-8;
 // from 2020 illegal position is 5, request for pickup 7, no kick-off goal.
 TEST(GameControlVersions, PenaltiesByEachSeasonsNumbers) {
-  using P = agent::libagent::Penalty;
+  using P = common::libagent::Penalty;
   for (int version : {10, 12}) {
     const spl::PacketVersion& v = *spl::findPacketVersion(version);
     EXPECT_EQ(spl::penaltyCode(v, P::IllegalDefender), 5);

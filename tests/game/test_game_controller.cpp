@@ -8,7 +8,7 @@
 #include "sim/game/GameController.hpp"
 
 using namespace simswift::game;
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 constexpr int64_t kTick = 10000;  // us

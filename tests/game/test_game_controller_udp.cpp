@@ -23,7 +23,7 @@ using simswift::ConfigError;
 using simswift::runner::Runner;
 using simswift::runner::RunnerError;
 using simswift::runner::Scenario;
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace spl = simswift::game::spl;
 
 namespace {

@@ -16,7 +16,7 @@ using simswift::ConfigError;
 using simswift::runner::Runner;
 using simswift::runner::Scenario;
 namespace ac = agent::comms;
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 std::string errorOf(const std::string& yaml) {

@@ -1,4 +1,4 @@
-// The robot code's NAO hardware facts (agent/nao/NaoFacts.hpp) held against
+// The robot code's NAO hardware facts (common/nao/NaoFacts.hpp) held against
 // the simulated body (models/nao_v5.urdf): the same joint limits and speeds,
 // the same link offsets, FSRs on the soles, cameras on the head's face, and
 // the leg kinematics reaching the URDF's sole.
@@ -6,14 +6,14 @@
 
 #include <cmath>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "agent/motion/Kinematics.hpp"
-#include "agent/nao/NaoFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/nao_model/RobotModel.hpp"
 
-namespace nao = agent::nao;
-namespace J = agent::libagent::Joints;
+namespace nao = common::nao;
+namespace J = common::libagent::Joints;
 using simswift::RobotModel;
 
 namespace {
@@ -36,7 +36,7 @@ const simswift::ShapeSpec& firstCollision(const std::string& link) {
 
 TEST(NaoFacts, JointLimitsAndSpeedsMatchTheUrdf) {
   const auto& lim = nao::jointLimits();
-  for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) {
     const int j = simswift::NaoBinding(model()).joint(i);
     ASSERT_GE(j, 0) << "libagent joint " << i;
     const auto& spec = model().joints()[j];

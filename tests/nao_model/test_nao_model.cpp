@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "sim/nao_model/Motors.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/nao_model/RobotModel.hpp"
@@ -61,10 +61,10 @@ TEST(RobotModel, LoadsTheNaoV5) {
   EXPECT_LT(m.totalMass(), 5.48);
   EXPECT_NEAR(m.totalMass(), 5.305, 0.01);
   const simswift::NaoBinding nao(m);
-  for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) {
     const int j = nao.joint(i);
     ASSERT_GE(j, 0);
-    EXPECT_EQ(m.joints()[j].name, agent::libagent::Joints::kNames[i]);
+    EXPECT_EQ(m.joints()[j].name, common::libagent::Joints::kNames[i]);
     EXPECT_EQ(nao.slot(j), i);
   }
   const int r = m.jointIndex("RHipYawPitch");

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <memory>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/nao_model/RobotBody.hpp"
 #include "sim/world/World.hpp"
@@ -231,7 +231,7 @@ TEST(RobotBody, LHipYawPitchDrivesBothHips) {
   Sim sim(/*fix_torso=*/true);
   RobotBody& r = sim.robot();
   auto cmd = neutral();
-  cmd[agent::libagent::Joints::LHipYawPitch] = -0.5f;
+  cmd[common::libagent::Joints::LHipYawPitch] = -0.5f;
   sim.command(cmd);
   double worst = 0;
   for (int i = 0; i < 100; ++i) {  // 1 s

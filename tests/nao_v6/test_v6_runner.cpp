@@ -24,7 +24,7 @@
 #include <thread>
 #include <vector>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 #include "agent/program/StandardModules.hpp"
 #include "sim/lola/LolaBody.hpp"
 #include "sim/nao_model/RobotModel.hpp"
@@ -35,7 +35,7 @@
 #include "sim/vision/VisionOracle.hpp"
 #include "tests/support/ConfigErrors.hpp"
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace S = al::Sensors;
 using simswift::lola::LolaBody;
 using simswift::lola::LolaBodyOptions;
@@ -182,7 +182,7 @@ TEST(V6Packet, SlotsTranslateWithLolasOrdersAndSigns) {
   v.joints.temperatures[al::Joints::RKneePitch] = 75.f;   // stiffness reduced
   v.joints.temperatures[al::Joints::LAnklePitch] = 95.f;  // critical
   // A V5 turning anti-clockwise at 0.5 rad/s, upright: GyroscopeZ -0.5,
-  // AccelerometerZ -9.81 (agent/libagent/Inertial.hpp); a lean to the left: f.y = -1.
+  // AccelerometerZ -9.81 (common/libagent/Inertial.hpp); a lean to the left: f.y = -1.
   v.sensors[S::InertialSensor_GyroscopeZ] = -0.5f;
   v.sensors[S::InertialSensor_GyroscopeX] = 0.25f;
   v.sensors[S::InertialSensor_AccelerometerZ] = -9.81f;
@@ -472,7 +472,7 @@ TEST(V6Builtin, StandsAndWalksAtTwelveMilliseconds) {
 }
 
 // A V6 run's cameras and vision see through the V6's lens (56.3 x 43.7 deg,
-// agent/nao/NaoFacts.hpp), a V5 run's through the V5's; a scenario's
+// common/nao/NaoFacts.hpp), a V5 run's through the V5's; a scenario's
 // vision: {hfov_deg} still wins.
 TEST(V6Builtin, CamerasAndVisionUseTheV6Lens) {
   Runner v6(builtinV6(socketPath("lens"), "", 0.1));

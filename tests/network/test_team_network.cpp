@@ -13,7 +13,7 @@
 #include "sim/network/TeamNetwork.hpp"
 
 using namespace simswift::network;
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace ac = agent::comms;
 
 namespace {

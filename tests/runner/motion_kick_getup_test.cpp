@@ -115,8 +115,8 @@ void getupTrials(bool forwards) {
       if (motion_test::downOrGettingUp(st.posture)) fell = true;
       // Standing again: reported STANDING, torso above kStandHeight and upright within 0.3 rad.
       const float* sv = h.checked().last_sensed.sensors;
-      const bool upright = std::fabs(sv[agent::libagent::Sensors::InertialSensor_AngleX]) < 0.3f &&
-                           std::fabs(sv[agent::libagent::Sensors::InertialSensor_AngleY]) < 0.3f;
+      const bool upright = std::fabs(sv[common::libagent::Sensors::InertialSensor_AngleX]) < 0.3f &&
+                           std::fabs(sv[common::libagent::Sensors::InertialSensor_AngleY]) < 0.3f;
       if (fell && st.posture == agent::blackboard::BodyState::STANDING && h.torsoHeight() > FallDetector::kStandHeight && upright) {
         up_again = true;
         up_at = (i + 1) * 0.01;
@@ -162,7 +162,7 @@ TEST(MotionPhysics, PushedOverIsDetectedAndFallsLimp) {
       const auto st = h.state();
       if (st.posture == agent::blackboard::BodyState::FALLING) {
         limp_while_falling = true;
-        for (int j = 0; j < agent::libagent::kNumJoints; ++j)
+        for (int j = 0; j < common::libagent::kNumJoints; ++j)
           if (h.checked().last_command.stiffnesses[j] > 0.0f) limp_while_falling = false;
       }
       if (!lying_reported && st.posture == (forwards ? agent::blackboard::BodyState::FALLEN_FORWARD

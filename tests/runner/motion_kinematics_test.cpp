@@ -73,8 +73,8 @@ TEST(MotionKinematics, ForwardKinematicsMatchesTheSimulatedModel) {
 TEST(MotionKinematics, ClipperLimitsMatchTheModel) {
   const auto model = simswift::RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf");
   const auto& lim = agent::motion::jointLimits();
-  for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
-    if (i == agent::libagent::Joints::LHand || i == agent::libagent::Joints::RHand) continue;  // fraction, not rad
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) {
+    if (i == common::libagent::Joints::LHand || i == common::libagent::Joints::RHand) continue;  // fraction, not rad
     const auto& j = model.joints()[simswift::NaoBinding(model).joint(i)];
     EXPECT_NEAR(lim[i].lower, j.lower, 2e-3) << j.name;
     EXPECT_NEAR(lim[i].upper, j.upper, 2e-3) << j.name;

@@ -89,7 +89,7 @@ TEST(MotionPhysics, SideStepFullSpeed) {
 // and an unchanged rUNSWift 2017/2018 MotionOdometry's gyro turn, -0.01 x
 // GyroscopeZ per 10 ms frame (before its 0.95 pessimism), read from the slots
 // the body published: both must turn the way the robot turns (the V5's
-// GyroscopeZ is negative for an anti-clockwise turn; agent/libagent/Inertial.hpp).
+// GyroscopeZ is negative for an anti-clockwise turn; common/libagent/Inertial.hpp).
 TEST(MotionPhysics, TurnInPlaceFullSpeed) {
   MotionHarness h(13);
   h.request(ActionType::STAND);
@@ -108,7 +108,7 @@ TEST(MotionPhysics, TurnInPlaceFullSpeed) {
     last = th;
     odometry += wrapAngle(h.state().odometry.theta - odometry_last);
     odometry_last = h.state().odometry.theta;
-    runswift += -0.01 * h.checked().last_sensed.sensors[agent::libagent::Sensors::InertialSensor_GyroscopeZ];
+    runswift += -0.01 * h.checked().last_sensed.sensors[common::libagent::Sensors::InertialSensor_GyroscopeZ];
   }
   const simswift::WalkFigures f = meter.figures();
   std::printf("[motion] turn 0.8 rad/s x 8 s: %.3f rad/s (%.0f %%); odometry %.3f of it, rUNSWift's gyro "

@@ -251,11 +251,11 @@ TEST(RobotSetup, BadConfigNamesFileLineAndKey) {
   try {
     ap::readRobotSetup(d + "/bad.yaml");
     FAIL() << "accepted";
-  } catch (const agent::config::ConfigError& e) {
+  } catch (const common::config::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("bad.yaml:3: seed"), std::string::npos) << e.what();
   }
   std::ofstream(d + "/bad2.yaml") << "team: 19\nbehaviour: {kind: findball2017, grid: {colums: 3}}\n";
-  EXPECT_THROW(ap::readRobotSetup(d + "/bad2.yaml"), agent::config::ConfigError);
+  EXPECT_THROW(ap::readRobotSetup(d + "/bad2.yaml"), common::config::ConfigError);
 }
 
 // The lock-step makes the process boundary invisible: the same two searchers

@@ -14,7 +14,7 @@
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace ap = agent::program;
 using simswift::runner::RunOptions;
 using simswift::runner::Runner;
@@ -237,7 +237,7 @@ TEST(Runner, InertialRawSignsReachTheSlots) {
   };
   const auto same = accZ("");
   const auto flipped = accZ("inertial: {acc_raw_sign: -1}\n");
-  // Upright: AccelerometerZ about -9.81 m/s^2 on the V5 (agent/libagent/Inertial.hpp), raw about 65 counts per g.
+  // Upright: AccelerometerZ about -9.81 m/s^2 on the V5 (common/libagent/Inertial.hpp), raw about 65 counts per g.
   EXPECT_NEAR(same.second, -9.81, 0.5);
   EXPECT_NEAR(same.first, -65.0, 4.0);
   EXPECT_NEAR(flipped.first, 65.0, 4.0);

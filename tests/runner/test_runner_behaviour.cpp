@@ -50,7 +50,7 @@ struct RequestedRobot {
 };
 
 struct NoMotion : agent::framework::MotionGenerator {
-  void tick(const agent::libagent::SensorValues&, int64_t, agent::libagent::JointValues&) override {}
+  void tick(const common::libagent::SensorValues&, int64_t, common::libagent::JointValues&) override {}
 };
 
 }  // namespace
@@ -112,8 +112,8 @@ TEST(RunnerBehaviour, LastCommandIsWhatTheProgramSent) {
   for (int i = 0; i < 150; ++i) {
     r.tick();
     const bb::ActuatorRequest sent = r.programs().program(0)->board().actuators.read();
-    const agent::libagent::ActuatorCommand& got = r.lastCommand(0);
-    for (int j = 0; j < agent::libagent::kNumJoints; ++j) {
+    const common::libagent::ActuatorCommand& got = r.lastCommand(0);
+    for (int j = 0; j < common::libagent::kNumJoints; ++j) {
       ASSERT_EQ(got.joints.angles[j], sent.joints.angles[j]) << "tick " << i << " joint " << j;
       ASSERT_EQ(got.joints.stiffnesses[j], sent.joints.stiffnesses[j]) << "tick " << i << " joint " << j;
     }

@@ -8,7 +8,7 @@
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace ap = agent::program;
 using simswift::runner::RunOptions;
 using simswift::runner::Runner;

@@ -16,7 +16,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-namespace al = agent::libagent;
+namespace al = common::libagent;
 using simswift::runner::Runner;
 using simswift::runner::RunOptions;
 using simswift::runner::Scenario;

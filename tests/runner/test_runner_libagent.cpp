@@ -22,12 +22,12 @@
 #include <thread>
 #include <vector>
 
-#include "agent/libagent/SharedNames.hpp"
-#include "agent/libagent/SimExtension.hpp"
+#include "common/libagent/SharedNames.hpp"
+#include "common/libagent/SimExtension.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace ap = agent::program;
 using simswift::runner::RunOptions;
 using simswift::runner::Runner;

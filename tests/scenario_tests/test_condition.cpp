@@ -9,7 +9,7 @@
 namespace {
 
 using namespace simswift::scenario_tests;
-using agent::config::YamlReader;
+using common::config::YamlReader;
 
 const simswift::FieldConfig kField = simswift::FieldConfig::spl2017();
 

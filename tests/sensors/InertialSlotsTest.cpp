@@ -1,4 +1,4 @@
-// The V5's inertial slots (agent/libagent/Inertial.hpp) from a torso turned
+// The V5's inertial slots (common/libagent/Inertial.hpp) from a torso turned
 // (yaw both ways), tilted and rolling or pitching (both ways) and lying (face
 // down, on its back), against the NAO's conventions as its clients read them:
 // GyroscopeZ negative for an anti-clockwise turn (rUNSWift's MotionOdometry,
@@ -13,7 +13,7 @@
 #include <cmath>
 #include <string>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 #include "sim/sensors/Imu.hpp"
 #include "sim/sensors/SensorConfig.hpp"
 
@@ -21,7 +21,7 @@ using namespace simswift::sensors;
 using Eigen::AngleAxisd;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
-namespace S = agent::libagent::Sensors;
+namespace S = common::libagent::Sensors;
 
 namespace {
 
@@ -31,7 +31,7 @@ constexpr double kDt = 0.01;  // s
 double filteredTouchRate(float gyr) { return gyr * M_PI / 180.0 / 2.35; }  // rad/s
 constexpr double kCountsPerG = 65.0;
 
-using Slots = std::array<float, agent::libagent::kNumSensors>;
+using Slots = std::array<float, common::libagent::kNumSensors>;
 
 // The slots after the torso went from `from` to `to` in one tick, at rest
 // otherwise (no linear acceleration), noise-free.
@@ -67,7 +67,7 @@ TEST(InertialSlots, UprightAtRestReadsMinusOneGOnZ) {
   EXPECT_NEAR(s[S::InertialSensor_AccZ], -kCountsPerG, 1e-3);  // raw: one g = 65 counts
   for (int k : {S::InertialSensor_GyroscopeX, S::InertialSensor_GyroscopeY, S::InertialSensor_GyroscopeZ,
                 S::InertialSensor_GyrX, S::InertialSensor_GyrY, S::InertialSensor_AngleX, S::InertialSensor_AngleY})
-    EXPECT_NEAR(s[k], 0.0, 1e-6) << agent::libagent::Sensors::kNames[k];
+    EXPECT_NEAR(s[k], 0.0, 1e-6) << common::libagent::Sensors::kNames[k];
   expectRawMatchesCalibrated(s);
 }
 
@@ -87,7 +87,7 @@ TEST(InertialSlots, TurningLeftReadsNegativeGyroscopeZAndRightPositive) {
       EXPECT_NEAR(s[S::InertialSensor_GyroscopeY], 0.0, 1e-6) << at;
       EXPECT_NEAR(s[S::InertialSensor_AccelerometerZ], -kG, 1e-5) << at;
       // The robot code's reader gives the right-handed (anti-clockwise-positive) rate.
-      EXPECT_NEAR(agent::libagent::inertial::bodyRates(s.data()).z, rate, 1e-6) << at;
+      EXPECT_NEAR(common::libagent::inertial::bodyRates(s.data()).z, rate, 1e-6) << at;
       expectRawMatchesCalibrated(s);
     }
   }
@@ -182,7 +182,7 @@ TEST(InertialSlots, RawSignsAreConfigurable) {
   const Slots plus = measure(tilted, moved, 1, 1);
   const Slots gyr = measure(tilted, moved, -1, 1);
   const Slots acc = measure(tilted, moved, 1, -1);
-  for (int k = 0; k < agent::libagent::kNumSensors; ++k) {
+  for (int k = 0; k < common::libagent::kNumSensors; ++k) {
     const bool raw_gyr = k == S::InertialSensor_GyrX || k == S::InertialSensor_GyrY;
     const bool raw_acc = k >= S::InertialSensor_AccX && k <= S::InertialSensor_AccZ;
     EXPECT_EQ(gyr[k], raw_gyr ? -plus[k] : plus[k]) << S::kNames[k];

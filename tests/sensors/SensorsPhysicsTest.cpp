@@ -10,7 +10,7 @@
 #include <array>
 #include <cmath>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 #include "agent/program/Postures.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/runner/FallDetector.hpp"
@@ -19,8 +19,8 @@
 
 using namespace simswift;
 using namespace simswift::sensors;
-namespace S = agent::libagent::Sensors;
-namespace in = agent::libagent::inertial;
+namespace S = common::libagent::Sensors;
+namespace in = common::libagent::inertial;
 
 namespace {
 
@@ -168,7 +168,7 @@ namespace {
 // the way down (GyroscopeX / GyroscopeY, rad/s, signed).
 struct Fall {
   double angle_x, angle_y, torso_z;
-  std::array<float, agent::libagent::kNumSensors> lying;
+  std::array<float, common::libagent::kNumSensors> lying;
   double peak_roll_rate = 0, peak_pitch_rate = 0;
   double worst_raw_gyr = 0;  // rad/s: |DEG2RAD(GyrX or GyrY) / 2.35 - GyroscopeX or Y| (rUNSWift's conversion)
 };
@@ -360,7 +360,7 @@ TEST(SensorsPhysics, SonarSeesAGoalPostHalfAMetreAhead) {
 
 TEST(SensorsPhysics, SonarReadsNoEchoWithNothingAhead) {
   const auto sonar = sonarAt(0, 0, 0.0, nullptr);
-  for (int k = 0; k < 20; ++k) EXPECT_EQ(sonar[k], agent::libagent::kSonarNoEcho) << "echo " << k;
+  for (int k = 0; k < 20; ++k) EXPECT_EQ(sonar[k], common::libagent::kSonarNoEcho) << "echo " << k;
 }
 
 TEST(SensorsPhysics, SonarSeesAnotherRobotAhead) {
@@ -397,16 +397,16 @@ TEST(SensorsPhysics, ButtonsAndSonarModeAreEchoed) {
   EXPECT_EQ(s[S::US], 68.0f);
   // The libagent slot receives every value, the FSRs in the NAO's kg (N / g);
   // stiffnesses are left alone.
-  agent::libagent::SensorValues slot{};
+  common::libagent::SensorValues slot{};
   slot.joints.stiffnesses[3] = 0.7f;
   copyToAgent(suite.reading(), slot);
-  for (int k = 0; k < agent::libagent::kNumSensors; ++k) {
+  for (int k = 0; k < common::libagent::kNumSensors; ++k) {
     const bool fsr = (k >= S::LFoot_FSR_FrontLeft && k <= S::LFoot_FSR_RearRight) ||
                      (k >= S::RFoot_FSR_FrontLeft && k <= S::RFoot_FSR_RearRight);
     if (fsr) EXPECT_FLOAT_EQ(slot.sensors[k], s[k] / 9.81f) << k;
     else EXPECT_EQ(slot.sensors[k], s[k]) << k;
   }
-  for (int k = 0; k < agent::libagent::kNumJoints; ++k) {
+  for (int k = 0; k < common::libagent::kNumJoints; ++k) {
     EXPECT_EQ(slot.joints.angles[k], suite.reading().joint_angles[k]);
     EXPECT_EQ(slot.joints.currents[k], suite.reading().joint_currents[k]);
   }

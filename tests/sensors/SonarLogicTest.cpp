@@ -3,13 +3,13 @@
 
 #include <cmath>
 
-#include "agent/libagent/AgentShared.hpp"
+#include "common/libagent/AgentShared.hpp"
 #include "sim/sensors/Sonar.hpp"
 
 using namespace simswift::sensors;
 
 namespace {
-constexpr float kNo = agent::libagent::kSonarNoEcho;
+constexpr float kNo = common::libagent::kSonarNoEcho;
 const double kCone = 60 * M_PI / 180, kYaw = 25 * M_PI / 180;
 }
 

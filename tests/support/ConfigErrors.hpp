@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "agent/config/ConfigError.hpp"
+#include "common/config/ConfigError.hpp"
 
 namespace simswift::testing {
 
@@ -13,7 +13,7 @@ template <class Parse>
 std::string configError(Parse&& parse) {
   try {
     parse();
-  } catch (const agent::config::ConfigError& e) {
+  } catch (const common::config::ConfigError& e) {
     return e.what();
   }
   return "";

@@ -29,7 +29,7 @@ namespace {
 
 using namespace simswift;
 using namespace simswift::vision;
-namespace al = agent::libagent;
+namespace al = common::libagent;
 constexpr double kDeg = M_PI / 180.0;
 
 std::shared_ptr<const RobotModel> model() {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "agent/field/FieldFacts.hpp"
+#include "common/field/FieldFacts.hpp"
 #include "agent/localisation/FieldModel.hpp"
 #include "sim/world/FieldConfig.hpp"
 
@@ -51,12 +51,12 @@ TEST(FieldModelAgreement, RobotCodeFieldMatchesTheSimulatedField) {
   EXPECT_EQ(posts, 4);
 }
 
-// The robot code's field facts (agent/field/FieldFacts.hpp) that FieldModel
+// The robot code's field facts (common/field/FieldFacts.hpp) that FieldModel
 // does not carry: the carpet's border and the goal (mm against m).
 TEST(FieldModelAgreement, FieldFactsMatchTheSimulatedField) {
   const simswift::FieldConfig f = simswift::FieldConfig::loadYaml(std::string(SIMSWIFT_SOURCE_DIR) +
                                                                   "/fields/spl_2017.yaml");
-  EXPECT_NEAR(agent::field::kBorderStripWidth, f.border * 1000, 1e-6);
-  EXPECT_NEAR(agent::field::kGoalPostDiameter, f.goal.post_diameter * 1000, 1e-6);
-  EXPECT_NEAR(agent::field::kGoalInnerWidth, f.goal.inner_width * 1000, 1e-6);
+  EXPECT_NEAR(common::field::kBorderStripWidth, f.border * 1000, 1e-6);
+  EXPECT_NEAR(common::field::kGoalPostDiameter, f.goal.post_diameter * 1000, 1e-6);
+  EXPECT_NEAR(common::field::kGoalInnerWidth, f.goal.inner_width * 1000, 1e-6);
 }

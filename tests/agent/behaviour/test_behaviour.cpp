@@ -7,7 +7,7 @@
 
 #include "agent/behaviour/Behaviour.hpp"
 #include "agent/behaviour/BehaviourYaml.hpp"
-#include "agent/config/ConfigError.hpp"
+#include "common/config/ConfigError.hpp"
 
 using namespace agent::behaviour;
 using agent::blackboard::ActionType;
@@ -78,7 +78,7 @@ TEST(Behaviour, KindsTable) {
   std::string error;
   try {
     behaviourFromText("findball2018", "", "x.yaml");
-  } catch (const agent::config::ConfigError& e) {
+  } catch (const common::config::ConfigError& e) {
     error = e.what();
   }
   EXPECT_NE(error.find("expected one of findball2016, findball2017, striker, script (got 'findball2018')"),

@@ -11,7 +11,7 @@
 #include "agent/blackboard/Blackboard.hpp"
 #include "agent/localisation/FieldModel.hpp"
 #include "agent/localisation/Localiser.hpp"
-#include "agent/random/Random.hpp"
+#include "common/random/Random.hpp"
 
 namespace loc_test {
 
@@ -102,10 +102,10 @@ class SyntheticRobot {
     return v;
   }
 
-  agent::random::Random& rng() { return rng_; }
+  common::random::Random& rng() { return rng_; }
 
  private:
-  agent::random::Random rng_;
+  common::random::Random rng_;
   bb::FieldPose truth_;
   DetectorSpec det_;
   al::FieldModel field_;

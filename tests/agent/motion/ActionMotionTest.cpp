@@ -10,8 +10,8 @@
 #include "agent/motion/ActionMotion.hpp"
 
 using namespace agent::motion;
-namespace J = agent::libagent::Joints;
-namespace S = agent::libagent::Sensors;
+namespace J = common::libagent::Joints;
+namespace S = common::libagent::Sensors;
 namespace bb = agent::blackboard;
 
 namespace {
@@ -25,8 +25,8 @@ struct Lcg {
   }
 };
 
-agent::libagent::SensorValues standingSensors(const agent::libagent::JointValues& joints) {
-  agent::libagent::SensorValues s{};
+common::libagent::SensorValues standingSensors(const common::libagent::JointValues& joints) {
+  common::libagent::SensorValues s{};
   s.joints = joints;
   for (int i = 0; i < 4; ++i) {
     s.sensors[S::LFoot_FSR_FrontLeft + i] = 0.66f;  // kg: 5.3 kg over eight sensors
@@ -35,9 +35,9 @@ agent::libagent::SensorValues standingSensors(const agent::libagent::JointValues
   return s;
 }
 
-void expectWithinLimits(const agent::libagent::JointValues& cmd, const float* prev) {
+void expectWithinLimits(const common::libagent::JointValues& cmd, const float* prev) {
   const auto& lim = jointLimits();
-  for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) {
     ASSERT_GE(cmd.angles[i], lim[i].lower) << J::kNames[i];
     ASSERT_LE(cmd.angles[i], lim[i].upper) << J::kNames[i];
     if (prev) {
@@ -51,12 +51,12 @@ void expectWithinLimits(const agent::libagent::JointValues& cmd, const float* pr
 TEST(Clipper, NeverExceedsLimitsOrPerTickSpeed) {
   Clipper clip;
   Lcg rng{42};
-  agent::libagent::JointValues sensed{};
-  float prev[agent::libagent::kNumJoints];
+  common::libagent::JointValues sensed{};
+  float prev[common::libagent::kNumJoints];
   bool have_prev = false;
   for (int t = 0; t < 5000; ++t) {
-    agent::libagent::JointValues cmd{};
-    for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
+    common::libagent::JointValues cmd{};
+    for (int i = 0; i < common::libagent::kNumJoints; ++i) {
       // Wild commands: far outside the limits, occasionally NaN.
       cmd.angles[i] = static_cast<float>((rng.next() - 0.5) * 10.0);
       if (rng.next() < 0.01) cmd.angles[i] = NAN;
@@ -65,7 +65,7 @@ TEST(Clipper, NeverExceedsLimitsOrPerTickSpeed) {
     }
     clip.clip(cmd, sensed);
     expectWithinLimits(cmd, have_prev ? prev : nullptr);
-    for (int i = 0; i < agent::libagent::kNumJoints; ++i) {
+    for (int i = 0; i < common::libagent::kNumJoints; ++i) {
       ASSERT_TRUE(std::isfinite(cmd.angles[i]));
       ASSERT_TRUE(cmd.stiffnesses[i] == -1.0f || (cmd.stiffnesses[i] >= 0 && cmd.stiffnesses[i] <= 1));
       prev[i] = cmd.angles[i];
@@ -76,7 +76,7 @@ TEST(Clipper, NeverExceedsLimitsOrPerTickSpeed) {
 
 TEST(Clipper, FirstCommandStartsFromSensedAngles) {
   Clipper clip;
-  agent::libagent::JointValues sensed{}, cmd{};
+  common::libagent::JointValues sensed{}, cmd{};
   sensed.angles[J::LKneePitch] = 1.0f;
   cmd.angles[J::LKneePitch] = 0.0f;
   clip.clip(cmd, sensed);
@@ -85,8 +85,8 @@ TEST(Clipper, FirstCommandStartsFromSensedAngles) {
 
 TEST(Head, SpeedLimitedAbsoluteAndRelative) {
   HeadGenerator head;
-  agent::libagent::SensorValues s{};
-  agent::libagent::JointValues out{};
+  common::libagent::SensorValues s{};
+  common::libagent::JointValues out{};
   bb::HeadCommand cmd;
   cmd.yaw = 1.0f;
   cmd.yaw_speed = 0.5f;  // rad/s
@@ -119,8 +119,8 @@ TEST(Kick, RunsToCompletionWithinLimitsAndLiftsTheKickingFoot) {
   for (auto foot : {bb::Foot::LEFT, bb::Foot::RIGHT}) {
     KickGenerator kick(wc);
     kick.start(foot, 1.0, 0.2);
-    agent::libagent::SensorValues s{};
-    agent::libagent::JointValues out{};
+    common::libagent::SensorValues s{};
+    common::libagent::JointValues out{};
     double max_knee_diff = 0;
     int ticks = 0;
     while (!kick.done() && ticks < 1000) {
@@ -148,8 +148,8 @@ TEST(Kick, ArmsSwingAgainstTheLegAndNoJointIsSentToItsStop) {
     const bool right = foot == bb::Foot::RIGHT;
     KickGenerator kick(wc);
     kick.start(foot, 1.0, 0.0);
-    agent::libagent::SensorValues s{};
-    agent::libagent::JointValues out{};
+    common::libagent::SensorValues s{};
+    common::libagent::JointValues out{};
     // rad: the kicking HipPitch's extremes (< 0 is the thigh forward: the
     // strike; the largest is the wind-back) and, there, the kicking side's
     // ShoulderPitch minus the other's (> 0: the kicking side's arm further back).
@@ -163,7 +163,7 @@ TEST(Kick, ArmsSwingAgainstTheLegAndNoJointIsSentToItsStop) {
                          out.angles[right ? J::LShoulderPitch : J::RShoulderPitch];
       if (hip < strike_hip) { strike_hip = hip; arm_at_strike = arm; }
       if (hip > windback_hip) { windback_hip = hip; arm_at_windback = arm; }
-      for (int j = 0; j < agent::libagent::kNumJoints; ++j) {
+      for (int j = 0; j < common::libagent::kNumJoints; ++j) {
         if (j == J::LHand || j == J::RHand) continue;
         const double room = std::min(out.angles[j] - lim[j].lower, lim[j].upper - out.angles[j]);
         closest = std::min(closest, room);
@@ -183,13 +183,13 @@ TEST(ActionMotion, WalksPublishesOdometryAndStaysWithinLimits) {
   req.body.forward = 250;
   req.sequence = 1;
   motion.setRequest(req);
-  agent::libagent::JointValues cmd{};
-  agent::libagent::SensorValues s = standingSensors(cmd);
-  float prev[agent::libagent::kNumJoints];
+  common::libagent::JointValues cmd{};
+  common::libagent::SensorValues s = standingSensors(cmd);
+  float prev[common::libagent::kNumJoints];
   for (int t = 0; t < 500; ++t) {
     motion.tickSeconds(s, t * 0.01, cmd);
     expectWithinLimits(cmd, t > 0 ? prev : nullptr);
-    for (int i = 0; i < agent::libagent::kNumJoints; ++i) prev[i] = cmd.angles[i];
+    for (int i = 0; i < common::libagent::kNumJoints; ++i) prev[i] = cmd.angles[i];
     // A perfect body: sensed angles follow the commands, and the weight is
     // on the support foot until the swing foot is down (80 % of the step).
     s.joints = cmd;
@@ -214,8 +214,8 @@ TEST(ActionMotion, FallGoesLimpThenGetsUpFromTheRightSide) {
   bb::MotionRequest req;
   req.body.type = bb::ActionType::STAND;
   motion.setRequest(req);
-  agent::libagent::JointValues cmd{};
-  agent::libagent::SensorValues s = standingSensors(cmd);
+  common::libagent::JointValues cmd{};
+  common::libagent::SensorValues s = standingSensors(cmd);
   for (int t = 0; t < 50; ++t) motion.tickSeconds(s, t * 0.01, cmd);
   // Tip forward past the fall angle: limp at once.
   s.sensors[S::InertialSensor_AngleY] = 0.9f;
@@ -223,7 +223,7 @@ TEST(ActionMotion, FallGoesLimpThenGetsUpFromTheRightSide) {
   motion.tickSeconds(s, 0.5, cmd);
   EXPECT_EQ(motion.mode(), ActionMotion::Mode::Falling);
   EXPECT_EQ(motion.state().posture, bb::BodyState::FALLING);
-  for (int i = 0; i < agent::libagent::kNumJoints; ++i) EXPECT_LE(cmd.stiffnesses[i], 0.0f);
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) EXPECT_LE(cmd.stiffnesses[i], 0.0f);
   // Lying face down and still: the front get-up starts.
   s.sensors[S::InertialSensor_AngleY] = 1.5f;
   s.sensors[S::InertialSensor_GyrY] = 0.0f;
@@ -242,8 +242,8 @@ TEST(ActionMotion, FallGoesLimpThenGetsUpFromTheRightSide) {
 
 TEST(ActionMotion, BackFallChoosesBackGetupAndDeadIsLimp) {
   ActionMotion motion;
-  agent::libagent::JointValues cmd{};
-  agent::libagent::SensorValues s = standingSensors(cmd);
+  common::libagent::JointValues cmd{};
+  common::libagent::SensorValues s = standingSensors(cmd);
   s.sensors[S::InertialSensor_AngleY] = -1.5f;
   double t = 0;
   for (int i = 0; i < 60; ++i, t += 0.01) motion.tickSeconds(s, t, cmd);
@@ -252,7 +252,7 @@ TEST(ActionMotion, BackFallChoosesBackGetupAndDeadIsLimp) {
   req.body.type = bb::ActionType::DEAD;
   motion.setRequest(req);
   motion.tickSeconds(s, t, cmd);
-  for (int i = 0; i < agent::libagent::kNumJoints; ++i) EXPECT_EQ(cmd.stiffnesses[i], -1.0f);
+  for (int i = 0; i < common::libagent::kNumJoints; ++i) EXPECT_EQ(cmd.stiffnesses[i], -1.0f);
 }
 
 TEST(ActionMotion, KickRequestRunsTheKickOnce) {
@@ -262,8 +262,8 @@ TEST(ActionMotion, KickRequestRunsTheKickOnce) {
   req.body.foot = bb::Foot::LEFT;
   req.sequence = 7;
   motion.setRequest(req);
-  agent::libagent::JointValues cmd{};
-  agent::libagent::SensorValues s = standingSensors(cmd);
+  common::libagent::JointValues cmd{};
+  common::libagent::SensorValues s = standingSensors(cmd);
   bool kicked = false;
   double t = 0;
   for (int i = 0; i < 600; ++i, t += 0.01) {
@@ -289,8 +289,8 @@ TEST(ActionMotion, PickedUpInKgStopsWalkingFullWeightDoesNot) {
     req.body.forward = 200;
     req.sequence = 1;
     motion.setRequest(req);
-    agent::libagent::JointValues cmd{};
-    agent::libagent::SensorValues s = standingSensors(cmd);
+    common::libagent::JointValues cmd{};
+    common::libagent::SensorValues s = standingSensors(cmd);
     bool stepped = false;
     for (int t = 0; t < 300; ++t) {
       motion.tickSeconds(s, t * 0.01, cmd);

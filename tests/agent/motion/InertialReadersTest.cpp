@@ -1,5 +1,5 @@
 // The robot code reads the inertial slots as a NAO V5 gives them
-// (agent/libagent/Inertial.hpp): GyroscopeZ negative for an anti-clockwise
+// (common/libagent/Inertial.hpp): GyroscopeZ negative for an anti-clockwise
 // turn, GyrX/GyrY in raw counts beside GyroscopeX/Y in rad/s. The heading
 // rate, the odometry's turn and the fall's "lying still" check must read the
 // NAO's convention, not a right-handed or all-rad/s one.
@@ -7,20 +7,20 @@
 
 #include <cmath>
 
-#include "agent/libagent/Inertial.hpp"
+#include "common/libagent/Inertial.hpp"
 #include "agent/motion/ActionMotion.hpp"
 #include "agent/motion/Walk2014Generator.hpp"
 
 using namespace agent::motion;
-namespace S = agent::libagent::Sensors;
-namespace in = agent::libagent::inertial;
+namespace S = common::libagent::Sensors;
+namespace in = common::libagent::inertial;
 namespace bb = agent::blackboard;
 
 namespace {
 
 // A V5's gyro slots for body rates w (rad/s, right-handed torso axes):
 // GyroscopeX/Y/Z with the V5's signs, GyrX/GyrY in counts (same sign).
-void setRates(agent::libagent::SensorValues& s, double wx, double wy, double wz) {
+void setRates(common::libagent::SensorValues& s, double wx, double wy, double wz) {
   s.sensors[S::InertialSensor_GyroscopeX] = static_cast<float>(wx);
   s.sensors[S::InertialSensor_GyroscopeY] = static_cast<float>(wy);
   s.sensors[S::InertialSensor_GyroscopeZ] = static_cast<float>(-wz);  // the V5: anti-clockwise reads negative
@@ -29,8 +29,8 @@ void setRates(agent::libagent::SensorValues& s, double wx, double wy, double wz)
 }
 
 // Both feet loaded (kg, the NAO's FSR unit: 5.3 kg over eight sensors).
-agent::libagent::SensorValues standing(const agent::libagent::JointValues& joints) {
-  agent::libagent::SensorValues s{};
+common::libagent::SensorValues standing(const common::libagent::JointValues& joints) {
+  common::libagent::SensorValues s{};
   s.joints = joints;
   for (int i = 0; i < 4; ++i) {
     s.sensors[S::LFoot_FSR_FrontLeft + i] = 0.66f;
@@ -42,7 +42,7 @@ agent::libagent::SensorValues standing(const agent::libagent::JointValues& joint
 }  // namespace
 
 TEST(InertialReaders, BodyRatesUndoTheV5Signs) {
-  agent::libagent::SensorValues s{};
+  common::libagent::SensorValues s{};
   setRates(s, 0.1, -0.2, 0.7);
   const in::BodyRates w = in::bodyRates(s.sensors);
   EXPECT_DOUBLE_EQ(w.x, static_cast<float>(0.1));
@@ -54,7 +54,7 @@ TEST(InertialReaders, BodyRatesUndoTheV5Signs) {
 // the heading rate is +0.5, upright, tilted or lying.
 TEST(InertialReaders, HeadingRateOfALeftTurnIsPositive) {
   for (double wz : {0.5, -0.5}) {
-    agent::libagent::SensorValues s{};
+    common::libagent::SensorValues s{};
     setRates(s, 0, 0, wz);
     EXPECT_NEAR(headingRate(s.sensors), wz, 1e-6) << wz;
     s.sensors[S::InertialSensor_AngleX] = 0.05f;  // walking: a few degrees of roll and pitch
@@ -75,8 +75,8 @@ TEST(InertialReaders, WalkOdometryTurnsTheWayTheBodyTurns) {
     req.body.type = bb::ActionType::WALK;
     req.body.turn = static_cast<float>(wz);
     motion.setRequest(req);
-    agent::libagent::JointValues cmd{};
-    agent::libagent::SensorValues s = standing(cmd);
+    common::libagent::JointValues cmd{};
+    common::libagent::SensorValues s = standing(cmd);
     double stepping = 0;
     for (int t = 0; t < 400; ++t) {
       s.joints = cmd;
@@ -99,8 +99,8 @@ TEST(InertialReaders, LyingStillIsReadFromTheCalibratedGyroscope) {
   bb::MotionRequest req;
   req.body.type = bb::ActionType::STAND;
   motion.setRequest(req);
-  agent::libagent::JointValues cmd{};
-  agent::libagent::SensorValues s = standing(cmd);
+  common::libagent::JointValues cmd{};
+  common::libagent::SensorValues s = standing(cmd);
   for (int t = 0; t < 50; ++t) motion.tickSeconds(s, t * 0.01, cmd);
   s.sensors[S::InertialSensor_AngleY] = 0.9f;  // tipping forward fast
   setRates(s, 0, 3.0, 0);

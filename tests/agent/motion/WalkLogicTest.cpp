@@ -9,7 +9,7 @@
 #include "agent/motion/Walk2014Generator.hpp"
 
 using namespace agent::motion;
-namespace S = agent::libagent::Sensors;
+namespace S = common::libagent::Sensors;
 
 namespace {
 
@@ -20,9 +20,9 @@ double ellipsoid(const WalkSpeed& w, const WalkConfig& c) {
 
 // Sensors with `left_n` / `right_n` newtons spread evenly over each foot's
 // FSRs, in the NAO's unit (kg).
-agent::libagent::SensorValues withWeight(double left_n, double right_n) {
-  agent::libagent::SensorValues s{};
-  const double g = agent::libagent::kFsrNewtonsPerKilogram;
+common::libagent::SensorValues withWeight(double left_n, double right_n) {
+  common::libagent::SensorValues s{};
+  const double g = common::libagent::kFsrNewtonsPerKilogram;
   for (int i = 0; i < 4; ++i) {
     s.sensors[S::LFoot_FSR_FrontLeft + i] = static_cast<float>(left_n / g / 4);
     s.sensors[S::RFoot_FSR_FrontLeft + i] = static_cast<float>(right_n / g / 4);
@@ -124,7 +124,7 @@ TEST(WalkGenerator, FeetAlternateWithSyntheticFsrsAndOdometryIntegrates) {
   const WalkConfig c = geometryConfig();
   Walk2014Generator walk(c);
   walk.setRequest(true, {200, 0, 0});
-  agent::libagent::JointValues out{};
+  common::libagent::JointValues out{};
   double forward = 0, left = 0, turn = 0;
   int switches = 0;
   bool last_swing = walk.leftIsSwing();
@@ -142,7 +142,7 @@ TEST(WalkGenerator, FeetAlternateWithSyntheticFsrsAndOdometryIntegrates) {
       ++switches;
       last_swing = walk.leftIsSwing();
     }
-    for (int j = 0; j < agent::libagent::kNumJoints; ++j) ASSERT_TRUE(std::isfinite(out.angles[j]));
+    for (int j = 0; j < common::libagent::kNumJoints; ++j) ASSERT_TRUE(std::isfinite(out.angles[j]));
   }
   // 6 s: 0.5 s sinking, then steps of ~0.2 s (switch at 0.8 T with T = 0.25 s).
   EXPECT_GT(switches, 20);
@@ -162,7 +162,7 @@ TEST(WalkGenerator, FeetAlternateWithSyntheticFsrsAndOdometryIntegrates) {
 TEST(WalkGenerator, StopsThroughAStandAndRisesToStandHeight) {
   const WalkConfig c = geometryConfig();
   Walk2014Generator walk(c);
-  agent::libagent::JointValues out{};
+  common::libagent::JointValues out{};
   const auto air = withWeight(0, 0);
   walk.setRequest(true, {300, 0, 0.5});
   for (int i = 0; i < 300; ++i) walk.tick(air, 0.01, out);
@@ -183,7 +183,7 @@ TEST(WalkGenerator, StopsThroughAStandAndRisesToStandHeight) {
 TEST(WalkGenerator, TurnAndSideOdometryHaveTheRightSigns) {
   const WalkConfig c = geometryConfig();
   const auto air = withWeight(0, 0);
-  agent::libagent::JointValues out{};
+  common::libagent::JointValues out{};
   {
     Walk2014Generator walk(c);
     walk.setRequest(true, {0, 0, 0.6});
@@ -216,7 +216,7 @@ TEST(WalkGenerator, GainTableScalesTheStepAndOdometryReportsTheCommand) {
   c.forward_gains = {1.0, 1.5, 2.0, 2.0};  // 150 mm/s = 50 % of 300 -> gain 1.5
   Walk2014Generator walk(c);
   walk.setRequest(true, {150, 0, 0});
-  agent::libagent::JointValues out{};
+  common::libagent::JointValues out{};
   const auto air = withWeight(0, 0);
   for (int i = 0; i < 300; ++i) walk.tick(air, 0.01, out);  // ramp up to 150
   ASSERT_EQ(walk.latched().forward, 150);

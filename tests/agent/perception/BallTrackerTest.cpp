@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "agent/random/Random.hpp"
+#include "common/random/Random.hpp"
 #include "agent/perception/BallTracker.hpp"
 
 namespace bb = agent::blackboard;
@@ -30,7 +30,7 @@ struct RollingBall {
   }
 };
 
-bb::VisionMeasurements detection(double x, double y, agent::random::Random& rng) {
+bb::VisionMeasurements detection(double x, double y, common::random::Random& rng) {
   // The detector model's default: distance noise 8 % (1 sigma), bearing 2 deg.
   const double d = std::hypot(x, y) * (1 + rng.gaussian(0.08)), b = std::atan2(y, x) + rng.gaussian(0.035);
   bb::VisionMeasurements v;
@@ -47,7 +47,7 @@ TEST(BallTracker, RollingBallPositionAndVelocityAfterOneSecond) {
   const RollingBall ball{1500, 600, -300, -950, 500};
   std::vector<double> pos_err, vel_err;
   for (uint64_t seed = 1; seed <= 20; ++seed) {
-    agent::random::Random rng(seed);
+    common::random::Random rng(seed);
     ap::BallTracker tr;
     bb::LocalisationEstimate pose;  // robot at the centre spot, facing +x
     bb::TeamInfo team;
@@ -81,7 +81,7 @@ TEST(BallTracker, RollingBallPositionAndVelocityAfterOneSecond) {
 TEST(BallTracker, CompensatesTheRobotsOwnMotion) {
   // A still ball 1 m ahead; the robot turns left 90 degrees on the spot
   // without seeing it: the ball must end up 1 m to the robot's right.
-  agent::random::Random rng(5);
+  common::random::Random rng(5);
   ap::BallTracker tr;
   bb::LocalisationEstimate pose;
   bb::TeamInfo team;
@@ -95,7 +95,7 @@ TEST(BallTracker, CompensatesTheRobotsOwnMotion) {
 }
 
 TEST(BallTracker, LostAfterFiveSecondsThenTeamBall) {
-  agent::random::Random rng(7);
+  common::random::Random rng(7);
   ap::BallTracker tr;
   bb::LocalisationEstimate pose;
   pose.pose = {-1000, 0, 0};

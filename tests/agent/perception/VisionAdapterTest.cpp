@@ -7,7 +7,7 @@
 #include "agent/perception/VisionAdapter.hpp"
 
 namespace bb = agent::blackboard;
-namespace al = agent::libagent;
+namespace al = common::libagent;
 
 namespace {
 al::Observation obs(al::ObservationType t, float x, float y, int team = -1) {

@@ -8,10 +8,10 @@
 #include <string>
 
 #include "agent/comms/SplMessage.hpp"
-#include "agent/libagent/SharedNames.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "agent/program/RobotProgram.hpp"
 
-namespace al = agent::libagent;
+namespace al = common::libagent;
 namespace ap = agent::program;
 namespace bb = agent::blackboard;
 

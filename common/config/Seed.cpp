@@ -1,0 +1,17 @@
+#include "common/config/Seed.hpp"
+
+namespace common::config {
+
+std::optional<uint64_t> parseSeed(const std::string& text) {
+  if (text.empty() || text.size() > 20) return std::nullopt;
+  uint64_t v = 0;
+  for (const char c : text) {
+    if (c < '0' || c > '9') return std::nullopt;
+    const uint64_t d = static_cast<uint64_t>(c - '0');
+    if (v > (UINT64_MAX - d) / 10) return std::nullopt;  // v * 10 + d would wrap
+    v = v * 10 + d;
+  }
+  return v;
+}
+
+}  // namespace common::config
