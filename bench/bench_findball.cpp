@@ -2,7 +2,7 @@
 // search): table 5.1's robots (1: robot 2; 3: robots 2, 3, 4) running the
 // 2016 FindBall or the 2017 ball searching component, the ball at table
 // 5.2's positions 1-5, 180 s limit, found = a robot sees the ball and is
-// within 300 mm of it by ground truth (tests/behaviour_physics/FindBallHarness.hpp).
+// within 300 mm of it by ground truth (harness/FindBallHarness.hpp).
 //
 //   bench_findball [--robots 1|3|both] [--seeds N] [--first-seed S] [--positions 1,2,..]
 //
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "BenchResults.hpp"
-#include "../tests/behaviour_physics/FindBallHarness.hpp"
+#include "harness/FindBallHarness.hpp"
 
 namespace fh = findball_harness;
 

@@ -15,14 +15,15 @@ function(simswift_library name dir)
 endfunction()
 
 # simswift_forbid_includes(DIR PREFIX): fail the configure step if any file
-# under DIR includes a header under PREFIX. Used to keep agent/ (the robot
-# code) free of the simulator, so the same code runs on a robot, and the
-# simulator's folders other than sim/programs free of the robot program.
+# under DIR includes a header under PREFIX (from the source root, or by a
+# relative path: "../PREFIX..."). Used to keep agent/ (the robot code) free
+# of the simulator, so the same code runs on a robot, and the simulator's
+# folders other than sim/programs free of the robot program.
 function(simswift_forbid_includes dir prefix)
   file(GLOB_RECURSE files CONFIGURE_DEPENDS
        ${PROJECT_SOURCE_DIR}/${dir}/*.cpp ${PROJECT_SOURCE_DIR}/${dir}/*.hpp)
   foreach(f ${files})
-    file(STRINGS ${f} hits REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<]${prefix}")
+    file(STRINGS ${f} hits REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<](\\.\\./)*${prefix}")
     if(hits)
       message(FATAL_ERROR "${f} includes ${hits}: ${dir}/ must not depend on ${prefix}")
     endif()

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "Table51Setup.hpp"
+#include "harness/Table51Setup.hpp"
 
 using namespace agent::behaviour;
 using namespace agent::behaviour::table51;

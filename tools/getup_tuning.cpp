@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "sim/runner/FallDetector.hpp"
-#include "tools/motion_harness.hpp"
+#include "harness/MotionHarness.hpp"
 
 using agent::blackboard::ActionType;
 using motion_test::MotionHarness;

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/motion_harness.hpp"
+#include "harness/MotionHarness.hpp"
 
 using agent::blackboard::ActionType;
 using agent::blackboard::Foot;

@@ -3,7 +3,7 @@
 // the SearchPayload reaching teammates through the simulated network.
 #include <gtest/gtest.h>
 
-#include "FindBallHarness.hpp"
+#include "harness/FindBallHarness.hpp"
 #include "agent/behaviour/BehaviourYaml.hpp"
 #include "tests/support/ConfigErrors.hpp"
 

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "FindBallHarness.hpp"
+#include "harness/FindBallHarness.hpp"
 
 using simswift::runner::Runner;
 using simswift::runner::Scenario;

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "FindBallHarness.hpp"
+#include "harness/FindBallHarness.hpp"
 
 using simswift::runner::Runner;
 using simswift::runner::Scenario;

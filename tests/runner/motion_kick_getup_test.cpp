@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "sim/runner/FallDetector.hpp"
-#include "tools/motion_harness.hpp"
+#include "harness/MotionHarness.hpp"
 
 using agent::blackboard::ActionType;
 using simswift::runner::FallDetector;

@@ -9,7 +9,7 @@
 
 #include "app/api/WalkSampling.hpp"
 #include "simswift/WalkTest.hpp"
-#include "tools/motion_harness.hpp"
+#include "harness/MotionHarness.hpp"
 
 using agent::blackboard::ActionType;
 using motion_test::MotionHarness;

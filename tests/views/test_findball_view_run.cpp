@@ -11,7 +11,7 @@
 
 #include "sim/programs/FindBallObserver.hpp"
 #include "sim/views/FindBallView.hpp"
-#include "tests/agent/behaviour/KinematicWorld.hpp"
+#include "harness/KinematicWorld.hpp"
 
 using namespace agent::behaviour;
 

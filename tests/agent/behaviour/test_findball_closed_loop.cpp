@@ -13,8 +13,8 @@
 #include <cstdio>
 #include <random>
 
-#include "KinematicWorld.hpp"
-#include "Table51Setup.hpp"
+#include "harness/KinematicWorld.hpp"
+#include "harness/Table51Setup.hpp"
 
 using namespace agent::behaviour;
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "KinematicWorld.hpp"
-#include "Table51Setup.hpp"
+#include "harness/KinematicWorld.hpp"
+#include "harness/Table51Setup.hpp"
 #include "agent/behaviour/DistributedUtilityCalculator.hpp"
 #include "agent/behaviour/SimpleUtilityCalculator.hpp"
 #include "agent/behaviour/SonarFilter.hpp"

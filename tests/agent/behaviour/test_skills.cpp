@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "KinematicWorld.hpp"
+#include "harness/KinematicWorld.hpp"
 #include "agent/behaviour/ApproachBall.hpp"
 #include "agent/behaviour/HeadScan.hpp"
 #include "agent/behaviour/Kick.hpp"

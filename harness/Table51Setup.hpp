@@ -1,12 +1,13 @@
 // Table 5.1's starts and table 5.2's balls 1-5 for the FindBall behaviours
 // in the kinematic world (KinematicWorld.hpp): shared by the closed-loop
-// logic tests and tools/findball_times.cpp, which prints docs/behaviour.md's table.
+// logic tests (tests/agent/behaviour) and tools/findball_times.cpp, which
+// prints docs/behaviour.md's table.
 #pragma once
 
 #include <algorithm>
 #include <random>
 
-#include "KinematicWorld.hpp"
+#include "harness/KinematicWorld.hpp"
 
 namespace agent::behaviour::table51 {
 

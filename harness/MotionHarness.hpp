@@ -1,6 +1,6 @@
 // Shared harness for the Motion physics tests' (tests/runner) and the kick
-// and get-up tuning tools' way of driving the walk (here, in tools/, because
-// tools include no tests/ header; no GoogleTest in it): one robot in the lock-step runner running the
+// and get-up tuning tools' way of driving the walk (in harness/, which both
+// may include; no GoogleTest in it): one robot in the lock-step runner running the
 // production schedule (agent/program/ModuleOrder.cpp) inline: the test
 // plays Behaviour through a RequestedBehaviour in the Perception thread's
 // behaviour slot (agent/behaviour/RequestedBehaviour.hpp), which writes the

@@ -1,4 +1,4 @@
-// Shared by the physics tests and bench_findball: table 5.1's starts, table
+// Shared by the physics tests (tests/behaviour_physics) and bench_findball: table 5.1's starts, table
 // 5.2's ball positions, scenario text for a ball search, and the thesis's
 // "found" test (5.1: a robot sees the ball and is within 300 mm of it),
 // checked both from the simulator's ground truth and from the robot's own

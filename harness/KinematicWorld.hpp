@@ -1,5 +1,6 @@
 // A kinematic stand-in for the simulator, for LOGIC tests of the behaviour
-// (no physics, no noise): each robot's pose integrates its walk command
+// (tests/agent/behaviour, tests/views) and tools/findball_times (no physics,
+// no noise): each robot's pose integrates its walk command
 // exactly (after the walk's limits), the head yaw follows its command at the
 // commanded speed, the ball is seen when it is within the reliable detection
 // distance and inside the camera's horizontal field of view, and teammates
