@@ -29,29 +29,29 @@ constexpr double kTickSeconds = common::nao::kMotionTickSeconds;
 
 struct WorldConfig {
   enum class Solver { Exact, Quick };
-  Solver solver = Solver::Quick;     // see World.cpp for why (measured)
+  Solver solver = Solver::Quick;     // why (measured): docs/world.md, "Measurements"
   // us per tick: the robots' cycle, their body interface's (libagent on the
   // V5 10 ms, LoLA on the V6 12 ms; sim/runner/Bodies.hpp bodyCycleUs).
   int64_t tick_us = common::nao::kMotionTickUs;
   // Physics steps per tick. 0: the fewest that keep each step within
   // max_substep_us (a 10 ms tick: 2 x 5 ms; the V6's 12 ms: 3 x 4 ms); a
   // positive count is taken as given (a scenario's `physics: {substeps}`).
-  // Every setting here was measured with 5 ms steps (World.cpp), and
+  // Every setting here was measured with 5 ms steps (docs/world.md), and
   // QuickStep's residual at its 20 iterations grows with the step: 2 x 6 ms
   // tipped pushed-over V6s and V5s back at the end of their get-ups, and
-  // some V6s fell (World.cpp, "Step length").
+  // some V6s fell (docs/world.md, "Step length").
   int substeps = 0;
   int64_t max_substep_us = 5000;     // us
   int substepsPerTick() const {
     return substeps > 0 ? substeps : static_cast<int>((tick_us + max_substep_us - 1) / max_substep_us);
   }
   int quick_iterations = 20;
-  double quick_w = 1.7;              // QuickStep's over-relaxation (ODE's default 1.3), see World.cpp
+  double quick_w = 1.7;              // QuickStep's over-relaxation (ODE's default 1.3), see docs/world.md
   double erp = 0.8;
   double cfm = 1e-5;
   // After each substep, up to this many Gauss-Seidel sweeps move each
   // robot's links until its hinge anchors are within the tolerance
-  // (JointProjector; see World.cpp for why). 0 turns it off.
+  // (JointProjector; docs/world.md says why). 0 turns it off.
   int joint_projection_sweeps = 16;
   double joint_projection_tolerance = 1e-4;  // m
   double gravity = 9.81;             // m/s^2

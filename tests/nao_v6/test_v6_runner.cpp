@@ -128,7 +128,7 @@ TEST(V6Scenario, LolaBodyTicksAt12msOnTheV6Model) {
   EXPECT_EQ(v5.world.tick_us, 10000);
   EXPECT_EQ(v5.robots[0].body, simswift::bridge::BodyInterface::Libagent);
   // Physics in steps of at most 5 ms: the V6's tick in 3 x 4 ms (2 x 6 ms
-  // tipped its get-ups back: World.cpp, "Step length"), the V5's in 2 x 5 ms.
+  // tipped its get-ups back: docs/world.md, "Step length"), the V5's in 2 x 5 ms.
   auto steps = [](const Scenario& s) { return s.world.substepsPerTick(); };
   EXPECT_EQ(steps(sc), 3);
   EXPECT_EQ(steps(v5), 2);
@@ -671,7 +671,7 @@ TEST(MotionPhysics, V6GetsUpAfterAPush) {
 // the get-ups ended leaning back (AngleY -0.071 rad on average over seeds
 // 101-140, sd 0.058, down to -0.29) and 3 of 40 robots then rolled back over
 // their heels and fell again while standing; with 3 x 4 ms: -0.021, sd
-// 0.018, none (World.cpp, "Step length"). AngleY is what the program reads
+// 0.018, none (docs/world.md, "Step length"). AngleY is what the program reads
 // on the tick its Motion leaves the get-up (< 0: leaning back).
 TEST(MotionPhysics, V6StandsUprightAfterGettingUp) {
   double sum = 0, lowest = 0;

@@ -155,7 +155,7 @@ TEST(WorldHardening, RefusesAbsurdSolverSettings) {
 // Physics steps of at most 5 ms whatever the tick (WorldConfig::
 // max_substep_us): the settings were measured with 5 ms steps, and the V6's
 // 12 ms tick stepped 2 x 6 ms, where QuickStep's residual tipped pushed-over
-// robots back at the end of their get-ups (World.cpp, "Step length"). The
+// robots back at the end of their get-ups (docs/world.md, "Step length"). The
 // V5's 10 ms tick keeps its 2 x 5 ms (its state hash is pinned).
 TEST(WorldStepLength, EveryTickStepsAtMostFiveMilliseconds) {
   auto steps = [](int64_t tick_us, int substeps = 0) {
