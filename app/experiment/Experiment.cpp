@@ -24,14 +24,6 @@ namespace {
 // each other: a NAO's footprint is about 0.2 x 0.3 m.
 constexpr double kMinRobotSeparation = 0.30;
 
-std::string where(const YamlReader& r, const std::string& key) {
-  YAML::Node n = r.node()[key];
-  YAML::Mark m = (n.IsDefined() && !n.Mark().is_null()) ? n.Mark() : r.node().Mark();
-  std::string w = r.file();
-  if (!m.is_null()) w += ":" + std::to_string(m.line + 1);
-  return w + ": " + r.keyPath(key);
-}
-
 // An opaque map as one line of YAML (deterministic: yaml-cpp keeps the order).
 std::string flow(const YAML::Node& n) {
   YAML::Emitter e;
@@ -157,7 +149,7 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
     const bool has_default = s.has("behaviour");
     const std::string def_behaviour =
         has_default ? s.choice("behaviour", programs::kScriptBehaviour, programs::behaviourNames()) : "";
-    const std::string def_where = has_default ? where(s, "behaviour") : "";
+    const ConfigPlace def_where = has_default ? s.place("behaviour") : ConfigPlace{};
     std::string def_config;
     if (s.has("config")) {
       if (!s.node()["config"].IsMap()) s.fail("config", "must be a map of behaviour overrides");
@@ -177,10 +169,7 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
     std::set<std::pair<int, int>> players;
     for (const YamlReader& r : s.list("robots")) {
       ExperimentRobot rob;
-      {
-        const YAML::Mark m = r.node().Mark();
-        rob.where = r.file() + (m.is_null() ? "" : ":" + std::to_string(m.line + 1)) + ": " + r.path();
-      }
+      rob.where = r.place();
       rob.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
       rob.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
       if (!players.insert({rob.team, rob.player}).second)
@@ -192,7 +181,7 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
       onCarpet(r, rob.x, rob.y, common::nao::kFootprintRadius / 1000, "the robot");  // m
       if (r.has("behaviour")) {
         rob.behaviour = r.choice("behaviour", programs::kScriptBehaviour, programs::behaviourNames());
-        rob.behaviour_where = where(r, "behaviour");
+        rob.behaviour_where = r.place("behaviour");
       } else if (has_default) {
         rob.behaviour = def_behaviour;
         rob.behaviour_where = def_where;

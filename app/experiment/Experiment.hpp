@@ -99,8 +99,8 @@ struct ExperimentRobot {
   // lola: {}: a NAO V6 over LoLA at 12 ms (docs/lola.md), its socket private
   // to the trial's process; every robot of a setup alike.
   bool v6 = false;
-  std::string where;         // "file:line: setups[0].robots[1]" for later errors
-  std::string behaviour_where;  // same, of the behaviour key
+  ConfigPlace where;            // the robot's entry (setups[0].robots[1]), for later errors
+  ConfigPlace behaviour_where;  // same, of its behaviour key (or its setup's)
 };
 
 struct Setup {

@@ -27,4 +27,13 @@ struct ConfigError : std::runtime_error {
   std::string key;   // dotted key path; "" if none
 };
 
+// Where in a file a value was given: the parts a ConfigError about it
+// carries, kept apart for an error raised after the file was read (an
+// experiment robot's behaviour, checked with its overrides; YamlReader::place).
+struct ConfigPlace {
+  std::string file;
+  int line = 0;     // 1-based
+  std::string key;  // dotted key path
+};
+
 }  // namespace common::config

@@ -178,11 +178,23 @@ std::string YamlReader::keyPath(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;
 }
 
+// The 1-based line of `n`, else of `fallback`; an empty document has no
+// marks: its line is 1.
+static int lineOf(const YAML::Node& n, const YAML::Node& fallback) {
+  const YAML::Mark m = (n.IsDefined() && !n.Mark().is_null()) ? n.Mark() : fallback.Mark();
+  return m.is_null() ? 1 : m.line + 1;
+}
+
+ConfigPlace YamlReader::place(const std::string& key) const {
+  const YAML::Node& cn = node_;
+  const YAML::Node n = cn.IsMap() ? cn[key] : YAML::Node(YAML::NodeType::Undefined);  // const: never inserts
+  return {file_, lineOf(n, node_), keyPath(key)};
+}
+
+ConfigPlace YamlReader::place() const { return {file_, lineOf(node_, node_), path_}; }
+
 void YamlReader::fail(const std::string& key, const std::string& message) const {
-  YAML::Node n = get(key);
-  YAML::Mark m = (n.IsDefined() && !n.Mark().is_null()) ? n.Mark() : node_.Mark();
-  // An empty document has no marks: its line is 1.
-  const int line = m.is_null() ? 1 : m.line + 1;
+  const int line = lineOf(get(key), node_);
   const std::string k = keyPath(key);
   // A key spelt "" keeps its empty slot in the text ("file:3: : ...").
   if (k.empty()) throw ConfigError(file_, line, "", ": " + message);
@@ -190,7 +202,7 @@ void YamlReader::fail(const std::string& key, const std::string& message) const 
 }
 
 void YamlReader::fail(const std::string& message) const {
-  const int line = node_.Mark().is_null() ? 1 : node_.Mark().line + 1;
+  const int line = lineOf(node_, node_);
   // The document itself has no key: "<document>" is said in the text only.
   if (path_.empty()) throw ConfigError(file_, line, "", "<document>: " + message);
   throw ConfigError(file_, line, path_, message);

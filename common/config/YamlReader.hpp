@@ -154,6 +154,12 @@ class YamlReader {
   // an enclosing map).
   void checkMisspelling(const std::string& key) const;
 
+  // Where `key` is given (the line of its value, or of this map if the key
+  // is absent, as fail names it), or this map itself: for errors raised
+  // after reading (ConfigPlace). Marks no key as known.
+  ConfigPlace place(const std::string& key) const;
+  ConfigPlace place() const;
+
   const YAML::Node& node() const { return node_; }
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }

@@ -10,6 +10,7 @@
 namespace simswift {
 
 using common::config::ConfigError;
+using common::config::ConfigPlace;
 using common::config::checkConfigSize;
 using common::config::expandedNodes;
 using common::config::kMaxConfigBytes;

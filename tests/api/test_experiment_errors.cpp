@@ -93,3 +93,34 @@ TEST(ExperimentErrors, ACellOfValuesFineAloneNamesTheSweep) {
   EXPECT_EQ(r.key, "sweep") << r.what;
   EXPECT_NE(r.what.find("sweep: cell 2 ("), std::string::npos) << r.what;
 }
+
+// A behaviour override the behaviour's reader refuses (checked before any
+// trial) names the file, the line and the key of the behaviour it overrides:
+// the robot's own, else its setup's; the message says which override.
+TEST(ExperimentErrors, ABadBehaviourOverrideNamesItsBehavioursLineAndKey) {
+  const std::string head =
+      "name: tiny\n"                              // 1
+      "seed: 11\n"                                // 2
+      "time_limit: 7\n"                           // 3
+      "trials_per_position: 1\n"                  // 4
+      "found: {distance: 0.3, sees: true}\n"      // 5
+      "balls:\n"                                  // 6
+      "  - {position: 1, x: 0.7, y: 0.0}\n"       // 7
+      "setups:\n"                                 // 8
+      "  - name: searcher\n"                      // 9
+      "    behaviour: findball2017\n"             // 10
+      "    robots:\n";                            // 11
+  const Refusal setups = refusal(head +
+                                 "      - {team: 19, player: 2, x: -0.5, y: 0.0, theta: 0.0,\n"  // 12
+                                 "         config: {search: {spin_fast: on}}}\n");               // 13
+  EXPECT_EQ(setups.line, 10) << setups.what;
+  EXPECT_EQ(setups.key, "setups[0].behaviour") << setups.what;
+  EXPECT_NE(setups.what.find("unknown key 'spin_fast'"), std::string::npos) << setups.what;
+  const Refusal own = refusal(head +
+                              "      - {team: 19, player: 2, x: -0.5, y: 0.0, theta: 0.0}\n"      // 12
+                              "      - {team: 19, player: 3, x: -0.5, y: 1.0, theta: 0.0,\n"      // 13
+                              "         behaviour: findball2016, config: {search2016: {pass_distance: 1}}}\n");  // 14
+  EXPECT_EQ(own.line, 14) << own.what;
+  EXPECT_EQ(own.key, "setups[0].robots[1].behaviour") << own.what;
+  EXPECT_NE(own.what.find("search2016.pass_distance: must be in [10, 5000]"), std::string::npos) << own.what;
+}
