@@ -2,8 +2,7 @@
 
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/programs/FindBallObserver.hpp"
-#include "sim/runner/Errors.hpp"
-#include "sim/runner/Scenario.hpp"
+#include "sim/programs/Errors.hpp"
 
 namespace simswift::programs {
 
@@ -26,7 +25,7 @@ BuiltinProgram::BuiltinProgram(RobotSlot slot, ap::ProgramConfig config, ap::Thr
     try {
       body = ap::lolaBody(common::lola::LolaConnection::connect(slot_.host->endpoint(), 1.0), std::move(camera));
     } catch (const common::lola::LolaError& e) {
-      throw runner::RunnerError("robot " + slot_.tag + ": " + e.what());
+      throw RunnerError("robot " + slot_.tag + ": " + e.what());
     }
   }
   program_ = std::make_unique<ap::RobotProgram>(std::move(body), std::move(config));
@@ -36,7 +35,7 @@ BuiltinProgram::BuiltinProgram(RobotSlot slot, ap::ProgramConfig config, ap::Thr
 bool BuiltinProgram::findBallView(sim::views::FindBallViewData& out) const {
   const agent::blackboard::FindBallInfo info = program_->board().findball.read();
   if (!info.active) return false;
-  out = viewFromInfo(info, slot_.spec->player, slot_.tag);
+  out = viewFromInfo(info, slot_.player, slot_.tag);
   return true;
 }
 
@@ -50,7 +49,7 @@ void InlineProgram::posted(Step step, int64_t tick) {
   const bool motion = step == Step::Motion;
   if (motion ? program_->stepMotion() : program_->stepPerception()) return;
   const std::string error = program_->error();
-  throw runner::WatchdogError("robot " + slot_.tag + ": " + (motion ? "motion" : "perception") + " step " +
+  throw WatchdogError("robot " + slot_.tag + ": " + (motion ? "motion" : "perception") + " step " +
                               (error.empty() ? "found nothing posted (inline)" : "failed: " + error) + " (tick " +
                               std::to_string(tick) + ")");
 }

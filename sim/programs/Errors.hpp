@@ -1,11 +1,14 @@
-// The errors a run ends with (Runner and the program side, sim/programs).
+// The errors a run ends with. The program side (the drivers, their factory)
+// throws them and so does the Runner, which builds on it; they are here so
+// that sim/programs needs nothing of sim/runner. The Runner's callers catch
+// them by the runner's names (sim/runner/Errors.hpp).
 #pragma once
 
 #include <stdexcept>
 #include <string>
 #include <utility>
 
-namespace simswift::runner {
+namespace simswift::programs {
 
 struct WatchdogError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -23,4 +26,4 @@ struct ProgramError : RunnerError {
   std::string brief;
 };
 
-}  // namespace simswift::runner
+}  // namespace simswift::programs

@@ -5,14 +5,20 @@
 #include <sstream>
 
 #include "sim/bridge/BodySide.hpp"
-#include "sim/runner/Errors.hpp"
-#include "sim/runner/RunStats.hpp"
-#include "sim/runner/Scenario.hpp"
+#include "sim/programs/Errors.hpp"
 
 namespace simswift::programs {
 
-using runner::ProgramError;
-using runner::RunnerError;
+namespace {
+
+// Seconds in messages, as printf's %g writes them.
+std::string seconds(double s) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%g", s);
+  return buf;
+}
+
+}  // namespace
 
 ExternalProgram::ExternalProgram(RobotSlot slot, double attach_timeout_s)
     : ProgramDriver(std::move(slot)), attach_timeout_s_(attach_timeout_s) {}
@@ -40,9 +46,9 @@ bool LaunchedProgram::attach() {
   if (!awaitChecked(Step::Motion, attach_timeout_s_))
     throw ProgramError("robot " + slot_.tag + ": its program (pid " + std::to_string(process_->pid()) +
                            ") did not answer on " + slot_.host->endpoint() + " within attach_timeout " +
-                           runner::formatNumber("%g", attach_timeout_s_) + " s; log " + process_->logPath(),
+                           seconds(attach_timeout_s_) + " s; log " + process_->logPath(),
                        slot_.tag + ": program did not attach within " +
-                           runner::formatNumber("%g", attach_timeout_s_) + " s");
+                           seconds(attach_timeout_s_) + " s");
   return true;
 }
 

@@ -2,7 +2,8 @@
 // whatever drives a robot's body (the model: MuJoCo's mjcb_control, the
 // callback that computes a body's controls each step, and SimRobot's device
 // boundary). The Runner sees a robot program only through it; every
-// implementation and their factory (Programs.hpp) live in sim/programs, the
+// implementation and their factory (Programs.hpp) live in sim/programs
+// (which includes nothing of sim/runner: the Runner builds on it), the
 // only folder of sim/ that may include the robot program (agent/program,
 // behaviour, motion, blackboard, ...; configure refuses a direct include
 // anywhere else: docs/architecture.md says what it does not yet catch).
@@ -26,18 +27,15 @@
 namespace simswift::bridge {
 class BodySide;
 }
-namespace simswift::runner {
-struct RobotSpec;
-}
 
 namespace simswift::programs {
 
 // One robot as its program driver sees it (built by the Runner with the bodies).
 struct RobotSlot {
-  int index = 0;                            // scenario order
-  std::string tag;                          // "t19p2"
-  const runner::RobotSpec* spec = nullptr;  // the scenario's entry
-  bridge::BodySide* host = nullptr;         // its body side (libagent's BodyHost, LoLA's LolaBody)
+  int index = 0;                     // scenario order
+  std::string tag;                   // "t19p2"
+  int player = 0;                    // its player number (the FindBall view names it)
+  bridge::BodySide* host = nullptr;  // its body side (libagent's BodyHost, LoLA's LolaBody)
 };
 
 class ProgramDriver {

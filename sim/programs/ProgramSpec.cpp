@@ -1,7 +1,6 @@
 #include "sim/programs/ProgramSpec.hpp"
 
 #include "agent/behaviour/BehaviourYaml.hpp"
-#include "sim/runner/Scenario.hpp"
 
 namespace simswift::programs {
 
@@ -10,12 +9,34 @@ void readProgramPart(const common::config::YamlReader& robot, ProgramPart& p,
   agent::program::readProgramKeys(robot, p, outside);
 }
 
-void setBehaviour(ProgramPart& p, const std::string& kind, const std::string& overrides, const std::string& where) {
-  p.behaviour = agent::behaviour::behaviourFromText(kind, overrides, where, &p.behaviour_yaml);
+namespace {
+
+// The behaviour's reader reads the overrides as a document of their own
+// (named by where's file, its lines theirs): its error is re-raised at
+// `where`, with what it says after its own file and line.
+std::optional<agent::behaviour::BehaviourConfig> behaviourAt(const std::string& kind, const std::string& overrides,
+                                                             const common::config::ConfigPlace& where,
+                                                             std::string* yaml) {
+  using common::config::ConfigError;
+  try {
+    return agent::behaviour::behaviourFromText(kind, overrides, where.file, yaml);
+  } catch (const ConfigError& e) {
+    const std::string own = e.file + ":" + std::to_string(e.line) + ": ";
+    const std::string what = e.what();
+    throw ConfigError(where.file, where.line, where.key,
+                      what.rfind(own, 0) == 0 ? what.substr(own.size()) : what);
+  }
 }
 
-void checkBehaviour(const std::string& kind, const std::string& overrides, const std::string& where) {
-  agent::behaviour::behaviourFromText(kind, overrides, where);
+}  // namespace
+
+void setBehaviour(ProgramPart& p, const std::string& kind, const std::string& overrides,
+                  const common::config::ConfigPlace& where) {
+  p.behaviour = behaviourAt(kind, overrides, where, &p.behaviour_yaml);
+}
+
+void checkBehaviour(const std::string& kind, const std::string& overrides, const common::config::ConfigPlace& where) {
+  behaviourAt(kind, overrides, where, nullptr);
 }
 
 const char* behaviourName(const ProgramPart& p) {
@@ -26,18 +47,17 @@ const std::vector<std::string>& behaviourNames() { return agent::behaviour::beha
 
 std::string behaviourNamesText() { return agent::behaviour::behaviourNamesText(); }
 
-agent::program::RobotSetup robotSetup(const runner::Scenario& sc, int index) {
-  const runner::RobotSpec& r = sc.robots[index];
-  agent::program::RobotSetup s = r.setup;
-  s.team = r.team;
-  s.player = r.player;
-  s.seed = runner::programSeed(sc.seed, index);
-  s.posture = r.posture;
+agent::program::RobotSetup robotSetup(const ProgramPart& part, const ProgramIdentity& id) {
+  agent::program::RobotSetup s = part;
+  s.team = id.team;
+  s.player = id.player;
+  s.seed = id.seed;
+  s.posture = id.posture;
   s.start.reset();
-  if (r.setup.behaviour) s.start = agent::program::RobotSetup::StartPose{r.x, r.y, r.theta};  // m, as the scenario's
+  if (part.behaviour) s.start = agent::program::RobotSetup::StartPose{id.x, id.y, id.theta};  // m, as the scenario's
   // Pushes only: a NONE step keeps the script's STAND (the body is pushed,
   // the Motion module runs).
-  if (!s.behaviour && s.actions.empty() && !r.pushes.empty()) s.actions.push_back({});
+  if (!s.behaviour && s.actions.empty() && id.pushed) s.actions.push_back({});
   return s;
 }
 

@@ -6,20 +6,23 @@
 // program's {config} by its writer. The body's part (team, pose, posture,
 // pushes, buttons, body interface) stays the scenario's
 // (sim/runner/Scenario.hpp), which gives the setup its identity when a
-// program is made (robotSetup below).
+// program is made (ProgramIdentity, robotSetup below). The scenario holds
+// these types; nothing here reads the scenario.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "common/config/YamlReader.hpp"
+#include "common/nao/Postures.hpp"
 #include "agent/program/RobotSetup.hpp"
 
-namespace simswift::runner {
-struct Scenario;
-}
-
 namespace simswift::programs {
+
+// What drives a scenario robot's body: agent/'s program in this process, or
+// a program attached by name (started by hand, or by simswift when its
+// LaunchSpec has a command: ProgramProcess.hpp).
+enum class ProgramKind { Builtin, External };
 
 // Of the setup, the scenario holds script, actions, behaviour and
 // behaviour_yaml; team, player, seed, start and posture are set by robotSetup.
@@ -30,9 +33,12 @@ using ProgramPart = agent::program::RobotSetup;
 void readProgramPart(const common::config::YamlReader& robot, ProgramPart& p,
                      const agent::program::OutsideAction& outside);
 // A behaviour from its kind name and overrides as YAML flow text (the
-// experiment's robots); errors name `where`. check: the same, kept nowhere.
-void setBehaviour(ProgramPart& p, const std::string& kind, const std::string& overrides, const std::string& where);
-void checkBehaviour(const std::string& kind, const std::string& overrides, const std::string& where);
+// experiment's robots). A bad override is a ConfigError with where's file,
+// line and key (the robot's behaviour key), saying which override and why
+// ("behaviour.search: unknown key 'spin_fast' ..."). check: the same, kept nowhere.
+void setBehaviour(ProgramPart& p, const std::string& kind, const std::string& overrides,
+                  const common::config::ConfigPlace& where);
+void checkBehaviour(const std::string& kind, const std::string& overrides, const common::config::ConfigPlace& where);
 // The behaviour's kind name ("findball2017"); "script" if none.
 const char* behaviourName(const ProgramPart& p);
 // For the rest of sim/ (which names no robot-program type): every name a
@@ -43,11 +49,20 @@ inline constexpr const char* kScriptBehaviour = agent::behaviour::kScriptBehavio
 const std::vector<std::string>& behaviourNames();
 std::string behaviourNamesText();
 
-// What robot `index` of `sc` is set up with: its program part with the
-// identity its body and the run give it (team, player, the program's seed,
-// posture, and the start pose for a behaviour: the scenario's, in m). What a
+// What its body and the run give a robot's program (the Runner fills it
+// from the scenario: sim/runner/Scenario.hpp programIdentity).
+struct ProgramIdentity {
+  int team = 0, player = 0;
+  uint64_t seed = 0;                 // the program's own (its filters' random source)
+  common::nao::Posture posture{};    // the body's start
+  double x = 0, y = 0, theta = 0;    // m, m, rad; field frame: the body's start pose
+  bool pushed = false;               // the scenario pushes the body
+};
+
+// What a robot is set up with: its program part with its identity (team,
+// player, seed, posture, and the start pose for a behaviour). What a
 // builtin program is composed from and what a launched program's {config}
 // file holds (robotSetupYaml), the same for both.
-agent::program::RobotSetup robotSetup(const runner::Scenario& sc, int index);
+agent::program::RobotSetup robotSetup(const ProgramPart& part, const ProgramIdentity& id);
 
 }  // namespace simswift::programs

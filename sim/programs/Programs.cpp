@@ -8,19 +8,14 @@
 #include "common/lola/Protocol.hpp"
 #include "agent/program/RobotSetup.hpp"
 #include "sim/bridge/BodyHost.hpp"
+#include "sim/programs/Errors.hpp"
 #include "sim/programs/ExternalProgram.hpp"
 #include "sim/programs/MountNamespace.hpp"
-#include "sim/programs/ProgramSpec.hpp"
-#include "sim/runner/Errors.hpp"
-#include "sim/runner/Scenario.hpp"
 
 namespace simswift::programs {
 
 namespace al = common::libagent;
 namespace ap = agent::program;
-using runner::ProgramError;
-using runner::RobotSpec;
-using runner::RunnerError;
 
 Programs::Programs(int num_robots) : robots_(static_cast<size_t>(num_robots)) {}
 
@@ -71,24 +66,23 @@ void Programs::setThreading(ap::Threading threading) {
   threading_ = threading;
 }
 
-void Programs::build(const runner::Scenario& sc, const std::vector<RobotSlot>& slots) {
+void Programs::build(const ProgramRun& run, const std::vector<ProgramEntry>& robots) {
   if (built_) return;
   built_ = true;
   // A launched LoLA program this machine cannot give its view is refused
   // before any program starts.
-  for (const RobotSlot& slot : slots)
-    if (slot.spec->program != RobotSpec::Program::Builtin && slot.spec->launch.launched()) lolaView(slot);
-  for (const RobotSlot& slot : slots) {
-    Robot& r = robots_[slot.index];
-    const RobotSpec& spec = *slot.spec;
-    if (spec.program == RobotSpec::Program::Builtin) {
-      r.driver = makeBuiltin(sc, slot, r);
+  for (const ProgramEntry& e : robots)
+    if (e.kind != ProgramKind::Builtin && e.launch.launched()) lolaView(e);
+  for (const ProgramEntry& e : robots) {
+    Robot& r = robots_[e.slot.index];
+    if (e.kind == ProgramKind::Builtin) {
+      r.driver = makeBuiltin(e, r);
       // Before the first Motion step: the program fills the extras each step.
-      if (r.libagent_io) program(slot.index)->setLibagentIO(r.libagent_io);
-    } else if (spec.launch.launched()) {
-      r.driver = makeLaunched(sc, slot);
+      if (r.libagent_io) program(e.slot.index)->setLibagentIO(r.libagent_io);
+    } else if (e.launch.launched()) {
+      r.driver = makeLaunched(run, e);
     } else {
-      r.driver = std::make_unique<ExternalProgram>(slot, sc.attach_timeout_s);
+      r.driver = std::make_unique<ExternalProgram>(e.slot, run.attach_timeout_s);
     }
   }
 }
@@ -97,7 +91,8 @@ void Programs::build(const runner::Scenario& sc, const std::vector<RobotSlot>& s
 // (agent/program/RobotSetup.hpp: the same for a launched simswift-agent),
 // Motion replaced by a test's generator or the API's controller if one was
 // set, the Motion module configured by a test's MotionConfig if one was set.
-std::unique_ptr<ProgramDriver> Programs::makeBuiltin(const runner::Scenario& sc, const RobotSlot& slot, Robot& r) {
+std::unique_ptr<ProgramDriver> Programs::makeBuiltin(const ProgramEntry& e, Robot& r) {
+  const RobotSlot& slot = e.slot;
   if (r.behaviour_override && r.motion_override)
     throw RunnerError("robot " + std::to_string(slot.index) +
                       ": setBehaviour and setMotionGenerator both given (the generator would leave the "
@@ -109,7 +104,7 @@ std::unique_ptr<ProgramDriver> Programs::makeBuiltin(const runner::Scenario& sc,
     r.libagent_io = std::make_shared<LibagentExtras>();
     motion = ApiController::motionStep(std::move(r.libagent_controller), r.libagent_io);
   }
-  ap::ProgramConfig pc = ap::composeProgram(robotSetup(sc, slot.index), std::move(motion),
+  ap::ProgramConfig pc = ap::composeProgram(e.setup, std::move(motion),
                                             r.motion_config ? *r.motion_config : agent::motion::MotionConfig());
   if (r.behaviour_override) {
     // A test's behaviour in the behaviour slot: it replaces the scenario's
@@ -136,7 +131,8 @@ std::unique_ptr<ProgramDriver> Programs::makeBuiltin(const runner::Scenario& sc,
 // machine gives no namespace, a program that takes its socket's path
 // ({socket} in its command or environment) is given the real path instead;
 // an unchanged one cannot run (docs/lola.md): ProgramError.
-Programs::LolaView Programs::lolaView(const RobotSlot& slot) {
+Programs::LolaView Programs::lolaView(const ProgramEntry& e) {
+  const RobotSlot& slot = e.slot;
   LolaView view;
   if (slot.host->interface() != bridge::BodyInterface::Lola) return view;
   const std::string socket = slot.host->endpoint();
@@ -144,7 +140,7 @@ Programs::LolaView Programs::lolaView(const RobotSlot& slot) {
   const NamespaceSupport ns = mountNamespaceSupport();
   if (ns.available) {
     view.robocup = socket;
-  } else if (slot.spec->launch.names("socket")) {
+  } else if (e.launch.names("socket")) {
     view.socket_placeholder = socket;
   } else {
     throw ProgramError("robot " + slot.tag + ": this machine gives its program no mount namespace of its own (" +
@@ -159,41 +155,41 @@ Programs::LolaView Programs::lolaView(const RobotSlot& slot) {
 // A launched robot's program: started with its names, seed and setup
 // filled into its command, its output in program_logs/<tag>.log. It
 // attaches by name like any external program (the first tick waits).
-std::unique_ptr<ProgramDriver> Programs::makeLaunched(const runner::Scenario& sc, const RobotSlot& slot) {
-  const RobotSpec& spec = *slot.spec;
-  const std::filesystem::path logs(sc.program_logs);
+std::unique_ptr<ProgramDriver> Programs::makeLaunched(const ProgramRun& run, const ProgramEntry& e) {
+  const RobotSlot& slot = e.slot;
+  const std::filesystem::path logs(run.program_logs);
   std::error_code ec;
   std::filesystem::create_directories(logs, ec);
   if (ec) throw RunnerError("program_logs: cannot create " + logs.string() + ": " + ec.message());
   const std::string config = (logs / (slot.tag + ".robot.yaml")).string();
   {
     std::ofstream out(config);
-    out << ap::robotSetupYaml(robotSetup(sc, slot.index));
+    out << ap::robotSetupYaml(e.setup);
     if (!out) throw RunnerError("program_logs: cannot write " + config);
   }
   // The body's own placeholders (libagent's names, LoLA's socket) and the run's.
   std::map<std::string, std::string> values = slot.host->placeholders();
-  values.insert({{"team", std::to_string(spec.team)},
-                 {"player", std::to_string(spec.player)},
-                 {"seed", std::to_string(runner::programSeed(sc.seed, slot.index))},
+  values.insert({{"team", std::to_string(e.setup.team)},
+                 {"player", std::to_string(e.setup.player)},
+                 {"seed", std::to_string(e.setup.seed)},
                  {"config", std::filesystem::absolute(config).string()}});
-  const LolaView view = lolaView(slot);
+  const LolaView view = lolaView(e);
   if (!view.socket_placeholder.empty()) values["socket"] = view.socket_placeholder;
   const std::string& robocup = view.robocup;
   std::vector<std::string> argv;
-  for (const std::string& a : spec.launch.command) argv.push_back(ProgramProcess::fill(a, values));
-  argv[0] = ProgramProcess::resolveCommand(argv[0], sc.base_dir);
+  for (const std::string& a : e.launch.command) argv.push_back(ProgramProcess::fill(a, values));
+  argv[0] = ProgramProcess::resolveCommand(argv[0], run.base_dir);
   std::vector<std::pair<std::string, std::string>> env;
-  for (const auto& [k, v] : spec.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
+  for (const auto& [k, v] : e.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
   std::unique_ptr<ProgramProcess> process;
   try {
-    process = std::make_unique<ProgramProcess>(slot.tag, argv, ProgramProcess::fill(spec.launch.cwd, values), env,
-                                               (logs / (slot.tag + ".log")).string(), spec.launch.stop_grace_s,
+    process = std::make_unique<ProgramProcess>(slot.tag, argv, ProgramProcess::fill(e.launch.cwd, values), env,
+                                               (logs / (slot.tag + ".log")).string(), e.launch.stop_grace_s,
                                                robocup);
-  } catch (const std::runtime_error& e) {
-    throw ProgramError(e.what(), slot.tag + ": program could not be started");
+  } catch (const std::runtime_error& err) {
+    throw ProgramError(err.what(), slot.tag + ": program could not be started");
   }
-  return std::make_unique<LaunchedProgram>(slot, sc.attach_timeout_s, std::move(process));
+  return std::make_unique<LaunchedProgram>(slot, run.attach_timeout_s, std::move(process));
 }
 
 ap::RobotProgram* Programs::program(int i) const {

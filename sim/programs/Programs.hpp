@@ -1,5 +1,6 @@
 // The program side of a run: the factory that gives every robot its
-// ProgramDriver (ProgramDriver.hpp) from the scenario, and what tests,
+// ProgramDriver (ProgramDriver.hpp) from what the Runner hands it of the
+// scenario (ProgramEntry, ProgramRun; it reads no scenario), and what tests,
 // benchmarks, tools and the public API set before the run starts (a builtin
 // robot's Motion step, behaviour, Motion configuration, Perception step,
 // step hook, threading, an API controller). The Runner owns one
@@ -16,12 +17,26 @@
 #include "agent/program/RobotProgram.hpp"
 #include "sim/programs/BuiltinProgram.hpp"
 #include "sim/programs/ProgramDriver.hpp"
-
-namespace simswift::runner {
-struct Scenario;
-}
+#include "sim/programs/ProgramProcess.hpp"
+#include "sim/programs/ProgramSpec.hpp"
 
 namespace simswift::programs {
+
+// One robot's program as the scenario gives it (the Runner makes one per
+// robot from its RobotSpec).
+struct ProgramEntry {
+  RobotSlot slot;
+  ProgramKind kind = ProgramKind::Builtin;
+  LaunchSpec launch;                 // external: launched when it has a command
+  agent::program::RobotSetup setup;  // its identity given (robotSetup)
+};
+
+// The run's settings the programs need (the scenario's; no defaults here).
+struct ProgramRun {
+  double attach_timeout_s = 0;  // wall-clock s to wait for an external program's first answer
+  std::string program_logs;     // launched programs' logs and {config} files
+  std::string base_dir;         // where a launched command's relative path resolves first
+};
 
 class Programs {
  public:
@@ -65,7 +80,7 @@ class Programs {
   // order (builtin programs composed and started, launched programs'
   // processes started with their {config} files). Throws RunnerError,
   // ProgramError.
-  void build(const runner::Scenario& scenario, const std::vector<RobotSlot>& slots);
+  void build(const ProgramRun& run, const std::vector<ProgramEntry>& robots);
   bool built() const { return built_; }
   ProgramDriver& driver(int i) { return *robots_[i].driver; }
   int size() const { return static_cast<int>(robots_.size()); }
@@ -93,8 +108,8 @@ class Programs {
     std::unique_ptr<ProgramDriver> driver;
   };
   Robot& overrideSlot(int robot, const char* what);
-  std::unique_ptr<ProgramDriver> makeBuiltin(const runner::Scenario& sc, const RobotSlot& slot, Robot& r);
-  std::unique_ptr<ProgramDriver> makeLaunched(const runner::Scenario& sc, const RobotSlot& slot);
+  std::unique_ptr<ProgramDriver> makeBuiltin(const ProgramEntry& e, Robot& r);
+  std::unique_ptr<ProgramDriver> makeLaunched(const ProgramRun& run, const ProgramEntry& e);
   // How a launched LoLA program sees its socket: `robocup` to bind onto
   // /tmp/robocup in its own mount namespace (empty: none needed), or the
   // socket's real path as {socket} where the machine gives no namespace.
@@ -102,7 +117,7 @@ class Programs {
     std::string robocup;
     std::string socket_placeholder;
   };
-  static LolaView lolaView(const RobotSlot& slot);
+  static LolaView lolaView(const ProgramEntry& e);
 
   std::vector<Robot> robots_;
   agent::program::Threading threading_ = agent::program::Threading::Named;

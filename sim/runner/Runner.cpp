@@ -273,10 +273,16 @@ void Runner::setFreeRunning(bool on) {
 // launched program's process started with its {config} file, an external
 // program awaited at the first tick.
 void Runner::attachPrograms() {
-  std::vector<programs::RobotSlot> slots;
-  for (size_t i = 0; i < robots_.size(); ++i)
-    slots.push_back({static_cast<int>(i), robots_[i]->tag, &robots_[i]->spec, robots_[i]->body.get()});
-  programs_->build(scenario_, slots);
+  std::vector<programs::ProgramEntry> entries;
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    const RobotSpec& spec = robots_[i]->spec;
+    const int index = static_cast<int>(i);
+    entries.push_back({{index, robots_[i]->tag, spec.player, robots_[i]->body.get()},
+                       spec.program,
+                       spec.launch,
+                       programs::robotSetup(spec.setup, programIdentity(scenario_, index))});
+  }
+  programs_->build({scenario_.attach_timeout_s, scenario_.program_logs, scenario_.base_dir}, entries);
 }
 
 // The watchdog ends a run only when it is on and no debugger is attached: a

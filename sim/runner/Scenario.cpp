@@ -412,6 +412,20 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
 
 uint64_t programSeed(uint64_t seed, int index) { return seed * 1000003ULL + static_cast<uint64_t>(index); }
 
+programs::ProgramIdentity programIdentity(const Scenario& sc, int index) {
+  const RobotSpec& r = sc.robots[index];
+  programs::ProgramIdentity id;
+  id.team = r.team;
+  id.player = r.player;
+  id.seed = programSeed(sc.seed, index);
+  id.posture = r.posture;
+  id.x = r.x;  // m
+  id.y = r.y;
+  id.theta = r.theta;  // rad
+  id.pushed = !r.pushes.empty();
+  return id;
+}
+
 void readActions(const YamlReader& robot, RobotSpec& rs) {
   agent::program::readActions(robot, rs.setup,
                               [&rs](const YamlReader& entry, double t) { return readBodyEvent(entry, t, rs); });

@@ -68,11 +68,11 @@ struct RobotSpec {
   std::string lola_socket;  // absolute path; empty: one of the process's own (an experiment's trial)
   double x = 0, y = 0, theta = 0;  // m, m, rad; field frame (a behaviour's start pose too)
   common::nao::Posture posture = common::nao::Posture::Stand;  // the body's start; a composed program holds it
-  // builtin: agent/'s program in this process; external: a program
-  // attached by name (started by hand, or by simswift when `launch` has a
-  // command: sim/programs/ProgramProcess.hpp). What drives the body either
+  // builtin or external (sim/programs/ProgramSpec.hpp ProgramKind; launched
+  // by simswift when `launch` has a command). What drives the body either
   // way: sim/programs/ProgramDriver.hpp.
-  enum class Program { Builtin, External } program = Program::Builtin;
+  using Program = programs::ProgramKind;
+  Program program = Program::Builtin;
   LaunchSpec launch;
   programs::ProgramPart setup;  // script, actions, behaviour (its identity: programs::robotSetup)
   // Pushes from the actions list, e.g. {t: 9, push: {x: 2.5, y: 0}}: an
@@ -194,6 +194,11 @@ void checkRobotsApart(const Scenario& sc);
 // The seed of robot `index`'s program (its filters' random source) in a
 // run with seed `seed`: one derivation for builtin and launched programs.
 uint64_t programSeed(uint64_t seed, int index);
+
+// What robot `index` of `sc` gives its program (team, player, programSeed,
+// posture, start pose, whether it is pushed): with its program part, its
+// setup (programs::robotSetup), the same for builtin and launched programs.
+programs::ProgramIdentity programIdentity(const Scenario& sc, int index);
 
 // Where relative model/field paths resolve after the scenario's folder:
 // $SIMSWIFT_DATA_DIR if set, else the nearest share/simswift in the folder of

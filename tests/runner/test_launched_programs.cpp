@@ -227,7 +227,7 @@ TEST(RobotSetup, ALaunchedRobotsConfigRoundTripsItsPoseExactly) {
       "     behaviour: findball2017, program: {command: [simswift-agent, --config, '{config}']}}\n",
       "pose.yaml");
   const simswift::runner::RobotSpec& r = sc.robots[0];
-  const ap::RobotSetup s = simswift::programs::robotSetup(sc, 0);
+  const ap::RobotSetup s = simswift::programs::robotSetup(r.setup, simswift::runner::programIdentity(sc, 0));
   const std::string d = tempDir("pose");
   std::ofstream(d + "/r.yaml") << ap::robotSetupYaml(s);  // what Programs::makeLaunched writes
   const ap::RobotSetup back = ap::readRobotSetup(d + "/r.yaml");
