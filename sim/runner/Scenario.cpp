@@ -14,6 +14,7 @@
 #include "sim/game/GameControlVersions.hpp"
 #include "sim/runner/Bodies.hpp"
 #include "common/nao/NaoFacts.hpp"
+#include "common/random/DeriveSeed.hpp"
 #include "sim/world/ConfigError.hpp"
 
 // The data folder's path below an install prefix (CMAKE_INSTALL_DATADIR,
@@ -410,7 +411,10 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
   p.finish();
 }
 
-uint64_t programSeed(uint64_t seed, int index) { return seed * 1000003ULL + static_cast<uint64_t>(index); }
+uint64_t programSeed(uint64_t seed, int index) {
+  using common::random::deriveSeed;
+  return deriveSeed(deriveSeed(seed, common::random::seed_tag::kRobotProgram), static_cast<uint64_t>(index));
+}
 
 void readActions(const YamlReader& robot, RobotSpec& rs) {
   agent::program::readActions(robot, rs.setup,
