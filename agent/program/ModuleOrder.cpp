@@ -2,7 +2,7 @@
 
 #include "agent/behaviour/ActionsBehaviour.hpp"
 
-#include "common/random/SplitMix64.hpp"
+#include "common/random/DeriveSeed.hpp"
 
 namespace agent::program {
 
@@ -23,7 +23,10 @@ void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const comm
   s.add(T::Perception, std::make_unique<GameStateModule>(cfg.team, cfg.player));
   s.add(T::Perception, std::make_unique<perception::VisionAdapterModule>(cfg.vision));
   localisation::LocalisationModuleConfig lc = cfg.localisation;
-  lc.filter.seed = lc.filter.seed * common::random::kGoldenGamma + cfg.seed;  // per robot, from the scenario
+  // Per robot (cfg.seed: the scenario's program seed), and still moved by the
+  // filter config's own seed.
+  using common::random::deriveSeed;
+  lc.filter.seed = deriveSeed(deriveSeed(cfg.seed, common::random::seed_tag::kLocalisation), lc.filter.seed);
   s.add(T::Perception, std::make_unique<localisation::LocalisationModule>(lc));
   s.add(T::Perception, std::make_unique<perception::BallTrackerModule>(cfg.ball));
   s.add(T::Perception, std::make_unique<TeamReceiveModule>(cfg.team, cfg.player));

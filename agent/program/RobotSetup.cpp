@@ -109,13 +109,8 @@ void readProgramKeys(const YamlReader& r, RobotSetup& s, const OutsideAction& ou
 void readRobotSetup(const YamlReader& r, RobotSetup& s) {
   s.team = r.integer("team", s.team, Range::closed(common::libagent::kMinTeamNumber, common::libagent::kMaxTeamNumber));
   s.player = r.integer("player", s.player, Range::closed(common::libagent::kMinPlayer, common::libagent::kMaxPlayer));
-  if (r.has("seed")) {
-    // Up to 64 bits (the simulator derives robot seeds by multiplying).
-    const std::string v = r.string("seed");
-    const std::optional<uint64_t> seed = common::config::parseSeed(v);
-    if (!seed) r.fail("seed", std::string("must be ") + common::config::kSeedRange + " (got '" + v + "')");
-    s.seed = *seed;
-  }
+  // Up to 64 bits (the simulator derives robot seeds by mixing, DeriveSeed.hpp).
+  s.seed = common::config::readSeed(r, "seed", s.seed);
   if (auto p = r.optionalMap("start")) {
     const Range pos = Range::closed(-kMaxPosition, kMaxPosition);
     RobotSetup::StartPose f;

@@ -10,7 +10,7 @@
 #include "common/libagent/SharedNames.hpp"
 #include "sim/runner/Bodies.hpp"
 #include "common/nao/NaoFacts.hpp"
-#include "common/random/SplitMix64.hpp"
+#include "common/random/DeriveSeed.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 
@@ -332,7 +332,11 @@ TrialSpec trialSpec(const Experiment& e, int index) {
   t.repeat = within % e.trials_per_position;
   // Stateless: a pure function of (experiment seed, trial index), the same
   // in every cell (common random numbers: cells differ by their settings only).
-  t.seed = common::random::splitmix64(common::random::splitmix64(e.seed) ^ static_cast<uint64_t>(within)) % 2147483647ull;
+  // Reduced to 31 bits (mod 2^31 - 1): trial seeds are published in
+  // results.csv and the docs as 31-bit numbers, so they must not move.
+  using common::random::deriveSeed;
+  t.seed = deriveSeed(deriveSeed(e.seed, common::random::seed_tag::kTrial), static_cast<uint64_t>(within)) %
+           2147483647ull;
   return t;
 }
 

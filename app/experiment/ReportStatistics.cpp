@@ -6,6 +6,7 @@
 
 #include "app/experiment/Report.hpp"
 #include "app/experiment/Statistics.hpp"
+#include "common/random/DeriveSeed.hpp"
 
 namespace simswift::experiment {
 
@@ -43,7 +44,9 @@ Cell cell(const std::vector<TrialResult>& results, const std::string& setup, int
 
 // The bootstrap's seed: a pure function of the experiment and the cell.
 uint64_t cellSeed(const Experiment& e, size_t setup, int position) {
-  return e.seed * 1000003ULL + setup * 1009ULL + static_cast<uint64_t>(position);
+  using common::random::deriveSeed;
+  return deriveSeed(deriveSeed(deriveSeed(e.seed, common::random::seed_tag::kReportBootstrap), setup),
+                    static_cast<uint64_t>(position));
 }
 
 std::string listPositions(const std::vector<int>& ps) {

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "app/experiment/Csv.hpp"
+#include "common/random/DeriveSeed.hpp"
 
 namespace simswift::experiment {
 
@@ -15,6 +16,7 @@ std::string interval(const stats::Interval& i, int decimals, double scale = 1.0)
 }  // namespace
 
 std::vector<CellRow> cellRows(const Experiment& e, const std::vector<TrialResult>& results) {
+  using common::random::deriveSeed;
   const int per_cell = e.trialsPerCell();
   std::vector<CellRow> rows;
   for (int c = 0; c < e.numCells(); ++c)
@@ -36,8 +38,9 @@ std::vector<CellRow> cellRows(const Experiment& e, const std::vector<TrialResult
       r.rate = stats::wilson(r.found, r.tests);
       for (double t : r.times) r.mean_s += t / static_cast<double>(r.times.size());
       // Its own seed per row: every run prints the same interval.
-      r.bootstrap_seed = e.seed * 1000003ULL + 0x9E3779B97F4A7C15ULL * static_cast<uint64_t>(c + 1) +
-                         static_cast<uint64_t>(s);
+      r.bootstrap_seed = deriveSeed(
+          deriveSeed(deriveSeed(e.seed, common::random::seed_tag::kSweepBootstrap), static_cast<uint64_t>(c)),
+          static_cast<uint64_t>(s));
       r.mean_ci = stats::bootstrapMean(r.times, r.bootstrap_seed);
       rows.push_back(std::move(r));
     }

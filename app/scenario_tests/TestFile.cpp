@@ -5,8 +5,8 @@
 #include <set>
 #include <sstream>
 
+#include "common/random/DeriveSeed.hpp"
 #include "common/random/Random.hpp"
-#include "common/random/SplitMix64.hpp"
 #include "app/experiment/Statistics.hpp"
 
 namespace simswift::scenario_tests {
@@ -239,8 +239,10 @@ bool selectTests(TestFile& f, const std::string& names, std::string* error) {
 }
 
 uint64_t runSeed(uint64_t file_seed, const std::string& test, int run) {
-  using common::random::splitmix64;
-  return splitmix64(splitmix64(file_seed ^ fnv1a(test)) ^ static_cast<uint64_t>(run)) % 2147483647ull;
+  // The test's name is the tag, so adding or reordering tests moves no
+  // other test's seeds; 31 bits, as trial seeds (RunSpec::seed).
+  using common::random::deriveSeed;
+  return deriveSeed(deriveSeed(file_seed, fnv1a(test)), static_cast<uint64_t>(run)) % 2147483647ull;
 }
 
 int countRuns(const TestFile& f, bool short_form) {
@@ -270,7 +272,7 @@ runner::Scenario runScenario(const ScenarioTest& t, uint64_t seed) {
   runner::Scenario sc = t.scenario;
   sc.seed = seed;
   // The fuzz's own stream: its draws do not depend on anything the run draws.
-  common::random::Random rng(common::random::splitmix64(seed ^ 0x66757a7a00000000ull));
+  common::random::Random rng(common::random::deriveSeed(seed, common::random::seed_tag::kPlacementFuzz));
   for (size_t i = 0; i < sc.robots.size(); ++i) {
     const PoseFuzz& f = t.robot_fuzz[i];
     sc.robots[i].x += draw(rng, f.x);

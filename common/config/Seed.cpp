@@ -14,4 +14,13 @@ std::optional<uint64_t> parseSeed(const std::string& text) {
   return v;
 }
 
+uint64_t readSeed(const YamlReader& r, const std::string& key, uint64_t def) {
+  if (!r.has(key)) return def;
+  const YAML::Node n = r.node()[key];
+  const std::string text = n.IsScalar() ? n.Scalar() : "";
+  const std::optional<uint64_t> seed = parseSeed(text);
+  if (!seed) r.fail(key, std::string("must be ") + kSeedRange + (n.IsScalar() ? " (got '" + text + "')" : ""));
+  return *seed;
+}
+
 }  // namespace common::config

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/random/DeriveSeed.hpp"
+
 namespace simswift::network {
 
 namespace al = common::libagent;
@@ -13,7 +15,7 @@ TeamNetwork::TeamNetwork(const TeamNetworkConfig& config, uint64_t seed)
     : config_(config),
       delay_us_(static_cast<int64_t>(std::llround(config.delay_ms * 1000.0))),
       // Its own stream: the network's draws never shift another seeded source.
-      rng_(seed ^ 0x7465616d6e6574ULL) {
+      rng_(common::random::deriveSeed(seed, common::random::seed_tag::kTeamNetwork)) {
   if (!(config.loss >= 0 && config.loss <= 1)) throw std::invalid_argument("team network: loss must be 0..1");
   if (!(config.delay_ms >= 0)) throw std::invalid_argument("team network: delay_ms must be >= 0");
   if (config.budget < 0) throw std::invalid_argument("team network: budget must be >= 0");

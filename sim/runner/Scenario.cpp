@@ -10,10 +10,12 @@
 #include <map>
 #include <set>
 
+#include "common/config/Seed.hpp"
 #include "common/libagent/SharedNames.hpp"
 #include "sim/game/GameControlVersions.hpp"
 #include "sim/runner/Bodies.hpp"
 #include "common/nao/NaoFacts.hpp"
+#include "common/random/DeriveSeed.hpp"
 #include "sim/world/ConfigError.hpp"
 
 // The data folder's path below an install prefix (CMAKE_INSTALL_DATADIR,
@@ -79,7 +81,6 @@ constexpr double kMaxTime = 1e6;           // s: durations and event times (11.6
 constexpr double kMinDuration = kTickSeconds;  // s: at least one tick
 constexpr double kMaxPosition = 50;        // m: before the field is known
 constexpr double kMaxHeading = 2 * M_PI;   // rad
-constexpr double kMaxSeed = 9007199254740992.0;  // 2^53: every whole number below is exact
 constexpr double kMaxJointAngle = 10;      // rad (the servos clamp to the joint's range)
 constexpr double kRobotRadius = common::nao::kFootprintRadius / 1000;  // m
 }  // namespace limits
@@ -410,7 +411,10 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
   p.finish();
 }
 
-uint64_t programSeed(uint64_t seed, int index) { return seed * 1000003ULL + static_cast<uint64_t>(index); }
+uint64_t programSeed(uint64_t seed, int index) {
+  using common::random::deriveSeed;
+  return deriveSeed(deriveSeed(seed, common::random::seed_tag::kRobotProgram), static_cast<uint64_t>(index));
+}
 
 programs::ProgramIdentity programIdentity(const Scenario& sc, int index) {
   const RobotSpec& r = sc.robots[index];
@@ -484,9 +488,7 @@ void readRun(const YamlReader& top, Scenario& sc) {
   // At least one tick, at most limits::kMaxTime (a run that would go on
   // for weeks is a typo).
   sc.duration = top.number("duration", sc.duration, Range::closed(limits::kMinDuration, limits::kMaxTime));
-  const double seed = top.number("seed", static_cast<double>(sc.seed), Range::closed(0, limits::kMaxSeed));
-  if (seed != std::floor(seed)) top.fail("seed", "must be a whole number (got " + std::to_string(seed) + ")");
-  sc.seed = static_cast<uint64_t>(seed);
+  sc.seed = common::config::readSeed(top, "seed", sc.seed);  // all 64 bits, exact (not a YAML number)
   if (top.has("watchdog") && root["watchdog"].IsScalar() &&
       (root["watchdog"].Scalar() == "off" || root["watchdog"].Scalar() == "false")) {
     sc.watchdog_s = 0;  // off: a run that sits at a debugger breakpoint is not ended

@@ -2,17 +2,16 @@
 
 #include <cmath>
 
-#include "common/random/SplitMix64.hpp"
+#include "common/random/DeriveSeed.hpp"
 
 namespace simswift::sensors {
 
 uint64_t streamSeed(uint64_t seed, int robot, StreamId id) {
-  // Chained mixing, not a plain XOR of the inputs, so (robot 1, sensor 2)
-  // and (robot 2, sensor 1) do not collide.
-  uint64_t h = common::random::splitmix64(seed);
-  h = common::random::splitmix64(h ^ static_cast<uint64_t>(static_cast<uint32_t>(robot)));
-  h = common::random::splitmix64(h ^ (static_cast<uint64_t>(id) << 32));
-  return h;
+  // Chained, so (robot 1, sensor 2) and (robot 2, sensor 1) do not collide.
+  using common::random::deriveSeed;
+  const uint64_t noise = deriveSeed(seed, common::random::seed_tag::kSensorNoise);
+  const uint64_t per_robot = deriveSeed(noise, static_cast<uint64_t>(static_cast<uint32_t>(robot)));
+  return deriveSeed(per_robot, static_cast<uint64_t>(id) << 32);
 }
 
 double NoiseStream::uniform() {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "common/nao/NaoFacts.hpp"
-#include "common/random/SplitMix64.hpp"
+#include "common/random/DeriveSeed.hpp"
 #include "sim/sensors/Noise.hpp"
 
 namespace simswift::vision {
@@ -390,12 +390,14 @@ VisionOracle::CameraView::CameraView(VisionOracle& oracle, const World& world, i
     off_.y() = (2 * c.uniform() - 1) * config_.camera_offset_mm * 1e-3;
   }
   frame_key_ = sensors::streamSeed(o_.seed_, robot, kVisionStream);
-  frame_key_ = common::random::splitmix64(frame_key_ ^ (static_cast<uint64_t>(camera) + 1));
-  frame_key_ = common::random::splitmix64(frame_key_ ^ static_cast<uint64_t>(frame));
+  frame_key_ = common::random::deriveSeed(frame_key_, static_cast<uint64_t>(camera) + 1);
+  frame_key_ = common::random::deriveSeed(frame_key_, static_cast<uint64_t>(frame));
 }
 
 Draws VisionOracle::CameraView::drawsFor(Feature f, uint64_t index) const {
-  return Draws(common::random::splitmix64(frame_key_ ^ common::random::splitmix64((static_cast<uint64_t>(f) << 40) ^ index)));
+  // The tag is hashed so that (feature, index) pairs spread over all 64 bits.
+  return Draws(common::random::deriveSeed(frame_key_,
+                                          common::random::splitmix64((static_cast<uint64_t>(f) << 40) ^ index)));
 }
 
 Eigen::Vector2d VisionOracle::CameraView::noisyPoint(const DetectorSpec& s, Eigen::Vector2d rel, double height,

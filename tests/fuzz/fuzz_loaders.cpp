@@ -30,7 +30,7 @@
 #include <unistd.h>
 
 #include "FuzzCases.hpp"
-#include "common/random/SplitMix64.hpp"
+#include "common/random/DeriveSeed.hpp"
 
 using namespace simswift::fuzz;
 
@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
   long errors = 0;
   for (long k = (only >= 0 ? only : 0); k < (only >= 0 ? only + 1 : cases); ++k) {
     const int li = static_cast<int>(k % 3);
-    Mutator m(seed * common::random::kGoldenGamma + static_cast<uint64_t>(k));
+    Mutator m(common::random::deriveSeed(seed, static_cast<uint64_t>(k)));
     std::string text = seeds[li];
     const size_t n = 1 + m.below(4);
     for (size_t j = 0; j < n; ++j) m.mutate(text);

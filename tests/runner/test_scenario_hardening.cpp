@@ -63,11 +63,17 @@ TEST(ScenarioHardening, DurationsMustRunAtLeastOneTickAndEnd) {
   EXPECT_EQ(errorOf(std::string("duration: 0.01\n") + kOneRobot), "");
 }
 
-TEST(ScenarioHardening, SeedsMustBeWholeNumbersInRange) {
-  for (const char* s : {"1.5", "1e30", "18446744073709551616", "-1", "x"})
-    expectRefused(std::string("seed: ") + s + "\n" + kOneRobot, "s.yaml:1: seed:");
-  const Scenario sc = Scenario::parse(std::string("seed: 9007199254740992\n") + kOneRobot, "s.yaml");
-  EXPECT_EQ(sc.seed, 9007199254740992ull);
+// The seed is read as text by the one seed reader (common/config/Seed.hpp):
+// every 64-bit value exactly, never through a double.
+TEST(ScenarioHardening, SeedsAreWholeSixtyFourBitNumbersReadExactly) {
+  for (const char* s : {"1.5", "1e30", "1e3", "18446744073709551616", "-1", "+1", "0x10", "x", "[1]", "~"})
+    expectRefused(std::string("seed: ") + s + "\n" + kOneRobot,
+                  "s.yaml:1: seed: must be a whole number in [0, 18446744073709551615]");
+  EXPECT_EQ(Scenario::parse(std::string("seed: 18446744073709551615\n") + kOneRobot, "s.yaml").seed, UINT64_MAX);
+  // 2^53 + 1: a YAML number (a double) would have read 2^53.
+  EXPECT_EQ(Scenario::parse(std::string("seed: 9007199254740993\n") + kOneRobot, "s.yaml").seed,
+            9007199254740993ull);
+  EXPECT_EQ(Scenario::parse(kOneRobot, "s.yaml").seed, Scenario{}.seed);  // absent: the default
 }
 
 TEST(ScenarioHardening, DirectoryIsNotAScenario) {
