@@ -71,6 +71,18 @@ class RunCommand {
         "Exit codes: 0 success, 1 run failure (watchdog, I/O), 2 bad command line or bad\n"
         "scenario, model or field (the message names the file and line).");
     cmd_->add_option("SCENARIO", path_, "the scenario file (SCENARIO.yaml)")->type_name("")->required();
+    declareRunOptions();
+    declareOutputOptions();
+  }
+  RunCommand(const RunCommand&) = delete;
+  RunCommand& operator=(const RunCommand&) = delete;
+
+  bool chosen() const { return cmd_->parsed(); }
+  int run();
+
+ private:
+  // How the scenario runs: pace, checks, overrides of the scenario's settings.
+  void declareRunOptions() {
     cmd_->add_flag("--realtime", opt_.realtime,
                    "pace the run with the wall clock (default: as fast as possible);\n"
                    "external robot programs run free: not waited for, skipped\n"
@@ -114,6 +126,10 @@ class RunCommand {
         ->type_name("N")
         ->transform(cli::number(1, 1e12, true));
     cmd_->add_flag("--quiet", quiet_, "no progress lines");
+  }
+
+  // What the run writes besides its summary: camera frames, overview, FindBall views.
+  void declareOutputOptions() {
     CLI::Option* dump = cmd_->add_option("--dump-frames", dump_dir_,
                                          "render both cameras of every robot at 30 Hz and write\n"
                                          "DIR/t<team>p<player>_<top|bottom>_<frame>.png")
@@ -139,13 +155,12 @@ class RunCommand {
         ->transform(cli::number(1e-3, 100))
         ->needs(findball);
   }
-  RunCommand(const RunCommand&) = delete;
-  RunCommand& operator=(const RunCommand&) = delete;
 
-  bool chosen() const { return cmd_->parsed(); }
-  int run();
+  std::optional<int> loadScenario(simswift::runner::Scenario& sc) const;
+  void applyOverrides(simswift::runner::Scenario& sc) const;
+  int check(const simswift::runner::Scenario& sc) const;
+  int runScenario(const simswift::runner::Scenario& sc);
 
- private:
   CLI::App* cmd_ = nullptr;
   std::string path_;
   simswift::runner::RunOptions opt_;
@@ -169,12 +184,26 @@ int RunCommand::run() {
   if (quiet_) opt_.progress = false;
 
   Scenario sc;
+  if (const std::optional<int> code = loadScenario(sc)) return *code;
+  applyOverrides(sc);
+  if (check_) return check(sc);
+  // Progress lines only on runs long enough to wonder about.
+  if (sc.duration < 10) opt_.progress = false;
+  return runScenario(sc);
+}
+
+// The exit code if the scenario cannot be read.
+std::optional<int> RunCommand::loadScenario(simswift::runner::Scenario& sc) const {
   try {
-    sc = Scenario::loadFile(path_);
+    sc = simswift::runner::Scenario::loadFile(path_);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "simswift: %s\n", e.what());
     return 2;
   }
+  return std::nullopt;
+}
+
+void RunCommand::applyOverrides(simswift::runner::Scenario& sc) const {
   if (duration_) sc.duration = *duration_;
   if (seed_) sc.seed = *seed_;
   if (no_noise_) sc.noise.on = false;
@@ -194,23 +223,25 @@ int RunCommand::run() {
     sc.camera.overview.enabled = true;
     sc.camera.overview.dir = *overview_dir_;
   }
-  if (check_) {
-    // What Runner::start() would refuse before the first tick, without
-    // starting robot programs (an external robot's program need not run).
-    try {
-      const simswift::RobotModel model = simswift::RobotModel::loadUrdf(sc.modelFile());
-      const simswift::NaoBinding nao(model);  // every robot runs on libagent
-      sc.checkAgainstField(simswift::FieldConfig::loadYaml(sc.fieldFile()));
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "simswift: %s\n", e.what());
-      return 2;
-    }
-    std::printf("%s: ok (%zu robots, %g s)\n", path_.c_str(), sc.robots.size(), sc.duration);
-    return 0;
-  }
-  // Progress lines only on runs long enough to wonder about.
-  if (sc.duration < 10) opt_.progress = false;
+}
 
+// --check: what Runner::start() would refuse before the first tick, without
+// starting robot programs (an external robot's program need not run).
+int RunCommand::check(const simswift::runner::Scenario& sc) const {
+  try {
+    const simswift::RobotModel model = simswift::RobotModel::loadUrdf(sc.modelFile());
+    const simswift::NaoBinding nao(model);  // every robot runs on libagent
+    sc.checkAgainstField(simswift::FieldConfig::loadYaml(sc.fieldFile()));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "simswift: %s\n", e.what());
+    return 2;
+  }
+  std::printf("%s: ok (%zu robots, %g s)\n", path_.c_str(), sc.robots.size(), sc.duration);
+  return 0;
+}
+
+int RunCommand::runScenario(const simswift::runner::Scenario& sc) {
+  using namespace simswift::runner;
   try {
     Runner runner(sc);
     if (inline_) runner.programs().setThreading(agent::program::Threading::Inline);
@@ -358,6 +389,31 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   return 1;
 }
 
+// What CLI11 would only call "a subcommand is required": `help`, or an
+// unknown first word. The exit code if main() is done.
+std::optional<int> checkFirstWord(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2) return std::nullopt;
+  const std::string first = argv[1];
+  if (first == "help") {
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  }
+  const bool known = !app.get_subcommands([&](const CLI::App* c) { return c->check_name(first); }).empty() ||
+                     app.get_option_no_throw(first) != nullptr;
+  if (!known)
+    return cli::usageError(app, (first[0] == '-' ? "unknown option '" : "unknown command '") + first + "'");
+  return std::nullopt;
+}
+
+// attach: what follows the first `--` is the command, handed over as it is.
+// Returns how many arguments the parser reads.
+int splitAttachCommand(int argc, char** argv, std::vector<std::string>& command) {
+  if (argc < 2 || std::string(argv[1]) != "attach") return argc;
+  const auto dashes = std::find(argv + 2, argv + argc, std::string("--"));
+  if (dashes != argv + argc) command.assign(dashes + 1, argv + argc);
+  return static_cast<int>(dashes - argv);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -374,26 +430,9 @@ int main(int argc, char** argv) {
   CleanCommand clean(app);
   AttachCommand attach(app);
 
-  // What CLI11 would only call "a subcommand is required".
-  if (argc >= 2) {
-    const std::string first = argv[1];
-    if (first == "help") {
-      std::fputs(app.help().c_str(), stdout);
-      return 0;
-    }
-    const bool known = !app.get_subcommands([&](CLI::App* c) { return c->check_name(first); }).empty() ||
-                       app.get_option_no_throw(first) != nullptr;
-    if (!known)
-      return cli::usageError(app, (first[0] == '-' ? "unknown option '" : "unknown command '") + first + "'");
-  }
-  // attach: what follows the first `--` is the command, handed over as it is.
-  int parsed_argc = argc;
+  if (const std::optional<int> code = checkFirstWord(app, argc, argv)) return *code;
   std::vector<std::string> command;
-  if (argc >= 2 && std::string(argv[1]) == "attach") {
-    const auto dashes = std::find(argv + 2, argv + argc, std::string("--"));
-    parsed_argc = static_cast<int>(dashes - argv);
-    if (dashes != argv + argc) command.assign(dashes + 1, argv + argc);
-  }
+  const int parsed_argc = splitAttachCommand(argc, argv, command);
   if (const std::optional<int> code = cli::parse(app, parsed_argc, argv)) return *code;
 
   if (run.chosen()) return run.run();

@@ -62,6 +62,38 @@ class ActionMotion : public framework::MotionGenerator {
   const MotionConfig& config() const { return cfg_; }
 
  private:
+  // One tick's inputs, read once from the request and the sensors.
+  struct TickInput {
+    const common::libagent::SensorValues& sensors;
+    const blackboard::MotionRequest& req;
+    blackboard::ActionType want;  // the body command followed (last non-NONE)
+    double dt;                    // s, the tick length
+    double ax, ay;                // rad, InertialSensor_AngleX / AngleY
+    double tilt;                  // rad, max(|ax|, |ay|)
+    double rate;                  // rad/s, roll and pitch rate magnitude
+  };
+
+  double tickLength(double time_s);
+  TickInput readInputs(const common::libagent::SensorValues& sensors, double dt);
+  void startFromLastCommand(const common::libagent::SensorValues& sensors, common::libagent::JointValues& out);
+  void overrideMode(const TickInput& in);
+  // Runs the current mode's generator into `out`; true while the walk steps.
+  bool runMode(const TickInput& in, common::libagent::JointValues& out);
+  bool tickWalk(const TickInput& in, common::libagent::JointValues& out);
+  void requestFromWalk(const TickInput& in, const common::libagent::JointValues& out);
+  void runKick(const TickInput& in, common::libagent::JointValues& out);
+  void tickKick(const TickInput& in, common::libagent::JointValues& out);
+  void tickCrouch(const TickInput& in, common::libagent::JointValues& out);
+  void tickTransition(const TickInput& in, common::libagent::JointValues& out);
+  void tickLimp(const TickInput& in, common::libagent::JointValues& out);
+  void tickDead(const TickInput& in, common::libagent::JointValues& out);
+  void tickFalling(const TickInput& in, common::libagent::JointValues& out);
+  void tickFallen(const TickInput& in, common::libagent::JointValues& out);
+  void startGetup(const TickInput& in);
+  void tickGetup(const TickInput& in, common::libagent::JointValues& out);
+  void startFalling();
+  void commandHeadAndClip(const TickInput& in, common::libagent::JointValues& out);
+  void integrateOdometry();
   void startTransitionToStand(const common::libagent::JointValues& from);
   void publish(const blackboard::MotionRequest& req, double time_s, bool stepping);
 

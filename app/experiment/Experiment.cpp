@@ -45,14 +45,9 @@ Experiment Experiment::loadFile(const std::string& path) {
 
 namespace {
 
-// The experiment of one tree: the file's own, or the file's with swept
-// values set in (Sweep.hpp). Never looks at sweep: beyond its name. `field`:
-// the field already loaded for the file's own tree (a sweep cannot change
-// it), else it is loaded here.
-Experiment parseTree(const YAML::Node& root, const std::string& source_name, const FieldConfig* field = nullptr) {
-  if (!root.IsMap()) throw ConfigError(source_name, 1, "", "an experiment file is a map (name:, seed:, balls:, ...)");
-  YamlReader top(root, source_name);
-  Experiment e;
+// The file's header: name, paths, noise, physics, field, seed, time limit
+// and trials. `field`: as parseTree's.
+void readHeader(const YamlReader& top, const std::string& source_name, const FieldConfig* field, Experiment& e) {
   e.source = source_name;
   e.name = top.string("name");
   if (e.name.empty() || e.name.find_first_of("/\\ \t") != std::string::npos)
@@ -74,7 +69,10 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
   e.time_limit = top.number("time_limit", Range::positive());
   if (e.time_limit > 3600) top.fail("time_limit", "must be <= 3600 s (got " + std::to_string(e.time_limit) + ")");
   e.trials_per_position = top.integer("trials_per_position", Range::closed(1, 10000));
+}
 
+// The trial's rules: start:, found:, fallen:, tracks: and the vision: they need.
+void readRules(const YamlReader& top, const YAML::Node& root, Experiment& e) {
   if (auto st = top.optionalMap("start")) {
     e.start.penalised = st->number("penalised", e.start.penalised, Range::closed(0.05, 60));
     st->finish();
@@ -112,18 +110,23 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
     if (top.has("found") && root["found"]["sees"].IsDefined()) top.map("found").fail("sees", why);
     top.fail("vision", why);
   }
+}
 
-  // Everything must lie on the carpet (m, field frame).
-  const double half_l = e.field.carpetLength() / 2, half_w = e.field.carpetWidth() / 2;
-  auto onCarpet = [&](const YamlReader& r, double x, double y, double margin, const std::string& what) {
-    if (std::abs(x) > half_l - margin || std::abs(y) > half_w - margin) {
-      std::ostringstream m;
-      m << what << " (" << x << ", " << y << ") m is off the carpet (|x| <= " << half_l - margin
-        << ", |y| <= " << half_w - margin << " m)";
-      r.fail(std::abs(x) > half_l - margin ? "x" : "y", m.str());
-    }
-  };
+// Everything must lie on the carpet (m, field frame); `margin` keeps the
+// object's own size on it.
+void checkOnCarpet(const FieldConfig& field, const YamlReader& r, double x, double y, double margin,
+                   const std::string& what) {
+  const double half_l = field.carpetLength() / 2, half_w = field.carpetWidth() / 2;
+  if (std::abs(x) > half_l - margin || std::abs(y) > half_w - margin) {
+    std::ostringstream m;
+    m << what << " (" << x << ", " << y << ") m is off the carpet (|x| <= " << half_l - margin
+      << ", |y| <= " << half_w - margin << " m)";
+    r.fail(std::abs(x) > half_l - margin ? "x" : "y", m.str());
+  }
+}
 
+void readBalls(const YamlReader& top, Experiment& e) {
+  const double ball_radius = e.field.ball.diameter / 2;
   std::set<int> numbers;
   for (const YamlReader& b : top.list("balls")) {
     BallPosition p;
@@ -132,12 +135,131 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
     p.x = b.number("x");
     p.y = b.number("y");
     p.note = b.string("note", "");
-    onCarpet(b, p.x, p.y, ball_radius, "the ball");
+    checkOnCarpet(e.field, b, p.x, p.y, ball_radius, "the ball");
     b.finish();
     e.balls.push_back(p);
   }
   if (e.balls.empty()) top.fail("balls", "an experiment needs at least one ball position");
+}
 
+// A setup's or robot's program. `external` (a program started by hand)
+// cannot be restarted for each trial: refused. any_body: a setup's default
+// program, whose placeholders its robots' bodies decide.
+runner::LaunchSpec readLaunch(const YamlReader& m, const std::string& base_dir, bool any_body) {
+  runner::RobotSpec tmp;
+  runner::readProgram(m, tmp, base_dir, any_body);
+  if (tmp.program == runner::RobotSpec::Program::External && !tmp.launch.launched())
+    m.fail("program", "an experiment starts every trial's programs itself: builtin or {command: [...]}");
+  return tmp.launch;
+}
+
+// What a setup gives its robots unless they say otherwise.
+struct SetupDefaults {
+  bool has_behaviour = false;
+  std::string behaviour;
+  ConfigPlace behaviour_where;
+  std::string config;  // one line of YAML, empty: none
+  runner::LaunchSpec launch;
+};
+
+SetupDefaults readSetupDefaults(const YamlReader& s, const Experiment& e) {
+  SetupDefaults d;
+  d.has_behaviour = s.has("behaviour");
+  d.behaviour = d.has_behaviour ? s.choice("behaviour", programs::kScriptBehaviour, programs::behaviourNames()) : "";
+  d.behaviour_where = d.has_behaviour ? s.place("behaviour") : ConfigPlace{};
+  if (s.has("config")) {
+    if (!s.node()["config"].IsMap()) s.fail("config", "must be a map of behaviour overrides");
+    d.config = flow(s.node()["config"]);
+  }
+  d.launch = readLaunch(s, e.base.base_dir, true);
+  return d;
+}
+
+// The robot's behaviour, its config overrides and its program.
+void readRobotProgram(const YamlReader& r, const YamlReader& s, const SetupDefaults& d, const Experiment& e,
+                      ExperimentRobot& rob) {
+  if (r.has("behaviour")) {
+    rob.behaviour = r.choice("behaviour", programs::kScriptBehaviour, programs::behaviourNames());
+    rob.behaviour_where = r.place("behaviour");
+  } else if (d.has_behaviour) {
+    rob.behaviour = d.behaviour;
+    rob.behaviour_where = d.behaviour_where;
+  } else {
+    r.checkMisspelling("behaviour");
+    s.checkMisspelling("behaviour");  // the setup's default, misspelt
+    r.fail("behaviour", "missing: give the robot (or its setup) a behaviour: " + programs::behaviourNamesText());
+  }
+  rob.config_yaml = d.config;
+  if (r.has("config")) {
+    if (!r.node()["config"].IsMap()) r.fail("config", "must be a map of behaviour overrides");
+    // The robot's overrides replace the setup's key by key.
+    YAML::Node merged = d.config.empty() ? YAML::Node(YAML::NodeType::Map) : YAML::Load(d.config);
+    for (const auto& kv : r.node()["config"]) merged[kv.first.Scalar()] = kv.second;
+    rob.config_yaml = flow(merged);
+  }
+  rob.launch = r.has("program") ? readLaunch(r, e.base.base_dir, false) : d.launch;
+}
+
+// One robot of setup `setup` (its robots so far), `s` its setup's reader;
+// `players`: the setup's (team, player) pairs so far.
+ExperimentRobot readRobot(const YamlReader& r, const YamlReader& s, const SetupDefaults& d, const Setup& setup,
+                          const Experiment& e, std::set<std::pair<int, int>>& players) {
+  ExperimentRobot rob;
+  rob.where = r.place();
+  rob.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
+  rob.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
+  if (!players.insert({rob.team, rob.player}).second)
+    r.fail("player", "team " + std::to_string(rob.team) + " player " + std::to_string(rob.player) +
+                         " appears twice in setup '" + setup.name + "'");
+  rob.x = r.number("x");
+  rob.y = r.number("y");
+  rob.theta = r.number("theta", Range::closed(-2 * M_PI, 2 * M_PI));
+  checkOnCarpet(e.field, r, rob.x, rob.y, common::nao::kFootprintRadius / 1000, "the robot");  // m
+  readRobotProgram(r, s, d, e, rob);
+  if (const std::optional<YamlReader> l = r.optionalMap("lola")) {
+    l->finish();  // no keys: the socket is the trial's own
+    rob.v6 = true;
+  }
+  if (!setup.robots.empty() && setup.robots.front().v6 != rob.v6)
+    r.fail(rob.v6 ? "lola" : "team", "every robot of a setup ticks alike: its first robot is a " +
+                                          std::string(setup.robots.front().v6 ? "NAO V6 (lola, 12 ms)"
+                                                                              : "NAO V5 (libagent, 10 ms)"));
+  if (rob.isScript()) {
+    if (!r.has("actions"))
+      r.missing("actions", "missing: a script robot needs an actions: list (as in a scenario)");
+    runner::readActions(r, rob.script);
+  } else if (r.has("actions")) {
+    r.fail("actions", "only a script robot takes actions (this one is " +
+                          rob.behaviour + ")");
+  }
+  r.finish();
+  // Robots standing on each other.
+  for (const ExperimentRobot& o : setup.robots)
+    if (std::hypot(o.x - rob.x, o.y - rob.y) < kMinRobotSeparation) {
+      std::ostringstream m;
+      m << "stands on player " << o.player << " (" << std::hypot(o.x - rob.x, o.y - rob.y)
+        << " m apart; robots need >= " << kMinRobotSeparation << " m)";
+      r.fail("x", m.str());
+    }
+  return rob;
+}
+
+// The setup's robots together: present, off the balls, one match.
+void checkSetupRobots(const YamlReader& s, const Setup& setup, const Experiment& e) {
+  if (setup.robots.empty()) s.fail("robots", "a setup needs at least one robot");
+  const double ball_radius = e.field.ball.diameter / 2;
+  // A ball inside a robot's start footprint would be pushed away at once.
+  for (const ExperimentRobot& rob : setup.robots)
+    for (const BallPosition& b : e.balls)
+      if (std::hypot(b.x - rob.x, b.y - rob.y) < kMinRobotSeparation / 2 + ball_radius)
+        s.fail("robots", "player " + std::to_string(rob.player) + " starts on ball position " +
+                             std::to_string(b.number));
+  std::set<int> teams;
+  for (const ExperimentRobot& rob : setup.robots) teams.insert(rob.team);
+  if (teams.size() > 2) s.fail("robots", "a setup is one match: at most two team numbers");
+}
+
+void readSetups(const YamlReader& top, Experiment& e) {
   std::set<std::string> setup_names;
   for (const YamlReader& s : top.list("setups")) {
     Setup setup;
@@ -146,102 +268,19 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
       s.fail("name", "must be a non-empty word without spaces, commas, quotes or slashes");
     if (!setup_names.insert(setup.name).second) s.fail("name", "setup '" + setup.name + "' appears twice");
     setup.thesis_table = s.choice("thesis_table", "", {"", "5.3", "5.4", "5.5", "5.6", "5.7", "5.8"});
-    const bool has_default = s.has("behaviour");
-    const std::string def_behaviour =
-        has_default ? s.choice("behaviour", programs::kScriptBehaviour, programs::behaviourNames()) : "";
-    const ConfigPlace def_where = has_default ? s.place("behaviour") : ConfigPlace{};
-    std::string def_config;
-    if (s.has("config")) {
-      if (!s.node()["config"].IsMap()) s.fail("config", "must be a map of behaviour overrides");
-      def_config = flow(s.node()["config"]);
-    }
-    // The setup's program: the default of its robots. `external` (a program
-    // started by hand) cannot be restarted for each trial: refused.
-    // any_body: a setup's default program, whose placeholders its robots' bodies decide.
-    auto readLaunch = [&e](const YamlReader& m, bool any_body) {
-      runner::RobotSpec tmp;
-      runner::readProgram(m, tmp, e.base.base_dir, any_body);
-      if (tmp.program == runner::RobotSpec::Program::External && !tmp.launch.launched())
-        m.fail("program", "an experiment starts every trial's programs itself: builtin or {command: [...]}");
-      return tmp.launch;
-    };
-    const runner::LaunchSpec def_launch = readLaunch(s, true);
+    const SetupDefaults d = readSetupDefaults(s, e);
     std::set<std::pair<int, int>> players;
-    for (const YamlReader& r : s.list("robots")) {
-      ExperimentRobot rob;
-      rob.where = r.place();
-      rob.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
-      rob.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
-      if (!players.insert({rob.team, rob.player}).second)
-        r.fail("player", "team " + std::to_string(rob.team) + " player " + std::to_string(rob.player) +
-                             " appears twice in setup '" + setup.name + "'");
-      rob.x = r.number("x");
-      rob.y = r.number("y");
-      rob.theta = r.number("theta", Range::closed(-2 * M_PI, 2 * M_PI));
-      onCarpet(r, rob.x, rob.y, common::nao::kFootprintRadius / 1000, "the robot");  // m
-      if (r.has("behaviour")) {
-        rob.behaviour = r.choice("behaviour", programs::kScriptBehaviour, programs::behaviourNames());
-        rob.behaviour_where = r.place("behaviour");
-      } else if (has_default) {
-        rob.behaviour = def_behaviour;
-        rob.behaviour_where = def_where;
-      } else {
-        r.checkMisspelling("behaviour");
-        s.checkMisspelling("behaviour");  // the setup's default, misspelt
-        r.fail("behaviour", "missing: give the robot (or its setup) a behaviour: " + programs::behaviourNamesText());
-      }
-      rob.config_yaml = def_config;
-      if (r.has("config")) {
-        if (!r.node()["config"].IsMap()) r.fail("config", "must be a map of behaviour overrides");
-        // The robot's overrides replace the setup's key by key.
-        YAML::Node merged = def_config.empty() ? YAML::Node(YAML::NodeType::Map) : YAML::Load(def_config);
-        for (const auto& kv : r.node()["config"]) merged[kv.first.Scalar()] = kv.second;
-        rob.config_yaml = flow(merged);
-      }
-      rob.launch = r.has("program") ? readLaunch(r, false) : def_launch;
-      if (const std::optional<YamlReader> l = r.optionalMap("lola")) {
-        l->finish();  // no keys: the socket is the trial's own
-        rob.v6 = true;
-      }
-      if (!setup.robots.empty() && setup.robots.front().v6 != rob.v6)
-        r.fail(rob.v6 ? "lola" : "team", "every robot of a setup ticks alike: its first robot is a " +
-                                              std::string(setup.robots.front().v6 ? "NAO V6 (lola, 12 ms)"
-                                                                                  : "NAO V5 (libagent, 10 ms)"));
-      if (rob.isScript()) {
-        if (!r.has("actions"))
-          r.missing("actions", "missing: a script robot needs an actions: list (as in a scenario)");
-        runner::readActions(r, rob.script);
-      } else if (r.has("actions")) {
-        r.fail("actions", "only a script robot takes actions (this one is " +
-                              rob.behaviour + ")");
-      }
-      r.finish();
-      // Robots standing on each other.
-      for (const ExperimentRobot& o : setup.robots)
-        if (std::hypot(o.x - rob.x, o.y - rob.y) < kMinRobotSeparation) {
-          std::ostringstream m;
-          m << "stands on player " << o.player << " (" << std::hypot(o.x - rob.x, o.y - rob.y)
-            << " m apart; robots need >= " << kMinRobotSeparation << " m)";
-          r.fail("x", m.str());
-        }
-      setup.robots.push_back(std::move(rob));
-    }
-    if (setup.robots.empty()) s.fail("robots", "a setup needs at least one robot");
-    // A ball inside a robot's start footprint would be pushed away at once.
-    for (const ExperimentRobot& rob : setup.robots)
-      for (const BallPosition& b : e.balls)
-        if (std::hypot(b.x - rob.x, b.y - rob.y) < kMinRobotSeparation / 2 + ball_radius)
-          s.fail("robots", "player " + std::to_string(rob.player) + " starts on ball position " +
-                               std::to_string(b.number));
-    std::set<int> teams;
-    for (const ExperimentRobot& rob : setup.robots) teams.insert(rob.team);
-    if (teams.size() > 2) s.fail("robots", "a setup is one match: at most two team numbers");
+    for (const YamlReader& r : s.list("robots")) setup.robots.push_back(readRobot(r, s, d, setup, e, players));
+    checkSetupRobots(s, setup, e);
     s.finish();
     e.setups.push_back(std::move(setup));
   }
   if (e.setups.empty()) top.fail("setups", "an experiment needs at least one setup");
-  // The scenario's team_comms: and game: blocks, by its readers. The trial
-  // owns the game's start (penalised at the start poses, then PLAYING).
+}
+
+// The scenario's team_comms: and game: blocks, by its readers. The trial
+// owns the game's start (penalised at the start poses, then PLAYING).
+void readMatch(const YamlReader& top, Experiment& e) {
   if (auto t = top.optionalMap("team_comms")) e.base.team_comms = runner::readTeamComms(*t);
   if (auto g = top.optionalMap("game")) {
     for (const char* key : {"state", "timeline", "penalties", "on_unpenalise", "udp", "address", "port", "return_port"})
@@ -250,6 +289,21 @@ Experiment parseTree(const YAML::Node& root, const std::string& source_name, con
                      "from parallel trials): an experiment's game: takes kickoff_team, half_duration, first_half");
     e.base.game = runner::readGame(*g, e.maxRobots());
   }
+}
+
+// The experiment of one tree: the file's own, or the file's with swept
+// values set in (Sweep.hpp). Never looks at sweep: beyond its name. `field`:
+// the field already loaded for the file's own tree (a sweep cannot change
+// it), else it is loaded here.
+Experiment parseTree(const YAML::Node& root, const std::string& source_name, const FieldConfig* field = nullptr) {
+  if (!root.IsMap()) throw ConfigError(source_name, 1, "", "an experiment file is a map (name:, seed:, balls:, ...)");
+  YamlReader top(root, source_name);
+  Experiment e;
+  readHeader(top, source_name, field, e);
+  readRules(top, root, e);
+  readBalls(top, e);
+  readSetups(top, e);
+  readMatch(top, e);
   top.finish();
   if (e.countTrials() > kMaxTrials)
     top.fail("trials_per_position", std::to_string(e.setups.size()) + " setups x " + std::to_string(e.balls.size()) +

@@ -247,8 +247,9 @@ std::string wallClockSection(const Experiment& e, const std::vector<TrialResult>
   return s.str();
 }
 
-std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& results) {
-  std::ostringstream s;
+namespace {
+
+void introSection(std::ostream& s, const Experiment& e) {
   s << "# Find-ball experiment `" << e.name << "`\n\n"
     << e.numTrials() << " trials: " << (e.swept() ? std::to_string(e.numCells()) + " sweep cells x " : "")
     << e.setups.size() << " setup(s) x " << e.balls.size() << " ball position(s) x "
@@ -268,174 +269,233 @@ std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& 
     << " s, then the game goes to PLAYING and they are unpenalised; find times count from that moment. "
        "Wall-clock figures (real-time factor) are in the last section and in timing.md: everything above that "
        "section is the same in every run.\n\n";
+}
 
+void failedSection(std::ostream& s, const std::vector<TrialResult>& results) {
   int failed = 0;
   for (const TrialResult& r : results) failed += !r.failed.empty();
-  if (failed) {
-    s << "**" << failed << " trial(s) failed** (a launched robot program crashed, exited or never attached); "
-      << "they are left out of every table below (Tests counts the trials that ran). Their logs are in "
-      << "trials/<trial>/:\n\n";
-    for (const TrialResult& r : results)
-      if (!r.failed.empty()) s << "- trial " << r.trial << " (" << r.setup << ", position " << r.position << "): "
-                                << r.failed << "\n";
-    s << "\n";
-  }
+  if (!failed) return;
+  s << "**" << failed << " trial(s) failed** (a launched robot program crashed, exited or never attached); "
+    << "they are left out of every table below (Tests counts the trials that ran). Their logs are in "
+    << "trials/<trial>/:\n\n";
+  for (const TrialResult& r : results)
+    if (!r.failed.empty()) s << "- trial " << r.trial << " (" << r.setup << ", position " << r.position << "): "
+                              << r.failed << "\n";
+  s << "\n";
+}
 
-  if (e.swept()) s << sweepSection(e, cellRows(e, results));
-
+void ballPositionsLine(std::ostream& s, const Experiment& e) {
   s << "Ball positions (table 5.2):";
   for (const BallPosition& b : e.balls)
     s << " " << b.number << " (" << fixed(b.x * 1000, 0) << ", " << fixed(b.y * 1000, 0) << ")";
   s << " mm.\n\n";
+}
 
-  std::map<std::string, int> setup_of_table;  // thesis table -> setup index
+// Thesis table -> the index of the setup that repeats it (the last one naming it).
+std::map<std::string, int> setupsOfTables(const Experiment& e) {
+  std::map<std::string, int> setup_of_table;
+  for (size_t si = 0; si < e.setups.size(); ++si)
+    if (!e.setups[si].thesis_table.empty()) setup_of_table[e.setups[si].thesis_table] = static_cast<int>(si);
+  return setup_of_table;
+}
+
+// Beyond the thesis's table: a mean over finds, falls, moves, walking.
+void setupRobotsTable(std::ostream& s, const Setup& setup, const std::vector<TrialResult>& results) {
+  std::vector<double> times;
+  int tests = 0, resets = 0;
+  std::vector<double> dist(setup.robots.size(), 0);
+  std::vector<int> falls(setup.robots.size(), 0), contact_falls(setup.robots.size(), 0),
+      moves(setup.robots.size(), 0), finds(setup.robots.size(), 0);
+  for (const TrialResult& r : results) {
+    if (r.setup != setup.name) continue;
+    ++tests;
+    resets += r.resets;
+    if (r.found) times.push_back(r.seconds);
+    for (size_t k = 0; k < r.robots.size() && k < setup.robots.size(); ++k) {
+      dist[k] += r.robots[k].distance_m;
+      falls[k] += r.robots[k].falls;
+      contact_falls[k] += r.robots[k].contact_falls;
+      moves[k] += r.robots[k].sideline_moves;
+      if (r.found && r.finder == common::libagent::robotTag(r.robots[k].team, r.robots[k].player))
+        ++finds[k];
+    }
+  }
+  const PositionStats all = positionStats(0, tests, times);
+  s << "Find rate " << all.found << "/" << all.tests << " ("
+    << fixed(all.tests ? 100.0 * all.found / all.tests : 0, 1) << " %); over the " << all.found
+    << " finds: mean " << f2(all.avg_s) << " s, standard deviation " << f2(all.sd_s) << " s. World resets: "
+    << resets << ".\n\n"
+    << "| Robot | Finds | Mean walked (m/trial) | Falls | of which after robot contact | Sideline moves |\n"
+    << "|---|---:|---:|---:|---:|---:|\n";
+  for (size_t k = 0; k < setup.robots.size(); ++k)
+    s << "| t" << setup.robots[k].team << "p" << setup.robots[k].player << " | " << finds[k] << " | "
+      << fixed(tests ? dist[k] / tests : 0, 2) << " | " << falls[k] << " | " << contact_falls[k] << " | " << moves[k]
+      << " |\n";
+}
+
+void setupSection(std::ostream& s, const Experiment& e, const std::vector<TrialResult>& results, int si) {
+  const Setup& setup = e.setups[si];
+  const std::vector<PositionStats> rows = setupTable(e, results, si);
+  s << "## Setup `" << setup.name << "`";
+  if (!setup.thesis_table.empty()) s << " (repeats thesis table " << setup.thesis_table << ")";
+  s << "\n\n" << setup.robots.size() << " robot(s): " << robotsLine(setup) << ".\n\n" << thesisLayout(rows) << "\n";
+  if (const ThesisTable* t = thesisTable(setup.thesis_table)) s << besideTable(*t, rows);
+  setupRobotsTable(s, setup, results);
+  s << "\nFigures: [routes](figures/routes_" << setup.name << ".png) (as the thesis's figures 5.2 and 5.3), "
+    << "[find times](figures/findtime_" << setup.name << ".png) (box plot per position).\n\n";
+}
+
+// Per component (setup) beside its thesis table: find rate and mean find
+// time over the positions both have.
+void componentsSection(std::ostream& s, const Experiment& e, const std::vector<TrialResult>& results) {
+  s << "## Per component beside the thesis\n\n"
+    << "Each setup that names a thesis table, over the ball positions both have; mean find time = Total "
+       "Seconds / Found over those positions (the thesis's printed Average rows are the plain means of its "
+       "position averages, counting 0.00 for a position never found).\n\n"
+    << "| Setup | Thesis table | Positions | Find rate (thesis) | Find rate (ours) | Mean find s (thesis) | Mean "
+       "find s (ours) |\n|---|---|---:|---:|---:|---:|---:|\n";
   for (size_t si = 0; si < e.setups.size(); ++si) {
-    const Setup& setup = e.setups[si];
-    if (!setup.thesis_table.empty()) setup_of_table[setup.thesis_table] = static_cast<int>(si);
-    const std::vector<PositionStats> rows = setupTable(e, results, static_cast<int>(si));
-    s << "## Setup `" << setup.name << "`";
-    if (!setup.thesis_table.empty()) s << " (repeats thesis table " << setup.thesis_table << ")";
-    s << "\n\n" << setup.robots.size() << " robot(s): " << robotsLine(setup) << ".\n\n" << thesisLayout(rows) << "\n";
-    if (const ThesisTable* t = thesisTable(setup.thesis_table)) s << besideTable(*t, rows);
-
-    // Beyond the thesis's table: a mean over finds, falls, moves, walking.
-    std::vector<double> times;
-    int tests = 0, resets = 0;
-    std::vector<double> dist(setup.robots.size(), 0);
-    std::vector<int> falls(setup.robots.size(), 0), contact_falls(setup.robots.size(), 0),
-        moves(setup.robots.size(), 0), finds(setup.robots.size(), 0);
-    for (const TrialResult& r : results) {
-      if (r.setup != setup.name) continue;
-      ++tests;
-      resets += r.resets;
-      if (r.found) times.push_back(r.seconds);
-      for (size_t k = 0; k < r.robots.size() && k < setup.robots.size(); ++k) {
-        dist[k] += r.robots[k].distance_m;
-        falls[k] += r.robots[k].falls;
-        contact_falls[k] += r.robots[k].contact_falls;
-        moves[k] += r.robots[k].sideline_moves;
-        if (r.found && r.finder == common::libagent::robotTag(r.robots[k].team, r.robots[k].player))
-          ++finds[k];
-      }
-    }
-    const PositionStats all = positionStats(0, tests, times);
-    s << "Find rate " << all.found << "/" << all.tests << " ("
-      << fixed(all.tests ? 100.0 * all.found / all.tests : 0, 1) << " %); over the " << all.found
-      << " finds: mean " << f2(all.avg_s) << " s, standard deviation " << f2(all.sd_s) << " s. World resets: "
-      << resets << ".\n\n"
-      << "| Robot | Finds | Mean walked (m/trial) | Falls | of which after robot contact | Sideline moves |\n"
-      << "|---|---:|---:|---:|---:|---:|\n";
-    for (size_t k = 0; k < setup.robots.size(); ++k)
-      s << "| t" << setup.robots[k].team << "p" << setup.robots[k].player << " | " << finds[k] << " | "
-        << fixed(tests ? dist[k] / tests : 0, 2) << " | " << falls[k] << " | " << contact_falls[k] << " | " << moves[k]
-        << " |\n";
-    s << "\nFigures: [routes](figures/routes_" << setup.name << ".png) (as the thesis's figures 5.2 and 5.3), "
-      << "[find times](figures/findtime_" << setup.name << ".png) (box plot per position).\n\n";
+    const ThesisTable* t = thesisTable(e.setups[si].thesis_table);
+    if (!t) continue;
+    const Beside b = besideThesis(*t, setupTable(e, results, static_cast<int>(si)));
+    s << "| `" << e.setups[si].name << "` | " << tableTitle(*t) << " | " << b.positions.size() << " | "
+      << rate(b.thesis_found, b.thesis_tests) << " | " << rate(b.our_found, b.our_tests) << " | "
+      << meanOverFinds(b.thesis_total_s, b.thesis_found) << " | " << meanOverFinds(b.our_total_s, b.our_found)
+      << " |\n";
   }
+  s << "\n";
+}
 
-  // Per component (setup) beside its thesis table: find rate and mean find
-  // time over the positions both have.
-  if (!setup_of_table.empty()) {
-    s << "## Per component beside the thesis\n\n"
-      << "Each setup that names a thesis table, over the ball positions both have; mean find time = Total "
-         "Seconds / Found over those positions (the thesis's printed Average rows are the plain means of its "
-         "position averages, counting 0.00 for a position never found).\n\n"
-      << "| Setup | Thesis table | Positions | Find rate (thesis) | Find rate (ours) | Mean find s (thesis) | Mean "
-         "find s (ours) |\n|---|---|---:|---:|---:|---:|---:|\n";
-    for (size_t si = 0; si < e.setups.size(); ++si) {
-      const ThesisTable* t = thesisTable(e.setups[si].thesis_table);
-      if (!t) continue;
-      const Beside b = besideThesis(*t, setupTable(e, results, static_cast<int>(si)));
-      s << "| `" << e.setups[si].name << "` | " << tableTitle(*t) << " | " << b.positions.size() << " | "
-        << rate(b.thesis_found, b.thesis_tests) << " | " << rate(b.our_found, b.our_tests) << " | "
-        << meanOverFinds(b.thesis_total_s, b.thesis_found) << " | " << meanOverFinds(b.our_total_s, b.our_found)
-        << " |\n";
+void comparisonsHeader(std::ostream& s, const Experiment& e) {
+  s << "## Beside the thesis (tables 5.9-5.12)\n\n"
+    << "Thesis columns are the thesis's own figures (sim = its rcssserver3d simulation, real = NAO V5s); "
+       "ours are this run's setups that name the table in `thesis_table:`. Found counts are shown as "
+       "found/tests. Each column's Total/Average row is over its own positions (the thesis's: all of its "
+       "table); the per-component table above compares the positions both have.\n\n";
+  // Positions are compared by number: say so where ours lie elsewhere.
+  std::string moved;
+  for (const BallPosition& b : e.balls)
+    for (const ThesisPoint& p : thesisBallPositions())
+      if (p.number == b.number && (std::abs(p.x_mm - b.x * 1000) > 1 || std::abs(p.y_mm - b.y * 1000) > 1))
+        moved += (moved.empty() ? "" : ", ") + std::to_string(b.number);
+  if (!moved.empty())
+    s << "**Note:** ball position(s) " << moved
+      << " of this experiment are not where table 5.2 puts them; those rows compare different places.\n\n";
+}
+
+// One comparison's thesis columns and ours: the table of setup_of_table's
+// setup per thesis table that has one (empty rows where none).
+struct ComparisonColumns {
+  const ThesisComparison& c;
+  const std::map<std::string, int>& setup_of_table;
+  std::vector<std::vector<PositionStats>> ours;
+  bool hasOurs(size_t k) const { return setup_of_table.count(c.tables[k]) > 0; }
+};
+
+void comparisonHeading(std::ostream& s, const Experiment& e, const std::vector<TrialResult>& results,
+                       ComparisonColumns& cols) {
+  const ThesisComparison& c = cols.c;
+  s << "### Table " << c.number << ": " << c.title << "\n\n| |";
+  std::string rule = "|---|";
+  for (size_t k = 0; k < c.tables.size(); ++k) {
+    const ThesisTable* t = thesisTable(c.tables[k]);
+    s << " thesis " << t->number << " (" << t->component << ", " << t->robots << " robot"
+      << (t->robots > 1 ? "s" : "") << ", " << (t->real ? "real" : "sim") << ") |";
+    rule += "---:|";
+    auto it = cols.setup_of_table.find(c.tables[k]);
+    if (it != cols.setup_of_table.end()) {
+      s << " ours: `" << e.setups[it->second].name << "` |";
+      rule += "---:|";
+      cols.ours[k] = setupTable(e, results, it->second);
     }
-    s << "\n";
   }
+  s << "\n" << rule << "\n";
+}
 
-  // Comparisons 5.9-5.12: thesis columns beside ours.
+void comparisonPositionRow(std::ostream& s, const ComparisonColumns& cols, int pos) {
+  const ThesisComparison& c = cols.c;
+  s << "| Ball Pos " << pos << (c.what == ThesisComparison::What::Found ? "" : " Avg. Time") << " |";
+  for (size_t k = 0; k < c.tables.size(); ++k) {
+    const ThesisTable* t = thesisTable(c.tables[k]);
+    if (pos >= 1 && pos <= static_cast<int>(c.values.size())) {
+      const double v = c.values[pos - 1][k];
+      s << " " << (c.what == ThesisComparison::What::Found ? fixed(v, 0) + "/" + std::to_string(t->rows[pos - 1].tests)
+                                                         : f2(v))
+        << " |";
+    } else {
+      s << " - |";
+    }
+    if (cols.hasOurs(k)) {
+      const PositionStats* p = nullptr;
+      for (const PositionStats& q : cols.ours[k])
+        if (q.position == pos) p = &q;
+      if (!p) s << " - |";
+      else if (c.what == ThesisComparison::What::Found) s << " " << p->found << "/" << p->tests << " |";
+      else s << " " << f2(p->avg_s) << " |";
+    }
+  }
+  s << "\n";
+}
+
+void comparisonBottomRow(std::ostream& s, const ComparisonColumns& cols) {
+  const ThesisComparison& c = cols.c;
+  s << "| " << (c.what == ThesisComparison::What::Found ? "Total:" : "Average:") << " |";
+  for (size_t k = 0; k < c.tables.size(); ++k) {
+    const ThesisTable* t = thesisTable(c.tables[k]);
+    int tests = 0;
+    for (const ThesisRow& r : t->rows) tests += r.tests;
+    s << " " << (c.what == ThesisComparison::What::Found ? fixed(c.bottom[k], 0) + "/" + std::to_string(tests)
+                                                       : f2(c.bottom[k]))
+      << " |";
+    if (cols.hasOurs(k)) {
+      const SummaryRow sum = sumRows(cols.ours[k]), mean = meanRows(cols.ours[k]);
+      if (c.what == ThesisComparison::What::Found) s << " " << fixed(sum.found, 0) << "/" << fixed(sum.tests, 0) << " |";
+      else s << " " << f2(mean.avg_s) << " |";
+    }
+  }
+  s << "\n\n";
+}
+
+void comparisonTable(std::ostream& s, const Experiment& e, const std::vector<TrialResult>& results,
+                     const ThesisComparison& c, const std::map<std::string, int>& setup_of_table) {
+  ComparisonColumns cols{c, setup_of_table, std::vector<std::vector<PositionStats>>(c.tables.size())};
+  comparisonHeading(s, e, results, cols);
+  std::set<int> positions;
+  for (size_t p = 0; p < c.values.size(); ++p) positions.insert(static_cast<int>(p) + 1);
+  for (const auto& rows : cols.ours)
+    for (const PositionStats& p : rows) positions.insert(p.position);
+  for (int pos : positions) comparisonPositionRow(s, cols, pos);
+  comparisonBottomRow(s, cols);
+}
+
+// Comparisons 5.9-5.12: thesis columns beside ours.
+void comparisonsSection(std::ostream& s, const Experiment& e, const std::vector<TrialResult>& results,
+                        const std::map<std::string, int>& setup_of_table) {
   bool header = false;
   for (const ThesisComparison& c : thesisComparisons()) {
     bool any = false;
     for (const std::string& t : c.tables) any = any || setup_of_table.count(t);
     if (!any) continue;
     if (!header) {
-      s << "## Beside the thesis (tables 5.9-5.12)\n\n"
-        << "Thesis columns are the thesis's own figures (sim = its rcssserver3d simulation, real = NAO V5s); "
-           "ours are this run's setups that name the table in `thesis_table:`. Found counts are shown as "
-           "found/tests. Each column's Total/Average row is over its own positions (the thesis's: all of its "
-           "table); the per-component table above compares the positions both have.\n\n";
+      comparisonsHeader(s, e);
       header = true;
-      // Positions are compared by number: say so where ours lie elsewhere.
-      std::string moved;
-      for (const BallPosition& b : e.balls)
-        for (const ThesisPoint& p : thesisBallPositions())
-          if (p.number == b.number && (std::abs(p.x_mm - b.x * 1000) > 1 || std::abs(p.y_mm - b.y * 1000) > 1))
-            moved += (moved.empty() ? "" : ", ") + std::to_string(b.number);
-      if (!moved.empty())
-        s << "**Note:** ball position(s) " << moved
-          << " of this experiment are not where table 5.2 puts them; those rows compare different places.\n\n";
     }
-    s << "### Table " << c.number << ": " << c.title << "\n\n| |";
-    std::string rule = "|---|";
-    std::vector<std::vector<PositionStats>> ours(c.tables.size());
-    for (size_t k = 0; k < c.tables.size(); ++k) {
-      const ThesisTable* t = thesisTable(c.tables[k]);
-      s << " thesis " << t->number << " (" << t->component << ", " << t->robots << " robot"
-        << (t->robots > 1 ? "s" : "") << ", " << (t->real ? "real" : "sim") << ") |";
-      rule += "---:|";
-      auto it = setup_of_table.find(c.tables[k]);
-      if (it != setup_of_table.end()) {
-        s << " ours: `" << e.setups[it->second].name << "` |";
-        rule += "---:|";
-        ours[k] = setupTable(e, results, it->second);
-      }
-    }
-    s << "\n" << rule << "\n";
-    std::set<int> positions;
-    for (size_t p = 0; p < c.values.size(); ++p) positions.insert(static_cast<int>(p) + 1);
-    for (const auto& rows : ours)
-      for (const PositionStats& p : rows) positions.insert(p.position);
-    for (int pos : positions) {
-      s << "| Ball Pos " << pos << (c.what == ThesisComparison::What::Found ? "" : " Avg. Time") << " |";
-      for (size_t k = 0; k < c.tables.size(); ++k) {
-        const ThesisTable* t = thesisTable(c.tables[k]);
-        if (pos >= 1 && pos <= static_cast<int>(c.values.size())) {
-          const double v = c.values[pos - 1][k];
-          s << " " << (c.what == ThesisComparison::What::Found ? fixed(v, 0) + "/" + std::to_string(t->rows[pos - 1].tests)
-                                                             : f2(v))
-            << " |";
-        } else {
-          s << " - |";
-        }
-        if (setup_of_table.count(c.tables[k])) {
-          const PositionStats* p = nullptr;
-          for (const PositionStats& q : ours[k])
-            if (q.position == pos) p = &q;
-          if (!p) s << " - |";
-          else if (c.what == ThesisComparison::What::Found) s << " " << p->found << "/" << p->tests << " |";
-          else s << " " << f2(p->avg_s) << " |";
-        }
-      }
-      s << "\n";
-    }
-    s << "| " << (c.what == ThesisComparison::What::Found ? "Total:" : "Average:") << " |";
-    for (size_t k = 0; k < c.tables.size(); ++k) {
-      const ThesisTable* t = thesisTable(c.tables[k]);
-      int tests = 0;
-      for (const ThesisRow& r : t->rows) tests += r.tests;
-      s << " " << (c.what == ThesisComparison::What::Found ? fixed(c.bottom[k], 0) + "/" + std::to_string(tests)
-                                                         : f2(c.bottom[k]))
-        << " |";
-      if (setup_of_table.count(c.tables[k])) {
-        const SummaryRow sum = sumRows(ours[k]), mean = meanRows(ours[k]);
-        if (c.what == ThesisComparison::What::Found) s << " " << fixed(sum.found, 0) << "/" << fixed(sum.tests, 0) << " |";
-        else s << " " << f2(mean.avg_s) << " |";
-      }
-    }
-    s << "\n\n";
+    comparisonTable(s, e, results, c, setup_of_table);
   }
+}
+
+}  // namespace
+
+std::string reportMarkdown(const Experiment& e, const std::vector<TrialResult>& results) {
+  std::ostringstream s;
+  introSection(s, e);
+  failedSection(s, results);
+  if (e.swept()) s << sweepSection(e, cellRows(e, results));
+  ballPositionsLine(s, e);
+  for (size_t si = 0; si < e.setups.size(); ++si) setupSection(s, e, results, static_cast<int>(si));
+  const std::map<std::string, int> setup_of_table = setupsOfTables(e);
+  if (!setup_of_table.empty()) componentsSection(s, e, results);
+  comparisonsSection(s, e, results, setup_of_table);
   s << statisticsSection(e, results);
   return s.str();
 }

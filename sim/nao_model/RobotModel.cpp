@@ -169,6 +169,213 @@ double orderKey(const std::string& name) {
   return 1000.0;  // anything else after, alphabetically (ties keep name order)
 }
 
+// urdfdom's links hold their children by shared_ptr, so a kinematic loop
+// in a malformed file (the fuzzer's: two <child> lines swapped) is a
+// cycle nothing would free. Breaks it however the loader ends.
+struct BreakLinkCycles {
+  urdf::ModelInterfaceSharedPtr& model;
+  ~BreakLinkCycles() {
+    if (!model) return;
+    for (auto& named : model->links_) {
+      named.second->child_links.clear();
+      named.second->child_joints.clear();
+    }
+  }
+};
+
+// Parses `xml` with urdfdom into `urdf` (the caller's, so its cycles are
+// broken whatever fails here), quoting urdfdom's own complaints.
+void parseWithUrdfdom(const std::string& xml, const std::string& source, const UrdfLines& lines,
+                      urdf::ModelInterfaceSharedPtr& urdf) {
+  CaptureHandler capture;
+  {
+    std::lock_guard<std::mutex> lock(parserMutex());
+    console_bridge::useOutputHandler(&capture);
+    try {
+      urdf = urdf::parseURDF(xml);
+    } catch (const std::exception& e) {
+      console_bridge::restorePreviousOutputHandler();
+      const std::string what = e.what();
+      fail(source, lines.lineMentioned(capture.text() + " " + what), "URDF parse failed: " + what);
+    }
+    console_bridge::restorePreviousOutputHandler();
+  }
+  if (!urdf) {
+    fail(source, lines.lineMentioned(capture.text()),
+         "URDF parse failed" + (capture.text().empty() ? std::string() : ": " + capture.text()));
+  }
+  if (!urdf->getRoot()) fail(source, lines.robot(), "URDF has no root link");
+}
+
+struct TreeOrder {
+  std::vector<urdf::LinkConstSharedPtr> links;
+  std::vector<urdf::JointConstSharedPtr> joints;  // each link's parent joint, the root's none
+};
+
+// Depth-first from the root, children in NAO order: parents always come
+// before their children in links_ and joints_.
+TreeOrder treeOrder(const urdf::ModelInterface& urdf, const std::string& source, const UrdfLines& lines) {
+  TreeOrder order;
+  std::vector<urdf::LinkConstSharedPtr> stack{urdf.getRoot()};
+  while (!stack.empty()) {
+    urdf::LinkConstSharedPtr l = stack.back();
+    stack.pop_back();
+    order.links.push_back(l);
+    if (l->parent_joint) order.joints.push_back(l->parent_joint);
+    std::vector<urdf::JointSharedPtr> kids = l->child_joints;
+    std::sort(kids.begin(), kids.end(), [](const auto& a, const auto& b) {
+      const double ka = orderKey(a->name), kb = orderKey(b->name);
+      return ka != kb ? ka < kb : a->name < b->name;
+    });
+    // Pushed in reverse so the smallest key is visited first.
+    for (auto it = kids.rbegin(); it != kids.rend(); ++it) {
+      urdf::LinkConstSharedPtr child = urdf.getLink((*it)->child_link_name);
+      if (!child) fail(source, lines.joint((*it)->name), "joint '" + (*it)->name + "' has unknown child link");
+      stack.push_back(child);
+    }
+  }
+  if (order.links.size() != urdf.links_.size())
+    fail(source, lines.robot(), "links not connected to the root link '" + urdf.getRoot()->name + "'");
+  return order;
+}
+
+// The link's mass, centre of mass and inertia: a rigid body's, in range.
+void readInertial(const urdf::Link& l, const std::string& source, const UrdfLines& lines, LinkSpec& spec) {
+  const std::string where = "link '" + l.name + "'";
+  auto at = [&](const char* path) { return lines.linkChild(l.name, path); };
+  if (!l.inertial) fail(source, lines.link(l.name), where + " has no <inertial> (mass and inertia are required)");
+  if (!lines.linkHas(l.name, "inertial/mass"))
+    fail(source, at("inertial"), where + " has no <mass> in its <inertial>");
+  spec.mass = l.inertial->mass;
+  if (!std::isfinite(spec.mass) || spec.mass < kMinMass || spec.mass > kMaxMass)
+    fail(source, at("inertial/mass"), where + " <mass value> " + num(spec.mass) + " kg (must be in [" +
+                                          num(kMinMass) + ", " + num(kMaxMass) + "] kg)");
+  const std::string bad_origin = badPose(l.inertial->origin);
+  if (!bad_origin.empty()) fail(source, at("inertial/origin"), where + " <inertial><origin>: " + bad_origin);
+  spec.inertial_origin = toPose(l.inertial->origin);
+  const auto& in = *l.inertial;
+  if (!lines.linkHas(l.name, "inertial/inertia"))
+    fail(source, at("inertial"), where + " has no <inertia> in its <inertial>");
+  spec.inertia << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+  if (!spec.inertia.allFinite()) fail(source, at("inertial/inertia"), where + " <inertia> has a value that is not finite");
+  if ((spec.inertia.array().abs() > kMaxInertia).any())
+    fail(source, at("inertial/inertia"), where + " <inertia> has a value beyond " + num(kMaxInertia) + " kg*m^2");
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(spec.inertia);
+  const Eigen::Vector3d ev = eig.eigenvalues();  // ascending
+  if (ev.minCoeff() < kMinInertia)
+    fail(source, at("inertial/inertia"), where + " <inertia> is not positive definite (principal moments " +
+                                             vec(ev) + " kg*m^2; each must be >= " + num(kMinInertia) + ")");
+  // A rigid body's principal moments obey the triangle inequality.
+  if (ev(0) + ev(1) < ev(2) * (1 - 1e-6))
+    fail(source, at("inertial/inertia"), where + " <inertia> is not a rigid body's (principal moments " +
+                                             vec(ev) + " kg*m^2 break I1 + I2 >= I3)");
+}
+
+// The link's <collision> and <visual> shapes (visuals with their material's colour).
+void readShapes(const urdf::ModelInterface& urdf, const urdf::Link& l, const std::string& source,
+                const UrdfLines& lines, LinkSpec& spec) {
+  // urdfdom drops a <collision> it cannot parse; count them ourselves.
+  size_t ci = 0;
+  for (const auto& c : l.collision_array) {
+    if (!c) continue;
+    spec.collisions.push_back(toShape(c->geometry, c->origin, true, source, lines.collision(l.name, ci), l.name));
+    ++ci;
+  }
+  if (spec.collisions.size() != lines.collisionCount(l.name))
+    fail(source, lines.collision(l.name, spec.collisions.size()),
+         "link '" + l.name + "': a <collision> could not be read (bad or missing <geometry> or <origin>)");
+  for (const auto& v : l.visual_array) {
+    if (!v) continue;
+    ShapeSpec s = toShape(v->geometry, v->origin, false, source, lines.linkChild(l.name, "visual"), l.name);
+    urdf::MaterialSharedPtr mat = v->material;
+    if (!mat && !v->material_name.empty()) mat = urdf.getMaterial(v->material_name);
+    if (mat) {
+      s.rgba = Eigen::Vector4d(mat->color.r, mat->color.g, mat->color.b, mat->color.a);
+      if (!s.rgba.allFinite()) s.rgba = Eigen::Vector4d(0.8, 0.8, 0.8, 1.0);
+      s.rgba = s.rgba.cwiseMax(0.0).cwiseMin(1.0);
+    }
+    spec.visuals.push_back(s);
+  }
+}
+
+LinkSpec readLink(const urdf::ModelInterface& urdf, const urdf::Link& l, const std::string& source,
+                  const UrdfLines& lines) {
+  LinkSpec spec;
+  spec.name = l.name;
+  readInertial(l, source, lines, spec);
+  readShapes(urdf, l, source, lines, spec);
+  return spec;
+}
+
+// The joint's <limit>: finite, ordered, within [-pi, pi], sane speed and effort.
+void readLimits(const urdf::Joint& j, const std::string& source, const UrdfLines& lines, JointSpec& spec) {
+  const std::string where = "joint '" + j.name + "'";
+  spec.lower = j.limits->lower;
+  spec.upper = j.limits->upper;
+  spec.max_velocity = j.limits->velocity;
+  spec.max_effort = j.limits->effort;
+  const int limit_line = lines.jointChild(j.name, "limit");
+  if (!std::isfinite(spec.lower) || !std::isfinite(spec.upper) || spec.lower > spec.upper)
+    fail(source, limit_line, where + ": <limit> lower (" + num(spec.lower) + ") > upper (" + num(spec.upper) +
+                                 ") rad, or not finite");
+  if (spec.lower < -M_PI || spec.upper > M_PI)
+    fail(source, limit_line, where + ": <limit> must lie within [-pi, pi] rad");
+  if (!(spec.max_velocity > 0) || !(spec.max_velocity <= kMaxVelocity))
+    fail(source, limit_line, where + ": <limit velocity> " + num(spec.max_velocity) + " must be in (0, " +
+                                 num(kMaxVelocity) + "] rad/s");
+  if (!(spec.max_effort > 0) || !(spec.max_effort <= kMaxEffort))
+    fail(source, limit_line, where + ": <limit effort> " + num(spec.max_effort) + " must be in (0, " +
+                                 num(kMaxEffort) + "] N*m");
+}
+
+// `link_index`: link name -> index in the model's links (all read before).
+JointSpec readJoint(const urdf::Joint& j, const std::map<std::string, int>& link_index, const std::string& source,
+                    const UrdfLines& lines) {
+  const std::string where = "joint '" + j.name + "'";
+  auto at = [&](const char* path) { return lines.jointChild(j.name, path); };
+  if (j.type != urdf::Joint::REVOLUTE) {
+    fail(source, lines.joint(j.name), where + " is not a hinge (type must be \"revolute\"; " +
+                     (j.type == urdf::Joint::CONTINUOUS ? "continuous joints have no limits)" : "got another type)"));
+  }
+  if (!j.limits) fail(source, lines.joint(j.name), where + " has no <limit>");
+  JointSpec spec;
+  spec.name = j.name;
+  spec.line = lines.joint(j.name);
+  spec.mimic_line = at("mimic");
+  spec.parent_link = link_index.at(j.parent_link_name);
+  spec.child_link = link_index.at(j.child_link_name);
+  const std::string bad_origin = badPose(j.parent_to_joint_origin_transform);
+  if (!bad_origin.empty()) fail(source, at("origin"), where + " <origin>: " + bad_origin);
+  spec.origin = toPose(j.parent_to_joint_origin_transform);
+  spec.axis = Eigen::Vector3d(j.axis.x, j.axis.y, j.axis.z);
+  // Each component bounded before the norm, so the norm cannot overflow.
+  if (!spec.axis.allFinite() || (spec.axis.array().abs() > kMaxAxisComponent).any() || spec.axis.norm() < 1e-6)
+    fail(source, at("axis"), where + " <axis xyz> " + vec(spec.axis) +
+                                 " must be a non-zero finite direction (components within 1e6)");
+  spec.axis.normalize();
+  readLimits(j, source, lines, spec);
+  if (j.mimic) {
+    spec.mimic = j.mimic->joint_name;
+    spec.mimic_multiplier = j.mimic->multiplier;
+    if (!std::isfinite(spec.mimic_multiplier) || std::fabs(spec.mimic_multiplier) > kMaxMimicMultiplier)
+      fail(source, at("mimic"), where + " <mimic multiplier> " + num(spec.mimic_multiplier) + " must be within +-" +
+                                    num(kMaxMimicMultiplier));
+  }
+  return spec;
+}
+
+// Every mimic follows a joint of the model that is not itself a mimic.
+void checkMimics(const RobotModel& model, const std::string& source) {
+  for (const auto& j : model.joints()) {
+    if (!j.mimic) continue;
+    const int target = model.jointIndex(*j.mimic);
+    if (target < 0)
+      fail(source, j.mimic_line, "missing joint '" + *j.mimic + "' (joint '" + j.name + "' mimics it)");
+    if (model.joints()[target].mimic)
+      fail(source, j.mimic_line, "joint '" + j.name + "' mimics '" + *j.mimic + "', which is itself a mimic");
+  }
+}
+
 }  // namespace
 
 RobotModel RobotModel::loadUrdf(const std::string& path) {
@@ -192,185 +399,26 @@ RobotModel RobotModel::loadUrdfString(const std::string& xml, const std::string&
   // overflow the stack on deep nesting); then lines for every message.
   const UrdfLines lines(xml, source);
   urdf::ModelInterfaceSharedPtr urdf;
-  // urdfdom's links hold their children by shared_ptr, so a kinematic loop
-  // in a malformed file (the fuzzer's: two <child> lines swapped) is a
-  // cycle nothing would free. Break it however this function ends.
-  struct BreakLinkCycles {
-    urdf::ModelInterfaceSharedPtr& model;
-    ~BreakLinkCycles() {
-      if (!model) return;
-      for (auto& named : model->links_) {
-        named.second->child_links.clear();
-        named.second->child_joints.clear();
-      }
-    }
-  } break_cycles{urdf};
-  CaptureHandler capture;
-  {
-    std::lock_guard<std::mutex> lock(parserMutex());
-    console_bridge::useOutputHandler(&capture);
-    try {
-      urdf = urdf::parseURDF(xml);
-    } catch (const std::exception& e) {
-      console_bridge::restorePreviousOutputHandler();
-      const std::string what = e.what();
-      fail(source, lines.lineMentioned(capture.text() + " " + what), "URDF parse failed: " + what);
-    }
-    console_bridge::restorePreviousOutputHandler();
-  }
-  if (!urdf) {
-    fail(source, lines.lineMentioned(capture.text()),
-         "URDF parse failed" + (capture.text().empty() ? std::string() : ": " + capture.text()));
-  }
-  if (!urdf->getRoot()) fail(source, lines.robot(), "URDF has no root link");
+  const BreakLinkCycles break_cycles{urdf};
+  parseWithUrdfdom(xml, source, lines, urdf);
+  const TreeOrder order = treeOrder(*urdf, source, lines);
 
   RobotModel model;
   model.source_ = source;
   model.robot_line_ = lines.robot();
   std::map<std::string, int> link_index;
-
-  // Depth-first from the root, children in NAO order: parents always come
-  // before their children in links_ and joints_.
-  std::vector<urdf::LinkConstSharedPtr> link_order;
-  std::vector<urdf::JointConstSharedPtr> joint_order;
-  std::vector<urdf::LinkConstSharedPtr> stack{urdf->getRoot()};
-  while (!stack.empty()) {
-    urdf::LinkConstSharedPtr l = stack.back();
-    stack.pop_back();
-    link_order.push_back(l);
-    if (l->parent_joint) joint_order.push_back(l->parent_joint);
-    std::vector<urdf::JointSharedPtr> kids = l->child_joints;
-    std::sort(kids.begin(), kids.end(), [](const auto& a, const auto& b) {
-      const double ka = orderKey(a->name), kb = orderKey(b->name);
-      return ka != kb ? ka < kb : a->name < b->name;
-    });
-    // Pushed in reverse so the smallest key is visited first.
-    for (auto it = kids.rbegin(); it != kids.rend(); ++it) {
-      urdf::LinkConstSharedPtr child = urdf->getLink((*it)->child_link_name);
-      if (!child) fail(source, lines.joint((*it)->name), "joint '" + (*it)->name + "' has unknown child link");
-      stack.push_back(child);
-    }
-  }
-  if (link_order.size() != urdf->links_.size())
-    fail(source, lines.robot(), "links not connected to the root link '" + urdf->getRoot()->name + "'");
-
-  for (const auto& l : link_order) {
-    LinkSpec spec;
-    spec.name = l->name;
-    const std::string where = "link '" + l->name + "'";
-    auto at = [&](const char* path) { return lines.linkChild(l->name, path); };
-    if (!l->inertial) fail(source, lines.link(l->name), where + " has no <inertial> (mass and inertia are required)");
-    if (!lines.linkHas(l->name, "inertial/mass"))
-      fail(source, at("inertial"), where + " has no <mass> in its <inertial>");
-    spec.mass = l->inertial->mass;
-    if (!std::isfinite(spec.mass) || spec.mass < kMinMass || spec.mass > kMaxMass)
-      fail(source, at("inertial/mass"), where + " <mass value> " + num(spec.mass) + " kg (must be in [" +
-                                            num(kMinMass) + ", " + num(kMaxMass) + "] kg)");
-    const std::string bad_origin = badPose(l->inertial->origin);
-    if (!bad_origin.empty()) fail(source, at("inertial/origin"), where + " <inertial><origin>: " + bad_origin);
-    spec.inertial_origin = toPose(l->inertial->origin);
-    const auto& in = *l->inertial;
-    if (!lines.linkHas(l->name, "inertial/inertia"))
-      fail(source, at("inertial"), where + " has no <inertia> in its <inertial>");
-    spec.inertia << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
-    if (!spec.inertia.allFinite()) fail(source, at("inertial/inertia"), where + " <inertia> has a value that is not finite");
-    if ((spec.inertia.array().abs() > kMaxInertia).any())
-      fail(source, at("inertial/inertia"), where + " <inertia> has a value beyond " + num(kMaxInertia) + " kg*m^2");
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(spec.inertia);
-    const Eigen::Vector3d ev = eig.eigenvalues();  // ascending
-    if (ev.minCoeff() < kMinInertia)
-      fail(source, at("inertial/inertia"), where + " <inertia> is not positive definite (principal moments " +
-                                               vec(ev) + " kg*m^2; each must be >= " + num(kMinInertia) + ")");
-    // A rigid body's principal moments obey the triangle inequality.
-    if (ev(0) + ev(1) < ev(2) * (1 - 1e-6))
-      fail(source, at("inertial/inertia"), where + " <inertia> is not a rigid body's (principal moments " +
-                                               vec(ev) + " kg*m^2 break I1 + I2 >= I3)");
-    // urdfdom drops a <collision> it cannot parse; count them ourselves.
-    size_t ci = 0;
-    for (const auto& c : l->collision_array) {
-      if (!c) continue;
-      spec.collisions.push_back(toShape(c->geometry, c->origin, true, source, lines.collision(l->name, ci), l->name));
-      ++ci;
-    }
-    if (spec.collisions.size() != lines.collisionCount(l->name))
-      fail(source, lines.collision(l->name, spec.collisions.size()),
-           where + ": a <collision> could not be read (bad or missing <geometry> or <origin>)");
-    for (const auto& v : l->visual_array) {
-      if (!v) continue;
-      ShapeSpec s = toShape(v->geometry, v->origin, false, source, at("visual"), l->name);
-      urdf::MaterialSharedPtr mat = v->material;
-      if (!mat && !v->material_name.empty()) mat = urdf->getMaterial(v->material_name);
-      if (mat) {
-        s.rgba = Eigen::Vector4d(mat->color.r, mat->color.g, mat->color.b, mat->color.a);
-        if (!s.rgba.allFinite()) s.rgba = Eigen::Vector4d(0.8, 0.8, 0.8, 1.0);
-        s.rgba = s.rgba.cwiseMax(0.0).cwiseMin(1.0);
-      }
-      spec.visuals.push_back(s);
-    }
+  for (const auto& l : order.links) {
+    LinkSpec spec = readLink(*urdf, *l, source, lines);
     link_index[l->name] = static_cast<int>(model.links_.size());
     model.links_.push_back(std::move(spec));
   }
   model.root_ = 0;
-
-  for (const auto& j : joint_order) {
-    const std::string where = "joint '" + j->name + "'";
-    auto at = [&](const char* path) { return lines.jointChild(j->name, path); };
-    if (j->type != urdf::Joint::REVOLUTE) {
-      fail(source, lines.joint(j->name), where + " is not a hinge (type must be \"revolute\"; " +
-                       (j->type == urdf::Joint::CONTINUOUS ? "continuous joints have no limits)" : "got another type)"));
-    }
-    if (!j->limits) fail(source, lines.joint(j->name), where + " has no <limit>");
-    JointSpec spec;
-    spec.name = j->name;
-    spec.line = lines.joint(j->name);
-    spec.mimic_line = at("mimic");
-    spec.parent_link = link_index.at(j->parent_link_name);
-    spec.child_link = link_index.at(j->child_link_name);
-    const std::string bad_origin = badPose(j->parent_to_joint_origin_transform);
-    if (!bad_origin.empty()) fail(source, at("origin"), where + " <origin>: " + bad_origin);
-    spec.origin = toPose(j->parent_to_joint_origin_transform);
-    spec.axis = Eigen::Vector3d(j->axis.x, j->axis.y, j->axis.z);
-    // Each component bounded before the norm, so the norm cannot overflow.
-    if (!spec.axis.allFinite() || (spec.axis.array().abs() > kMaxAxisComponent).any() || spec.axis.norm() < 1e-6)
-      fail(source, at("axis"), where + " <axis xyz> " + vec(spec.axis) +
-                                   " must be a non-zero finite direction (components within 1e6)");
-    spec.axis.normalize();
-    spec.lower = j->limits->lower;
-    spec.upper = j->limits->upper;
-    spec.max_velocity = j->limits->velocity;
-    spec.max_effort = j->limits->effort;
-    const int limit_line = at("limit");
-    if (!std::isfinite(spec.lower) || !std::isfinite(spec.upper) || spec.lower > spec.upper)
-      fail(source, limit_line, where + ": <limit> lower (" + num(spec.lower) + ") > upper (" + num(spec.upper) +
-                                   ") rad, or not finite");
-    if (spec.lower < -M_PI || spec.upper > M_PI)
-      fail(source, limit_line, where + ": <limit> must lie within [-pi, pi] rad");
-    if (!(spec.max_velocity > 0) || !(spec.max_velocity <= kMaxVelocity))
-      fail(source, limit_line, where + ": <limit velocity> " + num(spec.max_velocity) + " must be in (0, " +
-                                   num(kMaxVelocity) + "] rad/s");
-    if (!(spec.max_effort > 0) || !(spec.max_effort <= kMaxEffort))
-      fail(source, limit_line, where + ": <limit effort> " + num(spec.max_effort) + " must be in (0, " +
-                                   num(kMaxEffort) + "] N*m");
-    if (j->mimic) {
-      spec.mimic = j->mimic->joint_name;
-      spec.mimic_multiplier = j->mimic->multiplier;
-      if (!std::isfinite(spec.mimic_multiplier) || std::fabs(spec.mimic_multiplier) > kMaxMimicMultiplier)
-        fail(source, at("mimic"), where + " <mimic multiplier> " + num(spec.mimic_multiplier) + " must be within +-" +
-                                      num(kMaxMimicMultiplier));
-    }
+  for (const auto& j : order.joints) {
+    JointSpec spec = readJoint(*j, link_index, source, lines);
     model.links_[spec.child_link].parent_joint = static_cast<int>(model.joints_.size());
     model.joints_.push_back(std::move(spec));
   }
-
-  for (const auto& j : model.joints_) {
-    if (!j.mimic) continue;
-    const int target = model.jointIndex(*j.mimic);
-    if (target < 0)
-      fail(source, j.mimic_line, "missing joint '" + *j.mimic + "' (joint '" + j.name + "' mimics it)");
-    if (model.joints_[target].mimic)
-      fail(source, j.mimic_line, "joint '" + j.name + "' mimics '" + *j.mimic + "', which is itself a mimic");
-  }
-
+  checkMimics(model, source);
   return model;
 }
 
