@@ -53,8 +53,7 @@ void Runner::startCameras() {
 #ifdef SIMSWIFT_HAVE_CAMERAS
   const CameraSpec& cs = scenario_.camera;
   camera::RobotCamerasConfig cc;
-  cc.width = cs.width;
-  cc.height = cs.height;
+  for (int c = 0; c < al::kNumCameras; ++c) cc.resolution[c] = cs.resolution[c];
   cc.lens = camerasLens();
   cameras_ = std::make_unique<camera::RobotCameras>(*world_, cc);
   std::vector<int> teams;
