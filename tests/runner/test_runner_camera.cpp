@@ -234,3 +234,25 @@ TEST(RunnerCamera, ScenarioCameraKeys) {
 }  // namespace
 
 #endif  // SIMSWIFT_HAVE_CAMERAS
+
+// A build without OSMesa has the null cameras (sim/runner/RunCameras.hpp):
+// a scenario asking for rendering is refused before the first tick.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "sim/runner/Runner.hpp"
+
+TEST(RunnerNullCameras, AScenarioAskingForCamerasIsRefused) {
+  using simswift::runner::Runner;
+  if (Runner::camerasAvailable()) GTEST_SKIP() << "this build renders (SIMSWIFT_CAMERAS=ON)";
+  Runner r(simswift::runner::Scenario::parse(
+      "duration: 0.1\ncamera: {enabled: on}\nrobots:\n  - {team: 0, player: 1}\n", "nullcam.yaml"));
+  try {
+    r.start();
+    ADD_FAILURE() << "started";
+  } catch (const simswift::runner::RunnerError& e) {
+    EXPECT_NE(std::string(e.what()).find("built without cameras"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(r.framesDumped(), 0);
+}
