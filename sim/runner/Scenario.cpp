@@ -507,7 +507,8 @@ std::optional<YamlReader> readCamera(const YamlReader& top, CameraSpec& camera) 
       camera.resolution[1] = r.enumChoice("bottom", camera.resolution[1], cameraResolutions());
       r.finish();
     } else if (c->has("resolution")) {
-      camera.resolution[0] = camera.resolution[1] = c->enumChoice("resolution", camera.resolution[0], cameraResolutions());
+      const common::libagent::ImageSize both = c->enumChoice("resolution", camera.resolution[0], cameraResolutions());
+      camera.resolution[0] = camera.resolution[1] = both;
     }
     if (auto o = c->optionalMap("overview")) {
       CameraSpec::Overview& ov = camera.overview;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/libagent/CameraImages.hpp"
@@ -95,7 +96,8 @@ struct RobotSpec {
 // Camera rendering. Off unless a scenario or flag asks.
 struct CameraSpec {
   bool enabled = false;            // robot cameras into each robot's CameraImages
-  // Each robot camera's size (index 0 top, 1 bottom; cameraResolutions()).
+  // Each robot camera's size (index 0 top, 1 bottom; cameraResolutions();
+  // ImageSize's default, 640x480).
   common::libagent::ImageSize resolution[common::libagent::kNumCameras];
   std::string dump_dir;            // --dump-frames DIR (implies rendering); empty = none
   int dump_every = 1;              // --every N: camera frames between dumps
