@@ -142,9 +142,13 @@ class RunCommand {
     cmd_->add_option("--overview", overview_dir_, "whole-field overview PNGs in DIR (+ DIR/overview.mp4 with ffmpeg)")
         ->type_name("DIR")
         ->transform(cli::nonEmpty());
-    cmd_->add_option("--resolution", resolution_, "robot camera resolution: 640x480 (default) or 1280x960")
+    std::vector<std::string> sizes;
+    for (const auto& [name, size] : simswift::runner::cameraResolutions()) sizes.push_back(name);
+    cmd_->add_option("--resolution", resolution_,
+                     "both robot cameras' resolution: 640x480 (default) or 1280x960\n"
+                     "(each its own: the scenario's camera: {resolution: {top: WxH, bottom: WxH}})")
         ->type_name("WxH")
-        ->transform(cli::oneOf({"640x480", "1280x960"}));
+        ->transform(cli::oneOf(sizes));
     CLI::Option* findball = cmd_->add_option("--findball-view", findball_dir_,
                                              "FindBall view PNGs of every behaving robot in DIR/<robot>/\n"
                                              "(+ DIR/<robot>.mp4 with ffmpeg)")
@@ -215,10 +219,9 @@ void RunCommand::applyOverrides(simswift::runner::Scenario& sc) const {
   if (field_) sc.field_path = absolute(*field_);
   if (dump_dir_) sc.camera.dump_dir = *dump_dir_;
   if (every_) sc.camera.dump_every = *every_;
-  if (resolution_) {
-    sc.camera.width = *resolution_ == "640x480" ? 640 : 1280;
-    sc.camera.height = *resolution_ == "640x480" ? 480 : 960;
-  }
+  if (resolution_)  // both cameras (oneOf above checked the name)
+    for (const auto& [name, size] : cameraResolutions())
+      if (name == *resolution_) sc.camera.resolution[0] = sc.camera.resolution[1] = size;
   if (overview_dir_) {
     sc.camera.overview.enabled = true;
     sc.camera.overview.dir = *overview_dir_;

@@ -6,11 +6,13 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "agent/behaviour/Geometry.hpp"
 #include "common/field/FieldFacts.hpp"
+#include "common/nao/NaoFacts.hpp"
 
 namespace agent::behaviour {
 
@@ -227,7 +229,12 @@ struct SkillConfig {
   double scan_pitch = 0.05;        // rad, + = down
   double head_yaw_limit = 2.0;     // rad, kept inside HeadYaw's +-2.0857
   double head_speed_limit = 8.0;   // rad/s, inside HeadYaw's 8.27 rad/s
-  double camera_hfov = 1.0629;     // rad (60.9 deg)
+  // rad; unset: the lens of the body the program drives, which the robot
+  // program sets at start (a V5's 60.9 deg, a V6's 56.3 deg: NaoFacts.hpp).
+  std::optional<double> camera_hfov;
+  double cameraHfov() const {  // the V5's where no program has set it (tests, tools)
+    return camera_hfov.value_or(common::nao::kV5CameraLens.horizontal_fov);
+  }
   double scan_lead = 1.25;         // head speed command / sweep speed (keeps up with the target)
   double head_pitch_speed = 1.0;   // rad/s while scanning
   // Looking at a ball: pitch = atan(head_height / distance) - look_pitch_offset,

@@ -120,7 +120,7 @@ void readSkills(const YamlReader& r, ab::SkillConfig& k) {
   num(r, "scan_pitch", k.scan_pitch, Range::closed(-0.67, 0.51));
   num(r, "head_yaw_limit", k.head_yaw_limit, Range::closed(0, 2.0857));
   num(r, "head_speed_limit", k.head_speed_limit, Range::closed(0.01, 8.27));
-  num(r, "camera_hfov", k.camera_hfov, Range::closed(0.1, 3.0));
+  if (r.has("camera_hfov")) k.camera_hfov = r.number("camera_hfov", Range::closed(0.1, 3.0));  // else the body's
   num(r, "scan_lead", k.scan_lead, Range::closed(1, 10));
   num(r, "head_pitch_speed", k.head_pitch_speed, Range::closed(0.01, 8.27));
   num(r, "head_height", k.head_height, Range::closed(100, 1000));

@@ -7,7 +7,7 @@ namespace agent::behaviour {
 double Spin::angle() const {
   if (s_.spin_angle > 0) return s_.spin_angle;
   const double scanned = std::clamp(s_.scan_yaw, 0.0, s_.head_yaw_limit);
-  return std::max(0.0, 2 * kPi - scanned - s_.camera_hfov);
+  return std::max(0.0, 2 * kPi - scanned - s_.cameraHfov());
 }
 
 Spin::Output Spin::tick(const BehaviourInputs& in) {

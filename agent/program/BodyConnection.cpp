@@ -19,6 +19,7 @@ class LibagentBody final : public BodyConnection {
   common::libagent::AgentConnection& camera() override { return c_; }
   bool shutdown() const override { return c_.shutdown(); }
   bool simulatorAlive() const override { return c_.simulatorAlive(); }
+  common::nao::CameraLens cameraLens() const override { return common::nao::kV5CameraLens; }
 
  private:
   common::libagent::AgentConnection c_;
@@ -42,6 +43,7 @@ class LolaBody final : public BodyConnection {
   // closes); a killed simulator only closes the socket: its pid tells.
   bool shutdown() const override { return camera_.shutdown(); }
   bool simulatorAlive() const override { return camera_.simulatorAlive(); }
+  common::nao::CameraLens cameraLens() const override { return common::nao::kV6CameraLens; }
 
  private:
   common::lola::LolaConnection motion_;

@@ -13,6 +13,7 @@
 
 #include "common/libagent/AgentConnection.hpp"
 #include "common/lola/LolaConnection.hpp"
+#include "common/nao/NaoFacts.hpp"
 
 namespace agent::program {
 
@@ -40,6 +41,9 @@ class BodyConnection {
   // The run is over (set by the body side), or a body attached by name has gone.
   virtual bool shutdown() const = 0;
   virtual bool simulatorAlive() const = 0;
+  // The cameras' lens of the body this connection drives: libagent's block
+  // is a NAO V5's, LoLA's socket a V6's (common/nao/NaoFacts.hpp).
+  virtual common::nao::CameraLens cameraLens() const = 0;
 };
 
 std::unique_ptr<BodyConnection> libagentBody(common::libagent::AgentConnection connection);

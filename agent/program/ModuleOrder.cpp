@@ -7,7 +7,7 @@
 namespace agent::program {
 
 void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const common::libagent::CameraImages* images,
-                   framework::ModuleSchedule& s) {
+                   const common::nao::CameraLens& lens, framework::ModuleSchedule& s) {
   using T = framework::ThreadId;
   using framework::SectionId;
   s.providedByProgram(T::Motion, SectionId::Sensors);
@@ -30,8 +30,12 @@ void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const comm
   s.add(T::Perception, std::make_unique<localisation::LocalisationModule>(lc));
   s.add(T::Perception, std::make_unique<perception::BallTrackerModule>(cfg.ball));
   s.add(T::Perception, std::make_unique<TeamReceiveModule>(cfg.team, cfg.player));
+  if (cfg.behaviour_config && !cfg.behaviour_config->behaviour.skills.camera_hfov)
+    cfg.behaviour_config->behaviour.skills.camera_hfov = lens.horizontal_fov;  // the body's own lens
   if (cfg.behaviour)
     s.add(T::Perception, std::move(cfg.behaviour));
+  else if (cfg.behaviour_config)
+    s.add(T::Perception, std::make_unique<behaviour::BehaviourModule>(*cfg.behaviour_config));
   else if (!cfg.actions.empty())
     s.add(T::Perception, std::make_unique<behaviour::ActionsBehaviour>(std::move(cfg.actions)));
   s.add(T::Perception, std::make_unique<TeamSendModule>(cfg.team, cfg.player));

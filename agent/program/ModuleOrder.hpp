@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "common/libagent/SimExtensions.hpp"
+#include "agent/behaviour/BehaviourModule.hpp"
 #include "agent/localisation/LocalisationModule.hpp"
 #include "agent/motion/ActionScript.hpp"
 #include "agent/motion/ActionMotion.hpp"
@@ -42,7 +43,10 @@ struct ProgramConfig {
   motion::MotionConfig motion;  // the Motion module's (composeProgram's motion_config)
   // Behaviour: a scenario's timed body actions (empty and no `behaviour`: none).
   std::vector<motion::ActionStep> actions;
-  std::unique_ptr<framework::Module> behaviour;  // a behaviour module (wins over actions)
+  // One of agent/behaviour's, built at start for the body the program
+  // drives (its lens: BehaviourModule's camera_hfov unless set).
+  std::optional<behaviour::BehaviourModuleConfig> behaviour_config;
+  std::unique_ptr<framework::Module> behaviour;  // a test's or tool's module (wins over the above and actions)
   std::unique_ptr<framework::PerceptionStep> perception_step;
   localisation::LocalisationModuleConfig localisation;
   perception::BallTrackerConfig ball;
@@ -57,8 +61,10 @@ struct ProgramConfig {
 };
 
 // Fills `schedule` in the standard order. `effector` sends the actuators;
-// `images` are the rendered camera images a PerceptionStep sees (null: none).
+// `images` are the rendered camera images a PerceptionStep sees (null: none);
+// `lens` is the body's (BodyConnection::cameraLens): cfg.behaviour_config's
+// camera_hfov, if unset, becomes its horizontal field of view.
 void buildSchedule(ProgramConfig& cfg, EffectorModule::Sink effector, const common::libagent::CameraImages* images,
-                   framework::ModuleSchedule& schedule);
+                   const common::nao::CameraLens& lens, framework::ModuleSchedule& schedule);
 
 }  // namespace agent::program

@@ -55,6 +55,7 @@ void RobotProgram::setMotion(std::unique_ptr<framework::MotionGenerator> motion)
 
 void RobotProgram::start(Threading threading) {
   buildSchedule(cfg_, [this](const blackboard::ActuatorRequest& a) { pending_ = a.joints; }, conn_->camera().images(),
+                conn_->cameraLens(),
                 schedule_);
   schedule_.check();  // throws ModuleError before any thread starts
   if (cfg_.extensions) team_link_ = std::make_unique<comms::TeamLinkTransport>(&cfg_.extensions->team);

@@ -104,6 +104,11 @@ class RobotProgram {
   int64_t perceptionFrames() const { return perception_frames_.load(); }
   // The camera images the Perception thread reads (null: no rendering).
   const common::libagent::CameraImages* images() const { return conn_->camera().images(); }
+  // The behaviour module's configuration (agent/behaviour's), its camera
+  // field of view the body's lens after start(); null without one.
+  const behaviour::BehaviourConfig* behaviourConfig() const {
+    return cfg_.behaviour_config ? &cfg_.behaviour_config->behaviour : nullptr;
+  }
   // Attached by name: the simulator process has gone (killed) without ending the run.
   bool simulatorGone() const { return !conn_->shutdown() && !conn_->simulatorAlive(); }
   // First exception a thread died of (empty if none).

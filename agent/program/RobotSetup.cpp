@@ -48,7 +48,7 @@ ProgramConfig composeProgram(const RobotSetup& s, std::unique_ptr<framework::Mot
     bc.walk.max_forward = pc.motion.walk.max_forward;
     bc.walk.max_left = pc.motion.walk.max_left;
     bc.walk.max_turn = pc.motion.walk.max_turn;
-    pc.behaviour = std::make_unique<behaviour::BehaviourModule>(bc);
+    pc.behaviour_config = bc;  // the module is built at start, for the body's lens
     if (s.start)  // m -> mm (the blackboard's)
       pc.localisation.known_start = blackboard::FieldPose{s.start->x * 1000.0, s.start->y * 1000.0, s.start->theta};
   } else if (!s.actions.empty()) {

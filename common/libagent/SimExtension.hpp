@@ -28,7 +28,8 @@
 namespace common::libagent {
 
 constexpr uint32_t kExtensionMagic = 0x53575845;  // "SWXE"
-constexpr uint32_t kExtensionVersion = 4;  // 4: camera hand-over sequence numbers
+// 4: camera hand-over sequence numbers; 5: CameraImages has a size per camera.
+constexpr uint32_t kExtensionVersion = 5;
 
 // Out-of-range actuators_latest: "no command since the last one consumed".
 // A libagent Effector then picks actuators_read's slot (its slot loop stops

@@ -36,7 +36,8 @@ void FrameDumper::write(int team, int player, int camera, int64_t frame_index, c
 void FrameDumper::dump(int team, int player, const common::libagent::CameraImages& images) {
   if (!wants(images.frame_index)) return;
   for (int c = 0; c < common::libagent::kNumCameras; ++c)
-    if (images.valid[c]) write(team, player, c, images.frame_index, images.rgb[c], images.width, images.height);
+    if (images.valid[c]) write(team, player, c, images.frame_index, images.rgb[c], images.size[c].width,
+                                   images.size[c].height);
 }
 
 }  // namespace simswift::camera

@@ -13,20 +13,26 @@ constexpr double kCameraHz = 30.0;  // NAO camera frame rate (simulated time)
 }  // namespace
 
 RobotCameras::RobotCameras(const World& world, RobotCamerasConfig config)
-    : scene_(world.field(), std::move(config.scene)), width_(config.width), height_(config.height), lens_(config.lens) {
-  setResolution(config.width, config.height);
+    : scene_(world.field(), std::move(config.scene)), lens_(config.lens) {
+  for (int c = 0; c < common::libagent::kNumCameras; ++c)
+    setResolution(static_cast<CameraId>(c), config.resolution[c]);
   for (int i = 0; i < world.numRobots(); ++i) scene_.preloadModel(world.robot(i).model());
 }
 
 void RobotCameras::setTeams(std::vector<int> team_of_robot) { teams_ = std::move(team_of_robot); }
 
-void RobotCameras::setResolution(int width, int height) {
-  if (width <= 0 || height <= 0 || width % 2 != 0 || width > common::libagent::kMaxImageWidth ||
-      height > common::libagent::kMaxImageHeight)
-    throw std::invalid_argument("RobotCameras: resolution " + std::to_string(width) + "x" +
-                                std::to_string(height) + " is not an even width up to 1280x960");
-  width_ = width;
-  height_ = height;
+void RobotCameras::setResolution(CameraId id, common::libagent::ImageSize size) {
+  if (id != kTop && id != kBottom) throw std::invalid_argument("RobotCameras: no camera " + std::to_string(id));
+  if (size.width <= 0 || size.height <= 0 || size.width % 2 != 0 || size.width > common::libagent::kMaxImageWidth ||
+      size.height > common::libagent::kMaxImageHeight)
+    throw std::invalid_argument("RobotCameras: resolution " + std::to_string(size.width) + "x" +
+                                std::to_string(size.height) + " is not an even width up to 1280x960");
+  resolution_[id] = size;
+}
+
+void RobotCameras::setResolution(common::libagent::ImageSize size) {
+  setResolution(kTop, size);
+  setResolution(kBottom, size);
 }
 
 int RobotCameras::headLink(const RobotModel& model) {
@@ -54,7 +60,8 @@ void RobotCameras::syncScene(const World& world) {
 
 CameraModel RobotCameras::camera(const World& world, int robot, CameraId id) const {
   const RobotBody& body = world.robot(robot);
-  return CameraModel::naoCamera(body.linkPose(headLink(body.model())), id, width_, height_, lens_);
+  const common::libagent::ImageSize size = resolution_[id];
+  return CameraModel::naoCamera(body.linkPose(headLink(body.model())), id, size.width, size.height, lens_);
 }
 
 CameraView RobotCameras::view(const World& world, int robot, CameraId id) const {
@@ -72,14 +79,13 @@ void RobotCameras::fillImages(const World& world, int robot, common::libagent::C
   syncScene(world);
   const double t = world.time();  // s
   out.magic = common::libagent::kCameraImagesMagic;
-  out.width = width_;
-  out.height = height_;
   out.frame_index = frame_index >= 0 ? frame_index : static_cast<int64_t>(std::floor(t * kCameraHz + 1e-9));
   out.sim_time_us = sim_time_us >= 0 ? sim_time_us : static_cast<int64_t>(std::llround(t * 1e6));
   for (int c = 0; c < common::libagent::kNumCameras; ++c) {
     out.valid[c] = 0;
+    out.size[c] = resolution_[c];
     renderer_.render(scene_, view(world, robot, static_cast<CameraId>(c)), out.rgb[c]);
-    rgbToYuyv(out.rgb[c], width_, height_, out.yuv422[c]);
+    rgbToYuyv(out.rgb[c], resolution_[c].width, resolution_[c].height, out.yuv422[c]);
     out.valid[c] = 1;
   }
 }

@@ -23,7 +23,8 @@
 namespace simswift::camera {
 
 struct RobotCamerasConfig {
-  int width = 640, height = 480;  // 640x480 (default) or 1280x960
+  // Per camera (index CameraId): 640x480 (default) or 1280x960.
+  common::libagent::ImageSize resolution[common::libagent::kNumCameras];
   common::nao::CameraLens lens = common::nao::kV5CameraLens;  // the robots' (one kind per world)
   SceneOptions scene;
 };
@@ -34,10 +35,12 @@ class RobotCameras {
 
   // Team of each world robot (index = World robot index); unlisted = team 0.
   void setTeams(std::vector<int> team_of_robot);
-  // 640x480 or 1280x960 (anything up to 1280x960 with an even width works).
-  void setResolution(int width, int height);
-  int width() const { return width_; }
-  int height() const { return height_; }
+  // Camera `id`'s image size: 640x480 or 1280x960 (anything up to 1280x960
+  // with an even width works).
+  void setResolution(CameraId id, common::libagent::ImageSize size);
+  // Both cameras at one size.
+  void setResolution(common::libagent::ImageSize size);
+  common::libagent::ImageSize resolution(CameraId id) const { return resolution_[id]; }
 
   // Copies robot link poses and the ball into the scene.
   void syncScene(const World& world);
@@ -48,7 +51,7 @@ class RobotCameras {
   CameraView view(const World& world, int robot, CameraId id) const;
 
   // Syncs the scene, renders both cameras of `robot` and fills `out`
-  // (RGB and YUYV, valid flags, size, frame index, time). frame_index < 0
+  // (RGB and YUYV, valid flags, each camera's size, frame index, time). frame_index < 0
   // means "the 30 Hz frame at the world's time"; sim_time_us < 0 means the
   // world's time.
   void fillImages(const World& world, int robot, common::libagent::CameraImages& out,
@@ -64,7 +67,7 @@ class RobotCameras {
   Scene scene_;
   Renderer renderer_;
   std::vector<int> teams_;
-  int width_, height_;
+  common::libagent::ImageSize resolution_[common::libagent::kNumCameras];
   common::nao::CameraLens lens_;
 };
 

@@ -15,18 +15,6 @@
 #include "sim/runner/Bodies.hpp"
 #include "sim/vision/VisionOracle.hpp"
 #include "sim/runner/Tracer.hpp"
-#ifdef SIMSWIFT_HAVE_CAMERAS
-#include "sim/camera/FrameDumper.hpp"
-#include "sim/camera/Overview.hpp"
-#include "sim/camera/RobotCameras.hpp"
-#else
-// Built without cameras: the members stay null, but their types must be complete.
-namespace simswift::camera {
-class RobotCameras {};
-class FrameDumper {};
-class OverviewCamera {};
-}  // namespace simswift::camera
-#endif
 
 namespace simswift::runner {
 
@@ -41,79 +29,29 @@ Runner::Runner(Scenario scenario)
 
 Runner::~Runner() { shutdown(); }
 
-bool Runner::camerasAvailable() {
-#ifdef SIMSWIFT_HAVE_CAMERAS
-  return true;
-#else
-  return false;
-#endif
-}
+bool Runner::camerasAvailable() { return runner::camerasAvailable(); }
 
 void Runner::startCameras() {
-#ifdef SIMSWIFT_HAVE_CAMERAS
-  const CameraSpec& cs = scenario_.camera;
-  camera::RobotCamerasConfig cc;
-  cc.width = cs.width;
-  cc.height = cs.height;
-  cc.lens = camerasLens();
-  cameras_ = std::make_unique<camera::RobotCameras>(*world_, cc);
-  std::vector<int> teams;
+  std::vector<int> colours;
   // Jerseys by side (colour), whatever the SPL team numbers.
-  for (auto& r : robots_) teams.push_back(static_cast<int>(r->spec.colour));
-  cameras_->setTeams(teams);
-  if (!cs.dump_dir.empty()) dumper_ = std::make_unique<camera::FrameDumper>(cs.dump_dir, cs.dump_every);
-  if (cs.overview.enabled) {
-    camera::OverviewConfig oc;
-    using M = CameraSpec::Overview::Mode;
-    oc.mode = cs.overview.mode == M::Fixed   ? camera::OverviewConfig::Mode::Fixed
-              : cs.overview.mode == M::Robot ? camera::OverviewConfig::Mode::FollowRobot
-                                             : camera::OverviewConfig::Mode::FollowBall;
-    oc.robot = cs.overview.robot;
-    oc.rate_hz = cs.overview.rate_hz;
-    oc.width = cs.overview.width;
-    oc.height = cs.overview.height;
-    oc.dir = cs.overview.dir;
-    overview_ = std::make_unique<camera::OverviewCamera>(oc);
-  }
-#endif
+  for (auto& r : robots_) colours.push_back(static_cast<int>(r->spec.colour));
+  cameras_ = makeRunCameras(*world_, scenario_.camera, camerasLens(), std::move(colours));
 }
 
 // Renders robot `index`'s cameras for this frame (if anyone wants them) and
 // marks the frame's images valid.
 void Runner::renderFrame(int64_t frame, int64_t t_us, al::CameraFrame& f, Robot& r, int index) {
-#ifdef SIMSWIFT_HAVE_CAMERAS
   if (!cameras_ || !r.images) return;
-  const bool dump = dumper_ && dumper_->wants(frame);
-  if (!r.perception && !dump) return;
-  cameras_->fillImages(*world_, index, *r.images, frame, t_us);
-  f.images_valid = 1;
-  if (dump) dumper_->dump(r.spec.team, r.spec.player, *r.images);
-#endif
+  if (cameras_->renderRobot(*world_, index, r.spec.team, r.spec.player, r.perception, *r.images, frame, t_us))
+    f.images_valid = 1;
 }
 
-int64_t Runner::framesDumped() const {
-#ifdef SIMSWIFT_HAVE_CAMERAS
-  return dumper_ ? dumper_->written() : 0;
-#else
-  return 0;
-#endif
-}
+int64_t Runner::framesDumped() const { return cameras_ ? cameras_->framesDumped() : 0; }
 
-int64_t Runner::overviewFrames() const {
-#ifdef SIMSWIFT_HAVE_CAMERAS
-  return overview_ ? overview_->frames() : 0;
-#else
-  return 0;
-#endif
-}
+int64_t Runner::overviewFrames() const { return cameras_ ? cameras_->overviewFrames() : 0; }
 
 std::string Runner::finishOverview() {
-#ifdef SIMSWIFT_HAVE_CAMERAS
-  if (overview_ && !overview_finished_) {
-    overview_finished_ = true;
-    overview_message_ = overview_->finish(overview_->config().dir + "/overview.mp4").message;
-  }
-#endif
+  if (cameras_) overview_message_ = cameras_->finishOverview();
   return overview_message_;
 }
 
@@ -338,9 +276,7 @@ void Runner::handleWorldEvents() {
 }
 
 void Runner::captureOverview() {
-#ifdef SIMSWIFT_HAVE_CAMERAS
-  if (overview_) overview_->maybeCapture(*cameras_, *world_);
-#endif
+  if (cameras_) cameras_->captureOverview(*world_);
 }
 
 void Runner::publishSensors(int64_t tick, int64_t t_us) {

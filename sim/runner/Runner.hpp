@@ -83,17 +83,12 @@
 #include "sim/network/TeamNetwork.hpp"
 #include "sim/runner/Errors.hpp"
 #include "sim/runner/FallDetector.hpp"
+#include "sim/runner/RunCameras.hpp"
 #include "sim/runner/RunStats.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/views/FindBallRecorder.hpp"
 #include "sim/world/World.hpp"
-
-namespace simswift::camera {
-class RobotCameras;
-class FrameDumper;
-class OverviewCamera;
-}  // namespace simswift::camera
 
 namespace simswift::vision {
 class VisionOracle;
@@ -172,7 +167,7 @@ class Runner {
   void placeRobot(int i, double x, double y, double theta);
 
   // Cameras (scenario camera:, --dump-frames, --overview). Rendering needs a
-  // build with SIMSWIFT_HAVE_CAMERAS; start() throws RunnerError otherwise.
+  // build with cameras (RunCameras.hpp); start() throws RunnerError otherwise.
   static bool camerasAvailable();
   // Robot i's images block (null unless its cameras are rendered).
   const common::libagent::CameraImages* images(int i) const { return robots_[i]->images; }
@@ -243,10 +238,7 @@ class Runner {
   bool stopped_ = false;
   int64_t last_frame_ = -1;
   std::unique_ptr<vision::VisionOracle> vision_;  // observations in every camera frame
-  std::unique_ptr<camera::RobotCameras> cameras_;
-  std::unique_ptr<camera::FrameDumper> dumper_;
-  std::unique_ptr<camera::OverviewCamera> overview_;
-  bool overview_finished_ = false;
+  std::unique_ptr<RunCameras> cameras_;  // null unless the scenario renders
   std::string overview_message_;
   bool free_running_ = false;
   void renderFrame(int64_t frame, int64_t t_us, common::libagent::CameraFrame& f, Robot& r, int index);

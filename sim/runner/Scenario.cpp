@@ -500,15 +500,32 @@ void readRun(const YamlReader& top, Scenario& sc) {
   if (sc.program_logs.empty()) top.fail("program_logs", "must name a folder");
 }
 
+}  // namespace
+
+const std::vector<std::pair<std::string, common::libagent::ImageSize>>& cameraResolutions() {
+  static const std::vector<std::pair<std::string, common::libagent::ImageSize>> sizes = {
+      {"640x480", {640, 480}}, {"1280x960", {1280, 960}}};
+  return sizes;
+}
+
+namespace {
+
 // camera: the robots' cameras and the overview. Returns the overview's
 // reader, kept for errors about overview.robot once the robots are known.
 std::optional<YamlReader> readCamera(const YamlReader& top, CameraSpec& camera) {
   std::optional<YamlReader> overview_reader;
   if (auto c = top.optionalMap("camera")) {
     camera.enabled = c->boolean("enabled", camera.enabled);
-    const bool small = c->enumChoice("resolution", camera.width == 640, {{"640x480", true}, {"1280x960", false}});
-    camera.width = small ? 640 : 1280;
-    camera.height = small ? 480 : 960;
+    // resolution: WxH sets both cameras; {top: WxH, bottom: WxH} each.
+    if (c->has("resolution") && c->node()["resolution"].IsMap()) {
+      const YamlReader r = c->map("resolution");
+      camera.resolution[0] = r.enumChoice("top", camera.resolution[0], cameraResolutions());
+      camera.resolution[1] = r.enumChoice("bottom", camera.resolution[1], cameraResolutions());
+      r.finish();
+    } else if (c->has("resolution")) {
+      const common::libagent::ImageSize both = c->enumChoice("resolution", camera.resolution[0], cameraResolutions());
+      camera.resolution[0] = camera.resolution[1] = both;
+    }
     if (auto o = c->optionalMap("overview")) {
       CameraSpec::Overview& ov = camera.overview;
       ov.enabled = o->boolean("enabled", true);  // an overview: map asks for one

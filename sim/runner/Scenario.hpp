@@ -11,8 +11,10 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "common/libagent/CameraImages.hpp"
 #include "common/nao/Postures.hpp"
 #include "sim/bridge/BodySide.hpp"
 #include "sim/game/GameController.hpp"
@@ -94,7 +96,9 @@ struct RobotSpec {
 // Camera rendering. Off unless a scenario or flag asks.
 struct CameraSpec {
   bool enabled = false;            // robot cameras into each robot's CameraImages
-  int width = 640, height = 480;   // px: 640x480 or 1280x960
+  // Each robot camera's size (index 0 top, 1 bottom; cameraResolutions();
+  // ImageSize's default, 640x480).
+  common::libagent::ImageSize resolution[common::libagent::kNumCameras];
   std::string dump_dir;            // --dump-frames DIR (implies rendering); empty = none
   int dump_every = 1;              // --every N: camera frames between dumps
   struct Overview {
@@ -109,6 +113,10 @@ struct CameraSpec {
   bool renderRobots() const { return enabled || !dump_dir.empty(); }
   bool any() const { return renderRobots() || overview.enabled; }
 };
+
+// The robot camera sizes a scenario's camera.resolution or --resolution may
+// name: "640x480" and "1280x960".
+const std::vector<std::pair<std::string, common::libagent::ImageSize>>& cameraResolutions();
 
 struct NoiseSwitches {
   bool on = true;  // master switch

@@ -5,9 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <memory>
 #include <type_traits>
 
 #include "common/libagent/AgentShared.hpp"
+#include "common/libagent/CameraImages.hpp"
+#include "common/libagent/SimExtension.hpp"
 
 namespace al = common::libagent;
 
@@ -81,4 +84,26 @@ TEST(LibagentLayout, JointAndSensorOrder) {
   EXPECT_EQ(S::ChestBoard_Button, 30);
   EXPECT_EQ(S::Battery_Charge, 34);
   EXPECT_EQ(S::US, 36);
+}
+
+// simswift's camera images block (not libagent's, but read the same way by a
+// team's program): each camera's size, then the frame, then the buffers for
+// the largest image (1280x960). A change here needs kExtensionVersion's bump.
+TEST(LibagentLayout, CameraImagesHasASizePerCamera) {
+  EXPECT_TRUE(std::is_standard_layout<al::CameraImages>::value);
+  EXPECT_EQ(offsetof(al::CameraImages, magic), 0u);
+  EXPECT_EQ(offsetof(al::CameraImages, size), 4u);
+  EXPECT_EQ(sizeof(al::CameraImages::size), 16u);  // {width, height} x top, bottom
+  EXPECT_EQ(offsetof(al::CameraImages, frame_index), 24u);
+  EXPECT_EQ(offsetof(al::CameraImages, sim_time_us), 32u);
+  EXPECT_EQ(offsetof(al::CameraImages, valid), 40u);
+  EXPECT_EQ(offsetof(al::CameraImages, yuv422), 48u);
+  EXPECT_EQ(offsetof(al::CameraImages, rgb), 48u + 2u * 1280 * 960 * 2);
+  EXPECT_EQ(sizeof(al::CameraImages), 48u + 2u * 1280 * 960 * 5);
+  EXPECT_EQ(al::kExtensionVersion, 5u);
+  auto im = std::make_unique<al::CameraImages>();  // 12 MB: not on the stack
+  im->size[0] = {1280, 960};
+  im->size[1] = {640, 480};
+  EXPECT_EQ(im->yuvBytes(0), 1280 * 960 * 2);
+  EXPECT_EQ(im->rgbBytes(1), 640 * 480 * 3);
 }

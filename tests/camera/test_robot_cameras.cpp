@@ -34,7 +34,7 @@ std::vector<double> standingPosture(const RobotModel& m) {
 }
 
 std::vector<uint8_t> copyRgb(const CameraImages& im, int cam) {
-  return std::vector<uint8_t>(im.rgb[cam], im.rgb[cam] + im.rgbBytes());
+  return std::vector<uint8_t>(im.rgb[cam], im.rgb[cam] + im.rgbBytes(cam));
 }
 
 }  // namespace
@@ -63,7 +63,8 @@ TEST(RobotCameras, BallRelativeToTheRobotAppearsAtTheExpectedPixel) {
     const CameraModel model = cams.camera(world, robot, c.cam);
     const Blob expected = sphereImage(model, world.ballPosition(), r);
     ASSERT_GT(expected.area, 30) << "ball not in the camera's view";
-    const Blob seen = ballNear(copyRgb(*images, c.cam), images->width, images->height, expected);
+    const Blob seen = ballNear(copyRgb(*images, c.cam), images->size[c.cam].width, images->size[c.cam].height,
+                                expected);
     EXPECT_NEAR(seen.u, expected.u, 2.0);
     EXPECT_NEAR(seen.v, expected.v, 2.0);
     EXPECT_NEAR(double(seen.area) / expected.area, 1.0, 0.1);
@@ -90,13 +91,56 @@ TEST(RobotCameras, AV6RendersThroughItsNarrowerLens) {
     const CameraModel model = cams.camera(world, robot, kTop);
     const Blob expected = sphereImage(model, world.ballPosition(), world.field().ball.diameter / 2);
     ASSERT_GT(expected.area, 30) << "ball not in the top camera's view";
-    seen[k] = ballNear(copyRgb(*images, kTop), images->width, images->height, expected);
+    seen[k] = ballNear(copyRgb(*images, kTop), images->size[kTop].width, images->size[kTop].height, expected);
     EXPECT_NEAR(seen[k].u, expected.u, 2.0) << (k ? "V6" : "V5");
     EXPECT_NEAR(seen[k].v, expected.v, 2.0) << (k ? "V6" : "V5");
   }
   const double ratio = (seen[1].u - 320.0) / (seen[0].u - 320.0);
   EXPECT_NEAR(ratio, 598.05 / 544.34, 0.03);
   EXPECT_GT(seen[1].area, seen[0].area);
+}
+
+// Each camera at its own resolution (the V6 pair of rUNSWift 2019-2022: top
+// 1280x960, bottom 640x480, and the reverse): the block says each size, and
+// the same ball lies at the same normalised image position at both scales,
+// within 1 px at 640x480.
+TEST(RobotCameras, EachCameraAtItsOwnResolutionSeesTheBallAtTheSamePlace) {
+  noDisplay();
+  World world(FieldConfig{});
+  const int robot = world.addRobot(naoModel(), -1.0, 0.0, 0.0, standingPosture(*naoModel()));
+  const common::libagent::ImageSize small{640, 480}, large{1280, 960};
+  // Robot-relative ball positions (m) in view of each camera.
+  struct Case { CameraId cam; double x, y; };
+  for (const Case& c : {Case{kTop, 1.6, 0.3}, Case{kTop, 2.4, -0.5}, Case{kBottom, 0.4, 0.08}}) {
+    SCOPED_TRACE(testing::Message() << (c.cam == kTop ? "top" : "bottom") << " camera, ball at (" << c.x << ", "
+                                    << c.y << ")");
+    world.placeBall(-1.0 + c.x, c.y);
+    Blob seen[2];  // at 640x480, at 1280x960
+    for (int k = 0; k < 2; ++k) {
+      RobotCamerasConfig cfg;
+      cfg.scene.sky = {0, 0, 1};
+      cfg.scene.draw_net = false;
+      cfg.resolution[c.cam] = k == 0 ? small : large;
+      cfg.resolution[1 - c.cam] = k == 0 ? large : small;  // the other camera: the other size
+      RobotCameras cams(world, cfg);
+      auto images = std::make_unique<CameraImages>();
+      cams.fillImages(world, robot, *images);
+      ASSERT_EQ(images->size[c.cam], cfg.resolution[c.cam]);
+      ASSERT_EQ(images->size[1 - c.cam], cfg.resolution[1 - c.cam]);
+      const common::libagent::ImageSize size = images->size[c.cam];
+      const Blob expected = sphereImage(cams.camera(world, robot, c.cam), world.ballPosition(),
+                                        world.field().ball.diameter / 2);
+      ASSERT_GT(expected.area, 30) << "ball not in the camera's view";
+      seen[k] = ballNear(copyRgb(*images, c.cam), size.width, size.height, expected);
+    }
+    // 1280x960 halved onto 640x480.
+    EXPECT_NEAR(seen[1].u / 2, seen[0].u, 1.0);
+    EXPECT_NEAR(seen[1].v / 2, seen[0].v, 1.0);
+    EXPECT_NEAR(double(seen[1].area) / (4 * seen[0].area), 1.0, 0.1);
+  }
+  RobotCameras cams(world);
+  EXPECT_THROW(cams.setResolution(kTop, {1281, 960}), std::invalid_argument);
+  EXPECT_THROW(cams.setResolution(kBottom, {2560, 1920}), std::invalid_argument);
 }
 
 TEST(RobotCameras, IdenticalWorldsRenderIdenticalFramesAndYuvMatchesRgb) {
@@ -112,11 +156,11 @@ TEST(RobotCameras, IdenticalWorldsRenderIdenticalFramesAndYuvMatchesRgb) {
     cams.setTeams({0, 1});
     auto images = std::make_unique<CameraImages>();
     cams.fillImages(world, 0, *images);
-    for (int c = 0; c < 2; ++c) hashes[run][c] = fnv1a(images->yuv422[c], images->yuvBytes());
+    for (int c = 0; c < 2; ++c) hashes[run][c] = fnv1a(images->yuv422[c], images->yuvBytes(c));
     if (run == 0) {
       // The YUV buffer is the RGB buffer converted.
-      std::vector<uint8_t> yuv(images->yuvBytes());
-      rgbToYuyv(images->rgb[0], images->width, images->height, yuv.data());
+      std::vector<uint8_t> yuv(images->yuvBytes(0));
+      rgbToYuyv(images->rgb[0], images->size[0].width, images->size[0].height, yuv.data());
       EXPECT_EQ(fnv1a(yuv), hashes[0][0]);
       EXPECT_EQ(images->magic, common::libagent::kCameraImagesMagic);
       EXPECT_EQ(images->frame_index, 6);  // 0.2 s at 30 Hz

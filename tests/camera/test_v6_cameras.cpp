@@ -33,10 +33,10 @@ TEST(V6Cameras, TheProgramGetsFramesAndRenderedImages) {
   const common::libagent::CameraImages* im = r.images(0);
   ASSERT_NE(im, nullptr);
   EXPECT_EQ(im->magic, common::libagent::kCameraImagesMagic);
-  EXPECT_EQ(im->width, 640);
+  EXPECT_EQ(im->size[0], (common::libagent::ImageSize{640, 480}));
   EXPECT_EQ(im->valid[0], 1);
   // A rendered field: not one flat colour.
   const uint8_t* y = im->yuv422[0];
-  const auto [lo, hi] = std::minmax_element(y, y + im->yuvBytes());
+  const auto [lo, hi] = std::minmax_element(y, y + im->yuvBytes(0));
   EXPECT_GT(*hi - *lo, 50);
 }

@@ -490,6 +490,27 @@ TEST(V6Builtin, CamerasAndVisionUseTheV6Lens) {
   EXPECT_NEAR(set.visionOracle().config().vfov_deg.value_or(0), 43.7, 1e-9);
 }
 
+// The reference program's behaviour plans its head scans and spins with the
+// lens of the body it drives (BodyConnection: LoLA's socket is a V6, 56.3
+// deg; libagent's block a V5, 60.9 deg); a behaviour's camera_hfov wins.
+TEST(V6Builtin, TheBehaviourUsesTheLensOfItsBody) {
+  auto hfovDeg = [](Runner& r) {
+    r.run(quiet());
+    const agent::behaviour::BehaviourConfig* b = r.programs().program(0)->behaviourConfig();
+    return b && b->skills.camera_hfov ? *b->skills.camera_hfov * 180 / M_PI : -1.0;
+  };
+  Runner v6(builtinV6(socketPath("behaviour-lens"), ", behaviour: findball2017", 0.1));
+  EXPECT_NEAR(hfovDeg(v6), 56.3, 1e-9);
+  Runner v5(Scenario::parse("duration: 0.1\nrobots:\n  - {team: 19, player: 1, x: -2.0, y: 0.0, "
+                            "behaviour: findball2017}\n", "v5.yaml"));
+  EXPECT_NEAR(hfovDeg(v5), 60.9, 1e-9);
+  Runner set(builtinV6(socketPath("behaviour-lens-set"),
+                       ", behaviour: {kind: findball2017, skills: {camera_hfov: 1.2}}", 0.1));
+  EXPECT_NEAR(hfovDeg(set), 1.2 * 180 / M_PI, 1e-9);
+  // Without a program (a test's or tool's skills): the V5's.
+  EXPECT_NEAR(agent::behaviour::SkillConfig().cameraHfov() * 180 / M_PI, 60.9, 1e-9);
+}
+
 // Inline (the experiment's way) and on named threads: the same state hash.
 TEST(V6Builtin, InlineAndThreadedGiveTheSameHash) {
   uint64_t hashes[2];

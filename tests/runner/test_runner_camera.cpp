@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "sim/camera/Png.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/world/ConfigError.hpp"
@@ -39,7 +40,10 @@ int countFiles(const std::string& dir, const std::string& prefix, const std::str
 }
 
 // Records what the Perception thread saw of the images, frame by frame.
+// Only frames whose cameras have the expected sizes count as non-empty.
 struct ImageProbe : agent::framework::PerceptionStep {
+  explicit ImageProbe(al::ImageSize top = {}, al::ImageSize bottom = {}) : expected{top, bottom} {}
+  const al::ImageSize expected[al::kNumCameras];
   std::atomic<int> valid_frames{0}, nonempty_frames{0}, frames_seen{0};
   std::atomic<int64_t> last_index{-1};
   void step(const al::CameraFrame& frame) override {
@@ -48,14 +52,14 @@ struct ImageProbe : agent::framework::PerceptionStep {
     const al::CameraImages* im = images();
     if (!frame.images_valid || !im) return;
     ++valid_frames;
-    if (im->magic != al::kCameraImagesMagic || im->frame_index != frame.frame_index || im->width != 640 ||
-        im->height != 480 || !im->valid[0] || !im->valid[1])
+    if (im->magic != al::kCameraImagesMagic || im->frame_index != frame.frame_index || im->size[0] != expected[0] ||
+        im->size[1] != expected[1] || !im->valid[0] || !im->valid[1])
       return;
     // Non-empty: the top camera's picture is not one flat colour, and the
-    // YUYV luma varies too (field green vs white lines / sky).
+    // bottom camera's YUYV luma varies too (field green vs white lines / sky).
     bool rgb_varies = false, y_varies = false;
-    for (int64_t i = 3; i < im->rgbBytes() && !rgb_varies; i += 3) rgb_varies = im->rgb[0][i] != im->rgb[0][0];
-    for (int64_t i = 2; i < im->yuvBytes() && !y_varies; i += 2) y_varies = im->yuv422[1][i] != im->yuv422[1][0];
+    for (int64_t i = 3; i < im->rgbBytes(0) && !rgb_varies; i += 3) rgb_varies = im->rgb[0][i] != im->rgb[0][0];
+    for (int64_t i = 2; i < im->yuvBytes(1) && !y_varies; i += 2) y_varies = im->yuv422[1][i] != im->yuv422[1][0];
     if (rgb_varies && y_varies) ++nonempty_frames;
     last_index = frame.frame_index;
   }
@@ -120,6 +124,38 @@ TEST(RunnerCamera, PerceptionThreadSeesImages) {
   EXPECT_EQ(runner.images(0)->frame_index, 9);
 }
 
+// The NAO V6 pair of rUNSWift 2019-2022 (VisionDefinitions.hpp): top
+// 1280x960, bottom 640x480, each in the block and in the dumped frames.
+TEST(RunnerCamera, EachCameraAtItsOwnResolution) {
+  Scenario sc = Scenario::parse(
+      "duration: 0.1\n"
+      "seed: 3\n"
+      "camera: {enabled: on, resolution: {top: 1280x960, bottom: 640x480}}\n"
+      "ball: {x: 0.0, y: 0.0}\n"
+      "robots:\n"
+      "  - {team: 0, player: 1, x: -1.0, y: 0.0}\n",
+      "pair.yaml");
+  sc.camera.dump_dir = tempDir("pair");
+  Runner runner(sc);
+  auto probe = std::make_unique<ImageProbe>(al::ImageSize{1280, 960}, al::ImageSize{640, 480});
+  ImageProbe* p = probe.get();
+  runner.programs().setPerceptionStep(0, std::move(probe));
+  runner.run(quiet());
+  EXPECT_EQ(p->frames_seen.load(), 4);  // frames 0..3
+  EXPECT_EQ(p->nonempty_frames.load(), 4);
+  const al::CameraImages* im = runner.images(0);
+  ASSERT_NE(im, nullptr);
+  EXPECT_EQ(im->yuvBytes(0), 1280 * 960 * 2);
+  EXPECT_EQ(im->rgbBytes(1), 640 * 480 * 3);
+  for (const char* cam : {"top", "bottom"}) {
+    int w = 0, h = 0;
+    simswift::camera::readPng(sc.camera.dump_dir + "/t0p1_" + cam + "_000003.png", &w, &h);
+    EXPECT_EQ(w, cam[0] == 't' ? 1280 : 640) << cam;
+    EXPECT_EQ(h, cam[0] == 't' ? 960 : 480) << cam;
+  }
+  fs::remove_all(sc.camera.dump_dir);
+}
+
 TEST(RunnerCamera, NoRenderingUnlessAsked) {
   Scenario sc = twoRobots(0.1);
   Runner runner(sc);
@@ -159,8 +195,7 @@ TEST(RunnerCamera, ScenarioCameraKeys) {
       "  - {team: 0, player: 2, x: 1}\n",
       "keys.yaml");
   EXPECT_TRUE(sc.camera.enabled);
-  EXPECT_EQ(sc.camera.width, 1280);
-  EXPECT_EQ(sc.camera.height, 960);
+  for (const al::ImageSize& size : sc.camera.resolution) EXPECT_EQ(size, (al::ImageSize{1280, 960}));
   EXPECT_TRUE(sc.camera.overview.enabled);
   EXPECT_EQ(sc.camera.overview.mode, simswift::runner::CameraSpec::Overview::Mode::Robot);
   EXPECT_EQ(sc.camera.overview.robot, 1);
@@ -175,7 +210,22 @@ TEST(RunnerCamera, ScenarioCameraKeys) {
     }
     return std::string();
   };
+  // Each camera its own; an unnamed one keeps the default.
+  const Scenario pair = Scenario::parse("camera: {resolution: {top: 1280x960}}\nrobots:\n  - {team: 0, player: 1}\n",
+                                        "pair.yaml");
+  EXPECT_EQ(pair.camera.resolution[0], (al::ImageSize{1280, 960}));
+  EXPECT_EQ(pair.camera.resolution[1], (al::ImageSize{640, 480}));
+  EXPECT_EQ(Scenario().camera.resolution[0], (al::ImageSize{640, 480}));
+
+  // Errors name the file, the line and the key.
+  EXPECT_NE(error("camera: {resolution: 800x600}\n").find("bad.yaml:1"), std::string::npos);
   EXPECT_NE(error("camera: {resolution: 800x600}\n").find("resolution"), std::string::npos);
+  EXPECT_NE(error("camera:\n  resolution: {top: 1280x960, bottom: 320x240}\n").find("bad.yaml:2"),
+            std::string::npos);
+  EXPECT_NE(error("camera:\n  resolution: {top: 1280x960, bottom: 320x240}\n").find("resolution.bottom"),
+            std::string::npos);
+  EXPECT_NE(error("camera: {resolution: {top: 1280x960, side: 640x480}}\n").find("side"), std::string::npos);
+  EXPECT_NE(error("camera: {resolution: [1280, 960]}\n").find("resolution"), std::string::npos);
   EXPECT_NE(error("camera: {enabled: on, fps: 30}\n").find("fps"), std::string::npos);
   EXPECT_NE(error("camera: {overview: {robot: 3}}\n").find("robot"), std::string::npos);
   EXPECT_NE(error("camera: {overview: {mode: sky}}\n").find("mode"), std::string::npos);
@@ -184,3 +234,25 @@ TEST(RunnerCamera, ScenarioCameraKeys) {
 }  // namespace
 
 #endif  // SIMSWIFT_HAVE_CAMERAS
+
+// A build without OSMesa has the null cameras (sim/runner/RunCameras.hpp):
+// a scenario asking for rendering is refused before the first tick.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "sim/runner/Runner.hpp"
+
+TEST(RunnerNullCameras, AScenarioAskingForCamerasIsRefused) {
+  using simswift::runner::Runner;
+  if (Runner::camerasAvailable()) GTEST_SKIP() << "this build renders (SIMSWIFT_CAMERAS=ON)";
+  Runner r(simswift::runner::Scenario::parse(
+      "duration: 0.1\ncamera: {enabled: on}\nrobots:\n  - {team: 0, player: 1}\n", "nullcam.yaml"));
+  try {
+    r.start();
+    ADD_FAILURE() << "started";
+  } catch (const simswift::runner::RunnerError& e) {
+    EXPECT_NE(std::string(e.what()).find("built without cameras"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(r.framesDumped(), 0);
+}

@@ -125,7 +125,8 @@ TEST(FindBall2016Era, HeadLooksAtTheBallEstimate) {
 // spin_angle wins.
 TEST(SearchStop2017, SpinCompletesTheCircleTheScanBegan) {
   SkillConfig s;
-  EXPECT_NEAR(Spin(s).angle(), 2 * kPi - 1.04 - 1.0629, 1e-9);
+  // Outside a program, the V5's lens (60.9 deg).
+  EXPECT_NEAR(Spin(s).angle(), 2 * kPi - 1.04 - 60.9 * kPi / 180, 1e-9);
   s.spin_angle = 2 * kPi;
   EXPECT_NEAR(Spin(s).angle(), 2 * kPi, 1e-12);
   // A robot spinning at 0.8 rad/s stops after angle() of turn (+- one tick).

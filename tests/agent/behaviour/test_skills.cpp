@@ -276,12 +276,12 @@ TEST(HeadScan, SweepCoversTheFieldOfViewWithinTheHeadsLimits) {
     EXPECT_LE(h.yaw_speed, 8.27);
     EXPECT_LE(std::abs(h.yaw - prev), s.scan_speed * dt + 1e-6);  // the target moves at the scan speed
     prev = h.yaw;
-    lo = std::min(lo, h.yaw - s.camera_hfov / 2);
-    hi = std::max(hi, h.yaw + s.camera_hfov / 2);
+    lo = std::min(lo, h.yaw - s.cameraHfov() / 2);
+    hi = std::max(hi, h.yaw + s.cameraHfov() / 2);
   }
   // The camera saw +-(scan_yaw + hfov/2) = +-1.571 rad: the front half.
-  EXPECT_NEAR(lo, -(1.04 + s.camera_hfov / 2), 0.02);
-  EXPECT_NEAR(hi, 1.04 + s.camera_hfov / 2, 0.02);
+  EXPECT_NEAR(lo, -(1.04 + s.cameraHfov() / 2), 0.02);
+  EXPECT_NEAR(hi, 1.04 + s.cameraHfov() / 2, 0.02);
   EXPECT_TRUE(scan.sweepDone(10.0 + 2.48));
   EXPECT_FALSE(scan.sweepDone(10.0 + 2.40));
 }
@@ -301,7 +301,7 @@ TEST(Spin, TurnsInPlaceUntilTheCircleIsComplete) {
     EXPECT_LE(o.body.turn, in.walk.max_turn + 1e-6);
     integrate(in.self.pose, o.body, 0.02);
   }
-  const double angle = 2 * kPi - 1.04 - s.camera_hfov;  // 4.18 rad: what the scan left unseen
+  const double angle = 2 * kPi - 1.04 - s.cameraHfov();  // 4.18 rad: what the scan left unseen
   EXPECT_NEAR(t, angle / 0.8, 0.05);  // 5.2 s at 0.8 rad/s
   EXPECT_NEAR(in.self.pose.x, 500, 1e-9);
   EXPECT_NEAR(wrapAngle(in.self.pose.theta - 3.0 - angle), 0.0, 0.02);
