@@ -143,7 +143,7 @@ struct SkillConfig {
   double face_target_distance = 500;  // mm: beyond it, face the direction of travel
   double final_angle_tolerance = 0.15;  // rad
   double translate_max_heading_error = 1.0;  // rad: beyond it, turn on the spot first
-  double robot_radius = 150.0;        // mm, for avoidance
+  double robot_radius = common::nao::kFootprintRadius;  // mm, for avoidance: the robot's own footprint
   double avoid_distance = 600.0;      // mm: obstacles further (surface to surface) are ignored
   double avoid_gain = 60000.0;        // mm^2/s: repulsion = gain * (1/d - 1/avoid_distance)
   double obstacle_timeout = 2.0;      // s: teammates heard longer ago are not avoided

@@ -7,10 +7,11 @@
 #include <set>
 #include <sstream>
 
+#include "common/config/Seed.hpp"
 #include "common/libagent/SharedNames.hpp"
-#include "sim/runner/Bodies.hpp"
 #include "common/nao/NaoFacts.hpp"
 #include "common/random/DeriveSeed.hpp"
+#include "sim/runner/Bodies.hpp"
 #include "sim/vision/VisionConfig.hpp"
 #include "sim/world/ConfigError.hpp"
 
@@ -65,7 +66,7 @@ void readHeader(const YamlReader& top, const std::string& source_name, const Fie
   } catch (const ConfigError& err) {
     top.fail("field", std::string("cannot load the field: ") + err.what());
   }
-  e.seed = static_cast<uint64_t>(top.integer("seed", Range::nonNegative()));
+  e.seed = common::config::readSeed(top, "seed");  // all 64 bits, exact (not a YAML number)
   e.time_limit = top.number("time_limit", Range::positive());
   if (e.time_limit > 3600) top.fail("time_limit", "must be <= 3600 s (got " + std::to_string(e.time_limit) + ")");
   e.trials_per_position = top.integer("trials_per_position", Range::closed(1, 10000));

@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/config/Seed.hpp"
 #include "common/random/DeriveSeed.hpp"
 #include "common/random/Random.hpp"
 #include "app/experiment/Statistics.hpp"
@@ -183,7 +184,7 @@ TestFile TestFile::parse(const std::string& text, const std::string& source_name
   f.text = text;
   f.name = top.string("name");
   if (f.name.empty() || f.name.find('/') != std::string::npos) top.fail("name", "must be a name without '/'");
-  f.seed = static_cast<uint64_t>(top.integer("seed", 1, Range::closed(0, 2147483647)));
+  f.seed = common::config::readSeed(top, "seed", f.seed);  // all 64 bits, exact (not a YAML number)
   Defaults d;
   if (auto dm = top.optionalMap("defaults")) {
     d.seeds = dm->integer("seeds", d.seeds, Range::closed(1, kMaxSeeds));

@@ -23,4 +23,9 @@ uint64_t readSeed(const YamlReader& r, const std::string& key, uint64_t def) {
   return *seed;
 }
 
+uint64_t readSeed(const YamlReader& r, const std::string& key) {
+  if (!r.has(key)) r.missing(key, "missing required key");
+  return readSeed(r, key, 0);
+}
+
 }  // namespace common::config

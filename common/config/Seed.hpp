@@ -22,5 +22,7 @@ std::optional<uint64_t> parseSeed(const std::string& text);
 // read from the YAML text, never through a double; anything else throws
 // ConfigError "file:line: key: must be a whole number in [0, ...] (got '1.5')".
 uint64_t readSeed(const YamlReader& r, const std::string& key, uint64_t def);
+// The same for a required key ("missing required key" if absent).
+uint64_t readSeed(const YamlReader& r, const std::string& key);
 
 }  // namespace common::config

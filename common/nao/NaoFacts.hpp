@@ -38,8 +38,8 @@ constexpr double kLowerArmLength = 55.95;
 // Seen from above, standing: the circle round the torso's vertical axis that
 // holds the body and the arms hanging at its sides (the shoulder joints are
 // kShoulderOffsetY = 98 mm from it). The simulator spaces robots at placement
-// and draws them with it; the robot code's avoidance radius is its
-// behaviour config's own.
+// and draws them with it; the robot code's avoidance radius defaults to it
+// (BehaviourConfig::robot_radius).
 constexpr double kFootprintRadius = 150.0;  // mm
 
 // ---------------------------------------------------------------- cameras

@@ -170,3 +170,23 @@ TEST(InputLimits, ShippedInputsStillLoad) {
   EXPECT_GE(experiments, 4);
   EXPECT_GE(scenarios, 8);
 }
+
+// The experiment's seed is read by the one seed reader: every 64-bit value
+// exactly (a YAML number is exact only up to 2^53), anything else refused at
+// seed: with the range.
+TEST(InputLimits, TheExperimentSeedTakesAll64BitsAndNothingElse) {
+  auto withSeed = [](const std::string& seed) {
+    std::string t = exptest::tinyExperiment(1);
+    return t.replace(t.find("seed: 11"), 8, "seed: " + seed);
+  };
+  EXPECT_EQ(Experiment::parse(withSeed("18446744073709551615"), "ok.yaml").seed, 18446744073709551615ull);
+  EXPECT_EQ(Experiment::parse(withSeed("9007199254740993"), "ok.yaml").seed, 9007199254740993ull);  // 2^53 + 1
+  for (const char* bad : {"1.5", "-1", "18446744073709551616", "1e3"}) {
+    const std::string err = errorOf(withSeed(bad));
+    EXPECT_NE(err.find("bad.yaml:2: seed: must be a whole number in [0, 18446744073709551615]"), std::string::npos)
+        << bad << ": " << err;
+  }
+  std::string none = exptest::tinyExperiment(1);
+  none.erase(none.find("seed: 11\n"), 9);
+  EXPECT_NE(errorOf(none).find("seed: missing required key"), std::string::npos) << errorOf(none);
+}

@@ -185,3 +185,15 @@ TEST(ResultsRow, RoundTrips) {
 }
 
 }  // namespace
+
+// A test file's seed is read by the one seed reader: every 64-bit value
+// exactly, anything else refused at seed: with the range.
+TEST(TestFileSeed, TakesAll64BitsAndNothingElse) {
+  EXPECT_EQ(TestFile::parse(file(kOne, "name: t\nseed: 18446744073709551615\n"), kSource).seed,
+            18446744073709551615ull);
+  for (const char* bad : {"1.5", "-1", "18446744073709551616"}) {
+    const std::string err = errorOf(file(kOne, "name: t\nseed: " + std::string(bad) + "\n"));
+    EXPECT_NE(err.find("t.yaml:2: seed: must be a whole number in [0, 18446744073709551615]"), std::string::npos)
+        << bad << ": " << err;
+  }
+}
