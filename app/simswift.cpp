@@ -220,8 +220,8 @@ void RunCommand::applyOverrides(simswift::runner::Scenario& sc) const {
   if (dump_dir_) sc.camera.dump_dir = *dump_dir_;
   if (every_) sc.camera.dump_every = *every_;
   if (resolution_)  // both cameras (oneOf above checked the name)
-    for (const auto& [name, size] : simswift::runner::cameraResolutions())
-      if (name == *resolution_) sc.camera.resolution[0] = sc.camera.resolution[1] = size;
+    if (const auto size = simswift::runner::cameraResolution(*resolution_))
+      sc.camera.resolution[0] = sc.camera.resolution[1] = *size;
   if (overview_dir_) {
     sc.camera.overview.enabled = true;
     sc.camera.overview.dir = *overview_dir_;

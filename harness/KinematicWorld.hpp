@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "agent/behaviour/Behaviour.hpp"
+#include "common/nao/NaoFacts.hpp"
 
 namespace kin {
 
@@ -40,7 +41,7 @@ struct World {
   double dt = 1.0 / 30.0;        // s, behaviour tick (perception rate)
   double packet_period = 0.2;    // s, team packets at 5 Hz
   double detect_distance = 2500; // mm
-  double hfov = 1.0629;          // rad
+  double hfov = common::nao::kV5CameraLens.horizontal_fov;  // rad, the V5 the thesis ran on
   double head_max_speed = 8.27;  // rad/s
   WalkLimits walk;
   Point2 ball{0, 0};

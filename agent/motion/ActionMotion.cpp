@@ -102,7 +102,7 @@ bool ActionMotion::runMode(const TickInput& in, common::libagent::JointValues& o
 }
 
 bool ActionMotion::tickWalk(const TickInput& in, common::libagent::JointValues& out) {
-  requestFromWalk(in, out);
+  handRequestToWalk(in, out);
   bool stepping = false;
   if (mode_ == Mode::Walk) {
     walk_.tick(in.sensors, in.dt, out);
@@ -120,7 +120,7 @@ bool ActionMotion::tickWalk(const TickInput& in, common::libagent::JointValues& 
 }
 
 // Hands the request to the walk, or leaves the walk for a kick, crouch or limp.
-void ActionMotion::requestFromWalk(const TickInput& in, const common::libagent::JointValues& out) {
+void ActionMotion::handRequestToWalk(const TickInput& in, const common::libagent::JointValues& out) {
   switch (in.want) {
     case ActionType::WALK:
       // Picked up (no weight on the feet for a while): stop stepping.

@@ -80,7 +80,7 @@ class ActionMotion : public framework::MotionGenerator {
   // Runs the current mode's generator into `out`; true while the walk steps.
   bool runMode(const TickInput& in, common::libagent::JointValues& out);
   bool tickWalk(const TickInput& in, common::libagent::JointValues& out);
-  void requestFromWalk(const TickInput& in, const common::libagent::JointValues& out);
+  void handRequestToWalk(const TickInput& in, const common::libagent::JointValues& out);
   void runKick(const TickInput& in, common::libagent::JointValues& out);
   void tickKick(const TickInput& in, common::libagent::JointValues& out);
   void tickCrouch(const TickInput& in, common::libagent::JointValues& out);

@@ -206,7 +206,6 @@ void readRobotProgram(const YamlReader& r, const YamlReader& s, const SetupDefau
 ExperimentRobot readRobot(const YamlReader& r, const YamlReader& s, const SetupDefaults& d, const Setup& setup,
                           const Experiment& e, std::set<std::pair<int, int>>& players) {
   ExperimentRobot rob;
-  rob.where = r.place();
   rob.team = r.integer("team", Range::closed(al::kMinTeamNumber, al::kMaxTeamNumber));
   rob.player = r.integer("player", Range::closed(al::kMinPlayer, al::kMaxPlayer));
   if (!players.insert({rob.team, rob.player}).second)

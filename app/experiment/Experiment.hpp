@@ -99,8 +99,7 @@ struct ExperimentRobot {
   // lola: {}: a NAO V6 over LoLA at 12 ms (docs/lola.md), its socket private
   // to the trial's process; every robot of a setup alike.
   bool v6 = false;
-  ConfigPlace where;            // the robot's entry (setups[0].robots[1]), for later errors
-  ConfigPlace behaviour_where;  // same, of its behaviour key (or its setup's)
+  ConfigPlace behaviour_where;  // its behaviour key (or its setup's), for the later override errors
 };
 
 struct Setup {
@@ -187,7 +186,7 @@ struct TrialSpec {
   int setup = 0;       // index into Experiment::setups
   int ball = 0;        // index into Experiment::balls
   int repeat = 0;      // 0..trials_per_position-1
-  uint64_t seed = 0;   // < 2^31, so `simswift run --seed` can repeat it
+  uint64_t seed = 0;   // < 2^31: the trial seeds results.csv has always published (DeriveSeed.hpp kTrial)
 };
 TrialSpec trialSpec(const Experiment& e, int index);
 

@@ -93,7 +93,7 @@ struct RunSpec {
   int index = 0;
   int test = 0;
   int run = 0;
-  uint64_t seed = 0;  // < 2^31, as `simswift run --seed` takes it
+  uint64_t seed = 0;  // < 2^31, as published run seeds have been (DeriveSeed.hpp)
 };
 int countRuns(const TestFile& f, bool short_form);
 RunSpec runSpec(const TestFile& f, bool short_form, int index, uint64_t seed_override, bool has_override);

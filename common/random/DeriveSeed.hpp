@@ -47,7 +47,8 @@ constexpr uint64_t kLocalisation = 0x6c6f63616c697365ULL;
 // From an experiment's seed. deriveSeed(deriveSeed(seed, kTrial), trial
 // index within its cell) % (2^31 - 1): a trial's scenario seed
 // (app/experiment/Experiment.cpp trialSpec). 0: the recipe that was
-// splitmix64(seed) first, kept so published trial seeds do not move.
+// splitmix64(seed) first, kept so published trial seeds do not move (the
+// seeds only: what a trial does with its seed moved with kRobotProgram).
 constexpr uint64_t kTrial = 0;
 // From an experiment's seed. deriveSeed(deriveSeed(deriveSeed(seed,
 // kReportBootstrap), setup), position): the report's bootstrap interval of
@@ -61,6 +62,13 @@ constexpr uint64_t kSweepBootstrap = 0x7377656570ULL;
 // From a test file's seed: deriveSeed(deriveSeed(seed, FNV-1a of the test's
 // name), run index) % (2^31 - 1), a run's scenario seed
 // (app/scenario_tests/TestFile.cpp runSeed); the name is the tag.
+
+// Children of one parent need distinct tags: checked when compiling.
+static_assert(kSensorNoise != kRobotProgram && kSensorNoise != kTeamNetwork && kSensorNoise != kPlacementFuzz &&
+                  kRobotProgram != kTeamNetwork && kRobotProgram != kPlacementFuzz && kTeamNetwork != kPlacementFuzz,
+              "the scenario seed's children need distinct tags");
+static_assert(kTrial != kReportBootstrap && kTrial != kSweepBootstrap && kReportBootstrap != kSweepBootstrap,
+              "the experiment seed's children need distinct tags");
 
 }  // namespace seed_tag
 

@@ -29,7 +29,7 @@ Intrinsics Intrinsics::fromHorizontalFov(int width, int height, double hfov) {
 }
 
 NaoCameraMount naoCameraMount(CameraId id) {
-  // The robot code's hardware facts (common/nao/NaoFacts.hpp: mm in the
+  // The NAO's hardware facts (common/nao/NaoFacts.hpp: mm in the
   // HeadPitch frame, rad down), in m.
   if (id == kTop || id == kBottom) {
     const common::nao::CameraMount& m = common::nao::cameraMount(id == kTop ? common::nao::Camera::Top

@@ -21,8 +21,13 @@ RobotCameras::RobotCameras(const World& world, RobotCamerasConfig config)
 
 void RobotCameras::setTeams(std::vector<int> team_of_robot) { teams_ = std::move(team_of_robot); }
 
-void RobotCameras::setResolution(CameraId id, common::libagent::ImageSize size) {
+int RobotCameras::checkedId(CameraId id) {
   if (id != kTop && id != kBottom) throw std::invalid_argument("RobotCameras: no camera " + std::to_string(id));
+  return id;
+}
+
+void RobotCameras::setResolution(CameraId id, common::libagent::ImageSize size) {
+  checkedId(id);
   if (size.width <= 0 || size.height <= 0 || size.width % 2 != 0 || size.width > common::libagent::kMaxImageWidth ||
       size.height > common::libagent::kMaxImageHeight)
     throw std::invalid_argument("RobotCameras: resolution " + std::to_string(size.width) + "x" +
@@ -60,7 +65,7 @@ void RobotCameras::syncScene(const World& world) {
 
 CameraModel RobotCameras::camera(const World& world, int robot, CameraId id) const {
   const RobotBody& body = world.robot(robot);
-  const common::libagent::ImageSize size = resolution_[id];
+  const common::libagent::ImageSize size = resolution_[checkedId(id)];
   return CameraModel::naoCamera(body.linkPose(headLink(body.model())), id, size.width, size.height, lens_);
 }
 

@@ -40,7 +40,7 @@ class RobotCameras {
   void setResolution(CameraId id, common::libagent::ImageSize size);
   // Both cameras at one size.
   void setResolution(common::libagent::ImageSize size);
-  common::libagent::ImageSize resolution(CameraId id) const { return resolution_[id]; }
+  common::libagent::ImageSize resolution(CameraId id) const { return resolution_[checkedId(id)]; }
 
   // Copies robot link poses and the ball into the scene.
   void syncScene(const World& world);
@@ -64,6 +64,9 @@ class RobotCameras {
   static int headLink(const RobotModel& model);
 
  private:
+  // `id` if it names a camera, else invalid_argument (never an index past the array).
+  static int checkedId(CameraId id);
+
   Scene scene_;
   Renderer renderer_;
   std::vector<int> teams_;

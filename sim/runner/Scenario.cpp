@@ -9,13 +9,14 @@
 #include <cstdlib>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "common/config/Seed.hpp"
 #include "common/libagent/SharedNames.hpp"
-#include "sim/game/GameControlVersions.hpp"
-#include "sim/runner/Bodies.hpp"
 #include "common/nao/NaoFacts.hpp"
 #include "common/random/DeriveSeed.hpp"
+#include "sim/game/GameControlVersions.hpp"
+#include "sim/runner/Bodies.hpp"
 #include "sim/world/ConfigError.hpp"
 
 // The data folder's path below an install prefix (CMAKE_INSTALL_DATADIR,
@@ -313,35 +314,35 @@ void readNoise(const YamlReader& top, NoiseSwitches& noise) {
 namespace {
 
 // physics: the World's settings a user may tune, each key its WorldConfig
-// field's name but `iterations` (quick_iterations, its key from before).
-// The ranges are checkWorldConfig's (sim/world/World.hpp).
+// field's name but `iterations` (quick_iterations, its key from before:
+// kRenamedKeys). The ranges are checkWorldConfig's (sim/world/World.hpp).
 struct PhysicsInt {
   const char* key;
   int WorldConfig::*field;
-  const char* field_name;
 };
 struct PhysicsNumber {
   const char* key;
   double WorldConfig::*field;
-  const char* field_name;
 };
 const PhysicsInt kPhysicsInts[] = {
-    {"substeps", &WorldConfig::substeps, "substeps"},
-    {"iterations", &WorldConfig::quick_iterations, "quick_iterations"},
-    {"joint_projection_sweeps", &WorldConfig::joint_projection_sweeps, "joint_projection_sweeps"},
-    {"sole_nx", &WorldConfig::sole_nx, "sole_nx"},
-    {"sole_ny", &WorldConfig::sole_ny, "sole_ny"},
+    {"substeps", &WorldConfig::substeps},
+    {"iterations", &WorldConfig::quick_iterations},
+    {"joint_projection_sweeps", &WorldConfig::joint_projection_sweeps},
+    {"sole_nx", &WorldConfig::sole_nx},
+    {"sole_ny", &WorldConfig::sole_ny},
 };
 const PhysicsNumber kPhysicsNumbers[] = {
-    {"quick_w", &WorldConfig::quick_w, "quick_w"},
-    {"erp", &WorldConfig::erp, "erp"},
-    {"cfm", &WorldConfig::cfm, "cfm"},
-    {"joint_projection_tolerance", &WorldConfig::joint_projection_tolerance, "joint_projection_tolerance"},
-    {"sole_stiffness", &WorldConfig::sole_stiffness, "sole_stiffness"},
-    {"sole_damping", &WorldConfig::sole_damping, "sole_damping"},
-    {"sole_anchor_erp", &WorldConfig::sole_anchor_erp, "sole_anchor_erp"},
-    {"sole_anchor_slip", &WorldConfig::sole_anchor_slip, "sole_anchor_slip"},
+    {"quick_w", &WorldConfig::quick_w},
+    {"erp", &WorldConfig::erp},
+    {"cfm", &WorldConfig::cfm},
+    {"joint_projection_tolerance", &WorldConfig::joint_projection_tolerance},
+    {"sole_stiffness", &WorldConfig::sole_stiffness},
+    {"sole_damping", &WorldConfig::sole_damping},
+    {"sole_anchor_erp", &WorldConfig::sole_anchor_erp},
+    {"sole_anchor_slip", &WorldConfig::sole_anchor_slip},
 };
+// checkWorldConfig names the field; the file's key differs only here.
+const std::pair<const char*, const char*> kRenamedKeys[] = {{"quick_iterations", "iterations"}};
 
 }  // namespace
 
@@ -357,8 +358,8 @@ void readPhysics(const YamlReader& top, WorldConfig& world) {
   const std::optional<WorldConfigProblem> bad = checkWorldConfig(world);
   if (!bad) return;
   std::string key = bad->field;  // a field the file cannot set (tick_us) is named as itself
-  for (const PhysicsInt& k : kPhysicsInts)
-    if (bad->field == k.field_name) key = k.key;
+  for (const auto& [field, file_key] : kRenamedKeys)
+    if (bad->field == field) key = file_key;
   p->fail(key, bad->why);
 }
 
@@ -506,6 +507,12 @@ const std::vector<std::pair<std::string, common::libagent::ImageSize>>& cameraRe
   static const std::vector<std::pair<std::string, common::libagent::ImageSize>> sizes = {
       {"640x480", {640, 480}}, {"1280x960", {1280, 960}}};
   return sizes;
+}
+
+std::optional<common::libagent::ImageSize> cameraResolution(const std::string& name) {
+  for (const auto& [n, size] : cameraResolutions())
+    if (n == name) return size;
+  return std::nullopt;
 }
 
 namespace {

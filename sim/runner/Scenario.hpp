@@ -117,6 +117,8 @@ struct CameraSpec {
 // The robot camera sizes a scenario's camera.resolution or --resolution may
 // name: "640x480" and "1280x960".
 const std::vector<std::pair<std::string, common::libagent::ImageSize>>& cameraResolutions();
+// The size `name` ("640x480") spells, if it is one of cameraResolutions().
+std::optional<common::libagent::ImageSize> cameraResolution(const std::string& name);
 
 struct NoiseSwitches {
   bool on = true;  // master switch

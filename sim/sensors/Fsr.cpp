@@ -8,7 +8,7 @@
 namespace simswift::sensors {
 
 FsrLayout FsrLayout::left() {
-  // NAO V5 left foot in the ankle frame: the robot code's hardware facts
+  // NAO V5 left foot in the ankle frame: the NAO's hardware facts
   // (common/nao/NaoFacts.hpp, mm) in m. The sensors do not form an exact
   // rectangle, hence the inverse bilinear map below.
   FsrLayout l;

@@ -97,7 +97,10 @@ struct VisionConfig {
   bool noise = true;                 // false: exact, no misses, no false positives
   // Each camera's field of view, deg; unset: the robot's own lens (the V5's
   // 60.9 x 47.6, the V6's 56.3 x 43.7: common/nao/NaoFacts.hpp), which the
-  // runner fills in from the robots' body interface.
+  // runner fills in from the robots' body interface. An override changes
+  // what the oracle shows, not the lens the robot program plans its head
+  // scans for (its body's: agent/program/BodyConnection): a what-if for the
+  // detector, not a different camera.
   std::optional<double> hfov_deg, vfov_deg;
   double camera_offset_mm = 5;       // table 3.1: camera position error, uniform +-, once per robot
   double lying_tilt_deg = 45;        // torso z axis from vertical: lying, sees nothing

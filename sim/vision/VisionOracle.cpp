@@ -111,7 +111,7 @@ Eigen::Vector2d GroundFrame::toRobot(const Eigen::Vector2d& p) const {
 }
 
 CameraMount cameraMount(int camera) {
-  // The robot code's hardware facts (common/nao/NaoFacts.hpp: mm from the
+  // The NAO's hardware facts (common/nao/NaoFacts.hpp: mm from the
   // HeadPitch frame, rad down; the V5's and the V6's are the same), in m.
   if (camera != 0 && camera != 1) throw std::invalid_argument("vision: camera must be 0 (top) or 1 (bottom)");
   const common::nao::CameraMount& m =

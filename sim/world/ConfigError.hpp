@@ -1,5 +1,5 @@
 // The simulator reads its configuration files (field, scenario, experiment)
-// with the robot code's YAML reader and error type (common/config): one
+// with the shared foundation's YAML reader and error type (common/config): one
 // reader and one error for every file simswift or its robot program reads,
 // each error naming the file, the line and the key path.
 #pragma once

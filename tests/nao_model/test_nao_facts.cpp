@@ -1,4 +1,4 @@
-// The robot code's NAO hardware facts (common/nao/NaoFacts.hpp) held against
+// The NAO hardware facts the robot code and the simulator share (common/nao/NaoFacts.hpp) held against
 // the simulated body (models/nao_v5.urdf): the same joint limits and speeds,
 // the same link offsets, FSRs on the soles, cameras on the head's face, and
 // the leg kinematics reaching the URDF's sole.

@@ -51,7 +51,7 @@ TEST(FieldModelAgreement, RobotCodeFieldMatchesTheSimulatedField) {
   EXPECT_EQ(posts, 4);
 }
 
-// The robot code's field facts (common/field/FieldFacts.hpp) that FieldModel
+// The shared field facts (common/field/FieldFacts.hpp) that the robot code's FieldModel
 // does not carry: the carpet's border and the goal (mm against m).
 TEST(FieldModelAgreement, FieldFactsMatchTheSimulatedField) {
   const simswift::FieldConfig f = simswift::FieldConfig::loadYaml(std::string(SIMSWIFT_SOURCE_DIR) +
