@@ -1,7 +1,7 @@
 // The one reader of a seed written as text (command lines; scenario,
-// experiment, test and robot setup files): a whole decimal number of up to 64 bits, every value exact
-// (a double holds whole numbers exactly only up to 2^53, and derived seeds,
-// common/random/DeriveSeed.hpp, use all 64 bits).
+// experiment, test and robot setup files): a whole decimal number of up to
+// 64 bits, every value exact (a double holds whole numbers exactly only up
+// to 2^53, and derived seeds, common/random/DeriveSeed.hpp, use all 64 bits).
 #pragma once
 
 #include <cstdint>
