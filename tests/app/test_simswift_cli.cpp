@@ -14,6 +14,7 @@
 #include <string>
 
 #include "sim/bridge/BodyHost.hpp"
+#include "tests/support/Shell.hpp"
 
 namespace {
 
@@ -197,14 +198,11 @@ TEST(Cli, TheSeedTakesEverySixtyFourBitValue) {
 TEST(Cli, AScenarioFilesSeedReachesTheRunUnchanged) {
   const std::string body = "duration: 0.5\nnoise: on\nrobots:\n  - {team: 19, player: 1, x: -1, y: 0, posture: stand}\n";
   auto hashOf = [](const std::string& args) {
-    const std::string cmd = std::string(SIMSWIFT_BINARY_DIR) + "/simswift run " + args + " --quiet 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    char buf[512];
-    while (fgets(buf, sizeof buf, p)) out += buf;
-    EXPECT_EQ(WEXITSTATUS(pclose(p)), 0) << out;
-    const size_t at = out.find("hash ");
-    return at == std::string::npos ? out : out.substr(at + 5, 16);
+    const simswift::testing::ShellResult r =
+        simswift::testing::shell(std::string(SIMSWIFT_BINARY_DIR) + "/simswift run " + args + " --quiet");
+    EXPECT_EQ(r.code, 0) << r.output;
+    const size_t at = r.output.find("hash ");
+    return at == std::string::npos ? r.output : r.output.substr(at + 5, 16);
   };
   const std::string max = write("seed_max.yaml", "seed: 18446744073709551615\n" + body);
   const std::string one = write("seed_one.yaml", "seed: 1\n" + body);
