@@ -20,12 +20,15 @@ std::string seconds(double s) {
 
 }  // namespace
 
-ExternalProgram::ExternalProgram(RobotSlot slot, double attach_timeout_s)
-    : ProgramDriver(std::move(slot)), attach_timeout_s_(attach_timeout_s) {}
+ExternalProgram::ExternalProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ClockPage> clock)
+    : ProgramDriver(std::move(slot)), attach_timeout_s_(attach_timeout_s), clock_(std::move(clock)) {}
 
 bool ExternalProgram::attach() {
   bridge::BodySide& host = *slot_.host;
-  if (host.waitAnswer(0.5)) return true;
+  if (host.waitAnswer(0.5)) {
+    clock_->setState(common::clock::RunState::Running);
+    return true;
+  }
   std::fprintf(stderr, "waiting for robot %s on %s: %s\n", slot_.tag.c_str(), host.endpoint().c_str(),
                host.attachHint().c_str());
   if (!host.waitAnswer(attach_timeout_s_)) {
@@ -36,11 +39,13 @@ bool ExternalProgram::attach() {
          "answers here: restart it)";
     throw RunnerError(m.str());
   }
+  clock_->setState(common::clock::RunState::Running);
   return true;
 }
 
-LaunchedProgram::LaunchedProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ProgramProcess> process)
-    : ExternalProgram(std::move(slot), attach_timeout_s), process_(std::move(process)) {}
+LaunchedProgram::LaunchedProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ClockPage> clock,
+                                 std::unique_ptr<ProgramProcess> process)
+    : ExternalProgram(std::move(slot), attach_timeout_s, std::move(clock)), process_(std::move(process)) {}
 
 bool LaunchedProgram::attach() {
   if (!awaitChecked(Step::Motion, attach_timeout_s_))
@@ -49,6 +54,7 @@ bool LaunchedProgram::attach() {
                            seconds(attach_timeout_s_) + " s; log " + process_->logPath(),
                        slot_.tag + ": program did not attach within " +
                            seconds(attach_timeout_s_) + " s");
+  clock_->setState(common::clock::RunState::Running);
   return true;
 }
 

@@ -7,6 +7,7 @@
 
 #include <memory>
 
+#include "sim/programs/ClockPage.hpp"
 #include "sim/programs/ProgramDriver.hpp"
 #include "sim/programs/ProgramProcess.hpp"
 
@@ -14,19 +15,24 @@ namespace simswift::programs {
 
 class ExternalProgram : public ProgramDriver {
  public:
-  // attach_timeout_s: wall-clock s to wait for the first answer.
-  ExternalProgram(RobotSlot slot, double attach_timeout_s);
-  // Waits for the first answer; on a terminal, says after 0.5 s what to start.
+  // attach_timeout_s: wall-clock s to wait for the first answer; `clock`:
+  // the robot's clock page (the program's simulated time, docs/shim.md).
+  ExternalProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ClockPage> clock);
+  // Waits for the first answer; on a terminal, says after 0.5 s what to
+  // start. Then the clock page says Running.
   bool attach() override;
+  void publishTime(int64_t tick) override { clock_->publish(tick); }
 
  protected:
   double attach_timeout_s_;
+  std::unique_ptr<ClockPage> clock_;
 };
 
 class LaunchedProgram final : public ExternalProgram {
  public:
   // Starts `process` (already spawned: the factory fills its command).
-  LaunchedProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ProgramProcess> process);
+  LaunchedProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ClockPage> clock,
+                  std::unique_ptr<ProgramProcess> process);
   bool attach() override;
   // In slices of 50 ms (wall clock), checking the process between them, so
   // a crash ends the run within a slice (ProgramError), never a hang.

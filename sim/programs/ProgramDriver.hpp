@@ -56,6 +56,10 @@ class ProgramDriver {
   // on the simulator's thread takes its step now (tick: for messages).
   // Throws WatchdogError if that step fails.
   virtual void posted(Step /*step*/, int64_t /*tick*/) {}
+  // Tick `tick`'s simulated time for a program in another process (its
+  // clock page, docs/shim.md), written before the tick's sensors are posted
+  // (Runner stage 6). Nothing for a builtin program (it reads the tick).
+  virtual void publishTime(int64_t /*tick*/) {}
   // Waits up to timeout_s (wall clock) for the answer to what was posted;
   // false on timeout. Throws ProgramError if a launched program ended.
   virtual bool await(Step step, double timeout_s);

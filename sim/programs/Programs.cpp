@@ -1,5 +1,7 @@
 #include "sim/programs/Programs.hpp"
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -11,6 +13,8 @@
 #include "sim/programs/Errors.hpp"
 #include "sim/programs/ExternalProgram.hpp"
 #include "sim/programs/MountNamespace.hpp"
+#include "sim/programs/ProgramBinary.hpp"
+#include "sim/programs/ShimEnvironment.hpp"
 
 namespace simswift::programs {
 
@@ -82,7 +86,7 @@ void Programs::build(const ProgramRun& run, const std::vector<ProgramEntry>& rob
     } else if (e.launch.launched()) {
       r.driver = makeLaunched(run, e);
     } else {
-      r.driver = std::make_unique<ExternalProgram>(e.slot, run.attach_timeout_s);
+      r.driver = std::make_unique<ExternalProgram>(e.slot, run.attach_timeout_s, clockPage(run, e));
     }
   }
 }
@@ -152,6 +156,16 @@ Programs::LolaView Programs::lolaView(const ProgramEntry& e) {
   return view;
 }
 
+// A robot program's clock page (common/clock/ClockPage.hpp), named by its
+// robot (`simswift attach` finds it so), at the bodies' cycle.
+std::unique_ptr<ClockPage> Programs::clockPage(const ProgramRun& run, const ProgramEntry& e) {
+  try {
+    return std::make_unique<ClockPage>(common::clock::pageName(e.slot.tag), run.tick_us * 1000, run.clock_epoch_ns);
+  } catch (const std::runtime_error& err) {
+    throw ProgramError("robot " + e.slot.tag + ": " + err.what(), e.slot.tag + ": program could not be started");
+  }
+}
+
 // A launched robot's program: started with its names, seed and setup
 // filled into its command, its output in program_logs/<tag>.log. It
 // attaches by name like any external program (the first tick waits).
@@ -181,15 +195,29 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const ProgramRun& run, con
   argv[0] = ProgramProcess::resolveCommand(argv[0], run.base_dir);
   std::vector<std::pair<std::string, std::string>> env;
   for (const auto& [k, v] : e.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
+  std::unique_ptr<ClockPage> clock = clockPage(run, e);
   std::unique_ptr<ProgramProcess> process;
   try {
+    // The shim (docs/shim.md): refused for a binary it cannot reach, never
+    // run on the wall clock.
+    const std::string exe = findExecutable(argv[0]);
+    if (const std::string why = exe.empty() ? "" : shimRefusal(exe); !why.empty())
+      throw std::runtime_error("robot " + slot.tag + ": its program '" + argv[0] + "' is " + why);
+    std::string preload;
+    for (const auto& [k, v] : env)
+      if (k == "LD_PRELOAD") preload = v;
+    if (const char* p = std::getenv("LD_PRELOAD"); p && preload.empty()) preload = p;
+    for (auto& kv : shimEnvironment(slot.tag, {clock->name()}, preload)) {
+      env.erase(std::remove_if(env.begin(), env.end(), [&](const auto& x) { return x.first == kv.first; }), env.end());
+      env.push_back(std::move(kv));
+    }
     process = std::make_unique<ProgramProcess>(slot.tag, argv, ProgramProcess::fill(e.launch.cwd, values), env,
                                                (logs / (slot.tag + ".log")).string(), e.launch.stop_grace_s,
                                                robocup);
   } catch (const std::runtime_error& err) {
     throw ProgramError(err.what(), slot.tag + ": program could not be started");
   }
-  return std::make_unique<LaunchedProgram>(slot, run.attach_timeout_s, std::move(process));
+  return std::make_unique<LaunchedProgram>(slot, run.attach_timeout_s, std::move(clock), std::move(process));
 }
 
 ap::RobotProgram* Programs::program(int i) const {

@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "agent/program/ScriptedMotion.hpp"
+#include "common/clock/ClockPage.hpp"
 #include "agent/program/RobotProgram.hpp"
 #include "sim/programs/BuiltinProgram.hpp"
+#include "sim/programs/ClockPage.hpp"
 #include "sim/programs/ProgramDriver.hpp"
 #include "sim/programs/ProgramProcess.hpp"
 #include "sim/programs/ProgramSpec.hpp"
@@ -36,6 +38,8 @@ struct ProgramRun {
   double attach_timeout_s = 0;  // wall-clock s to wait for an external program's first answer
   std::string program_logs;     // launched programs' logs and {config} files
   std::string base_dir;         // where a launched command's relative path resolves first
+  int64_t tick_us = 10000;      // the bodies' cycle (a program's clock page advances by it)
+  int64_t clock_epoch_ns = common::clock::kDefaultRealtimeEpochNs;  // REALTIME at t = 0 (docs/shim.md)
 };
 
 class Programs {
@@ -110,6 +114,7 @@ class Programs {
   Robot& overrideSlot(int robot, const char* what);
   std::unique_ptr<ProgramDriver> makeBuiltin(const ProgramEntry& e, Robot& r);
   std::unique_ptr<ProgramDriver> makeLaunched(const ProgramRun& run, const ProgramEntry& e);
+  static std::unique_ptr<ClockPage> clockPage(const ProgramRun& run, const ProgramEntry& e);
   // How a launched LoLA program sees its socket: `robocup` to bind onto
   // /tmp/robocup in its own mount namespace (empty: none needed), or the
   // socket's real path as {socket} where the machine gives no namespace.

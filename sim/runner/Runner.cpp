@@ -220,7 +220,9 @@ void Runner::attachPrograms() {
                        spec.launch,
                        programs::robotSetup(spec.setup, programIdentity(scenario_, index))});
   }
-  programs_->build({scenario_.attach_timeout_s, scenario_.program_logs, scenario_.base_dir}, entries);
+  programs::ProgramRun run{scenario_.attach_timeout_s, scenario_.program_logs, scenario_.base_dir};
+  run.tick_us = world_->tickUs();
+  programs_->build(run, entries);
 }
 
 // The watchdog ends a run only when it is on and no debugger is attached: a
@@ -289,6 +291,8 @@ void Runner::publishSensors(int64_t tick, int64_t t_us) {
     sensors::copyToAgent(r.sensors->reading(), r.values);
     for (int j = 0; j < al::kNumJoints; ++j) r.values.joints.stiffnesses[j] = r.latched.joints.stiffnesses[j];
   }
+  // Each program's clock first: reading tick k's packet, it reads tick k's time.
+  for (size_t i = 0; i < robots_.size(); ++i) programs_->driver(static_cast<int>(i)).publishTime(tick);
   for (auto& r : robots_) r->body->publishSensors(r->values, t_us, tick);
 }
 

@@ -17,7 +17,8 @@
 //   4. handleWorldEvents  blow-ups: counted, the robot's sensors restarted
 //   5. captureOverview    the overview camera's frame, if one is due
 //   6. publishSensors     scenario buttons, sensors read from the new state,
-//                         each robot's slot written and its tick posted
+//                         each program's clock page set to the tick's time
+//                         (docs/shim.md), each robot's slot written and its tick posted
 //                         (the body side: sim/bridge/BodySide.hpp)
 //   7. awaitMotion        every robot's Motion answers through its driver
 //                         (inline: a builtin program's Motion step runs

@@ -1,0 +1,66 @@
+// The clock page: one shared memory object per robot that simswift writes
+// and a launched (or attached) program's shim (shim/) reads, so the
+// program's clocks read the run's simulated time (issue 44, docs/shim.md).
+//
+// simswift (sim/programs/ClockPage) creates it before the program starts,
+// writes the header once and, every tick, stores `now_ns` and then bumps
+// `generation` and wakes every futex waiter on it. It writes tick k's time
+// before tick k's sensors are posted (Runner stage 6), so a program that
+// reads tick k's packet reads tick k's time. The shim maps it read only,
+// checks the header once and reads each field once per use.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+namespace common::clock {
+
+// The environment variable naming the page (a POSIX shm name, "/..."), set
+// for a launched program and by `simswift attach`.
+constexpr const char* kPageEnv = "SIMSWIFT_CLOCK";
+// Extra executable names (':'-separated) in which the shim stays inert
+// (besides the debuggers it knows: shim/Target.cpp).
+constexpr const char* kInertEnv = "SIMSWIFT_SHIM_INERT";
+
+constexpr uint32_t kMagic = 0x4b4c4353;  // "SCLK" little-endian
+constexpr uint32_t kVersion = 1;
+
+// Where the program's clocks start. MONOTONIC and BOOTTIME read
+// kMonotonicStartNs + the run's time, as if the robot had booted a minute
+// before the run (never 0: some programs take 0 for "unset").
+constexpr int64_t kMonotonicStartNs = 60'000'000'000;
+// REALTIME's default epoch (a scenario's clock_epoch overrides it):
+// 2025-07-15T00:00:00Z: a fixed date keeps runs reproducible.
+constexpr int64_t kDefaultRealtimeEpochNs = 1'752'537'600'000'000'000;
+// TAI is REALTIME + 37 s (the leap seconds since 1972, IERS Bulletin C).
+constexpr int64_t kTaiOffsetNs = 37'000'000'000;
+
+enum class RunState : uint32_t {
+  Starting = 0,  // the program has not answered its first packet yet
+  Running = 1,   // time moves with the run's ticks
+  Ended = 2,     // the run is over: time stands; waits end (docs/shim.md)
+};
+
+struct ClockLayout {
+  // Written once before the program starts.
+  uint32_t magic;
+  uint32_t version;
+  uint32_t size;             // sizeof(ClockLayout)
+  uint32_t reserved;
+  int64_t tick_ns;           // the body's cycle: 10 ms (libagent), 12 ms (LoLA)
+  int64_t realtime_epoch_ns; // REALTIME at the run's t = 0, ns since 1970
+  // Written every tick.
+  std::atomic<int64_t> now_ns;        // the run's simulated time: tick k * tick_ns
+  std::atomic<uint32_t> generation;   // futex word: +1 after every write of now_ns or state
+  std::atomic<uint32_t> state;        // RunState
+};
+static_assert(std::atomic<int64_t>::is_always_lock_free, "the page is shared between processes");
+static_assert(std::atomic<uint32_t>::is_always_lock_free, "the page is shared between processes");
+static_assert(sizeof(std::atomic<uint32_t>) == 4, "generation is a futex word");
+
+// The robot's page name: "/simswift-clock-t19p1" (the robot's tag, as its
+// libagent objects and LoLA socket are named by it).
+inline std::string pageName(const std::string& robot_tag) { return "/simswift-clock-" + robot_tag; }
+
+}  // namespace common::clock

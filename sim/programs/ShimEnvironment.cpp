@@ -1,0 +1,48 @@
+#include "sim/programs/ShimEnvironment.hpp"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+#include "common/clock/ClockPage.hpp"
+
+#ifndef SIMSWIFT_INSTALL_LIBDIR
+#define SIMSWIFT_INSTALL_LIBDIR "lib"
+#endif
+
+namespace simswift::programs {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr const char* kShimFile = "libsimswift-shim.so";
+}
+
+std::string shimLibraryPath() {
+  if (const char* e = std::getenv("SIMSWIFT_SHIM_LIBRARY"); e && *e) return e;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  const fs::path dir = exe.parent_path();
+  for (const fs::path& candidate :
+       {dir / kShimFile, dir.parent_path() / kShimFile, dir.parent_path() / SIMSWIFT_INSTALL_LIBDIR / kShimFile})
+    if (access(candidate.c_str(), R_OK) == 0) return candidate.lexically_normal().string();
+  return "";
+}
+
+std::vector<std::pair<std::string, std::string>> shimEnvironment(const std::string& robot, const ShimSettings& s,
+                                                                 const std::string& preload_before) {
+  const std::string shim = shimLibraryPath();
+  if (shim.empty())
+    throw std::runtime_error("robot " + robot + ": " + kShimFile +
+                             " (the simulated clock, docs/shim.md) was not found beside simswift, one folder up or "
+                             "in its lib folder; build the simswift_shim target or set SIMSWIFT_SHIM_LIBRARY");
+  std::vector<std::pair<std::string, std::string>> env;
+  env.emplace_back("LD_PRELOAD", preload_before.empty() ? shim : shim + ":" + preload_before);
+  env.emplace_back(common::clock::kPageEnv, s.clock_page);
+  return env;
+}
+
+}  // namespace simswift::programs
