@@ -16,6 +16,8 @@
  * start time and blocking (proc(5)'s task state), and none after the wait's
  * end time until the thread has woken, so what the thread reads is exact:
  * the wait must end at the first cycle at or after the time asked for.
+ * The clocks include MONOTONIC read with the raw syscall (syscall(2)), as a
+ * runtime that bypasses libc reads it; the waits syscall_nanosleep.
  * Prints "clock ... steps=N bad=M", "wait KIND start=... end=... want=..."
  * and "digest HEX" (FNV-1a of every reading); exit 0 when everything
  * matched, 1 on a mismatch, 2 on bad use. SOCKET "-" is /tmp/robocup. */
@@ -119,6 +121,7 @@ static void doWait(const char* k) {
   else if (!strcmp(k, "clock_nanosleep")) r = clock_nanosleep(CLOCK_MONOTONIC, 0, &rel, NULL);
   else if (!strcmp(k, "clock_nanosleep_abs")) r = clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &abs, NULL);
   else if (!strcmp(k, "clock_nanosleep_abs_realtime")) r = clock_nanosleep(CLOCK_REALTIME, TIMER_ABSTIME, &abs, NULL);
+  else if (!strcmp(k, "syscall_nanosleep")) r = (int)syscall(SYS_nanosleep, &rel, NULL);
   else if (!strcmp(k, "usleep")) r = usleep((useconds_t)(wait / 1000));
   else if (!strcmp(k, "sleep")) r = (int)sleep(1);
   else if (!strcmp(k, "cond_timedwait") || !strcmp(k, "cond_clockwait") || !strcmp(k, "cond_monotonic")) {
@@ -223,7 +226,7 @@ int main(int argc, char** argv) {
       {CLOCK_MONOTONIC_RAW, "MONOTONIC_RAW"}, {CLOCK_MONOTONIC_COARSE, "MONOTONIC_COARSE"},
       {CLOCK_REALTIME_COARSE, "REALTIME_COARSE"}};
   enum { NC = sizeof clocks / sizeof clocks[0] };
-  int64_t last[NC + 1] = {0}, bad[NC + 1] = {0};
+  int64_t last[NC + 2] = {0}, bad[NC + 2] = {0};
   int done = 0, started = 0;
   unsigned char packet[PACKET];
   for (int cycle = 0; cycle < cycles; ++cycle) {
@@ -231,10 +234,14 @@ int main(int argc, char** argv) {
       fprintf(stderr, "clock-probe: the socket closed at packet %d\n", cycle);
       return 1;
     }
-    for (int c = 0; c <= NC; ++c) {
+    for (int c = 0; c <= NC + 1; ++c) {
       int64_t v;
       if (c < NC) v = now(clocks[c].id);
-      else {
+      else if (c == NC + 1) { /* the raw syscall, as a runtime that bypasses libc makes it */
+        struct timespec t;
+        syscall(SYS_clock_gettime, CLOCK_MONOTONIC, &t);
+        v = ns(t);
+      } else {
         struct timeval tv;
         gettimeofday(&tv, NULL);
         v = ((int64_t)tv.tv_sec * 1000000 + tv.tv_usec) * 1000; /* us -> ns */
@@ -278,8 +285,9 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  for (int c = 0; c <= NC; ++c) {
-    printf("clock %s steps=%d bad=%lld\n", c < NC ? clocks[c].name : "gettimeofday", cycles - 1, (long long)bad[c]);
+  for (int c = 0; c <= NC + 1; ++c) {
+    printf("clock %s steps=%d bad=%lld\n", c < NC ? clocks[c].name : c == NC ? "gettimeofday" : "syscall_MONOTONIC",
+           cycles - 1, (long long)bad[c]);
     if (bad[c]) ++failures;
   }
   if (done != nkinds) {
