@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -19,16 +20,22 @@
 #include <string>
 #include <vector>
 
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include "app/cli/CommandLine.hpp"
+#include "common/clock/ClockPage.hpp"
+#include "common/libagent/SharedNames.hpp"
 #include "app/experiment/BehaviourHooks.hpp"
 #include "app/experiment/Command.hpp"
 #include "app/scenario_tests/TestCommand.hpp"
 #include "sim/lola/LolaServer.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
+#include "sim/programs/ProgramBinary.hpp"
 #include "sim/programs/ProgramProcess.hpp"
+#include "sim/programs/ShimEnvironment.hpp"
 #include "sim/runner/Bodies.hpp"
 #include "sim/runner/RunStats.hpp"
 #include "sim/runner/Runner.hpp"
@@ -346,7 +353,9 @@ class AttachCommand {
         "Runs COMMAND, an unchanged V6 (LoLA) program, by hand: its /tmp/robocup is that\n"
         "robot's socket (default /tmp/simswift-lola/t<T>p<P>), in a mount namespace of its own.\n"
         "Start the run first: the robot's socket exists while it runs. Everything after -- is\n"
-        "the command's, passed on as it is.\n"
+        "the command's, passed on as it is. COMMAND reads the robot's simulated time through\n"
+        "libsimswift-shim.so (LD_PRELOAD; docs/shim.md), as a launched program does; a static\n"
+        "binary is refused. Under gdb (-- gdb --args PROGRAM) gdb keeps the wall clock.\n"
         "\n"
         "Exit codes: COMMAND's; 1 no such socket or COMMAND cannot start; 2 bad command line.");
     robot_.declare(*cmd_, "of the robot");
@@ -355,6 +364,11 @@ class AttachCommand {
                               ->transform(cli::nonEmpty());
     socket->excludes(robot_.team_opt);
     socket->excludes(robot_.player_opt);
+    cmd_->add_option("--clock", clock_,
+                     "the robot's clock page (default /simswift-clock-t<T>p<P>, from --team and --player or the "
+                     "socket's name)")
+        ->type_name("NAME")
+        ->transform(cli::nonEmpty());
     // Only for --help and to say where the command goes: main() takes it
     // from after `--`.
     cmd_->add_option("COMMAND", misplaced_, "the program and its arguments, after --")->type_name("");
@@ -369,6 +383,7 @@ class AttachCommand {
   CLI::App* cmd_ = nullptr;
   RobotOptions robot_;
   std::string socket_;
+  std::string clock_;
   std::vector<std::string> misplaced_;  // a command given before `--`
 };
 
@@ -379,11 +394,42 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   if (socket_.empty() && !robot_.team) return cli::usageError(*cmd_, "give --team and --player, or --socket");
   const std::string socket =
       socket_.empty() ? simswift::runner::defaultLolaSocket(*robot_.team, *robot_.player, false) : socket_;
+  // The robot's clock page: named by its robot (common/clock/ClockPage.hpp).
+  std::string tag;
+  int team = 0, player = 0;
+  if (robot_.team) tag = common::libagent::robotTag(*robot_.team, *robot_.player);
+  else if (common::libagent::parseRobotTag(std::filesystem::path(socket).filename().string(), &team, &player))
+    tag = common::libagent::robotTag(team, player);
+  const std::string clock = !clock_.empty() ? clock_ : tag.empty() ? "" : common::clock::pageName(tag);
+  if (clock.empty())
+    return cli::usageError(*cmd_, "the robot's clock page cannot be told from --socket " + socket +
+                                      ": give --clock NAME (the run's /simswift-clock-t<T>p<P>)");
+  if (const int fd = shm_open(clock.c_str(), O_RDONLY, 0); fd >= 0) {
+    close(fd);
+  } else {
+    std::fprintf(stderr, "simswift attach: the robot's clock page %s: %s (start the run first)\n", clock.c_str(),
+                 std::strerror(errno));
+    return 1;
+  }
+  const std::string exe = simswift::programs::findExecutable(command[0]);
+  if (const std::string why = exe.empty() ? "" : simswift::programs::shimRefusal(exe); !why.empty()) {
+    std::fprintf(stderr, "simswift attach: '%s' is %s\n", command[0].c_str(), why.c_str());
+    return 1;
+  }
+  std::vector<std::pair<std::string, std::string>> env;
+  try {
+    const char* preload = std::getenv("LD_PRELOAD");
+    env = simswift::programs::shimEnvironment(tag.empty() ? clock : tag, {clock}, preload ? preload : "");
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "simswift attach: %s\n", e.what());
+    return 1;
+  }
   const std::string error = simswift::programs::ProgramProcess::enterPrivateRobocup(socket);
   if (!error.empty()) {
     std::fprintf(stderr, "simswift attach: %s\n", error.c_str());
     return 1;
   }
+  for (const auto& [k, v] : env) setenv(k.c_str(), v.c_str(), 1);
   std::vector<char*> argv;
   for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);

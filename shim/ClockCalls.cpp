@@ -77,3 +77,9 @@ extern "C" SIMSWIFT_SHIM_EXPORT time_t time(time_t* t) noexcept {
   if (!clockActive()) return real<time_t (*)(time_t*)>("time")(t);
   return simswift_shim_time(t);
 }
+
+// C11's clock (TIME_UTC is REALTIME).
+extern "C" SIMSWIFT_SHIM_EXPORT int timespec_get(struct timespec* ts, int base) noexcept {
+  if (!clockActive() || base != TIME_UTC) return real<int (*)(timespec*, int)>("timespec_get")(ts, base);
+  return simswift_shim_clock_gettime(CLOCK_REALTIME, ts) == 0 ? base : 0;
+}

@@ -37,10 +37,17 @@ Ppoll realPpoll() {
 }
 
 // The calling thread's eventfd (kept for the thread's life; its counter
-// drained before each use).
+// drained before each use). A forked child makes its own: the parent's
+// timekeeper still writes the inherited one.
 int threadEventfd() {
   thread_local int fd = -1;
+  thread_local pid_t owner = 0;
+  if (fd >= 0 && owner != getpid()) {
+    close(fd);
+    fd = -1;
+  }
   if (fd < 0) {
+    owner = getpid();
     fd = eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
     if (fd < 0) {
       std::fprintf(stderr, "simswift shim: %s: eventfd: %s; a timed poll cannot end\n", programName(),

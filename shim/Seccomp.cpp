@@ -116,12 +116,15 @@ void onSigsys(int, siginfo_t* info, void* context) {
 }
 
 void install() {
-  if (!clockActive() || underSeccomp()) return;
+  if (!clockActive()) return;
+  // The handler in every process (exec resets it); the filter once per
+  // process tree (it stays over fork and exec).
   struct sigaction sa {};
   sa.sa_sigaction = onSigsys;
   sa.sa_flags = SA_SIGINFO | SA_NODEFER;
   sigemptyset(&sa.sa_mask);
-  if (real<int (*)(int, const struct sigaction*, struct sigaction*)>("sigaction")(SIGSYS, &sa, nullptr) != 0) return;
+  real<int (*)(int, const struct sigaction*, struct sigaction*)>("sigaction")(SIGSYS, &sa, nullptr);
+  if (underSeccomp()) return;
   constexpr unsigned kMagicLow = static_cast<uint32_t>(kAllowMagic);
   constexpr unsigned kMagicHigh = static_cast<uint32_t>(kAllowMagic >> 32);
   constexpr int n = sizeof kTrapped / sizeof kTrapped[0];

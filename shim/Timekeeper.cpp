@@ -36,13 +36,17 @@ int (*realCondBroadcast())(pthread_cond_t*) {
   return f;
 }
 
-void fire(Slot& s, int64_t now) {
+// False: not now (tried again next tick).
+bool fire(Slot& s, int64_t now) {
   const AlarmSpec& a = s.spec;
   switch (a.kind) {
     case Alarm::CondBroadcast:
       // Under its mutex: the waiter holds it from registering until
       // pthread_cond_wait releases it, so the broadcast cannot come between.
-      pthread_mutex_lock(a.mutex);
+      // Only tried: a thread that holds it while it waits for time itself
+      // (through this thread) must not deadlock; the wait then ends on a
+      // later tick, when the mutex is free (docs/shim.md).
+      if (pthread_mutex_trylock(a.mutex) != 0) return false;
       realCondBroadcast()(a.cond);
       pthread_mutex_unlock(a.mutex);
       break;
@@ -61,6 +65,7 @@ void fire(Slot& s, int64_t now) {
       break;
     }
   }
+  return true;
 }
 
 void* keep(void*) {
@@ -76,7 +81,10 @@ void* keep(void*) {
                        s.state.compare_exchange_strong(expected, Firing, std::memory_order_acq_rel);
       pthread_mutex_unlock(&g_lock);
       if (!due) continue;
-      fire(s, now);
+      if (!fire(s, now)) {
+        s.state.store(Armed, std::memory_order_release);
+        continue;
+      }
       if (s.spec.kind == Alarm::Timer && s.spec.period_ns > 0 && !over) {
         const int64_t missed = (now - s.spec.deadline_ns) / s.spec.period_ns;
         s.spec.deadline_ns += (missed + 1) * s.spec.period_ns;

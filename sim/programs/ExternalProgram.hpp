@@ -22,6 +22,9 @@ class ExternalProgram : public ProgramDriver {
   // start. Then the clock page says Running.
   bool attach() override;
   void publishTime(int64_t tick) override { clock_->publish(tick); }
+  // The run is over: the clock page says Ended (the program's waits for
+  // time end, so it can see its shutdown: docs/shim.md).
+  void stop() override { clock_->setState(common::clock::RunState::Ended); }
 
  protected:
   double attach_timeout_s_;
@@ -37,7 +40,10 @@ class LaunchedProgram final : public ExternalProgram {
   // In slices of 50 ms (wall clock), checking the process between them, so
   // a crash ends the run within a slice (ProgramError), never a hang.
   bool await(Step step, double timeout_s) override;
-  void stop() override { process_->stop(); }
+  void stop() override {
+    ExternalProgram::stop();
+    process_->stop();
+  }
   std::string log() const override { return slot_.tag + ": " + process_->logPath(); }
 
  private:

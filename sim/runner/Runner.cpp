@@ -222,6 +222,7 @@ void Runner::attachPrograms() {
   }
   programs::ProgramRun run{scenario_.attach_timeout_s, scenario_.program_logs, scenario_.base_dir};
   run.tick_us = world_->tickUs();
+  run.clock_epoch_ns = scenario_.clock_epoch_s * 1'000'000'000;
   programs_->build(run, entries);
 }
 

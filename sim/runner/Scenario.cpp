@@ -498,6 +498,10 @@ void readRun(const YamlReader& top, Scenario& sc) {
   }
   sc.attach_timeout_s = top.number("attach_timeout", sc.attach_timeout_s, Range::openClosed(0, kMaxWallClockS));
   sc.program_logs = top.string("program_logs", sc.program_logs);
+  // Whole seconds, 1970 to 2100 (a YAML number is exact there).
+  const double epoch = top.number("clock_epoch", static_cast<double>(sc.clock_epoch_s), Range::closed(0, 4102444800.0));
+  if (epoch != static_cast<double>(static_cast<int64_t>(epoch))) top.fail("clock_epoch", "must be whole seconds since 1970");
+  sc.clock_epoch_s = static_cast<int64_t>(epoch);
   if (sc.program_logs.empty()) top.fail("program_logs", "must name a folder");
 }
 

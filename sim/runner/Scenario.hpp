@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/clock/ClockPage.hpp"
 #include "common/libagent/CameraImages.hpp"
 #include "common/nao/Postures.hpp"
 #include "sim/bridge/BodySide.hpp"
@@ -141,6 +142,9 @@ struct Scenario {
   double watchdog_s = 5.0;        // wall-clock s per robot thread answer; 0 = off (watchdog: off)
   double attach_timeout_s = 30.0; // wall-clock s to wait for external robots
   std::string program_logs = "simswift-logs";  // launched programs' logs (relative: to the working folder)
+  // `clock_epoch:` a launched or external program's REALTIME at t = 0, s
+  // since 1970 UTC (docs/shim.md; default 2025-07-15T00:00:00Z).
+  int64_t clock_epoch_s = common::clock::kDefaultRealtimeEpochNs / 1'000'000'000;
   // The World's settings: `physics:` (checked by checkWorldConfig, the
   // World's own rules) and tick_us, the us per tick of the robots' body
   // interface (all robots alike; sim/runner/Bodies.hpp bodyCycleUs).

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/programs/ClockPage.hpp"
 #include "tests/support/Shell.hpp"
 
 namespace {
@@ -51,7 +52,7 @@ const std::vector<Command> kCommands = {
      {"--short", "--only", "--out", "--jobs", "--shard", "--seed", "--baseline", "--alpha", "--junit", "--progress",
       "--test", "--trial", "--overview", "--check", "--merge"}},
     {kSimswift + " clean", {"--team", "--player"}},
-    {kSimswift + " attach", {"--team", "--player", "--socket"}},
+    {kSimswift + " attach", {"--team", "--player", "--socket", "--clock"}},
     {kAgent,
      {"--team", "--player", "--config", "--behaviour", "--seed", "--start", "--bare", "--posture", "--move", "--at",
       "--print", "--attach-timeout", "--lola"}},
@@ -176,7 +177,10 @@ TEST(CommandLine, AttachPassesEverythingAfterTheDashesThrough) {
   addr.sun_family = AF_UNIX;
   socket_path.copy(addr.sun_path, sizeof addr.sun_path - 1);
   ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
-  const ShellResult r = shell(kSimswift + " attach --socket " + socket_path +
+  // The robot's clock page, as a run makes it (the socket is not named by its robot: --clock).
+  const std::string clock = "/simswift-clock-cmdline-" + std::to_string(getpid());
+  simswift::programs::ClockPage page(clock, 12'000'000, 0);
+  const ShellResult r = shell(kSimswift + " attach --socket " + socket_path + " --clock " + clock +
                               " -- /bin/sh -c 'printf \"%s|\" \"$@\"' sh --help -- --team 'a b' -x");
   ::close(fd);
   fs::remove_all(dir);

@@ -285,8 +285,9 @@ TEST(V6Run, HandStartedAndAttachedEqualLaunched) {
         const std::string simswift = std::string(SIMSWIFT_BINARY_DIR) + "/simswift";
         const int fd = ::open((logs + "/attached.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
-        ::execl(simswift.c_str(), simswift.c_str(), "attach", "--socket", socket.c_str(), "--", kClient.c_str(), "-",
-                "0", "hold", nullptr);
+        // A socket not named by its robot: the robot's clock page by name.
+        ::execl(simswift.c_str(), simswift.c_str(), "attach", "--socket", socket.c_str(), "--clock",
+                "/simswift-clock-t62p1", "--", kClient.c_str(), "-", "0", "hold", nullptr);
         ::_exit(127);
       }
     }

@@ -2,6 +2,8 @@
 // 1, docs/shim.md): the clock probe (clock_probe.c, public Linux facts only)
 // launched as a V6 robot, under the shim simswift preloads.
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fstream>
@@ -38,13 +40,15 @@ std::string logsFolder(int team) {
 }
 
 // The probe launched as robot t<team>p1 on its own socket for `ticks` LoLA
-// cycles (12 ms), waiting in `kinds`.
-ProbeRun runProbe(int team, int ticks, const std::string& kinds, const std::string& exe = kProbe) {
+// cycles (12 ms), waiting in `kinds`; `before`: YAML list items put before
+// it in the command (a debugger).
+ProbeRun runProbe(int team, int ticks, const std::string& kinds, const std::string& exe = kProbe,
+                  const std::string& before = "") {
   const std::string socket = "/tmp/simswift-test-clock-" + std::to_string(::getpid()) + "-" + std::to_string(team) + ".sock";
   std::ostringstream y;
   y << "duration: " << ticks * 0.012 << "\nseed: 5\nattach_timeout: 20\nrobots:\n"
     << "  - {team: " << team << ", player: 1, x: -1.0, y: 0.5, lola: {socket: " << socket
-    << "}, program: {command: [\"" << exe << "\", \"{socket}\", \"" << ticks << "\", \"" << kinds << "\"]}}\n";
+    << "}, program: {command: [" << before << "\"" << exe << "\", \"{socket}\", \"" << ticks << "\", \"" << kinds << "\"]}}\n";
   Scenario sc = Scenario::parse(y.str(), std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/v6_test.yaml");
   sc.program_logs = logsFolder(team);
   ProbeRun out;
@@ -116,3 +120,87 @@ TEST(ClockV6, AStaticBinaryIsRefused) {
   }
 }
 #endif
+
+// gdb (issue 44 item 5): the program under gdb, launched as the robot's
+// command, sees the same simulated time as without it (the same digest of
+// every reading and wait), while gdb itself keeps the wall clock (the shim
+// is inert in it, docs/shim.md). Skipped where gdb is not installed.
+TEST(ClockV6, UnderGdbTheProgramSeesTheSameTime) {
+  if (::access("/usr/bin/gdb", X_OK) != 0) GTEST_SKIP() << "no /usr/bin/gdb";
+  const int ticks = 40;
+  const std::string kinds = "nanosleep,cond_timedwait,poll";
+  const ProbeRun plain = runProbe(83, ticks, kinds);
+  const ProbeRun gdb = runProbe(83, ticks, kinds, kProbe,
+                                "/usr/bin/gdb, -batch, -nx, -ex, \"handle SIGSYS nostop noprint pass\", -ex, run, --args, ");
+  const std::vector<std::string> digest = linesOf(plain.log, "digest ");
+  ASSERT_EQ(digest.size(), 1u) << joined(plain.log);
+  EXPECT_EQ(linesOf(gdb.log, "digest "), digest) << joined(gdb.log);
+  EXPECT_EQ(linesOf(gdb.log, "wait "), linesOf(plain.log, "wait ")) << joined(gdb.log);
+  EXPECT_EQ(gdb.hash, plain.hash);
+}
+
+// `simswift attach` (issue 44 items 1 and 5): the probe started by hand on a
+// robot whose program is external, directly and under gdb, reads what the
+// launched probe reads (the same digest, the same waits, the same hash).
+namespace {
+
+// The probe (or `before` + probe) started with `simswift attach --team
+// <team> --player 1` while the run of an external robot runs; its output.
+ProbeRun runAttached(int team, int ticks, const std::string& kinds, const std::vector<std::string>& before) {
+  std::ostringstream y;
+  y << "duration: " << ticks * 0.012 << "\nseed: 5\nattach_timeout: 20\nrobots:\n"
+    << "  - {team: " << team << ", player: 1, x: -1.0, y: 0.5, lola: {}, program: external}\n";
+  Scenario sc = Scenario::parse(y.str(), std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/v6_test.yaml");
+  sc.program_logs = logsFolder(team);
+  const std::string log = sc.program_logs + "-attached.log";
+  ProbeRun out;
+  pid_t pid = -1;
+  {
+    Runner r(sc);
+    r.start();  // the socket and the clock page exist from here
+    pid = ::fork();
+    if (pid == 0) {
+      const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
+      std::vector<std::string> args = {std::string(SIMSWIFT_BINARY_DIR) + "/simswift", "attach", "--team",
+                                       std::to_string(team), "--player", "1", "--"};
+      args.insert(args.end(), before.begin(), before.end());
+      for (const std::string& a : {kProbe, std::string("-"), std::to_string(ticks), kinds}) args.push_back(a);
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    simswift::runner::RunOptions o;
+    o.progress = false;
+    out.stats = r.run(o);
+    out.hash = r.world().stateHash();
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);) out.log.push_back(line);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << joined(out.log);
+  return out;
+}
+
+}  // namespace
+
+TEST(ClockV6, AttachedAndAttachedUnderGdbReadTheLaunchedView) {
+  const int ticks = 40;
+  const std::string kinds = "nanosleep,cond_timedwait,poll";
+  const ProbeRun launched = runProbe(84, ticks, kinds);
+  const std::vector<std::string> digest = linesOf(launched.log, "digest ");
+  ASSERT_EQ(digest.size(), 1u) << joined(launched.log);
+  const ProbeRun attached = runAttached(84, ticks, kinds, {});
+  EXPECT_EQ(linesOf(attached.log, "digest "), digest) << joined(attached.log);
+  EXPECT_EQ(attached.hash, launched.hash);
+  if (::access("/usr/bin/gdb", X_OK) != 0) GTEST_SKIP() << "no /usr/bin/gdb";
+  const ProbeRun gdb = runAttached(84, ticks, kinds,
+                                   {"/usr/bin/gdb", "-batch", "-nx", "-ex", "handle SIGSYS nostop noprint pass", "-ex",
+                                    "run", "--args"});
+  EXPECT_EQ(linesOf(gdb.log, "digest "), digest) << joined(gdb.log);
+  EXPECT_EQ(linesOf(gdb.log, "wait "), linesOf(launched.log, "wait ")) << joined(gdb.log);
+  EXPECT_EQ(gdb.hash, launched.hash);
+}
