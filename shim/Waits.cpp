@@ -78,7 +78,9 @@ int condWaitUntil(pthread_cond_t* c, pthread_mutex_t* m, clockid_t clk, const ti
 
 // glibc's semaphore (nptl/semaphoreP.h, 64-bit): the value in the low 32
 // bits of `data`, the number of waiters in the high 32; sem_post wakes the
-// value word's futex when there are waiters.
+// value word's futex when there are waiters. `priv` is glibc's LLL_PRIVATE
+// (0) or LLL_SHARED (128): the futex op's flag is FUTEX_PRIVATE_FLAG ^ priv
+// (lowlevellock-futex.h's __lll_private_flag).
 struct GlibcSem {
   std::atomic<uint64_t> data;
   int priv;
@@ -120,7 +122,8 @@ int semWaitUntil(sem_t* sem, clockid_t clk, const timespec* abstime) {
   uint32_t* word = reinterpret_cast<uint32_t*>(&s->data);  // the low half (x86-64 is little-endian)
   AlarmSpec a{Alarm::FutexWake, deadline};
   a.word = word;
-  a.futex_private = s->priv;
+  const int flag = FUTEX_PRIVATE_FLAG ^ s->priv;
+  a.futex_private = flag;
   const int h = addAlarm(a);
   if (h < 0) tableFull("sem_timedwait");
   s->data.fetch_add(kWaiter, std::memory_order_relaxed);
@@ -132,7 +135,7 @@ int semWaitUntil(sem_t* sem, clockid_t clk, const timespec* abstime) {
       errno = ETIMEDOUT, result = -1;
       break;
     }
-    const long r = sys(SYS_futex, reinterpret_cast<long>(word), FUTEX_WAIT | s->priv, 0, 0, 0, 0);
+    const long r = sys(SYS_futex, reinterpret_cast<long>(word), FUTEX_WAIT | flag, 0, 0, 0, 0);
     if (r == -EINTR) {
       s->data.fetch_sub(kWaiter, std::memory_order_relaxed);
       errno = EINTR, result = -1;

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <ctime>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -130,8 +131,13 @@ TEST(ClockV6, UnderGdbTheProgramSeesTheSameTime) {
   const int ticks = 40;
   const std::string kinds = "nanosleep,cond_timedwait,poll";
   const ProbeRun plain = runProbe(83, ticks, kinds);
+  // gdb prints its own clock (its Python's time.time()) before it runs the probe.
   const ProbeRun gdb = runProbe(83, ticks, kinds, kProbe,
-                                "/usr/bin/gdb, -batch, -nx, -ex, \"handle SIGSYS nostop noprint pass\", -ex, run, --args, ");
+                                "/usr/bin/gdb, -batch, -nx, -ex, \"python print('gdb-clock', int(__import__('time').time()))\", "
+                                "-ex, \"handle SIGSYS nostop noprint pass\", -ex, run, --args, ");
+  const std::vector<std::string> clock = linesOf(gdb.log, "gdb-clock ");
+  ASSERT_EQ(clock.size(), 1u) << joined(gdb.log);
+  EXPECT_NEAR(std::stod(clock[0].substr(10)), static_cast<double>(::time(nullptr)), 600) << "gdb keeps the wall clock";
   const std::vector<std::string> digest = linesOf(plain.log, "digest ");
   ASSERT_EQ(digest.size(), 1u) << joined(plain.log);
   EXPECT_EQ(linesOf(gdb.log, "digest "), digest) << joined(gdb.log);
