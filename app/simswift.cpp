@@ -355,7 +355,7 @@ class AttachCommand {
         "Start the run first: the robot's socket exists while it runs. Everything after -- is\n"
         "the command's, passed on as it is. COMMAND reads the robot's simulated time through\n"
         "libsimswift-shim.so (LD_PRELOAD; docs/shim.md), as a launched program does; a static\n"
-        "binary is refused. Under gdb (-- gdb --args PROGRAM) gdb keeps the wall clock.\n"
+        "binary is refused. COMMAND may be gdb running the program: gdb keeps the wall clock.\n"
         "\n"
         "Exit codes: COMMAND's; 1 no such socket or COMMAND cannot start; 2 bad command line.");
     robot_.declare(*cmd_, "of the robot");
