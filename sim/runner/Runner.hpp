@@ -76,6 +76,7 @@
 #include "common/libagent/SimExtensions.hpp"
 #include "common/nao/NaoFacts.hpp"
 #include "sim/bridge/BodyHost.hpp"
+#include "sim/bridge/V4l2Devices.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/game/GameControllerUdp.hpp"
 #include "sim/game/Sideline.hpp"
@@ -208,6 +209,7 @@ class Runner {
     double last_robot_contact_s = -1e9;  // s (world time) this robot last touched another robot
     size_t next_push = 0;  // next of spec.pushes to apply
     common::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
+    std::unique_ptr<bridge::V4l2Devices> v4l2;  // its cameras as V4L2 devices (a launched program's), or none
   };
 
   // Build stages (start(), in this order).
@@ -223,6 +225,12 @@ class Runner {
   // Robot i's answer to what its body side posted (a tick or a camera
   // frame), through its driver: the watchdog ends the run if none comes.
   void awaitAnswer(int i, bool motion);
+  // The V4L2 cameras (RobotSpec::v4l2): whether robot `spec` has them, its
+  // frame published to the cameras its program streams, and the lock-step
+  // wait until it has taken them (common/v4l2/DeviceBlock.hpp).
+  bool servesV4l2(const RobotSpec& spec) const;
+  void publishV4l2(int i, int64_t frame, int64_t t_us);
+  void awaitV4l2(int i);
   [[noreturn]] void watchdogFail(int i, const char* thread) const;
   double watchdogWait() const;  // s per wait
   bool watchdogArmed() const;   // on, and no debugger attached
