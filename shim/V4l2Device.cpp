@@ -702,6 +702,33 @@ int open(const char* path, int flags) {
   return fd;
 }
 
+namespace {
+void fillStat(int camera, struct stat* out) {
+  std::memset(out, 0, sizeof *out);
+  out->st_mode = S_IFCHR | 0660;
+  out->st_rdev = makedev(81, static_cast<unsigned>(camera));  // video4linux's major
+  out->st_dev = makedev(0, 5);
+  out->st_ino = 1000 + static_cast<ino_t>(camera);
+  out->st_nlink = 1;
+  out->st_uid = geteuid();
+  out->st_gid = getegid();
+  out->st_blksize = 4096;
+}
+}  // namespace
+
+bool statPath(const char* path, struct stat* out) {
+  if (path == nullptr || std::strncmp(path, "/dev/", 5) != 0) return false;
+  State& s = state();
+  std::lock_guard<std::mutex> g(s.lock);
+  if (!attach(s)) return false;
+  for (int c = 0; c < cv::kNumCameras; ++c)
+    if (std::strncmp(path, s.block->camera[c].device, cv::kMaxDevicePath) == 0) {
+      fillStat(c, out);
+      return true;
+    }
+  return false;
+}
+
 bool isDevice(int fd) {
   State& s = state();
   std::lock_guard<std::mutex> g(s.lock);
@@ -713,7 +740,9 @@ int ioctl(int fd, unsigned long request, void* arg) {
   std::unique_lock<std::mutex> held(s.lock);
   const auto it = s.fds.find(fd);
   if (it == s.fds.end()) return -2;
-  return handle(s, held, fd, s.camera[it->second], request, arg);
+  // The kernel takes the request as 32 bits: a program that passes it
+  // through an int (NaoTH's xioctl) hands glibc a sign-extended long.
+  return handle(s, held, fd, s.camera[it->second], static_cast<uint32_t>(request), arg);
 }
 
 void* mmap(void* addr, size_t length, int prot, int flags, int fd, off_t offset) {
@@ -733,16 +762,7 @@ void* mmap(void* addr, size_t length, int prot, int flags, int fd, off_t offset)
 void stat(int fd, struct stat* out) {
   State& s = state();
   std::lock_guard<std::mutex> g(s.lock);
-  const int camera = s.fds.count(fd) ? s.fds[fd] : 0;
-  std::memset(out, 0, sizeof *out);
-  out->st_mode = S_IFCHR | 0660;
-  out->st_rdev = makedev(81, static_cast<unsigned>(camera));  // video4linux's major
-  out->st_dev = makedev(0, 5);
-  out->st_ino = 1000 + static_cast<ino_t>(camera);
-  out->st_nlink = 1;
-  out->st_uid = geteuid();
-  out->st_gid = getegid();
-  out->st_blksize = 4096;
+  fillStat(s.fds.count(fd) ? s.fds[fd] : 0, out);
 }
 
 void closing(int fd) {

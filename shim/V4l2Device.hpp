@@ -23,6 +23,9 @@ bool anyOpen();
 // opens it and returns the program's fd, or -1 with errno. Returns -2 if
 // `path` is not a camera (the caller opens it as usual).
 int open(const char* path, int flags);
+// `path` names one of the robot's cameras: what stat says of it (a
+// character device, as stat(fd) below). False if it is none.
+bool statPath(const char* path, struct stat* out);
 // fd is a camera fd (the caller checks anyOpen() first).
 bool isDevice(int fd);
 // VIDIOC_* and UVCIOC_CTRL_QUERY: 0 or -1 with errno.

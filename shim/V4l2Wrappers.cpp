@@ -4,8 +4,9 @@
 // (V4l2Device.hpp), every other call to libc's own function unchanged.
 // Covered: open, open64, openat, openat64 (and the _FORTIFY_SOURCE entry
 // points __open_2, ...), close, ioctl, mmap, mmap64, read, fstat, fstat64,
-// fstatat, fstatat64 and the older __fxstat, __fxstat64 (binaries built
-// against glibc before 2.33). Not covered (docs/porting.md section 3): dup
+// fstatat, fstatat64, stat, stat64, lstat, lstat64 (NaoTH stats the path
+// before it opens it) and the older __fxstat, __xstat, __lxstat and their
+// 64 forms (binaries built against glibc before 2.33). Not covered (docs/porting.md section 3): dup
 // of a camera fd (the copy is a plain FIFO), statx, a raw syscall.
 #include <fcntl.h>
 #include <stdarg.h>
@@ -54,9 +55,7 @@ int openPath(const char* name, const char* path, int flags, mode_t mode) {
   return (std::strcmp(name, "open64") == 0 ? next_open64 : next_open)(path, flags, mode);
 }
 
-void fillStat64(int fd, struct stat64* out) {
-  struct stat s;
-  v4::stat(fd, &s);
+void copyStat64(const struct stat& s, struct stat64* out) {
   std::memset(out, 0, sizeof *out);
   out->st_mode = s.st_mode;
   out->st_rdev = s.st_rdev;
@@ -66,6 +65,19 @@ void fillStat64(int fd, struct stat64* out) {
   out->st_uid = s.st_uid;
   out->st_gid = s.st_gid;
   out->st_blksize = s.st_blksize;
+}
+
+void fillStat64(int fd, struct stat64* out) {
+  struct stat s;
+  v4::stat(fd, &s);
+  copyStat64(s, out);
+}
+
+bool statPath64(const char* path, struct stat64* out) {
+  struct stat s;
+  if (!v4::statPath(path, &s)) return false;
+  copyStat64(s, out);
+  return true;
 }
 
 bool device(int fd) { return v4::anyOpen() && v4::isDevice(fd); }
@@ -179,6 +191,7 @@ int fstatat(int dirfd, const char* path, struct stat* out, int flags) noexcept {
     v4::stat(dirfd, out);
     return 0;
   }
+  if (v4::statPath(path, out)) return 0;  // absolute: dirfd does not matter
   static auto next = real<int (*)(int, const char*, struct stat*, int)>("fstatat");
   return next(dirfd, path, out, flags);
 }
@@ -188,8 +201,30 @@ int fstatat64(int dirfd, const char* path, struct stat64* out, int flags) noexce
     fillStat64(dirfd, out);
     return 0;
   }
+  if (statPath64(path, out)) return 0;
   static auto next = real<int (*)(int, const char*, struct stat64*, int)>("fstatat64");
   return next(dirfd, path, out, flags);
+}
+
+int stat(const char* path, struct stat* out) noexcept {
+  if (v4::statPath(path, out)) return 0;
+  static auto next = real<int (*)(const char*, struct stat*)>("stat");
+  return next(path, out);
+}
+int stat64(const char* path, struct stat64* out) noexcept {
+  if (statPath64(path, out)) return 0;
+  static auto next = real<int (*)(const char*, struct stat64*)>("stat64");
+  return next(path, out);
+}
+int lstat(const char* path, struct stat* out) noexcept {
+  if (v4::statPath(path, out)) return 0;
+  static auto next = real<int (*)(const char*, struct stat*)>("lstat");
+  return next(path, out);
+}
+int lstat64(const char* path, struct stat64* out) noexcept {
+  if (statPath64(path, out)) return 0;
+  static auto next = real<int (*)(const char*, struct stat64*)>("lstat64");
+  return next(path, out);
 }
 
 // Binaries built against glibc before 2.33 call these (version 1: the
@@ -201,6 +236,23 @@ int __fxstat(int ver, int fd, struct stat* out) {
 int __fxstat64(int ver, int fd, struct stat64* out) {
   (void)ver;
   return fstat64(fd, out);
+}
+
+int __xstat(int ver, const char* path, struct stat* out) {
+  (void)ver;
+  return stat(path, out);
+}
+int __xstat64(int ver, const char* path, struct stat64* out) {
+  (void)ver;
+  return stat64(path, out);
+}
+int __lxstat(int ver, const char* path, struct stat* out) {
+  (void)ver;
+  return lstat(path, out);
+}
+int __lxstat64(int ver, const char* path, struct stat64* out) {
+  (void)ver;
+  return lstat64(path, out);
 }
 
 }  // extern "C"

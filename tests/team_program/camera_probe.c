@@ -69,9 +69,11 @@ static int xioctl(int fd, unsigned long request, void* arg) {
 }
 
 static void setUp(struct camera* c, unsigned w, unsigned h) {
+  struct stat st;
+  /* NaoTH stats the path before it opens it. */
+  if (stat(c->name, &st) != 0 || !S_ISCHR(st.st_mode)) die("stat (a character device)", c->name);
   c->fd = open(c->name, O_RDWR | O_NONBLOCK);
   if (c->fd < 0) die("open", c->name);
-  struct stat st;
   if (fstat(c->fd, &st) != 0) die("fstat", c->name);
   struct v4l2_capability cap;
   memset(&cap, 0, sizeof cap);
@@ -86,6 +88,11 @@ static void setUp(struct camera* c, unsigned w, unsigned h) {
   f.fmt.pix.pixelformat = V4L2_PIX_FMT_YUYV;
   f.fmt.pix.field = V4L2_FIELD_NONE;
   if (xioctl(c->fd, VIDIOC_S_FMT, &f) != 0) die("S_FMT", c->name);
+  /* The request through an int, as NaoTH's xioctl passes it (sign-extended to a long). */
+  const int request = (int)VIDIOC_G_FMT;
+  memset(&f, 0, sizeof f);
+  f.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+  if (xioctl(c->fd, request, &f) != 0) die("G_FMT (an int request)", c->name);
   c->width = f.fmt.pix.width;
   c->height = f.fmt.pix.height;
   c->sizeimage = f.fmt.pix.sizeimage;
