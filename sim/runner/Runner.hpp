@@ -32,7 +32,10 @@
 //  10. cameraFrame        at 30 Hz of simulated time every robot with a
 //                         Perception thread gets its frame (observations,
 //                         images if rendered) and the runner waits for it
-//                         (inline: runs its Perception step, robot by robot)
+//                         (inline: runs its Perception step, robot by robot);
+//                         a launched program's V4L2 cameras it streams are
+//                         rendered and published, and the runner waits
+//                         until it has dequeued them (common/v4l2/DeviceBlock.hpp)
 //  11. teamAndGame        team network and GameController: outboxes drained,
 //                         due packets delivered, game state advanced (robots
 //                         penalised to the sideline and back) and written;
