@@ -5,6 +5,8 @@
 // both, and sees the ball where the camera model projects it; two runs see
 // the same frames. And the scenario's v4l2: key.
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -15,6 +17,9 @@
 #include <vector>
 
 #include "common/nao/NaoFacts.hpp"
+#include "common/v4l2/DeviceBlock.hpp"
+#include "sim/bridge/BodyHost.hpp"
+#include "sim/bridge/V4l2Devices.hpp"
 #include "sim/runner/Runner.hpp"
 #include "tests/support/ConfigErrors.hpp"
 #ifdef SIMSWIFT_HAVE_CAMERAS
@@ -112,6 +117,58 @@ TEST(V4l2Scenario, DevicePathsPerBodyAndChecked) {
                               "d.yaml");
             }),
             "d.yaml:2: robots[0].v4l2.bottom: the two cameras need two device paths (both are /dev/v)");
+}
+
+// What the program writes into its block is read once and checked: a
+// value no shim writes ends the run with an error naming the robot and the
+// field, never an out-of-range read.
+TEST(V4l2Devices, ProgramFieldsAreChecked) {
+  simswift::bridge::V4l2Devices d("t76p1", {"/dev/video-top", "/dev/video-bottom"});
+  const int fd = ::shm_open(d.blockName().c_str(), O_RDWR, 0);
+  ASSERT_GE(fd, 0);
+  void* p = ::mmap(nullptr, sizeof(common::v4l2::DeviceBlock), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  ::close(fd);
+  ASSERT_NE(p, MAP_FAILED);
+  auto* block = static_cast<common::v4l2::DeviceBlock*>(p);  // as the program sees it
+  EXPECT_EQ(std::string(block->camera[1].device), "/dev/video-bottom");
+  auto request = d.requests();
+  EXPECT_FALSE(request[0].publish);
+  EXPECT_EQ(request[0].size.width, 640);
+  block->camera[0].streaming = 1;
+  block->camera[0].buffers_queued = 3;
+  block->camera[0].width_wanted = 320;
+  block->camera[0].height_wanted = 240;
+  request = d.requests();
+  EXPECT_TRUE(request[0].publish);
+  EXPECT_EQ(request[0].size.height, 240);
+  auto error = [&] {
+    try {
+      d.requests();
+    } catch (const simswift::bridge::BridgeError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  block->camera[0].width_wanted = 5000;  // no camera size
+  EXPECT_NE(error().find("robot t76p1: its program wrote a format of 5000x240 into camera top"), std::string::npos)
+      << error();
+  block->camera[0].width_wanted = 320;
+  block->camera[1].buffers_queued = -4;
+  EXPECT_NE(error().find("buffers_queued = -4 into camera bottom"), std::string::npos) << error();
+  block->camera[1].buffers_queued = 0;
+  // A frame published, then a taken count past it.
+  d.publish(0, 7, 233000, {320, 240});
+  EXPECT_EQ(block->camera[0].frames_posted.load(), 1);
+  block->camera[0].frames_taken = 9;
+  try {
+    d.waitTaken(0.01);
+    ADD_FAILURE() << "no error";
+  } catch (const simswift::bridge::BridgeError& e) {
+    EXPECT_NE(std::string(e.what()).find("frames_taken = 9"), std::string::npos) << e.what();
+  }
+  block->camera[0].frames_taken = 1;
+  EXPECT_TRUE(d.waitTaken(0.01));
+  ::munmap(p, sizeof(common::v4l2::DeviceBlock));
 }
 
 #ifdef SIMSWIFT_HAVE_CAMERAS
