@@ -95,4 +95,16 @@ void RobotCameras::fillImages(const World& world, int robot, common::libagent::C
   }
 }
 
+void RobotCameras::renderCamera(const World& world, int robot, CameraId id, common::libagent::ImageSize size,
+                                uint8_t* yuyv, uint8_t* rgb) {
+  if (robot < 0 || robot >= world.numRobots())
+    throw std::out_of_range("RobotCameras::renderCamera: no robot " + std::to_string(robot));
+  const common::libagent::ImageSize kept = resolution_[checkedId(id)];
+  setResolution(id, size);  // checked; view() draws at the camera's resolution
+  syncScene(world);
+  renderer_.render(scene_, view(world, robot, id), rgb);
+  rgbToYuyv(rgb, size.width, size.height, yuyv);
+  resolution_[id] = kept;
+}
+
 }  // namespace simswift::camera

@@ -57,6 +57,13 @@ class RobotCameras {
   void fillImages(const World& world, int robot, common::libagent::CameraImages& out,
                   int64_t frame_index = -1, int64_t sim_time_us = -1);
 
+  // Renders camera `id` of `robot` alone at `size` (an even width up to
+  // 1280x960) into `yuyv` (width x height x 2 bytes), through `rgb`
+  // (width x height x 3 bytes of scratch): a V4L2 device's frame
+  // (sim/bridge/V4l2Devices.hpp), at the size its program set.
+  void renderCamera(const World& world, int robot, CameraId id, common::libagent::ImageSize size, uint8_t* yuyv,
+                    uint8_t* rgb);
+
   Scene& scene() { return scene_; }
   Renderer& renderer() { return renderer_; }
 

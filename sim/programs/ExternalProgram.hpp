@@ -40,6 +40,7 @@ class LaunchedProgram final : public ExternalProgram {
   // In slices of 50 ms (wall clock), checking the process between them, so
   // a crash ends the run within a slice (ProgramError), never a hang.
   bool await(Step step, double timeout_s) override;
+  void checkRunning() override { check(); }
   void stop() override {
     ExternalProgram::stop();
     process_->stop();

@@ -63,6 +63,9 @@ class ProgramDriver {
   // Waits up to timeout_s (wall clock) for the answer to what was posted;
   // false on timeout. Throws ProgramError if a launched program ended.
   virtual bool await(Step step, double timeout_s);
+  // Throws ProgramError if a launched program has ended (for a wait the
+  // driver does not do itself: its cameras' lock-step, between slices).
+  virtual void checkRunning() {}
   // Why the program went silent, for the watchdog's message (a builtin
   // thread's exception); empty if not known.
   virtual std::string error() const { return {}; }

@@ -207,7 +207,7 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const ProgramRun& run, con
     for (const auto& [k, v] : env)
       if (k == "LD_PRELOAD") preload = v;
     if (const char* p = std::getenv("LD_PRELOAD"); p && preload.empty()) preload = p;
-    for (auto& kv : shimEnvironment(slot.tag, {clock->name()}, preload)) {
+    for (auto& kv : shimEnvironment(slot.tag, {clock->name(), e.v4l2_block}, preload)) {
       env.erase(std::remove_if(env.begin(), env.end(), [&](const auto& x) { return x.first == kv.first; }), env.end());
       env.push_back(std::move(kv));
     }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/clock/ClockPage.hpp"
+#include "common/v4l2/DeviceBlock.hpp"
 
 #ifndef SIMSWIFT_INSTALL_LIBDIR
 #define SIMSWIFT_INSTALL_LIBDIR "lib"
@@ -42,6 +43,7 @@ std::vector<std::pair<std::string, std::string>> shimEnvironment(const std::stri
   std::vector<std::pair<std::string, std::string>> env;
   env.emplace_back("LD_PRELOAD", preload_before.empty() ? shim : shim + ":" + preload_before);
   env.emplace_back(common::clock::kPageEnv, s.clock_page);
+  if (!s.v4l2_block.empty()) env.emplace_back(common::v4l2::kBlockVariable, s.v4l2_block);
   return env;
 }
 

@@ -12,6 +12,7 @@ namespace simswift::programs {
 
 struct ShimSettings {
   std::string clock_page;  // the robot's clock page (common/clock/ClockPage.hpp)
+  std::string v4l2_block;  // its cameras' device block (common/v4l2/DeviceBlock.hpp); "" = no V4L2 cameras
 };
 
 // The built or installed shim: $SIMSWIFT_SHIM_LIBRARY if set, else
@@ -22,7 +23,8 @@ std::string shimLibraryPath();
 
 // The variables to add to the program's environment: LD_PRELOAD with the
 // shim first (before `preload_before`, what the program would otherwise get:
-// the launch's own LD_PRELOAD or simswift's), SIMSWIFT_CLOCK. Throws
+// the launch's own LD_PRELOAD or simswift's), SIMSWIFT_CLOCK and, with cameras,
+// SIMSWIFT_V4L2. Throws
 // std::runtime_error naming `robot` if the shim is not found.
 std::vector<std::pair<std::string, std::string>> shimEnvironment(const std::string& robot, const ShimSettings& s,
                                                                  const std::string& preload_before);

@@ -11,6 +11,8 @@ class NullCameras final : public RunCameras {
   bool renderRobot(const World&, int, int, int, bool, common::libagent::CameraImages&, int64_t, int64_t) override {
     return false;
   }
+  // Never called: the Runner serves no V4L2 cameras without rendering.
+  void renderCamera(const World&, int, int, common::libagent::ImageSize, uint8_t*) override {}
   void captureOverview(const World&) override {}
   int64_t framesDumped() const override { return 0; }
   int64_t overviewFrames() const override { return 0; }

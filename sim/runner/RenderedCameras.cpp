@@ -1,6 +1,7 @@
 // The run's cameras rendered with OSMesa (sim/camera; CMake compiles this
 // file when SIMSWIFT_CAMERAS=ON, NullCameras.cpp otherwise).
 #include <utility>
+#include <vector>
 
 #include "sim/camera/FrameDumper.hpp"
 #include "sim/camera/Overview.hpp"
@@ -46,6 +47,11 @@ class RenderedCameras final : public RunCameras {
     return true;
   }
 
+  void renderCamera(const World& world, int robot, int camera, al::ImageSize size, uint8_t* yuyv) override {
+    rgb_.resize(static_cast<size_t>(size.width) * size.height * 3);
+    cameras_.renderCamera(world, robot, static_cast<camera::CameraId>(camera), size, yuyv, rgb_.data());
+  }
+
   void captureOverview(const World& world) override {
     if (overview_) overview_->maybeCapture(cameras_, world);
   }
@@ -69,6 +75,7 @@ class RenderedCameras final : public RunCameras {
 
   camera::RobotCameras cameras_;
   std::unique_ptr<camera::FrameDumper> dumper_;
+  std::vector<uint8_t> rgb_;  // renderCamera's scratch
   std::unique_ptr<camera::OverviewCamera> overview_;
   bool overview_finished_ = false;
   std::string overview_message_;

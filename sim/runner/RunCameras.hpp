@@ -28,6 +28,10 @@ class RunCameras {
   // `player` in the PNGs' names). True if `images` now holds this frame.
   virtual bool renderRobot(const World& world, int robot, int team, int player, bool for_program,
                            common::libagent::CameraImages& images, int64_t frame, int64_t t_us) = 0;
+  // Renders robot `robot`'s camera `camera` (0 top, 1 bottom) alone at
+  // `size` into `yuyv` (YUYV, size's bytes): a V4L2 device's frame.
+  virtual void renderCamera(const World& world, int robot, int camera, common::libagent::ImageSize size,
+                            uint8_t* yuyv) = 0;
   // After each World::step(): the overview's frame, if one is due.
   virtual void captureOverview(const World& world) = 0;
   virtual int64_t framesDumped() const = 0;    // PNGs written by --dump-frames

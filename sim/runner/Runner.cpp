@@ -73,7 +73,9 @@ void Runner::start() {
     buildHosts();
     attachPrograms();
     buildTeamAndGame();
-    if (scenario_.camera.any()) startCameras();
+    bool v4l2 = false;
+    for (auto& r : robots_) v4l2 = v4l2 || r->v4l2;
+    if (scenario_.camera.any() || v4l2) startCameras();
     buildVision();
   } catch (...) {
     start_error_ = std::current_exception();
@@ -142,6 +144,7 @@ void Runner::buildHosts() {
     if (external && free_running_) r.body->setSync(SyncMode::FreeRunning);
     r.latched = r.body->readActuators();  // what the body gets before any command (limp or stiff start)
     r.ext = r.body->extension();  // game state + team link, beside the block
+    if (servesV4l2(r.spec)) r.v4l2 = std::make_unique<bridge::V4l2Devices>(r.tag, r.spec.v4l2.path);
   }
 }
 
@@ -218,6 +221,7 @@ void Runner::attachPrograms() {
     entries.push_back({{index, robots_[i]->tag, spec.player, robots_[i]->body.get()},
                        spec.program,
                        spec.launch,
+                       robots_[i]->v4l2 ? robots_[i]->v4l2->blockName() : std::string(),
                        programs::robotSetup(spec.setup, programIdentity(scenario_, index))});
   }
   programs::ProgramRun run{scenario_.attach_timeout_s, scenario_.program_logs, scenario_.base_dir};
@@ -357,9 +361,52 @@ void Runner::cameraFrame(int64_t t_us) {
       any = true;
     }
   }
+  for (size_t i = 0; i < robots_.size(); ++i)
+    if (robots_[i]->v4l2) publishV4l2(static_cast<int>(i), frame, t_us);
   if (any)
     for (size_t i = 0; i < robots_.size(); ++i)
       if (robots_[i]->perception) awaitAnswer(static_cast<int>(i), false);
+  for (size_t i = 0; i < robots_.size(); ++i)
+    if (robots_[i]->v4l2) awaitV4l2(static_cast<int>(i));
+}
+
+bool Runner::servesV4l2(const RobotSpec& spec) const {
+  using Mode = RobotSpec::CameraDevices::Mode;
+  if (spec.v4l2.mode == Mode::Off || !spec.launch.launched()) return false;
+  if (spec.v4l2.mode == Mode::Default) return camerasAvailable();
+  if (!camerasAvailable())
+    throw RunnerError("robot " + al::robotTag(spec.team, spec.player) + " (scenario " + scenario_.source + ":" +
+                      std::to_string(spec.line) + "): v4l2: its cameras need rendering, but this simswift was "
+                      "built without cameras (-DSIMSWIFT_CAMERAS=OFF)");
+  return true;
+}
+
+// The cameras robot i's program streams (with a buffer queued), rendered at
+// the size it set and published; the others cost nothing.
+void Runner::publishV4l2(int i, int64_t frame, int64_t t_us) {
+  Robot& r = *robots_[i];
+  const auto requests = r.v4l2->requests();
+  for (int c = 0; c < al::kNumCameras; ++c) {
+    if (!requests[c].publish) continue;
+    cameras_->renderCamera(*world_, i, c, requests[c].size, r.v4l2->image(c));
+    r.v4l2->publish(c, frame, t_us, requests[c].size);
+  }
+}
+
+// The lock-step: the run goes on once robot i's program has dequeued every
+// frame just published (or stopped streaming), in watchdog slices; a
+// program that ended is an error at once.
+void Runner::awaitV4l2(int i) {
+  constexpr double kSlice = 0.05;  // s, wall clock
+  double waited = 0;
+  while (!robots_[i]->v4l2->waitTaken(kSlice)) {
+    programs_->driver(i).checkRunning();
+    waited += kSlice;
+    if (waited >= watchdogWait()) {
+      if (watchdogArmed()) watchdogFail(i, "camera");
+      waited = 0;
+    }
+  }
 }
 
 void Runner::captureViews(int64_t t_us) {
@@ -500,8 +547,10 @@ RunStats Runner::run(const RunOptions& opt) {
 void Runner::shutdown() {
   if (stopped_) return;
   stopped_ = true;
-  for (auto& r : robots_)
+  for (auto& r : robots_) {
     if (r && r->body) r->body->shutdown();
+    if (r && r->v4l2) r->v4l2->shutdown();
+  }
   // Launched programs stopped and reaped before the hosts remove their
   // objects; builtin threads joined. The drivers stay until the Runner goes
   // (their programs can still be read after run()); they are destroyed

@@ -33,7 +33,10 @@
 //  10. cameraFrame        at 30 Hz of simulated time every robot with a
 //                         Perception thread gets its frame (observations,
 //                         images if rendered) and the runner waits for it
-//                         (inline: runs its Perception step, robot by robot)
+//                         (inline: runs its Perception step, robot by robot);
+//                         a launched program's V4L2 cameras it streams are
+//                         rendered and published, and the runner waits
+//                         until it has dequeued them (common/v4l2/DeviceBlock.hpp)
 //  11. teamAndGame        team network and GameController: outboxes drained,
 //                         due packets delivered, game state advanced (robots
 //                         penalised to the sideline and back) and written;
@@ -77,6 +80,7 @@
 #include "common/libagent/SimExtensions.hpp"
 #include "common/nao/NaoFacts.hpp"
 #include "sim/bridge/BodyHost.hpp"
+#include "sim/bridge/V4l2Devices.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/game/GameControllerUdp.hpp"
 #include "sim/game/Sideline.hpp"
@@ -209,6 +213,7 @@ class Runner {
     double last_robot_contact_s = -1e9;  // s (world time) this robot last touched another robot
     size_t next_push = 0;  // next of spec.pushes to apply
     common::libagent::SimExtensions* ext = nullptr;  // the host's extension: game state + team link
+    std::unique_ptr<bridge::V4l2Devices> v4l2;  // its cameras as V4L2 devices (a launched program's), or none
   };
 
   // Build stages (start(), in this order).
@@ -224,6 +229,12 @@ class Runner {
   // Robot i's answer to what its body side posted (a tick or a camera
   // frame), through its driver: the watchdog ends the run if none comes.
   void awaitAnswer(int i, bool motion);
+  // The V4L2 cameras (RobotSpec::v4l2): whether robot `spec` has them, its
+  // frame published to the cameras its program streams, and the lock-step
+  // wait until it has taken them (common/v4l2/DeviceBlock.hpp).
+  bool servesV4l2(const RobotSpec& spec) const;
+  void publishV4l2(int i, int64_t frame, int64_t t_us);
+  void awaitV4l2(int i);
   [[noreturn]] void watchdogFail(int i, const char* thread) const;
   double watchdogWait() const;  // s per wait
   bool watchdogArmed() const;   // on, and no debugger attached

@@ -704,6 +704,33 @@ void checkBuiltinRelease(const YamlReader& r, const RobotSpec& rs) {
                            std::to_string(bridge::releaseYear(rs.release)) + " needs program: external");
 }
 
+// v4l2: the cameras' device paths (RobotSpec::CameraDevices): under /dev/
+// (where the shim looks), shorter than the block's field, two distinct ones.
+void readCameraDevices(const YamlReader& r, RobotSpec& rs) {
+  RobotSpec::CameraDevices& d = rs.v4l2;
+  const bool v6 = rs.body == bridge::BodyInterface::Lola;
+  d.path = v6 ? std::array<std::string, 2>{"/dev/video-top", "/dev/video-bottom"}
+              : std::array<std::string, 2>{"/dev/video0", "/dev/video1"};
+  if (!r.has("v4l2")) return;
+  if (!rs.launch.launched())
+    r.fail("v4l2", "the cameras as V4L2 devices are for a launched program (program: {command: [...]})");
+  if (!r.node()["v4l2"].IsMap()) {
+    d.mode = r.choice("v4l2", "on", {"on", "off"}) == "on" ? RobotSpec::CameraDevices::Mode::On
+                                                          : RobotSpec::CameraDevices::Mode::Off;
+    return;
+  }
+  d.mode = RobotSpec::CameraDevices::Mode::On;
+  const YamlReader m = r.map("v4l2");
+  const char* keys[2] = {"top", "bottom"};
+  for (int c = 0; c < 2; ++c) {
+    d.path[c] = m.string(keys[c], d.path[c]);
+    if (d.path[c].rfind("/dev/", 0) != 0 || d.path[c].size() <= 5 || d.path[c].size() >= 64)
+      m.fail(keys[c], "a camera's device is a path under /dev/ of at most 63 characters (got '" + d.path[c] + "')");
+  }
+  if (d.path[0] == d.path[1]) m.fail("bottom", "the two cameras need two device paths (both are " + d.path[0] + ")");
+  m.finish();
+}
+
 // One entry of robots:, its keys in this order (the first error wins).
 RobotSpec readRobot(const YamlReader& r, const std::string& base_dir, RobotClaims& claims) {
   RobotSpec rs;
@@ -713,6 +740,7 @@ RobotSpec readRobot(const YamlReader& r, const std::string& base_dir, RobotClaim
   readPlacement(r, rs);
   readProgram(r, rs, base_dir);
   readLola(r, rs, claims);
+  readCameraDevices(r, rs);
   readTimedLists(r, rs);
   checkBuiltinRelease(r, rs);
   r.finish();

@@ -8,6 +8,7 @@
 //   scenario.yaml:7: robots[1].team: must be in [0, 255] (got 300)
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -92,6 +93,18 @@ struct RobotSpec {
   struct ButtonPress { double t_s = 0, duration_s = 0.1; sensors::Button button = sensors::Button::Chest; };
   std::vector<ButtonPress> buttons;
   bool buttonHeld(sensors::Button b, double t_s) const;  // any press of b covers t_s
+  // The robot's cameras as V4L2 devices for its launched program
+  // (docs/porting.md section 3; sim/bridge/V4l2Devices.hpp):
+  //   v4l2: {top: /dev/video-top, bottom: /dev/video-bottom}   the paths it opens
+  //   v4l2: on | off
+  // Absent: on for a launched program in a build with cameras (at the
+  // body's names: a V6's /dev/video-top and /dev/video-bottom, a V5's
+  // /dev/video0 (top) and /dev/video1 (bottom)), else off.
+  struct CameraDevices {
+    enum class Mode { Default, On, Off } mode = Mode::Default;
+    std::array<std::string, 2> path;  // top, bottom: under /dev/, set whatever the mode
+  };
+  CameraDevices v4l2;
 };
 
 // Camera rendering. Off unless a scenario or flag asks.

@@ -1,0 +1,246 @@
+// The NAO's cameras as V4L2 devices (sim/bridge/V4l2Devices, shim/): the
+// facts-only camera probe (tests/team_program/camera_probe.c, no simswift
+// header), launched as a V6 robot's program with the facts-only LoLA client
+// answering its body, opens /dev/video-top and /dev/video-bottom, streams
+// both, and sees the ball where the camera model projects it; two runs see
+// the same frames. And the scenario's v4l2: key.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/nao/NaoFacts.hpp"
+#include "common/v4l2/DeviceBlock.hpp"
+#include "sim/bridge/BodyHost.hpp"
+#include "sim/bridge/V4l2Devices.hpp"
+#include "sim/runner/Runner.hpp"
+#include "tests/support/ConfigErrors.hpp"
+#ifdef SIMSWIFT_HAVE_CAMERAS
+#include "sim/camera/CameraModel.hpp"
+#include "sim/camera/RobotCameras.hpp"
+#endif
+
+using simswift::runner::Runner;
+using simswift::runner::RobotSpec;
+using simswift::runner::Scenario;
+
+namespace {
+
+const std::string kProbe = std::string(SIMSWIFT_BINARY_DIR) + "/camera-probe";
+const std::string kClient = std::string(SIMSWIFT_BINARY_DIR) + "/lola-client";
+constexpr double kBallX = 2.0, kBallY = 0.15;  // m, field frame; the robot at the origin facing +x
+
+// A V6 robot whose launched program is the probe (`frames` frames, `memory`
+// buffers) with the LoLA client holding its stand; its own team number per
+// test (named objects), its log under /tmp.
+Scenario probeScenario(int team, int frames, const std::string& memory, double duration) {
+  std::ostringstream y;
+  y << "duration: " << duration << "\nseed: 5\nattach_timeout: 20\nball: {x: " << kBallX << ", y: " << kBallY
+    << "}\nrobots:\n  - {team: " << team << ", player: 1, x: 0, y: 0, lola: {socket: /tmp/simswift-test-v4l2-"
+    << ::getpid() << "-" << team << "}, program: {command: [\"" << kProbe
+    << "\", /dev/video-top, /dev/video-bottom, \"" << frames << "\", " << memory << ", \"" << kClient
+    << "\", \"{socket}\", \"0\", hold]}}\n";
+  Scenario sc = Scenario::parse(y.str(), std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/v4l2_test.yaml");
+  sc.program_logs = "/tmp/simswift-test-v4l2-logs-" + std::to_string(::getpid());
+  return sc;
+}
+
+struct ProbeLog {
+  std::vector<std::map<std::string, std::string>> frames;  // "frame" lines, key=value
+  std::map<std::string, std::string> facts;                // other lines' first word -> the line
+  std::string digest;
+};
+
+std::map<std::string, std::string> fields(const std::string& line) {
+  std::map<std::string, std::string> out;
+  std::istringstream in(line);
+  for (std::string w; in >> w;) {
+    const size_t eq = w.find('=');
+    if (eq != std::string::npos) out[w.substr(0, eq)] = w.substr(eq + 1);
+  }
+  return out;
+}
+
+ProbeLog readLog(const std::string& path) {
+  ProbeLog log;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("frame ", 0) == 0) log.frames.push_back(fields(line));
+    else if (line.rfind("done ", 0) == 0) log.digest = fields(line)["digest"];
+    else if (line.rfind("packet", 0) != 0) log.facts[line.substr(0, line.find(' '))] += line + "\n";
+  }
+  return log;
+}
+
+simswift::runner::RunOptions quiet() {
+  simswift::runner::RunOptions o;
+  o.progress = false;
+  return o;
+}
+
+}  // namespace
+
+TEST(V4l2Scenario, DevicePathsPerBodyAndChecked) {
+  const std::string launched = "program: {command: [x]}";
+  const Scenario v6 = Scenario::parse("robots:\n  - {team: 19, player: 1, lola: {}, " + launched + "}\n", "a.yaml");
+  EXPECT_EQ(v6.robots[0].v4l2.mode, RobotSpec::CameraDevices::Mode::Default);
+  EXPECT_EQ(v6.robots[0].v4l2.path[0], "/dev/video-top");
+  EXPECT_EQ(v6.robots[0].v4l2.path[1], "/dev/video-bottom");
+  const Scenario v5 = Scenario::parse("robots:\n  - {team: 19, player: 1, v4l2: on, " + launched + "}\n", "a.yaml");
+  EXPECT_EQ(v5.robots[0].v4l2.mode, RobotSpec::CameraDevices::Mode::On);
+  EXPECT_EQ(v5.robots[0].v4l2.path[0], "/dev/video0");
+  EXPECT_EQ(v5.robots[0].v4l2.path[1], "/dev/video1");
+  const Scenario set = Scenario::parse(
+      "robots:\n  - {team: 19, player: 1, v4l2: {top: /dev/cam-a}, " + launched + "}\n", "a.yaml");
+  EXPECT_EQ(set.robots[0].v4l2.path[0], "/dev/cam-a");
+  EXPECT_EQ(set.robots[0].v4l2.path[1], "/dev/video1");
+  using simswift::testing::configError;
+  EXPECT_EQ(configError([] { Scenario::parse("robots:\n  - {team: 19, player: 1, v4l2: on}\n", "b.yaml"); }),
+            "b.yaml:2: robots[0].v4l2: the cameras as V4L2 devices are for a launched program (program: {command: "
+            "[...]})");
+  EXPECT_EQ(configError([&] {
+              Scenario::parse("robots:\n  - {team: 19, player: 1, " + launched + ",\n     v4l2: {top: video0}}\n",
+                              "c.yaml");
+            }),
+            "c.yaml:3: robots[0].v4l2.top: a camera's device is a path under /dev/ of at most 63 characters (got "
+            "'video0')");
+  EXPECT_EQ(configError([&] {
+              Scenario::parse("robots:\n  - {team: 19, player: 1, " + launched +
+                                  ", v4l2: {top: /dev/v, bottom: /dev/v}}\n",
+                              "d.yaml");
+            }),
+            "d.yaml:2: robots[0].v4l2.bottom: the two cameras need two device paths (both are /dev/v)");
+}
+
+// What the program writes into its block is read once and checked: a
+// value no shim writes ends the run with an error naming the robot and the
+// field, never an out-of-range read.
+TEST(V4l2Devices, ProgramFieldsAreChecked) {
+  simswift::bridge::V4l2Devices d("t76p1", {"/dev/video-top", "/dev/video-bottom"});
+  const int fd = ::shm_open(d.blockName().c_str(), O_RDWR, 0);
+  ASSERT_GE(fd, 0);
+  void* p = ::mmap(nullptr, sizeof(common::v4l2::DeviceBlock), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  ::close(fd);
+  ASSERT_NE(p, MAP_FAILED);
+  auto* block = static_cast<common::v4l2::DeviceBlock*>(p);  // as the program sees it
+  EXPECT_EQ(std::string(block->camera[1].device), "/dev/video-bottom");
+  auto request = d.requests();
+  EXPECT_FALSE(request[0].publish);
+  EXPECT_EQ(request[0].size.width, 640);
+  block->camera[0].streaming = 1;
+  block->camera[0].buffers_queued = 3;
+  block->camera[0].width_wanted = 320;
+  block->camera[0].height_wanted = 240;
+  request = d.requests();
+  EXPECT_TRUE(request[0].publish);
+  EXPECT_EQ(request[0].size.height, 240);
+  auto error = [&] {
+    try {
+      d.requests();
+    } catch (const simswift::bridge::BridgeError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  block->camera[0].width_wanted = 5000;  // no camera size
+  EXPECT_NE(error().find("robot t76p1: its program wrote a format of 5000x240 into camera top"), std::string::npos)
+      << error();
+  block->camera[0].width_wanted = 320;
+  block->camera[1].buffers_queued = -4;
+  EXPECT_NE(error().find("buffers_queued = -4 into camera bottom"), std::string::npos) << error();
+  block->camera[1].buffers_queued = 0;
+  // A frame published, then a taken count past it.
+  d.publish(0, 7, 233000, {320, 240});
+  EXPECT_EQ(block->camera[0].frames_posted.load(), 1);
+  block->camera[0].frames_taken = 9;
+  try {
+    d.waitTaken(0.01);
+    ADD_FAILURE() << "no error";
+  } catch (const simswift::bridge::BridgeError& e) {
+    EXPECT_NE(std::string(e.what()).find("frames_taken = 9"), std::string::npos) << e.what();
+  }
+  block->camera[0].frames_taken = 1;
+  EXPECT_TRUE(d.waitTaken(0.01));
+  ::munmap(p, sizeof(common::v4l2::DeviceBlock));
+}
+
+#ifdef SIMSWIFT_HAVE_CAMERAS
+
+// MMAP buffers: every answer a team's code checks, 30 Hz of simulated time
+// in the buffers' timestamps, each camera at the size it set, the ball
+// where the camera model (the renderer's own) projects its centre.
+TEST(V4l2Cameras, ProbeStreamsBothCamerasAndSeesTheBall) {
+  constexpr int kFrames = 8;
+  const Scenario sc = probeScenario(71, kFrames, "mmap", 0.6);
+  Runner r(sc);
+  r.run(quiet());
+  ProbeLog log = readLog(sc.program_logs + "/t71p1.log");
+  ASSERT_EQ(log.frames.size(), 2u * kFrames) << log.facts["error"];
+  EXPECT_NE(log.facts["open"].find("/dev/video-top chardev=1 driver=uvcvideo"), std::string::npos) << log.facts["open"];
+  EXPECT_NE(log.facts["open"].find("/dev/video-bottom chardev=1"), std::string::npos) << log.facts["open"];
+  EXPECT_NE(log.facts["format"].find("/dev/video-bottom 320x240 sizeimage=153600 fps=30/1"), std::string::npos);
+  EXPECT_EQ(log.facts["control"],
+            "control /dev/video-top brightness_max=255 brightness=10 exposure_auto=1 register=0x1234\n");
+  EXPECT_EQ(log.facts["unknown_ioctl"], "unknown_ioctl result=-1 errno=25\n");  // ENOTTY
+  EXPECT_EQ(log.facts["nonblock_empty"], "nonblock_empty errno=11\n");         // EAGAIN
+  std::map<std::string, std::vector<long long>> times;
+  for (const auto& f : log.frames) {
+    const std::string cam = f.at("cam");
+    EXPECT_EQ(std::stoll(f.at("seq")), static_cast<long long>(times[cam].size()));
+    times[cam].push_back(std::stoll(f.at("t_us")));
+    EXPECT_EQ(f.at("mono"), "1");
+    EXPECT_EQ(f.at("bytes"), cam == "/dev/video-top" ? "614400" : "153600");
+  }
+  // Frame k is taken at the first 12 ms tick at or after k/30 s: the gaps
+  // are 24 or 36 ms, and k frames span k/30 s to within a tick.
+  for (const auto& [cam, t] : times) {
+    ASSERT_EQ(t.size(), static_cast<size_t>(kFrames)) << cam;
+    for (size_t k = 1; k < t.size(); ++k) EXPECT_TRUE(t[k] - t[k - 1] == 24000 || t[k] - t[k - 1] == 36000) << cam;
+    EXPECT_NEAR(static_cast<double>(t.back() - t.front()), (kFrames - 1) * 1e6 / 30, 12000.0) << cam;
+    EXPECT_EQ(t.front() % 12000, 0) << "a frame's time is its tick's";
+  }
+  EXPECT_EQ(times["/dev/video-top"], times["/dev/video-bottom"]) << "both cameras' frames are taken together";
+  // The ball: the orange pixels' centroid in the last top frame against the
+  // projection of the ball's centre with the top camera as the run ends
+  // (the robot stands still: less than a pixel between the two). 3 px: the
+  // centroid of a sphere's image (about 20 px across at 2 m) is not the
+  // projection of its centre, and the orange threshold cuts its shaded rim.
+  const simswift::World& w = r.world();
+  const simswift::RobotBody& body = w.robot(0);
+  const auto camera = simswift::camera::CameraModel::naoCamera(
+      body.linkPose(simswift::camera::RobotCameras::headLink(body.model())), simswift::camera::kTop, 640, 480,
+      common::nao::kV6CameraLens);
+  const auto px = camera.project(w.ballPosition());
+  ASSERT_TRUE(px.has_value());
+  const auto& last = log.frames[log.frames.size() - 2].at("cam") == "/dev/video-top" ? log.frames[log.frames.size() - 2]
+                                                                                      : log.frames.back();
+  ASSERT_GT(std::stol(last.at("ball_n")), 50) << "the ball is seen";
+  EXPECT_NEAR(std::stod(last.at("ball_x")), px->x(), 3.0);
+  EXPECT_NEAR(std::stod(last.at("ball_y")), px->y(), 3.0);
+}
+
+// Two runs stream the same frames (the digest of every frame's bytes and
+// time); USERPTR buffers get the very frames MMAP buffers got.
+TEST(V4l2Cameras, SameFramesRunAfterRunAndWithUserptrBuffers) {
+  std::string digest[3];
+  for (int k = 0; k < 3; ++k) {
+    const Scenario sc = probeScenario(72 + k, 5, k < 2 ? "mmap" : "userptr", 0.4);
+    Runner r(sc);
+    r.run(quiet());
+    ProbeLog log = readLog(sc.program_logs + "/t" + std::to_string(72 + k) + "p1.log");
+    EXPECT_EQ(log.frames.size(), 10u) << log.facts["error"];
+    digest[k] = log.digest;
+  }
+  EXPECT_FALSE(digest[0].empty());
+  EXPECT_EQ(digest[0], digest[1]);
+  EXPECT_EQ(digest[0], digest[2]);
+}
+
+#endif
