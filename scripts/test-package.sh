@@ -21,11 +21,23 @@ jobs="${2:-$(nproc)}"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 
+# Through ccache (scripts/ccache.sh): the preset's flags are the Release
+# build's, so after build/ every object comes from the cache; the folder is
+# still empty and every compile and link still runs through the preset's
+# configure (a hit is the compiler's output for the same command line).
+source scripts/ccache.sh
 rm -rf "$build"
 t0=$SECONDS
-cmake --preset library -B "$build" >/dev/null
-cmake --build "$build" -j"$jobs" >/dev/null
-echo "test-package.sh: library-only build from an empty folder: $((SECONDS - t0)) s with -j$jobs" >&2
+cmake --preset library -B "$build" "${ccache_cmake[@]}" >/dev/null
+# This build's own ccache log (added to scripts/test.sh's, if any): its hits.
+parent_log="${CCACHE_STATSLOG:-}"
+CCACHE_STATSLOG="$tmp/ccache.log" cmake --build "$build" -j"$jobs" >/dev/null
+hits="from the cache: not built with ccache"
+if [ -f "$tmp/ccache.log" ]; then
+  hits="$(grep -c '^local_storage_hit$' "$tmp/ccache.log" || true) of $(grep -c '^# ' "$tmp/ccache.log" || true) compilations from the cache"
+  [ -z "$parent_log" ] || cat "$tmp/ccache.log" >> "$parent_log"
+fi
+echo "test-package.sh: library-only build from an empty folder: $((SECONDS - t0)) s with -j$jobs ($hits)" >&2
 cmake --install "$build" --prefix "$tmp/first" >/dev/null
 mv "$tmp/first" "$tmp/moved"
 prefix="$tmp/moved"

@@ -8,16 +8,34 @@
 #   build-tsan/  ThreadSanitizer: the robot program (agent), bridge and runner tests,
 #                same exclusions (the runner/robot hand-overs are ordered by
 #                atomics TSan sees, docs/testing.md)
-# Any sanitizer report fails the test that produced it. Timings go to stderr.
+# Any sanitizer report fails the test that produced it. Every build compiles
+# through ccache (scripts/ccache.sh: what it shares, where the cache is).
+# Timings go to stderr: each stage's, and at the end the total and the
+# cache's hit rate over this run's compilations (docs/testing.md, "Cost").
 #   SIMSWIFT_SKIP_SANITIZERS=1 bash scripts/test.sh   # Release suite only
+#   SIMSWIFT_CCACHE=0 bash scripts/test.sh            # without ccache
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+source scripts/ccache.sh
 jobs="$(nproc)"
 start=$SECONDS
 stamp() { echo "simswift test.sh: $1 after $((SECONDS - start)) s" >&2; }
+# This run's compilations, logged by ccache one by one (its stats log): the
+# hit rate of this run alone, also when other builds share the cache (the
+# cache's global counters are neither zeroed nor read).
+run_tmp="$(mktemp -d)"
+export CCACHE_STATSLOG="$run_tmp/ccache-stats.log"
+summary() {
+  echo "simswift test.sh: total $((SECONDS - start)) s" >&2
+  if [ -s "$CCACHE_STATSLOG" ]; then
+    echo "simswift test.sh: ccache over this run's $(grep -c '^# ' "$CCACHE_STATSLOG") compilations:" >&2
+    ccache --show-log-stats | grep -E '^ *(Hits|Misses|Uncacheable)' >&2 || true
+  fi
+}
+trap 'summary; rm -rf "$run_tmp"' EXIT
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${ccache_cmake[@]}" >/dev/null
 cmake --build build -j"$jobs"
 stamp "Release build"
 (cd build && ctest --output-on-failure -j"$jobs" --timeout 900)
@@ -40,8 +58,12 @@ stamp "installed package: library-only build, headers, Python, examples"
 # code itself is covered by the Release suite.
 heavy='MotionPhysics\.|ExternalExperimentFull\.|SimswiftTestHeavy\.'
 # -O1: the sanitizers' recommended level, and half the compile time of -O3.
+# The sanitizer builds build what their suites run and nothing else: no
+# benchmarks, no tools/ (run by hand, never by ctest); `all` is then the test
+# programs and what they start (simswift, simswift-agent, the libagent and
+# LoLA clients, libsimswift.so), so a program a new test needs is never left out.
 san_cmake=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG"
-           -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF)
+           -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF -DSIMSWIFT_TOOLS=OFF "${ccache_cmake[@]}")
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
