@@ -33,12 +33,24 @@ summary() {
     ccache --show-log-stats | grep -E '^ *(Hits|Misses|Uncacheable)' >&2 || true
   fi
 }
-trap 'summary; rm -rf "$run_tmp"' EXIT
+# The last lines of a run: every skipped test and why (each suite's ctest
+# JUnit file). SIMSWIFT_CI=1 (.ci/run) fails the run on a skip not listed,
+# with its reason, in scripts/ci-allowed-skips.txt: CI's machine (root,
+# mount namespaces, gdb, Slurm's packages) runs every test.
+finish() {
+  local rc=$?
+  summary
+  python3 scripts/skipped-tests.py scripts/ci-allowed-skips.txt \
+    release="$run_tmp/release.xml" asan="$run_tmp/asan.xml" tsan="$run_tmp/tsan.xml" || rc=1
+  rm -rf "$run_tmp"
+  exit "$rc"
+}
+trap finish EXIT
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${ccache_cmake[@]}" >/dev/null
 cmake --build build -j"$jobs"
 stamp "Release build"
-(cd build && ctest --output-on-failure -j"$jobs" --timeout 900)
+(cd build && ctest --output-on-failure -j"$jobs" --timeout 900 --output-junit "$run_tmp/release.xml")
 stamp "Release suite"
 
 # The package as a team gets it: the library-only build (cmake --preset
@@ -74,7 +86,7 @@ cmake --build build-asan -j"$jobs"
 stamp "ASan+UBSan build"
 # The Slurm test (tests/slurm) checks a bash script against a real cluster;
 # the Release suite runs it, an instrumented simswift would only make it slower.
-(cd build-asan && ctest --output-on-failure -j"$jobs" --timeout 900 -E "$heavy|^slurm$")
+(cd build-asan && ctest --output-on-failure -j"$jobs" --timeout 900 --output-junit "$run_tmp/asan.xml" -E "$heavy|^slurm$")
 stamp "ASan+UBSan suite"
 
 # ThreadSanitizer: the code with threads (robot program, runner, bridge),
@@ -82,5 +94,5 @@ stamp "ASan+UBSan suite"
 cmake -S . -B build-tsan -DSIMSWIFT_SANITIZE=thread "${san_cmake[@]}" >/dev/null
 cmake --build build-tsan -j"$jobs" --target test_agent test_runner test_bridge simswift-agent
 stamp "TSan build"
-(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 -L 'agent|runner|bridge' -E "$heavy")
+(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 --output-junit "$run_tmp/tsan.xml" -L 'agent|runner|bridge' -E "$heavy")
 stamp "TSan suite"
