@@ -254,7 +254,7 @@ int RunCommand::runScenario(const simswift::runner::Scenario& sc) {
   using namespace simswift::runner;
   try {
     Runner runner(sc);
-    if (inline_) runner.programs().setThreading(agent::program::Threading::Inline);
+    if (inline_) runner.programs().setThreading(simswift::programs::Threading::Inline);
     if (findball_dir_) {
       sim::views::FindBallRecorderConfig fc;
       fc.dir = *findball_dir_;

@@ -2,6 +2,7 @@
 # Installs the Debian 12 packages simswift builds with, if any are missing.
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config git
+      ccache   # every build of scripts/test.sh and scripts/test-package.sh compiles through it (scripts/ccache.sh)
       libode-dev libeigen3-dev liburdfdom-dev libtinyxml-dev libyaml-cpp-dev
       libassimp-dev libosmesa6-dev libpng-dev libcairo2-dev
       libgtest-dev libbenchmark-dev ffmpeg gdb

@@ -8,19 +8,49 @@
 #   build-tsan/  ThreadSanitizer: the robot program (agent), bridge and runner tests,
 #                same exclusions (the runner/robot hand-overs are ordered by
 #                atomics TSan sees, docs/testing.md)
-# Any sanitizer report fails the test that produced it. Timings go to stderr.
+# Any sanitizer report fails the test that produced it. Every build compiles
+# through ccache (scripts/ccache.sh: what it shares, where the cache is).
+# Timings go to stderr: each stage's, and at the end the total and the
+# cache's hit rate over this run's compilations (docs/testing.md, "Cost").
 #   SIMSWIFT_SKIP_SANITIZERS=1 bash scripts/test.sh   # Release suite only
+#   SIMSWIFT_CCACHE=0 bash scripts/test.sh            # without ccache
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+source scripts/ccache.sh
 jobs="$(nproc)"
 start=$SECONDS
 stamp() { echo "simswift test.sh: $1 after $((SECONDS - start)) s" >&2; }
+# This run's compilations, logged by ccache one by one (its stats log): the
+# hit rate of this run alone, also when other builds share the cache (the
+# cache's global counters are neither zeroed nor read).
+run_tmp="$(mktemp -d)"
+export CCACHE_STATSLOG="$run_tmp/ccache-stats.log"
+summary() {
+  echo "simswift test.sh: total $((SECONDS - start)) s" >&2
+  if [ -s "$CCACHE_STATSLOG" ]; then
+    echo "simswift test.sh: ccache over this run's $(grep -c '^# ' "$CCACHE_STATSLOG") compilations:" >&2
+    ccache --show-log-stats | grep -E '^ *(Hits|Misses|Uncacheable)' >&2 || true
+  fi
+}
+# The last lines of a run: every skipped test and why (each suite's ctest
+# JUnit file). SIMSWIFT_CI=1 (.ci/run) fails the run on a skip not listed,
+# with its reason, in scripts/ci-allowed-skips.txt: CI's machine (root,
+# mount namespaces, gdb, Slurm's packages) runs every test.
+finish() {
+  local rc=$?
+  summary
+  python3 scripts/skipped-tests.py scripts/ci-allowed-skips.txt \
+    release="$run_tmp/release.xml" asan="$run_tmp/asan.xml" tsan="$run_tmp/tsan.xml" || rc=1
+  rm -rf "$run_tmp"
+  exit "$rc"
+}
+trap finish EXIT
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${ccache_cmake[@]}" >/dev/null
 cmake --build build -j"$jobs"
 stamp "Release build"
-(cd build && ctest --output-on-failure -j"$jobs" --timeout 900)
+(cd build && ctest --output-on-failure -j"$jobs" --timeout 900 --output-junit "$run_tmp/release.xml")
 stamp "Release suite"
 
 # The package as a team gets it: the library-only build (cmake --preset
@@ -40,8 +70,16 @@ stamp "installed package: library-only build, headers, Python, examples"
 # code itself is covered by the Release suite.
 heavy='MotionPhysics\.|ExternalExperimentFull\.|SimswiftTestHeavy\.'
 # -O1: the sanitizers' recommended level, and half the compile time of -O3.
+# -g1: line tables only, what a report's stack trace needs (file:line of each
+# frame); a third less compile CPU than -g and a quarter of the object size
+# (docs/testing.md, "Cost").
+# The sanitizer builds build what their suites run and nothing else: no
+# benchmarks, no tools/ (run by hand, never by ctest); `all` is then the test
+# programs and what they start (simswift, simswift-agent, the libagent and
+# LoLA clients, libsimswift.so), so a program a new test needs is never left out.
 san_cmake=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG"
-           -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF)
+           -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF -DSIMSWIFT_TOOLS=OFF "${ccache_cmake[@]}"
+           -DSIMSWIFT_SANITIZE_DEBUG=-g1)
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
@@ -52,7 +90,7 @@ cmake --build build-asan -j"$jobs"
 stamp "ASan+UBSan build"
 # The Slurm test (tests/slurm) checks a bash script against a real cluster;
 # the Release suite runs it, an instrumented simswift would only make it slower.
-(cd build-asan && ctest --output-on-failure -j"$jobs" --timeout 900 -E "$heavy|^slurm$")
+(cd build-asan && ctest --output-on-failure -j"$jobs" --timeout 900 --output-junit "$run_tmp/asan.xml" -E "$heavy|^slurm$")
 stamp "ASan+UBSan suite"
 
 # ThreadSanitizer: the code with threads (robot program, runner, bridge),
@@ -60,5 +98,5 @@ stamp "ASan+UBSan suite"
 cmake -S . -B build-tsan -DSIMSWIFT_SANITIZE=thread "${san_cmake[@]}" >/dev/null
 cmake --build build-tsan -j"$jobs" --target test_agent test_runner test_bridge simswift-agent
 stamp "TSan build"
-(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 -L 'agent|runner|bridge' -E "$heavy")
+(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 --output-junit "$run_tmp/tsan.xml" -L 'agent|runner|bridge' -E "$heavy")
 stamp "TSan suite"

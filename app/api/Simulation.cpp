@@ -67,7 +67,7 @@ struct Simulation::Impl {
       begun = true;
       // Controllers and every builtin program on this thread, right after the
       // tick is posted (Programs::setThreading): no thread hand-over per tick.
-      runner.programs().setThreading(agent::program::Threading::Inline);
+      runner.programs().setThreading(programs::Threading::Inline);
     }
     translated([&] { runner.start(); });
     started = true;

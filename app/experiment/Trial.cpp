@@ -94,7 +94,7 @@ void startRunner(TrialState& s, const TrialHooks& hooks) {
   s.runner = std::make_unique<runner::Runner>(s.scenario);
   // The robot programs' steps on this thread: no hand-over between threads
   // (the same results as named threads; two trials per two cores keep both busy).
-  s.runner->programs().setThreading(agent::program::Threading::Inline);
+  s.runner->programs().setThreading(programs::Threading::Inline);
   hooks.behaviours->attach(*s.cell, s.spec, *s.runner);
   s.runner->start();
   for (size_t i = 0; i < setup.robots.size(); ++i)

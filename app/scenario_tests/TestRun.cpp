@@ -27,7 +27,7 @@ void play(const ScenarioTest& test, runner::Scenario sc, RunResult& res) {
   runner::Runner run(sc);
   // The robot programs' steps on this thread (as an experiment's trials:
   // the same results as named threads; one run per core).
-  run.programs().setThreading(agent::program::Threading::Inline);
+  run.programs().setThreading(programs::Threading::Inline);
   run.start();
   ConditionRun cond(test.pass, test.field);
   const int64_t ticks = run.world().ticksIn(test.time_limit);

@@ -9,6 +9,11 @@ void readProgramPart(const common::config::YamlReader& robot, ProgramPart& p,
   agent::program::readProgramKeys(robot, p, outside);
 }
 
+void readProgramActions(const common::config::YamlReader& robot, ProgramPart& p,
+                        const agent::program::OutsideAction& outside) {
+  agent::program::readActions(robot, p, outside);
+}
+
 namespace {
 
 // The behaviour's reader reads the overrides as a document of their own

@@ -32,6 +32,10 @@ using ProgramPart = agent::program::RobotSetup;
 // p's values; `outside`: the actions entries the scenario takes itself).
 void readProgramPart(const common::config::YamlReader& robot, ProgramPart& p,
                      const agent::program::OutsideAction& outside);
+// A robot map's actions: alone into p.actions (absent: p's kept), the
+// entries `outside` takes left to the scenario (pushes, buttons).
+void readProgramActions(const common::config::YamlReader& robot, ProgramPart& p,
+                        const agent::program::OutsideAction& outside);
 // A behaviour from its kind name and overrides as YAML flow text (the
 // experiment's robots). A bad override is a ConfigError with where's file,
 // line and key (the robot's behaviour key), saying which override and why

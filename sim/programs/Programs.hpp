@@ -24,6 +24,11 @@
 
 namespace simswift::programs {
 
+// How builtin programs run: on named threads or inline on the simulator's
+// thread (agent/program/RobotProgram.hpp). The rest of sim/ and app/ name it
+// here: they reach the robot program only through sim/programs.
+using Threading = agent::program::Threading;
+
 // One robot's program as the scenario gives it (the Runner makes one per
 // robot from its RobotSpec).
 struct ProgramEntry {

@@ -432,8 +432,8 @@ programs::ProgramIdentity programIdentity(const Scenario& sc, int index) {
 }
 
 void readActions(const YamlReader& robot, RobotSpec& rs) {
-  agent::program::readActions(robot, rs.setup,
-                              [&rs](const YamlReader& entry, double t) { return readBodyEvent(entry, t, rs); });
+  programs::readProgramActions(robot, rs.setup,
+                               [&rs](const YamlReader& entry, double t) { return readBodyEvent(entry, t, rs); });
   std::stable_sort(rs.pushes.begin(), rs.pushes.end(),
                    [](const RobotSpec::Push& a, const RobotSpec::Push& b) { return a.t_s < b.t_s; });
 }

@@ -51,7 +51,8 @@
 
 namespace {
 
-// ---- The 2017 block, from the facts table (offsets in the comments).
+// ---- The 2017 block, as the public rUNSWift 2017 release declares it (its
+// AgentData, AgentTouch, AgentEffector; x86-64 offsets in the comments).
 struct JointValues {
   float angles[25];
   float stiffnesses[25];

@@ -66,8 +66,12 @@ std::string packed(const T& value) {
 TEST(ActuatorDecoder, AllElevenKeysRoundTripAt786Bytes) {
   const ActuatorCommand c = fullCommand(0.25f);
   const std::string bytes = encodeActuatorMap(c);
-  // facts.md 9: all eleven keys with float32 values come to 786 bytes
-  // (with Sonar as two booleans, as HULKs sends it).
+  // The eleven keys of the public clients' actuator maps (B-Human's
+  // NaoProvider, HULKs' hula), float32 values, Sonar as two booleans (as
+  // HULKs sends it), in msgpack's format: a fixmap (1 byte), then key + array
+  // header + 5 bytes a float: Position 9+3+125, Stiffness 10+3+125, Chest,
+  // LFoot, RFoot 6+1+15 each, LEye, REye 5+3+120 each, LEar, REar 5+1+50
+  // each, Skull 6+1+60, Sonar 6+1+2: 786 bytes.
   EXPECT_EQ(bytes.size(), 786u);
   ActuatorDecoder d;
   ASSERT_TRUE(feed(d, bytes)) << d.error();

@@ -306,8 +306,9 @@ TEST_P(LolaClientProcess, ReadsCheckedPacketsAndCommandsTheJoints) {
       EXPECT_EQ((*e.command.stiffness)[LKneePitch], 0.f);
       continue;
     }
-    // The client commands Position[i] = 0.01 i + 0.001 cycle in facts.md's
-    // joint order: its index 10 is our LKneePitch, 13 our RHipRoll.
+    // The client commands Position[i] = 0.01 i + 0.001 cycle in LoLA's joint
+    // order (B-Human's NaoProvider, HULKs' hula): its index 10 is our
+    // LKneePitch, 13 our RHipRoll.
     ASSERT_TRUE(e.command.position);
     EXPECT_NEAR((*e.command.position)[LKneePitch], 0.10f + 0.001f * cycle, 1e-6f);
     EXPECT_NEAR((*e.command.position)[RHipRoll], 0.13f + 0.001f * cycle, 1e-6f);

@@ -1,5 +1,7 @@
 // A LoLA client as a V6 team's program brings it, written only from the
-// public facts (../shared/reference/facts.md section 9): no simswift header.
+// public LoLA clients of teams that ran them on real robots (B-Human's
+// NaoProvider, HULKs' hula, rUNSWift 2019-2022's LoLAData.cpp, ros-sports/
+// nao_lola) and msgpack's specification: no simswift header.
 // It connects to a LoLA socket, reads 896-byte sensor packets, checks their
 // keys, order, lengths and encodings, checks that the byte layout of every
 // packet is the first packet's (B-Human's client reads later packets through
@@ -35,7 +37,8 @@
 namespace {
 
 constexpr std::size_t kPacketBytes = 896;
-// The 13 sensor keys, lengths; the order is the reconstruction of facts.md 9.
+// The 13 sensor keys, lengths (B-Human's NaoProvider, HULKs' hula); the order is a
+// reconstruction (real LoLA's is not published) that fills the 896 bytes exactly.
 const std::vector<std::pair<std::string, std::size_t>> kKeys = {
     {"Stiffness", 25}, {"Position", 25}, {"Temperature", 25}, {"Current", 25}, {"Battery", 4},
     {"Accelerometer", 3}, {"Gyroscope", 3}, {"Angles", 2}, {"Sonar", 2}, {"FSR", 8},

@@ -41,8 +41,9 @@ TEST(NaoV6Model, LoadsAndBindsEveryJoint) {
 }
 
 TEST(NaoV6Model, TotalMassIsThePublicFigures) {
-  // The per-link figures (facts.md 1 and 9): the V5's 5.30535 kg with the
-  // V6 head (0.65973 kg instead of 0.60533 kg).
+  // The per-link figures: the V5's 5.30535 kg (Aldebaran's NAO V5 link
+  // masses, as in ROS's nao_description URDF) with the V6 head (0.65973 kg
+  // instead of 0.60533 kg: HULKs' V6 MuJoCo model "NaoV6H25").
   EXPECT_NEAR(v6().totalMass(), 5.30535 - 0.60533 + 0.65973, 1e-6);
   // Aldebaran's NAO V6 datasheet: 5.48 kg. The per-link tables come to
   // 2.2 % less; 3 % is the tolerance.
@@ -52,7 +53,7 @@ TEST(NaoV6Model, TotalMassIsThePublicFigures) {
 TEST(NaoV6Model, TheHeadIsTheV6s) {
   const auto& head = v6().links()[v6().linkIndex("Head")];
   EXPECT_NEAR(head.mass, 0.65973, 1e-9);
-  // facts.md 9: CoM (1.09, 1.46, 57.19) mm in the head frame.
+  // HULKs' V6 MuJoCo model "NaoV6H25": CoM (1.09, 1.46, 57.19) mm in the head frame.
   EXPECT_NEAR(head.inertial_origin.xyz.x() * 1000, 1.09, 1e-9);
   EXPECT_NEAR(head.inertial_origin.xyz.y() * 1000, 1.46, 1e-9);
   EXPECT_NEAR(head.inertial_origin.xyz.z() * 1000, 57.19, 1e-9);
