@@ -150,9 +150,13 @@ ForkRun runForked(ForkJob& job, const std::vector<int>& todo, int jobs, bool pri
           // already an orphan, so end now.
           prctl(PR_SET_PDEATHSIG, SIGKILL);
           if (getppid() != parent) _exit(1);
-          // The worker's signals as the batch had them (workerMain sets
-          // SIGINT's and SIGTERM's; SIGCHLD's no-op handler would interrupt
-          // the worker's own waits).
+          // The worker's signals: SIGINT and SIGTERM end it (set before
+          // they are unblocked: a stop the pool passed on while they were
+          // blocked here is pending, and must not meet the pool's no-op
+          // handler), SIGCHLD as the batch had it (the no-op handler would
+          // interrupt the worker's own waits).
+          signal(SIGINT, SIG_DFL);
+          signal(SIGTERM, SIG_DFL);
           sigaction(SIGCHLD, &old_chld, nullptr);
           sigprocmask(SIG_SETMASK, &old_mask, nullptr);
           workerMain(job, t, private_shm);
