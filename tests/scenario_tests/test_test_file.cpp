@@ -94,7 +94,8 @@ TEST(TestFile, ARequiredRateItsSeedsCannotConfirmIsRefused) {
 TEST(TestFile, TheAdvisedSeedCountIsTheLeastTheCheckAccepts) {
   const auto withSeeds = [](int seeds) {
     std::string t = kOne;
-    t.replace(t.find("seeds: 5\n    short: {seeds: 2}"), 29, "seeds: " + std::to_string(seeds));
+    const std::string counts = "seeds: 5\n    short: {seeds: 2}";
+    t.replace(t.find(counts), counts.size(), "seeds: " + std::to_string(seeds));
     t.replace(t.find("required: 0.3"), 13, "required: 0.95");
     return file(t);
   };
