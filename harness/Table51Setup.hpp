@@ -5,8 +5,10 @@
 #pragma once
 
 #include <algorithm>
-#include <random>
+#include <cstdint>
 
+#include "common/random/DeriveSeed.hpp"
+#include "common/random/Random.hpp"
 #include "harness/KinematicWorld.hpp"
 
 namespace agent::behaviour::table51 {
@@ -24,26 +26,30 @@ inline BehaviourConfig config(BehaviourKind k) {
   return c;
 }
 
-// Start poses jittered by the seed (0 = table 5.1 exactly): +-150 mm, +-0.3 rad,
-// kept on the field. The kinematic world has no noise of its own.
-inline Pose2 jitter(Pose2 p, unsigned seed) {
+// Robot `player`'s start pose `p` jittered by the seed (0 = table 5.1
+// exactly): x and y by up to +-150 mm, theta by up to +-0.3 rad, uniform
+// (y kept on the field). The draws are the project's own (Random, a fixed
+// algorithm: the same on every compiler and standard library), from the one
+// seed recipe: deriveSeed(deriveSeed(seed, kTable51Start), player), in the
+// order x, y, theta. The kinematic world has no noise of its own.
+inline Pose2 jitter(Pose2 p, int player, uint64_t seed) {
   if (seed == 0) return p;
-  std::mt19937 rng(seed * 7919u + static_cast<unsigned>(p.x));
-  std::uniform_real_distribution<double> mm(-150, 150), rad(-0.3, 0.3);
-  p.x += mm(rng);
-  p.y = std::clamp(p.y + mm(rng), -3000.0, 3000.0);
-  p.theta += rad(rng);
+  namespace cr = common::random;
+  cr::Random rng(cr::deriveSeed(cr::deriveSeed(seed, cr::seed_tag::kTable51Start), static_cast<uint64_t>(player)));
+  p.x += rng.uniform(-150.0, 150.0);  // mm
+  p.y = std::clamp(p.y + rng.uniform(-150.0, 150.0), -3000.0, 3000.0);
+  p.theta += rng.uniform(-0.3, 0.3);  // rad
   return p;
 }
 
 inline double findTime(BehaviourKind kind, int robots, Point2 ball, double limit = 180.0,
-                unsigned seed = 0) {
+                uint64_t seed = 0) {
   kin::World w;
   w.ball = ball;
-  w.add(2, jitter(kRobot2, seed), config(kind));
+  w.add(2, jitter(kRobot2, 2, seed), config(kind));
   if (robots == 3) {
-    w.add(3, jitter(kRobot3, seed), config(kind));
-    w.add(4, jitter(kRobot4, seed), config(kind));
+    w.add(3, jitter(kRobot3, 3, seed), config(kind));
+    w.add(4, jitter(kRobot4, 4, seed), config(kind));
   }
   return w.runUntilFound(limit);
 }

@@ -3,7 +3,9 @@
 
 For each of K seed sets, runs the file as a baseline on one seed, then (a)
 the same program and (b) a weakened one on another seed against that
-baseline (every set its own two seeds, so the K outcomes are independent),
+baseline (every set its own two seeds, so the K outcomes are independent;
+with --same-seed both on the baseline's seed, as the CI templates run main
+and a change: the comparison is then paired run by run),
 and counts how often each is flagged: (a) is the false-alarm rate, (b) the
 detection rate, with the weakened runs' smallest adjusted p-values. The weakened program is the file with every `behaviour: striker`
 replaced by WEAK (default: the striker's kick power set to 0 through the
@@ -48,6 +50,8 @@ def main():
     p.add_argument("--full", action="store_true", help="the full form (default: --short)")
     p.add_argument("--sets", type=int, default=5, help="seed sets compared with the baseline")
     p.add_argument("--base-seed", type=int, default=1000)
+    p.add_argument("--same-seed", action="store_true",
+                   help="run (a) and (b) on the baseline's seed (paired, as CI does) instead of another")
     p.add_argument("--jobs", type=int, default=2)
     p.add_argument("--weak", default="{kind: striker, skills: {kick_power: 0.0}}")
     p.add_argument("--out", default="/tmp/simswift-regression-check")
@@ -68,11 +72,14 @@ def main():
     for k in range(1, args.sets + 1):
         seed = args.base_seed + 2 * k
         base = os.path.join(args.out, "base%d" % k)
-        run(args, args.file, seed - 1, base)
+        base_seed = seed if args.same_seed else seed - 1
+        run(args, args.file, base_seed, base)
         same = run(args, args.file, seed, os.path.join(args.out, "same%d" % k), base)
         weak = run(args, weak_file, seed, os.path.join(args.out, "weak%d" % k), base)
         sf = sum(r["regressed"] == "1" for r in same)
         wf = sum(r["regressed"] == "1" for r in weak)
+        if args.same_seed and any(r["pairs"] in ("", "0") for r in weak if r["p_rate"]):
+            sys.exit("--same-seed: a test was not compared pair by pair")
         striker = [r for r in weak if r["p_rate_holm"]]
         ps = [float(r["p_rate_holm"]) for r in striker] + [float(r["p_time_holm"]) for r in striker if r["p_time_holm"]]
         same_runs_flagged += sf > 0
@@ -84,10 +91,12 @@ def main():
                                                        "%.1e" % min(ps) if ps else "-"))
         print(lines[-1], flush=True)
     lines.append("")
+    seeds = ("baseline and runs on seed %d + 2k (paired)" % args.base_seed if args.same_seed else
+             "baseline seed %d + 2k - 1, runs %d + 2k" % (args.base_seed, args.base_seed))
     lines.append("Same program flagged in %d of %d seed sets (%d of %d test comparisons); weakened program "
-                 "flagged in %d of %d seed sets. Seed set k: baseline seed %d + 2k - 1, runs %d + 2k; file %s%s." %
+                 "flagged in %d of %d seed sets. Seed set k: %s; file %s%s." %
                  (same_runs_flagged, args.sets, same_tests_flagged, tests_compared, weak_runs_flagged, args.sets,
-                  args.base_seed, args.base_seed, args.file, " (--only " + args.only + ")" if args.only else ""))
+                  seeds, args.file, " (--only " + args.only + ")" if args.only else ""))
     report = "\n".join(lines) + "\n"
     open(os.path.join(args.out, "regression_check.md"), "w").write(report)
     print(report)

@@ -170,6 +170,7 @@ SetupDefaults readSetupDefaults(const YamlReader& s, const Experiment& e) {
   d.behaviour_where = d.has_behaviour ? s.place("behaviour") : ConfigPlace{};
   if (s.has("config")) {
     if (!s.node()["config"].IsMap()) s.fail("config", "must be a map of behaviour overrides");
+    (void)s.map("config").keys();  // a list or map as a key: refused here, at its line
     d.config = flow(s.node()["config"]);
   }
   d.launch = readLaunch(s, e.base.base_dir, true);
@@ -195,7 +196,8 @@ void readRobotProgram(const YamlReader& r, const YamlReader& s, const SetupDefau
     if (!r.node()["config"].IsMap()) r.fail("config", "must be a map of behaviour overrides");
     // The robot's overrides replace the setup's key by key.
     YAML::Node merged = d.config.empty() ? YAML::Node(YAML::NodeType::Map) : YAML::Load(d.config);
-    for (const auto& kv : r.node()["config"]) merged[kv.first.Scalar()] = kv.second;
+    const YamlReader overrides = r.map("config");
+    for (const YamlReader::Key& k : overrides.keys()) merged[k.name] = overrides.node()[k.name];
     rob.config_yaml = flow(merged);
   }
   rob.launch = r.has("program") ? readLaunch(r, e.base.base_dir, false) : d.launch;

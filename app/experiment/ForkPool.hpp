@@ -8,7 +8,9 @@
 //
 // Ctrl-C / SIGTERM: no further trial is launched, running ones end (they
 // get the terminal's SIGINT too; a signal to the parent alone is passed
-// on), every finished trial is kept. kill -9 of the parent alone: the
+// on, as SIGTERM, at once), every finished trial is kept. The pool keeps
+// SIGINT, SIGTERM and SIGCHLD blocked while it runs and takes them with
+// sigwaitinfo, so a stop is never missed between a check and the wait. kill -9 of the parent alone: the
 // kernel kills every worker (PR_SET_PDEATHSIG) and so the robot programs
 // it launched (theirs, ProgramProcess.cpp); none runs on beside a resume.
 #pragma once
@@ -33,6 +35,10 @@ class ForkJob {
   virtual void finished(int trial, double peak_mb) = 0;
   // In the parent: a trial's process failed; `why` ends with its log's tail.
   virtual void failed(int trial, const std::string& why) = 0;
+  // In the parent: called each time the pool, having checked for a stop and
+  // launched what it may, is about to wait for a worker or a signal. Does
+  // nothing; tests deliver a signal here, the moment a stop could be missed.
+  virtual void waiting() {}
 };
 
 struct ForkRun {

@@ -64,8 +64,9 @@ std::string statisticsSection(const Experiment& e, const std::vector<TrialResult
     << "95 % intervals: find rates by the Wilson score interval; mean find times by a percentile bootstrap over "
        "the finds (2000 resamples, seeded from the experiment's seed and the cell, so every run prints the same "
        "numbers). Differences between two setups on the same positions: Fisher's exact test for the find rate "
-       "and the Mann-Whitney U test for the find times (both two-sided). With 5-10 trials per cell most "
-       "per-position differences cannot be told from chance; the pooled rows say more.\n\n";
+       "and the Mann-Whitney U test for the find times (both two-sided), Holm-adjusted over all of them. With "
+       "5-10 trials per cell most per-position differences cannot be told from chance; the pooled rows say "
+       "more.\n\n";
   for (size_t si = 0; si < e.setups.size(); ++si) {
     const std::string& name = e.setups[si].name;
     s << "### `" << name << "`\n\n| Position | Found | Find rate (95 % CI) | Mean find s (95 % CI) |\n"
@@ -88,59 +89,100 @@ std::string statisticsSection(const Experiment& e, const std::vector<TrialResult
     s << "\n";
   }
 
-  // Every pair of setups, position by position and pooled.
+  // Every pair of setups, position by position and pooled: every test of
+  // them first, so that all are one family for Holm's adjustment.
+  struct Row {
+    std::string label;
+    int position = 0;  // 0: all positions
+    Cell ca, cb;
+    double pf = 1, pm = 1;          // raw, two-sided
+    double pf_adj = 1, pm_adj = 1;  // Holm-adjusted over the section
+    bool timed = false;             // both have finds: times compared
+  };
+  std::vector<std::vector<Row>> pair_rows;
+  std::vector<double> raw;
+  for (size_t a = 0; a < e.setups.size(); ++a)
+    for (size_t b = a + 1; b < e.setups.size(); ++b) {
+      std::vector<Row> rows;
+      auto add = [&](int position, const std::string& label) {
+        Row r;
+        r.label = label;
+        r.position = position;
+        r.ca = cell(results, e.setups[a].name, position);
+        r.cb = cell(results, e.setups[b].name, position);
+        if (!r.ca.tests || !r.cb.tests) return;
+        r.pf = stats::fisherExact(r.ca.found, r.ca.tests - r.ca.found, r.cb.found, r.cb.tests - r.cb.found);
+        raw.push_back(r.pf);
+        r.timed = !r.ca.times.empty() && !r.cb.times.empty();
+        if (r.timed) {
+          r.pm = stats::mannWhitney(r.ca.times, r.cb.times).p;
+          raw.push_back(r.pm);
+        }
+        rows.push_back(r);
+      };
+      for (const BallPosition& p : e.balls) add(p.number, std::to_string(p.number));
+      add(0, "all");
+      pair_rows.push_back(rows);
+    }
+  const std::vector<double> adj = stats::holm(raw);
+  size_t next = 0;
+  for (std::vector<Row>& rows : pair_rows)
+    for (Row& r : rows) {
+      r.pf_adj = adj[next++];
+      if (r.timed) r.pm_adj = adj[next++];
+    }
+  if (!raw.empty())
+    s << "The differences below are " << raw.size() << " tests in all (every pair of setups, each position and "
+      << "all positions, find rate and find time): their p-values are Holm-adjusted over all " << raw.size()
+      << ", and a difference is called larger than chance when its adjusted p is below 0.05, so that of a "
+         "report with no real difference at most 5 % call one.\n\n";
+
+  size_t pair_index = 0;
   for (size_t a = 0; a < e.setups.size(); ++a)
     for (size_t b = a + 1; b < e.setups.size(); ++b) {
       const std::string& na = e.setups[a].name;
       const std::string& nb = e.setups[b].name;
+      const std::vector<Row>& rows = pair_rows[pair_index++];
       s << "### `" << na << "` against `" << nb << "`\n\n"
-        << "| Position | Found `" << na << "` | Found `" << nb << "` | Fisher p | Mean s `" << na << "` | Mean s `"
-        << nb << "` | Mann-Whitney p |\n|---|---:|---:|---:|---:|---:|---:|\n";
+        << "| Position | Found `" << na << "` | Found `" << nb << "` | Fisher p | (Holm) | Mean s `" << na
+        << "` | Mean s `" << nb << "` | Mann-Whitney p | (Holm) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
       std::vector<int> more_a, more_b, faster_a, faster_b;
-      auto row = [&](int position, const std::string& label) {
-        const Cell ca = cell(results, na, position), cb = cell(results, nb, position);
-        if (!ca.tests || !cb.tests) return;
-        const double pf = stats::fisherExact(ca.found, ca.tests - ca.found, cb.found, cb.tests - cb.found);
-        s << "| " << label << " | " << ca.found << "/" << ca.tests << " | " << cb.found << "/" << cb.tests << " | "
-          << pValue(pf) << " | ";
+      const Row* all = nullptr;
+      for (const Row& r : rows) {
+        const Cell& ca = r.ca;
+        const Cell& cb = r.cb;
         const double ma = ca.meanTime(), mb = cb.meanTime();
-        s << (ca.times.empty() ? "-" : fixed(ma, 2)) << " | " << (cb.times.empty() ? "-" : fixed(mb, 2)) << " | ";
-        double pm = 1;
-        if (!ca.times.empty() && !cb.times.empty()) {
-          pm = stats::mannWhitney(ca.times, cb.times).p;
-          s << pValue(pm) << " |\n";
-        } else {
-          s << "- |\n";
+        s << "| " << r.label << " | " << ca.found << "/" << ca.tests << " | " << cb.found << "/" << cb.tests << " | "
+          << pValue(r.pf) << " | " << pValue(r.pf_adj) << " | " << (ca.times.empty() ? "-" : fixed(ma, 2)) << " | "
+          << (cb.times.empty() ? "-" : fixed(mb, 2)) << " | "
+          << (r.timed ? pValue(r.pm) + " | " + pValue(r.pm_adj) : std::string("- | -")) << " |\n";
+        if (r.position == 0) {
+          all = &r;
+          continue;
         }
-        if (position == 0) return;
         const double ra = static_cast<double>(ca.found) / ca.tests, rb = static_cast<double>(cb.found) / cb.tests;
-        if (pf < 0.05) (ra > rb ? more_a : more_b).push_back(position);
-        if (pm < 0.05 && !ca.times.empty() && !cb.times.empty()) (ma < mb ? faster_a : faster_b).push_back(position);
-      };
-      for (const BallPosition& p : e.balls) row(p.number, std::to_string(p.number));
-      row(0, "all");
+        if (r.pf_adj < 0.05) (ra > rb ? more_a : more_b).push_back(r.position);
+        if (r.timed && r.pm_adj < 0.05) (ma < mb ? faster_a : faster_b).push_back(r.position);
+      }
       s << "\n";
       auto say = [&](const std::vector<int>& ps, const std::string& who, const std::string& what) {
         if (!ps.empty())
           s << "- `" << who << "` " << what << " at position" << (ps.size() > 1 ? "s " : " ") << listPositions(ps)
-            << " (p < 0.05).\n";
+            << " (Holm-adjusted p < 0.05).\n";
       };
       say(more_a, na, "finds more balls than `" + nb + "`");
       say(more_b, nb, "finds more balls than `" + na + "`");
       say(faster_a, na, "finds the ball sooner than `" + nb + "`");
       say(faster_b, nb, "finds the ball sooner than `" + na + "`");
       if (more_a.empty() && more_b.empty() && faster_a.empty() && faster_b.empty())
-        s << "- No position shows a difference at p < 0.05.\n";
-      const Cell ca = cell(results, na, 0), cb = cell(results, nb, 0);
-      if (ca.tests && cb.tests) {
-        const double pf = stats::fisherExact(ca.found, ca.tests - ca.found, cb.found, cb.tests - cb.found);
-        s << "- Over all positions: find rates " << ca.found << "/" << ca.tests << " and " << cb.found << "/"
-          << cb.tests << ", Fisher p " << pValue(pf) << (pf < 0.05 ? " (a difference larger than chance)" : " (within chance)");
-        if (!ca.times.empty() && !cb.times.empty()) {
-          const double pm = stats::mannWhitney(ca.times, cb.times).p;
-          s << "; find times Mann-Whitney p " << pValue(pm)
-            << (pm < 0.05 ? " (a difference larger than chance)" : " (within chance)");
-        }
+        s << "- No position shows a difference at Holm-adjusted p < 0.05.\n";
+      if (all) {
+        s << "- Over all positions: find rates " << all->ca.found << "/" << all->ca.tests << " and " << all->cb.found
+          << "/" << all->cb.tests << ", Fisher p " << pValue(all->pf) << " (Holm " << pValue(all->pf_adj) << ")"
+          << (all->pf_adj < 0.05 ? " (a difference larger than chance)" : " (within chance)");
+        if (all->timed)
+          s << "; find times Mann-Whitney p " << pValue(all->pm) << " (Holm " << pValue(all->pm_adj) << ")"
+            << (all->pm_adj < 0.05 ? " (a difference larger than chance)" : " (within chance)");
         s << ".\n";
       }
       s << "\n";

@@ -1,6 +1,7 @@
 #include "app/experiment/Statistics.hpp"
 
 #include <algorithm>
+#include <boost/math/distributions/binomial.hpp>
 #include <boost/math/distributions/hypergeometric.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
@@ -187,6 +188,67 @@ double fisherLess(int a, int b, int c, int d) {
   if (n == 0) return 1.0;
   const boost::math::hypergeometric_distribution<double> h(c1, r1, n);
   return std::min(1.0, boost::math::cdf(h, static_cast<unsigned>(a)));
+}
+
+double mcnemarWorse(int worse, int better) {
+  const int n = worse + better;
+  if (n <= 0 || worse <= 0) return 1.0;
+  const boost::math::binomial_distribution<double> b(n, 0.5);
+  // P(X >= worse) = P(X > worse - 1).
+  return std::min(1.0, boost::math::cdf(boost::math::complement(b, static_cast<double>(worse - 1))));
+}
+
+SignedRank wilcoxonGreater(const std::vector<double>& d) {
+  SignedRank r;
+  std::vector<std::pair<double, bool>> a;  // |d|, positive
+  for (double x : d)
+    if (x != 0) a.push_back({std::fabs(x), x > 0});
+  std::sort(a.begin(), a.end());
+  const size_t n = a.size();
+  r.n = static_cast<int>(n);
+  if (n == 0) return r;
+  // Doubled mid-ranks (integers: i + 1 + j for the tie group [i, j)).
+  std::vector<long> rank2(n);
+  double tie_term = 0;  // sum of t^3 - t over the tie groups
+  for (size_t i = 0; i < n;) {
+    size_t j = i;
+    while (j < n && a[j].first == a[i].first) ++j;
+    for (size_t k = i; k < j; ++k) rank2[k] = static_cast<long>(i + 1 + j);
+    const double t = static_cast<double>(j - i);
+    tie_term += t * t * t - t;
+    i = j;
+  }
+  long v2 = 0;  // 2 v
+  for (size_t k = 0; k < n; ++k)
+    if (a[k].second) v2 += rank2[k];
+  r.v = static_cast<double>(v2) / 2.0;
+  if (n <= 200) {
+    // Under the null each difference is positive or negative with
+    // probability 1/2, independently: count the sign patterns by 2 v.
+    const long total2 = static_cast<long>(n * (n + 1));
+    std::vector<double> ways(static_cast<size_t>(total2) + 1, 0.0);
+    ways[0] = 1;
+    long reach = 0;
+    for (size_t k = 0; k < n; ++k) {
+      reach += rank2[k];
+      for (long s = reach; s >= rank2[k]; --s) ways[static_cast<size_t>(s)] += ways[static_cast<size_t>(s - rank2[k])];
+    }
+    double tail = 0, all = 0;
+    for (long s = 0; s <= total2; ++s) {
+      all += ways[static_cast<size_t>(s)];
+      if (s >= v2) tail += ways[static_cast<size_t>(s)];
+    }
+    r.p = std::min(1.0, tail / all);
+    r.exact = true;
+    return r;
+  }
+  const double nn = static_cast<double>(n);
+  const double mean = nn * (nn + 1) / 4.0;
+  const double var = nn * (nn + 1) * (2 * nn + 1) / 24.0 - tie_term / 48.0;
+  if (var <= 0) return r;
+  const boost::math::normal normal;
+  r.p = std::min(1.0, boost::math::cdf(boost::math::complement(normal, (r.v - mean - 0.5) / std::sqrt(var))));
+  return r;
 }
 
 std::vector<double> holm(const std::vector<double>& p) {

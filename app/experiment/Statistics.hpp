@@ -2,7 +2,10 @@
 // and for a mean find time (percentile bootstrap over trials, seeded), and
 // two-sided tests of a difference between two components on the same
 // positions: Fisher's exact test (find rates, a 2 x 2 table) and the
-// Mann-Whitney U test (find times). Distributions from Boost.Math.
+// Mann-Whitney U test (find times); for paired runs (`simswift test
+// --baseline` on the same seeds) McNemar's exact test and the Wilcoxon
+// signed-rank test; Holm's adjustment for a family of them (the one home
+// of it). Distributions from Boost.Math.
 #pragma once
 
 #include <cstdint>
@@ -50,6 +53,31 @@ MannWhitney mannWhitneyGreater(const std::vector<double>& x, const std::vector<d
 // One-sided Fisher's exact test of {{a, b}, {c, d}}: the probability of a or
 // fewer in the first cell with the margins fixed (row 1's rate is lower).
 double fisherLess(int a, int b, int c, int d);
+
+// Paired comparisons: run i of both sides started from the same seed (the
+// same placement, the same noise), so each pair is one observation.
+
+// One-sided McNemar's exact test of paired pass/fail outcomes: of the
+// discordant pairs, `worse` passed before and fail now, `better` the other
+// way. Under the null either way is as likely (probability 1/2), so the p
+// is P(X >= worse) for X ~ Binomial(worse + better, 1/2); 1 with no
+// discordant pair.
+double mcnemarWorse(int worse, int better);
+
+// One-sided Wilcoxon signed-rank test: the evidence that the paired
+// differences d tend to be positive. Zero differences are dropped (as
+// Wilcoxon's test and R's wilcox.test do); the others are ranked by |d|,
+// ties by their mean rank; v = the sum of the positive differences' ranks,
+// n = the differences left. Exact (the permutation distribution of v under
+// random signs, ties included, counted over half-ranks) for n <= 200;
+// otherwise the normal approximation with tie and continuity corrections.
+struct SignedRank {
+  double v = 0;
+  double p = 1;
+  int n = 0;
+  bool exact = false;
+};
+SignedRank wilcoxonGreater(const std::vector<double>& d);
 
 // Holm's step-down adjustment of p-values (family-wise error at most the
 // level used), in the input's order.

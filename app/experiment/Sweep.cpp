@@ -78,13 +78,14 @@ std::vector<SweepAxis> readSweep(const YamlReader& top) {
     top.fail("sweep", "must be a map of setting paths to lists of values, e.g. team_comms.loss: [0, 0.1]");
   std::vector<SweepAxis> axes;
   const std::string file = top.file();
+  (void)YamlReader(sweep, file, "sweep").keys();  // a list or map as a path: refused at its line
   for (const auto& kv : sweep) {
     if (axes.size() == static_cast<size_t>(kMaxSweepPaths))
       throw ConfigError(file, lineOf(kv.first), "sweep", "more than " + std::to_string(kMaxSweepPaths) +
                         " paths (1000 cells allow 9 with two values or more; a setting with one value belongs in "
                         "the experiment itself)");
     SweepAxis a;
-    a.path = kv.first.IsScalar() ? kv.first.Scalar() : "";
+    a.path = kv.first.Scalar();
     a.line = kv.first.Mark().is_null() ? 1 : kv.first.Mark().line + 1;
     const std::string key = "sweep." + a.path;
     for (const std::string& s : splitPath(a.path))

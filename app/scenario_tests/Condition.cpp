@@ -31,8 +31,8 @@ std::string operatorOf(const YamlReader& m, const std::vector<std::string>& ops,
   if (!m.node().IsMap() || m.node().size() == 0)
     m.fail(std::string("must be a map with one ") + level + " operator (" + (level[0] == 't' ? "within, eventually, always, never, at_end, all, any, not" : "ball_in_goal, near_ball, fallen, ...") + ")");
   std::string found;
-  for (const auto& kv : m.node()) {
-    const std::string k = kv.first.as<std::string>();
+  for (const YamlReader::Key& key : m.keys()) {
+    const std::string& k = key.name;
     for (const std::string& op : ops)
       if (k == op) {
         if (!found.empty())
@@ -41,8 +41,8 @@ std::string operatorOf(const YamlReader& m, const std::vector<std::string>& ops,
       }
   }
   if (found.empty()) {
-    for (const auto& kv : m.node()) {
-      const std::string k = kv.first.as<std::string>();
+    for (const YamlReader::Key& key : m.keys()) {
+      const std::string& k = key.name;
       for (const std::string& op : other)
         if (k == op)
           m.fail(k, level[0] == 't'

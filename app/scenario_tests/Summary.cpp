@@ -26,6 +26,29 @@ std::vector<double> passTimes(const std::vector<RunResult>& rs, const std::strin
   return t;
 }
 
+// A run of this run and the baseline's run of the same test on the same
+// seed: the same placement and noise (run seeds derive from the file seed,
+// the test's name and the run index: TestFile.hpp runSeed).
+struct Pair {
+  const RunResult* now = nullptr;
+  const RunResult* base = nullptr;
+};
+
+std::vector<Pair> pairsBySeed(const std::vector<RunResult>& current, const std::vector<RunResult>& baseline,
+                              const std::string& test) {
+  std::map<uint64_t, const RunResult*> base;
+  for (const RunResult& r : baseline)
+    if (r.test == test) base.emplace(r.seed, &r);
+  std::vector<Pair> out;
+  for (const RunResult& r : current)
+    if (r.test == test)
+      if (auto it = base.find(r.seed); it != base.end()) {
+        out.push_back({&r, it->second});
+        base.erase(it);  // each baseline run in one pair
+      }
+  return out;
+}
+
 double mean(const std::vector<double>& v) {
   double s = 0;
   for (double x : v) s += x;
@@ -89,12 +112,38 @@ void compareWithBaseline(std::vector<TestSummary>& tests, const std::vector<RunR
     s.compared = true;
     s.base_runs = it->second.first;
     s.base_passed = it->second.second;
-    // Rows: now, baseline; columns: passed, failed.
+    const std::vector<double> now_t = passTimes(current, s.name), base_t = passTimes(baseline, s.name);
+    s.base_mean_pass_s = mean(base_t);
+    const std::vector<Pair> pairs = pairsBySeed(current, baseline, s.name);
+    s.pairs = static_cast<int>(pairs.size());
+    if (!pairs.empty()) {
+      // Paired: McNemar on the discordant pairs; Wilcoxon on the times of
+      // the pairs that passed on both sides (now - before, s).
+      int worse = 0, better = 0;
+      std::vector<double> slower;
+      for (const Pair& pr : pairs) {
+        worse += pr.base->passed && !pr.now->passed;
+        better += !pr.base->passed && pr.now->passed;
+        if (pr.base->passed && pr.now->passed) slower.push_back(pr.now->decided_s - pr.base->decided_s);
+      }
+      s.p_rate = stats::mcnemarWorse(worse, better);
+      raw.push_back(s.p_rate);
+      which.push_back({i, false});
+      // Equal times say nothing (the same program on the same seed gives
+      // them all): compared when at least two pairs differ.
+      const stats::SignedRank w = stats::wilcoxonGreater(slower);
+      if (w.n >= 2) {
+        s.time_compared = true;
+        s.p_time = w.p;
+        raw.push_back(s.p_time);
+        which.push_back({i, true});
+      }
+      continue;
+    }
+    // Independent. Rows: now, baseline; columns: passed, failed.
     s.p_rate = stats::fisherLess(s.passed, s.runs - s.passed, s.base_passed, s.base_runs - s.base_passed);
     raw.push_back(s.p_rate);
     which.push_back({i, false});
-    const std::vector<double> now_t = passTimes(current, s.name), base_t = passTimes(baseline, s.name);
-    s.base_mean_pass_s = mean(base_t);
     // Times that all tie (a test decided only at its time limit) say
     // nothing: left out of the family rather than diluting it.
     bool all_tie = true;

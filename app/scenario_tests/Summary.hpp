@@ -6,13 +6,20 @@
 // rate, "fails" when its upper end is below it, otherwise "undecided: run
 // more seeds".
 //
-// Regression against a baseline (an earlier run's results.csv): the pass
-// rate by Fisher's exact test (one-sided: lower now), the times to pass by
-// Mann-Whitney (one-sided: longer now; the passing runs of each, when both
-// have at least two). Every comparison of the file is one family: the
-// p-values are Holm-adjusted, and a regression is called when an adjusted
-// p-value is below alpha (default 0.05), so a whole unchanged program is
-// flagged at most alpha of the time however many tests the file holds.
+// Regression against a baseline (an earlier run's results.csv), one-sided
+// (worse now). Paired when the two share run seeds (the same file seed, as
+// the CI templates run main and the change: run i starts from the same
+// placement and noise on both sides): the runs with the same seed are the
+// pairs, the pass rate by McNemar's exact test on them, the time to pass by
+// the Wilcoxon signed-rank test on the pairs that passed on both sides (a
+// pair that failed on either side is the rate test's evidence, not the
+// time's; equal times are dropped, as the test does). Independent when they
+// share none (other seeds): the pass rate by Fisher's exact test, the times
+// to pass by Mann-Whitney (the passing runs of each, when both have at
+// least two). Every comparison of the file is one family: the p-values are
+// Holm-adjusted, and a regression is called when an adjusted p-value is
+// below alpha (default 0.05), so a whole unchanged program is flagged at
+// most alpha of the time however many tests the file holds.
 #pragma once
 
 #include <algorithm>
@@ -38,6 +45,7 @@ struct TestSummary {
   bool changed = false;                   // in the baseline, but defined differently there
   int base_runs = 0, base_passed = 0;
   double base_mean_pass_s = 0;
+  int pairs = 0;                          // runs paired by seed with the baseline's (0: independent)
   double p_rate = 1, p_time = 1;          // one-sided, raw
   double p_rate_adj = 1, p_time_adj = 1;  // Holm-adjusted over the file
   bool time_compared = false;

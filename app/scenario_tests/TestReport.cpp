@@ -34,7 +34,8 @@ std::string verdictLine(const TestSummary& s) {
                   "-" + pct(s.hi) + " %), required " + pct(s.required) + " %: " + verdictName(s.verdict);
   if (s.regressed) {
     l += "; regressed against the baseline (" + std::to_string(s.base_passed) + "/" + std::to_string(s.base_runs) +
-         " passed there; rate p = " + pval(s.p_rate_adj);
+         " passed there; " + (s.pairs ? "paired on " + std::to_string(s.pairs) + " seeds; " : std::string()) +
+         "rate p = " + pval(s.p_rate_adj);
     if (s.time_compared) l += ", time to pass p = " + pval(s.p_time_adj);
     l += ", Holm-adjusted)";
   }
@@ -57,7 +58,8 @@ std::string consoleSummary(const TestFile& f, const TestOptions& opt, const std:
     ok += good;
     o << (good ? "PASS " : "FAIL ") << s.name << ": " << verdictLine(s) << "\n";
     if (s.compared && !s.regressed)
-      o << "     against the baseline: " << s.base_passed << "/" << s.base_runs << " passed there, no regression (rate p = "
+      o << "     against the baseline: " << s.base_passed << "/" << s.base_runs << " passed there, no regression ("
+        << (s.pairs ? "paired on " + std::to_string(s.pairs) + " seeds; " : std::string()) << "rate p = "
         << pval(s.p_rate_adj) << (s.time_compared ? ", time p = " + pval(s.p_time_adj) : std::string()) << ")\n";
     const size_t shown = std::min<size_t>(s.failures.size(), 5);
     for (size_t i = 0; i < shown; ++i) {
@@ -75,7 +77,7 @@ std::string consoleSummary(const TestFile& f, const TestOptions& opt, const std:
 std::string summaryCsv(const std::vector<TestSummary>& tests, bool baseline) {
   std::ostringstream o;
   o << "test,runs,passed,rate,lo95,hi95,required,verdict,mean_pass_s";
-  if (baseline) o << ",base_runs,base_passed,p_rate,p_time,p_rate_holm,p_time_holm,regressed";
+  if (baseline) o << ",base_runs,base_passed,p_rate,p_time,p_rate_holm,p_time_holm,pairs,regressed";
   o << "\n";
   for (const TestSummary& s : tests) {
     o << s.name << ',' << s.runs << ',' << s.passed << ',' << f2(s.rate()) << ',' << f2(s.lo) << ',' << f2(s.hi) << ','
@@ -85,9 +87,9 @@ std::string summaryCsv(const std::vector<TestSummary>& tests, bool baseline) {
       if (s.compared)
         o << ',' << s.base_runs << ',' << s.base_passed << ',' << pval(s.p_rate) << ','
           << (s.time_compared ? pval(s.p_time) : "") << ',' << pval(s.p_rate_adj) << ','
-          << (s.time_compared ? pval(s.p_time_adj) : "") << ',' << (s.regressed ? 1 : 0);
+          << (s.time_compared ? pval(s.p_time_adj) : "") << ',' << s.pairs << ',' << (s.regressed ? 1 : 0);
       else
-        o << ",,,,,,,";
+        o << ",,,,,,,,";
     }
     o << "\n";
   }
@@ -113,20 +115,24 @@ std::string reportMarkdown(const TestFile& f, const TestOptions& opt, const std:
   if (figure) o << "\n![pass rates](pass_rates.png)\n";
   if (!opt.baseline.empty()) {
     o << "\n## Against the baseline\n\nBaseline `" << opt.baseline
-      << "`. One-sided tests: the pass rate by Fisher's exact test (lower now), the time to pass by Mann-Whitney "
-         "(longer now, when both runs have at least two passes); p-values Holm-adjusted over every comparison of "
-         "the file; a regression is called below "
+      << "`. One-sided tests (worse now). A test whose runs share seeds with the baseline's (the same file seed: "
+         "run i starts from the same placement and noise on both sides) is compared pair by pair: the pass rate by "
+         "McNemar's exact test, the time to pass by the Wilcoxon signed-rank test on the pairs that passed on both "
+         "sides (equal times dropped; compared when two or more differ). A test run on other seeds is compared as "
+         "independent samples: the pass rate by Fisher's exact test, the time to pass by Mann-Whitney (when both "
+         "have at least two passes). p-values Holm-adjusted over every comparison of the file; a regression is "
+         "called below "
       << opt.alpha << ".\n\n";
-    o << "| test | now | baseline | p rate | p time | p rate (Holm) | p time (Holm) | regressed |\n";
-    o << "|---|---:|---:|---:|---:|---:|---:|---|\n";
+    o << "| test | now | baseline | paired | p rate | p time | p rate (Holm) | p time (Holm) | regressed |\n";
+    o << "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
     for (const TestSummary& s : tests) {
       if (!s.compared) {
         o << "| " << s.name << " | " << s.passed << "/" << s.runs << " | "
-          << (s.changed ? "(redefined since the baseline)" : "(not in the baseline)") << " | | | | | |\n";
+          << (s.changed ? "(redefined since the baseline)" : "(not in the baseline)") << " | | | | | | |\n";
         continue;
       }
       o << "| " << s.name << " | " << s.passed << "/" << s.runs << " | " << s.base_passed << "/" << s.base_runs << " | "
-        << pval(s.p_rate) << " | " << (s.time_compared ? pval(s.p_time) : "-") << " | " << pval(s.p_rate_adj) << " | "
+        << (s.pairs ? std::to_string(s.pairs) + " seeds" : "no") << " | " << pval(s.p_rate) << " | " << (s.time_compared ? pval(s.p_time) : "-") << " | " << pval(s.p_rate_adj) << " | "
         << (s.time_compared ? pval(s.p_time_adj) : "-") << " | " << (s.regressed ? "**yes**" : "no") << " |\n";
     }
   }

@@ -230,8 +230,38 @@ void YamlReader::checkMisspelling(const std::string& key) const {
 
 void YamlReader::checkMap() const {
   // An empty value ("field:" with nothing under it) counts as an empty map.
-  if (!node_.IsDefined() || node_.IsNull() || node_.IsMap()) return;
-  fail("expected a map of keys (got " + shown(node_) + ")");
+  if (!node_.IsDefined() || node_.IsNull()) return;
+  if (!node_.IsMap()) fail("expected a map of keys (got " + shown(node_) + ")");
+  if (keys_checked_) return;
+  // Every reader names keys by their text: a key that is a list, a map or
+  // nothing (YAML's "? [never]: ..." or "~: ...") has none, and yaml-cpp
+  // would throw its own unplaced "bad conversion" where a reader asked.
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    const YAML::Node& k = it->first;
+    if (k.IsScalar()) continue;
+    std::string got = "~";
+    if (k.IsSequence() || k.IsMap()) {
+      YAML::Emitter e;
+      e << YAML::Flow << k;
+      got = clip(e.c_str());
+    }
+    const YAML::Mark m = k.Mark().is_null() ? node_.Mark() : k.Mark();
+    throw ConfigError(file_, m.is_null() ? 1 : m.line + 1, path_,
+                      std::string(path_.empty() ? "<document>: " : "") + "a key must be a name, not " +
+                          (k.IsSequence() ? "a list" : k.IsMap() ? "a map" : "null") + " (got " + got + ")");
+  }
+  keys_checked_ = true;
+}
+
+std::vector<YamlReader::Key> YamlReader::keys() const {
+  checkMap();
+  std::vector<Key> out;
+  if (!node_.IsMap()) return out;
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    const YAML::Mark m = it->first.Mark();
+    out.push_back({it->first.Scalar(), m.is_null() ? 1 : m.line + 1});
+  }
+  return out;
 }
 
 YAML::Node YamlReader::get(const std::string& key) const {
@@ -384,7 +414,7 @@ void YamlReader::finish() const {
   checkMap();
   if (!node_.IsMap()) return;
   for (auto it = node_.begin(); it != node_.end(); ++it) {
-    std::string k = it->first.IsScalar() ? it->first.Scalar() : std::string("?");
+    const std::string& k = it->first.Scalar();  // checkMap: every key is a scalar
     if (std::find(known_.begin(), known_.end(), k) != known_.end()) continue;
     std::string expected, suggestion;
     for (const auto& e : known_) {

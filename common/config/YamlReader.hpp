@@ -137,6 +137,15 @@ class YamlReader {
   // Rejects keys this reader was never asked about. Call after reading.
   void finish() const;
 
+  // This map's keys in the file's order, each with its 1-based line, for
+  // readers whose keys are data (a launched program's env:, a test's
+  // operator): the one way to walk a map's keys. Marks none as known.
+  struct Key {
+    std::string name;
+    int line = 1;
+  };
+  std::vector<Key> keys() const;
+
   // Throws ConfigError "file:line: path.key: message" (line of the key's
   // value, or of this map if the key is absent).
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
@@ -169,7 +178,12 @@ class YamlReader {
   YAML::Node get(const std::string& key) const;      // undefined node if absent
   YAML::Node require(const std::string& key) const;  // fails if absent
   double toNumber(const YAML::Node& n, const std::string& key) const;
+  // Fails unless the node is a map (or empty) whose keys are all plain
+  // scalars: a list, a map or nothing as a key ("? [never]: ..." in YAML's
+  // complex-key syntax) is refused at the key's line, once per reader.
   void checkMap() const;
+
+  mutable bool keys_checked_ = false;
 
   YAML::Node node_;
   std::string file_;

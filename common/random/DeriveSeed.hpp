@@ -1,8 +1,8 @@
 // The one recipe for deriving a seed from another (issue 32): every seeded
 // stream in simswift (sensor noise, vision, robot programs, their filters,
-// the team network, trial seeds, bootstrap intervals, test runs) takes its
-// seed from its parent through deriveSeed, with a tag that says which child
-// it is. Chains of derivations give independent-looking streams for
+// the team network, trial seeds, bootstrap intervals, test runs, the
+// kinematic harness's start poses) takes its seed from its parent through
+// deriveSeed, with a tag that says which child it is. Chains of derivations give independent-looking streams for
 // (parent, tag, tag, ...) without any two recipes to keep apart.
 #pragma once
 
@@ -58,6 +58,13 @@ constexpr uint64_t kReportBootstrap = 0x7265706f7274ULL;
 // kSweepBootstrap), cell), setup): a sweep row's bootstrap interval
 // (app/experiment/SweepReport.cpp). ASCII "sweep".
 constexpr uint64_t kSweepBootstrap = 0x7377656570ULL;
+
+// From a start-pose seed of the kinematic find-ball harness (1..5 in
+// tools/findball_times.cpp, the closed-loop logic tests' seeds).
+// deriveSeed(deriveSeed(seed, kTable51Start), player): robot `player`'s
+// start-pose jitter (harness/Table51Setup.hpp jitter). A parent of its own:
+// no other child to keep apart from. ASCII "table51".
+constexpr uint64_t kTable51Start = 0x7461626c653531ULL;
 
 // From a test file's seed: deriveSeed(deriveSeed(seed, FNV-1a of the test's
 // name), run index) % (2^31 - 1), a run's scenario seed

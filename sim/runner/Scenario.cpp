@@ -385,12 +385,10 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
     rs.launch.cwd = (std::filesystem::path(base_dir.empty() ? "." : base_dir) / rs.launch.cwd).string();
   if (rs.launch.cwd.empty()) rs.launch.cwd = base_dir.empty() ? "." : base_dir;
   if (auto env = p.optionalMap("env")) {
-    for (const auto& kv : env->node()) {
-      const std::string key = kv.first.Scalar();
+    for (const YamlReader::Key& k : env->keys()) {
+      const std::string& key = k.name;
       if (key.empty() || key.find('=') != std::string::npos) env->fail(key, "not an environment variable name");
-      if (!kv.second.IsScalar()) env->fail(key, "expected a string value");
-      (void)env->has(key);
-      rs.launch.env.emplace_back(key, kv.second.Scalar());
+      rs.launch.env.emplace_back(key, env->string(key));
     }
   }
   rs.launch.stop_grace_s = p.number("stop_grace", rs.launch.stop_grace_s, Range::closed(0, 60));

@@ -88,6 +88,29 @@ TEST(TestFile, ARequiredRateItsSeedsCannotConfirmIsRefused) {
   EXPECT_NE(errorOf(file(t)).find("a rate of 1 can never be confirmed"), std::string::npos);
 }
 
+// The advice names the least seed count the check accepts (issue 45, item
+// 7): n/n's 95 % Wilson lower end is n / (n + z^2), z = 1.959964, which
+// reaches 0.95 at n = 19 z^2 = 72.99, so 73; 72 is refused.
+TEST(TestFile, TheAdvisedSeedCountIsTheLeastTheCheckAccepts) {
+  const auto withSeeds = [](int seeds) {
+    std::string t = kOne;
+    const std::string counts = "seeds: 5\n    short: {seeds: 2}";
+    t.replace(t.find(counts), counts.size(), "seeds: " + std::to_string(seeds));
+    t.replace(t.find("required: 0.3"), 13, "required: 0.95");
+    return file(t);
+  };
+  const std::string e = errorOf(withSeeds(20));
+  EXPECT_NE(e.find("t.yaml:7: tests[0].required: with 20 seeds even 20/20 passes"), std::string::npos) << e;
+  EXPECT_NE(e.find("use at least 73 seeds or a lower rate"), std::string::npos) << e;
+  EXPECT_EQ(errorOf(withSeeds(73)), "");
+  EXPECT_NE(errorOf(withSeeds(72)).find("use at least 73 seeds"), std::string::npos) << errorOf(withSeeds(72));
+  // A rate no allowed count confirms (0.99999 needs 384,142) says so.
+  std::string t = kOne;
+  t.replace(t.find("required: 0.3"), 13, "required: 0.99999");
+  EXPECT_NE(errorOf(file(t)).find("no seed count up to 100000 can: use a lower rate"), std::string::npos)
+      << errorOf(file(t));
+}
+
 TEST(TestFile, AFuzzListLongerThanTheRobots) {
   std::string t = kOne;
   const std::string fuzz = "fuzz: {robots: {x: 0.2, y: [0.0, 0.3], theta: 0.1}";
