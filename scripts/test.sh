@@ -80,7 +80,10 @@ heavy='MotionPhysics\.|ExternalExperimentFull\.|SimswiftTestHeavy\.'
 san_cmake=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG"
            -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF -DSIMSWIFT_TOOLS=OFF "${ccache_cmake[@]}"
            -DSIMSWIFT_SANITIZE_DEBUG=-g1)
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0"
+# verify_asan_link_order=0: a launched program has libsimswift-shim.so
+# preloaded ahead of ASan's runtime (docs/shim.md); the shim is never
+# instrumented, so the order is harmless.
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0:verify_asan_link_order=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
