@@ -322,12 +322,12 @@ int CleanCommand::run() const {
   // /tmp/simswift-lola, an experiment trial's in /dev/shm.
   if (!robot_.team) {
     const std::vector<std::string> sockets =
-        simswift::lola::removeStaleSockets({"/tmp/simswift-lola"}, "t");
+        simswift::lola::removeStaleSockets({simswift::lola::kSharedSocketFolder}, "t");
     const std::vector<std::string> trials = simswift::lola::removeStaleSockets({"/dev/shm"}, "simswift-lola-p");
     std::printf("removed %zu LoLA socket(s) left by killed runs\n", sockets.size() + trials.size());
   } else {
     const std::string tag = common::libagent::robotTag(*robot_.team, *robot_.player);
-    const auto sockets = simswift::lola::removeStaleSockets({"/tmp/simswift-lola"}, tag);
+    const auto sockets = simswift::lola::removeStaleSockets({simswift::lola::kSharedSocketFolder}, tag);
     std::printf("removed %zu LoLA socket(s) of %s left by killed runs\n", sockets.size(), tag.c_str());
   }
   return 0;

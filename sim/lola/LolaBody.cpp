@@ -16,14 +16,6 @@ using common::libagent::SyncMode;
 
 namespace {
 
-// The socket's folder made if missing (the server's bind then says what is wrong).
-const std::string& withFolder(const std::string& path) {
-  std::error_code ec;
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  return path;
-}
-
 uint8_t status(float temperature, const LolaBodyOptions& o) {
   if (temperature >= o.status_critical) return 3;
   if (temperature >= o.status_very_hot) return 2;
@@ -78,7 +70,7 @@ SensorPacket toLolaPacket(const al::SensorValues& v, const LolaBodyOptions& opti
 LolaBody::LolaBody(int team, int player, const al::JointValues& initial, LolaBodyOptions options)
     : BodySide(al::robotTag(team, player)),
       options_(std::move(options)),
-      server_(withFolder(options_.socket_path), options_.decoder),
+      server_(options_.socket_path, options_.decoder),
       objects_(std::make_unique<bridge::BodyHost>(
           team, player, options_.named ? bridge::BodyHost::Mode::Named : bridge::BodyHost::Mode::InProcess, initial,
           bridge::BodyHostOptions{false, options_.images})) {
