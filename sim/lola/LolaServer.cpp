@@ -89,6 +89,12 @@ void makeSocketFolder(const std::string& socket_path) {
 
 std::string lockPath(const std::string& socket_path) { return socket_path + ".lock"; }
 
+bool socketServed(const std::string& socket_path) {
+  struct stat st{};
+  return ::lstat(socket_path.c_str(), &st) == 0 && S_ISSOCK(st.st_mode) &&
+         common::lock::lockHeld(lockPath(socket_path));
+}
+
 std::vector<std::string> removeStaleSockets(const std::vector<std::string>& folders, const std::string& prefix) {
   std::vector<std::string> removed;
   for (const std::string& folder : folders) {

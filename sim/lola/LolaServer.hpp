@@ -70,6 +70,11 @@ constexpr const char* kSharedSocketFolder = "/tmp/simswift-lola";
 // ServerError saying what to do. Other folders are made with the umask.
 void makeSocketFolder(const std::string& socket_path);
 
+// True if a live server serves the socket at `socket_path`: the socket is
+// there and its server holds the lock beside it. Asked without connecting
+// (`simswift attach` waits for it).
+bool socketServed(const std::string& socket_path);
+
 // LoLA sockets a killed run left among the entries of `folders` whose names
 // start with `prefix`: removed (with their lock files), their paths
 // returned. A live one, whose server holds the lock beside it, is left and

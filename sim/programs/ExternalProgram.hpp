@@ -18,6 +18,10 @@ class ExternalProgram : public ProgramDriver {
   ExternalProgram(RobotSlot slot, double attach_timeout_s);
   // Waits for the first answer; on a terminal, says after 0.5 s what to start.
   bool attach() override;
+  // A program that has gone (BodySide::programGone: a V6 program restarted
+  // by hand, a new gdb session) is waited for as long as the first attach,
+  // saying so on stderr; RunnerError if none comes back in time.
+  bool await(Step step, double timeout_s) override;
 
  protected:
   double attach_timeout_s_;
