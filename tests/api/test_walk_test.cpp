@@ -130,7 +130,7 @@ struct MemcpyWalk {
     std::memcpy(&in, &s, sizeof in);
     std::memcpy(&out, &j, sizeof out);
     walk.setRequest(c.walk, {c.forward, c.left, c.turn});
-    walk.tick(in, 0.01, out);
+    walk.tick(in, c.tick, out);  // the kit's tick: the robot's body's
     std::memcpy(&j, &out, sizeof j);
   }
 };
