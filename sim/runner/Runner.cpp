@@ -143,23 +143,6 @@ void Runner::buildHosts() {
     r.latched = r.body->readActuators();  // what the body gets before any command (limp or stiff start)
     r.ext = r.body->extension();  // game state + team link, beside the block
   }
-  settleRobots();
-}
-
-// The robots come to rest in their start postures, holding what their
-// bodies give before any command, before their programs first read them
-// (issue 45: a V6 program's first packet read accelerometer z -2.98 m/s^2
-// and an FSR sum of 2.42 kg, a robot still sinking into its contacts,
-// settled by the third). Untimed: the run's clock starts after it. The
-// sensors start afresh from the settled state (their velocity and rotation
-// differences otherwise span the settling).
-void Runner::settleRobots() {
-  applyCommands();
-  world_->settle(kSettleTicks);
-  const sensors::SensorConfig sc = sensorConfig();
-  for (size_t i = 0; i < robots_.size(); ++i)
-    robots_[i]->sensors = std::make_unique<sensors::SensorSuite>(*world_, static_cast<int>(i), sc);
-  for (auto& r : robots_) r->sensors->setSonarMode(r->latched.sonar);
 }
 
 // Team network and GameController; the robots see the game state at t = 0.

@@ -213,10 +213,6 @@ class Runner {
   // Build stages (start(), in this order).
   void buildWorld();        // model, field, World, ball
   void buildHosts();        // per robot: World body, SensorSuite, body side (Bodies.hpp)
-  void settleRobots();      // the robots at rest before their programs first read them
-  // Ticks of physics the robots settle for before the run's first tick: a
-  // placed robot sinks into its contacts for about two ticks (issue 45).
-  static constexpr int kSettleTicks = 10;
   void attachPrograms();    // per robot: its program driver (sim/programs), from the scenario
   void buildTeamAndGame();  // TeamNetwork, GameController (and its UDP sender), the t = 0 game state
   void startCameras();      // if the scenario renders
