@@ -9,6 +9,8 @@
 // (the message names the option) or bad input file (scenario, model, field:
 // the message names file and line); experiment and test: also 130 interrupted.
 #include <algorithm>
+#include <chrono>
+#include <thread>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -22,6 +24,11 @@
 
 #include <fcntl.h>
 #include <sys/mman.h>
+#include <signal.h>
+#include <sys/mount.h>
+#include <sys/prctl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "app/cli/CommandLine.hpp"
@@ -329,12 +336,12 @@ int CleanCommand::run() const {
   // /tmp/simswift-lola, an experiment trial's in /dev/shm.
   if (!robot_.team) {
     const std::vector<std::string> sockets =
-        simswift::lola::removeStaleSockets({"/tmp/simswift-lola"}, "t");
+        simswift::lola::removeStaleSockets({simswift::lola::kSharedSocketFolder}, "t");
     const std::vector<std::string> trials = simswift::lola::removeStaleSockets({"/dev/shm"}, "simswift-lola-p");
     std::printf("removed %zu LoLA socket(s) left by killed runs\n", sockets.size() + trials.size());
   } else {
     const std::string tag = common::libagent::robotTag(*robot_.team, *robot_.player);
-    const auto sockets = simswift::lola::removeStaleSockets({"/tmp/simswift-lola"}, tag);
+    const auto sockets = simswift::lola::removeStaleSockets({simswift::lola::kSharedSocketFolder}, tag);
     std::printf("removed %zu LoLA socket(s) of %s left by killed runs\n", sockets.size(), tag.c_str());
   }
   return 0;
@@ -352,12 +359,16 @@ class AttachCommand {
         "simswift attach (--team T --player P | --socket PATH) -- COMMAND...\n"
         "Runs COMMAND, an unchanged V6 (LoLA) program, by hand: its /tmp/robocup is that\n"
         "robot's socket (default /tmp/simswift-lola/t<T>p<P>), in a mount namespace of its own.\n"
-        "Start the run first: the robot's socket exists while it runs. Everything after -- is\n"
-        "the command's, passed on as it is. COMMAND reads the robot's simulated time through\n"
-        "libsimswift-shim.so (LD_PRELOAD; docs/shim.md), as a launched program does; a static\n"
-        "binary is refused. COMMAND may be gdb running the program: gdb keeps the wall clock.\n"
+        "It waits (up to --wait s) for a run to serve that socket, and while COMMAND runs its\n"
+        "/tmp/robocup follows the robot's socket of the run serving it (a new run of the same\n"
+        "robot included), so a program that reconnects, as real clients do, finds it.\n"
+        "Everything after -- is the command's, passed on as it is. COMMAND reads the robot's\n"
+        "simulated time through libsimswift-shim.so (LD_PRELOAD; docs/shim.md), as a launched\n"
+        "program does; a static binary is refused. COMMAND may be gdb running the program:\n"
+        "gdb keeps the wall clock.\n"
         "\n"
-        "Exit codes: COMMAND's; 1 no such socket or COMMAND cannot start; 2 bad command line.");
+        "Exit codes: COMMAND's (128 + N killed by signal N); 1 no run served the socket in time\n"
+        "or COMMAND cannot start; 2 bad command line.");
     robot_.declare(*cmd_, "of the robot");
     CLI::Option* socket = cmd_->add_option("--socket", socket_, "the robot's LoLA socket (instead of --team, --player)")
                               ->type_name("PATH")
@@ -369,6 +380,9 @@ class AttachCommand {
                      "socket's name)")
         ->type_name("NAME")
         ->transform(cli::nonEmpty());
+    cmd_->add_option("--wait", wait_s_, "s to wait for a run to serve the socket (default " +
+                                            simswift::runner::formatNumber("%g", wait_s_) + ")")
+        ->transform(cli::number(0, 1e6));
     // Only for --help and to say where the command goes: main() takes it
     // from after `--`.
     cmd_->add_option("COMMAND", misplaced_, "the program and its arguments, after --")->type_name("");
@@ -384,8 +398,26 @@ class AttachCommand {
   RobotOptions robot_;
   std::string socket_;
   std::string clock_;
+  // s, wall clock: as long as a run waits for its hand-started program
+  // (the scenario's attach_timeout default).
+  double wait_s_ = simswift::runner::Scenario{}.attach_timeout_s;
   std::vector<std::string> misplaced_;  // a command given before `--`
 };
+
+namespace attach {
+volatile sig_atomic_t g_forward = 0;  // a signal for the command (SIGTERM, SIGHUP)
+void onSignal(int sig) { g_forward = sig; }
+
+// The robot's socket as the command sees it differs from the one served at
+// `socket` now (a new run of the robot): /tmp/robocup is bound to the new one.
+bool follow(const std::string& socket) {
+  struct stat served {}, seen {};
+  if (!simswift::lola::socketServed(socket) || ::stat(socket.c_str(), &served) != 0) return false;
+  if (::stat("/tmp/robocup", &seen) == 0 && seen.st_dev == served.st_dev && seen.st_ino == served.st_ino) return false;
+  ::umount2("/tmp/robocup", MNT_DETACH);
+  return ::mount(socket.c_str(), "/tmp/robocup", nullptr, MS_BIND, nullptr) == 0;
+}
+}  // namespace attach
 
 int AttachCommand::run(const std::vector<std::string>& command) const {
   if (!misplaced_.empty())
@@ -394,6 +426,23 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   if (socket_.empty() && !robot_.team) return cli::usageError(*cmd_, "give --team and --player, or --socket");
   const std::string socket =
       socket_.empty() ? simswift::runner::defaultLolaSocket(*robot_.team, *robot_.player, false) : socket_;
+  // The socket of a run that serves it, never one a run left or one not
+  // made yet: waited for (bounded), as a real client retries its connect.
+  // Wall clock: only how long to wait, never what the run does.
+  if (!simswift::lola::socketServed(socket)) {
+    std::fprintf(stderr, "simswift attach: waiting up to %g s for a run to serve %s\n", wait_s_, socket.c_str());
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s_);
+    while (!simswift::lola::socketServed(socket)) {
+      if (std::chrono::steady_clock::now() >= deadline) {
+        std::fprintf(stderr,
+                     "simswift attach: no run served %s within %g s (start the run with this robot, or give "
+                     "--wait more time)\n",
+                     socket.c_str(), wait_s_);
+        return 1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  }
   // The robot's clock page: named by its robot (common/clock/ClockPage.hpp).
   std::string tag;
   int team = 0, player = 0;
@@ -433,9 +482,57 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   std::vector<char*> argv;
   for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
-  execvp(argv[0], argv.data());
-  std::fprintf(stderr, "simswift attach: cannot start '%s': %s\n", argv[0], std::strerror(errno));
-  return 1;
+  // The command runs in this mount namespace; this process stays to keep
+  // its /tmp/robocup on the robot's live socket (a new run of the robot
+  // makes a new one), and ends with the command's status.
+  int report[2];
+  if (pipe2(report, O_CLOEXEC) != 0) return 1;
+  const pid_t parent = getpid();
+  const pid_t child = fork();
+  if (child < 0) {
+    std::fprintf(stderr, "simswift attach: fork: %s\n", std::strerror(errno));
+    return 1;
+  }
+  if (child == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGTERM);  // attach killed: the command is told to end
+    if (getppid() != parent) _exit(127);
+    execvp(argv[0], argv.data());
+    const int e = errno;
+    ssize_t w = write(report[1], &e, sizeof e);
+    (void)w;
+    _exit(127);
+  }
+  close(report[1]);
+  int exec_error = 0;
+  const bool failed = read(report[0], &exec_error, sizeof exec_error) == static_cast<ssize_t>(sizeof exec_error);
+  close(report[0]);
+  // The terminal's Ctrl-C and Ctrl-\ reach the command itself (same group);
+  // a SIGTERM or SIGHUP sent to attach is passed on.
+  signal(SIGINT, SIG_IGN);
+  signal(SIGQUIT, SIG_IGN);
+  struct sigaction sa {};
+  sa.sa_handler = attach::onSignal;
+  sigaction(SIGTERM, &sa, nullptr);
+  sigaction(SIGHUP, &sa, nullptr);
+  int status = 0;
+  for (;;) {
+    const pid_t r = waitpid(child, &status, WNOHANG);
+    if (r == child) break;
+    if (r < 0 && errno != EINTR) return 1;
+    if (attach::g_forward) {
+      kill(child, attach::g_forward);
+      attach::g_forward = 0;
+    }
+    if (!failed && attach::follow(socket))
+      std::fprintf(stderr, "simswift attach: a new run serves %s: /tmp/robocup follows it\n", socket.c_str());
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  if (failed) {
+    std::fprintf(stderr, "simswift attach: cannot start '%s': %s\n", argv[0], std::strerror(exec_error));
+    return 1;
+  }
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
 }
 
 // What CLI11 would only call "a subcommand is required": `help`, or an

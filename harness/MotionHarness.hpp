@@ -117,9 +117,9 @@ class MotionHarness {
 
   // Ticks for `seconds` of simulated time; returns false if the robot fell.
   bool run(double seconds) {
-    const int n = static_cast<int>(std::lround(seconds / simswift::kTickSeconds));
+    const int64_t n = runner_.world().ticksIn(seconds);  // the robot's body's tick
     bool ok = true;
-    for (int i = 0; i < n; ++i) {
+    for (int64_t i = 0; i < n; ++i) {
       runner_.tick();
       checked_.check(runner_.lastCommand(0), runner_.lastSensors(0));
       if (torsoHeight() < simswift::runner::FallDetector::kFallHeight) ok = false;

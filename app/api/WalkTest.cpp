@@ -143,9 +143,12 @@ struct WalkTest::Impl {
   std::ofstream trace;
   std::string trace_path;
 
+  // The robot's tick (its body's: the scenario's world), us.
+  int64_t tickUs() const { return SimulationAccess::runner(sim).scenario().world.tick_us; }
   void drive(Gait gait) {
     if (!gait) throw std::invalid_argument("WalkTest: empty gait");
     sim.robot(robot).setController([this, gait = std::move(gait)](const SensorValues& s, JointValues& j) {
+      command.tick = static_cast<double>(tickUs()) * 1e-6;
       gait(command, s, j);
       last_out = j;
     });
@@ -188,8 +191,8 @@ void WalkTest::command(const WalkCommand& c) { impl_->command = c; }
 WalkCommand WalkTest::command() const { return impl_->command; }
 
 void WalkTest::run(double seconds) {
-  const long n = common::nao::ticksIn(seconds);
-  for (long k = 0; k < n; ++k) {
+  const int64_t n = common::nao::ticksIn(seconds, impl_->tickUs());  // the body's tick
+  for (int64_t k = 0; k < n; ++k) {
     impl_->sim.step();
     if (impl_->trace.is_open()) impl_->row();
   }
@@ -201,9 +204,10 @@ WalkFigures WalkTest::walk(const WalkCommand& c, double settle, double window) {
   run(settle);
   WalkMeter meter;
   meter.begin(sample(), c);
-  const long n = common::nao::ticksIn(window);
-  for (long k = 0; k < n; ++k) {
-    run(common::nao::kMotionTickSeconds);
+  const int64_t n = common::nao::ticksIn(window, impl_->tickUs());
+  for (int64_t k = 0; k < n; ++k) {
+    impl_->sim.step();
+    if (impl_->trace.is_open()) impl_->row();
     meter.add(sample());
   }
   WalkFigures f = meter.figures();
@@ -218,7 +222,8 @@ void WalkTest::trace(const std::string& csv_path) {
   impl_->trace_path = csv_path;
   impl_->trace.precision(7);
   std::ofstream& o = impl_->trace;
-  o << "# simswift walk trace: one row per 10 ms tick, after the tick's physics and the gait's answer.\n"
+  o << "# simswift walk trace: one row per tick of the robot's body (10 ms on a V5, 12 ms on a V6), after the\n"
+       "#   tick's physics and the gait's answer.\n"
        "# t: s of simulated time. x, y, z (m), theta (rad): the TRUE torso pose, field frame (origin the centre\n"
        "#   spot, x toward the red goal, z up; theta the heading of the torso's x axis).\n"
        "# cmd_forward, cmd_left (mm/s), cmd_turn (rad/s), cmd_walk (1 walk, 0 stand): the walk command in force.\n"
@@ -342,7 +347,7 @@ Gait referenceGait() {
     common::libagent::JointValues out;
     std::memcpy(&in, &s, sizeof in);
     std::memcpy(&out, &j, sizeof out);
-    walk(c.walk, c.forward, c.left, c.turn, in, out);
+    walk(c.walk, c.forward, c.left, c.turn, c.tick, in, out);  // the kit's tick: the robot's body's
     std::memcpy(&j, &out, sizeof j);
   };
 }

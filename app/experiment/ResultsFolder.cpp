@@ -51,61 +51,27 @@ std::string firstDifference(const std::string& a, const std::string& b, const st
   return "line " + std::to_string(i + 1) + ": " + shown(la) + " in " + a_name + ", " + shown(lb) + " in " + b_name;
 }
 
-std::string holderOf(int fd) {
-  char buf[32] = {};
-  const ssize_t n = pread(fd, buf, sizeof buf - 1, 0);
-  const int pid = n > 0 ? std::atoi(buf) : 0;
-  return pid > 0 ? std::to_string(pid) : "";
-}
-
 }  // namespace
 
 FolderLock::FolderLock(const std::string& dir) {
   const std::string path = dir + "/.lock";
-  fd_ = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw BatchError("cannot open " + path + ": " + std::strerror(errno));
-  // Wall clock: only how long to wait for another run's dying workers.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kWorkerEndWait_s);
-  while (flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    const int err = errno;
-    if (err == EINTR) continue;
-    const std::string pid = holderOf(fd_);
-    if (err != EWOULDBLOCK) {
-      close(fd_);
-      fd_ = -1;
-      throw BatchError("cannot lock " + path + ": " + std::strerror(err));
+  try {
+    common::lock::PidLock lock(path);
+    if (lock.tryLock(kWorkerEndWait_s)) {
+      lock_ = std::move(lock);
+      return;
     }
-    const bool holder_alive = !pid.empty() && (kill(std::atoi(pid.c_str()), 0) == 0 || errno == EPERM);
-    if (holder_alive || std::chrono::steady_clock::now() > deadline) {
-      close(fd_);
-      fd_ = -1;
-      if (holder_alive)
-        throw BatchError(dir + " is in use by another simswift run (pid " + pid +
-                         "): a second run into it would repeat its trials; wait for it to end or stop it, or "
-                         "choose another --out");
-      throw BatchError(dir + " is still locked by the workers of a run that has ended (pid " +
-                       (pid.empty() ? std::string("unknown") : pid) + "): `fuser " + path +
-                       "` names them; stop them, then run again");
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    const int pid = lock.holderPid();
+    if (pid > 0 && (kill(pid, 0) == 0 || errno == EPERM))
+      throw BatchError(dir + " is in use by another simswift run (pid " + std::to_string(pid) +
+                       "): a second run into it would repeat its trials; wait for it to end or stop it, or "
+                       "choose another --out");
+    throw BatchError(dir + " is still locked by the workers of a run that has ended (pid " +
+                     (pid > 0 ? std::to_string(pid) : std::string("unknown")) + "): `fuser " + path +
+                     "` names them; stop them, then run again");
+  } catch (const common::lock::LockError& e) {
+    throw BatchError(e.what());
   }
-  const std::string me = std::to_string(getpid()) + "\n";
-  if (ftruncate(fd_, 0) != 0 || pwrite(fd_, me.data(), me.size(), 0) != static_cast<ssize_t>(me.size())) {
-    // The lock holds without it; only a refused run's message lacks the pid.
-  }
-}
-
-FolderLock& FolderLock::operator=(FolderLock&& o) noexcept {
-  if (this != &o) {
-    if (fd_ >= 0) close(fd_);
-    fd_ = o.fd_;
-    o.fd_ = -1;
-  }
-  return *this;
-}
-
-FolderLock::~FolderLock() {
-  if (fd_ >= 0) close(fd_);  // releases the lock once no worker holds a copy
 }
 
 FolderLock claimFolder(const Experiment& e, const std::string& dir) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/experiment/Experiment.hpp"
+#include "common/lock/PidLock.hpp"
 
 namespace simswift::experiment {
 
@@ -22,11 +23,6 @@ class FolderLock {
   // process holds it. A holder whose run has ended (its pid is gone) but
   // whose workers are still ending is waited for, up to kWorkerEndWait_s.
   explicit FolderLock(const std::string& dir);
-  FolderLock(FolderLock&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
-  FolderLock& operator=(FolderLock&& o) noexcept;
-  FolderLock(const FolderLock&) = delete;
-  FolderLock& operator=(const FolderLock&) = delete;
-  ~FolderLock();
 
   // s: how long a refused run waits for a dead run's workers to end. They
   // get SIGKILL from the kernel when their batch dies (PR_SET_PDEATHSIG):
@@ -34,7 +30,7 @@ class FolderLock {
   static constexpr double kWorkerEndWait_s = 5.0;
 
  private:
-  int fd_ = -1;
+  common::lock::PidLock lock_;  // the flock and the pid: common/lock/PidLock.hpp
 };
 
 // Creates dir/trials, locks the folder (FolderLock) and claims it for `e`:

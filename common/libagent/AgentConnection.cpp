@@ -191,7 +191,9 @@ bool AgentConnection::takeTick() {
 }
 
 SensorValues AgentConnection::readSensors() {
-  last_slot_ = claimLatest(block_->sensors_latest, block_->sensors_read);
+  // No valid slot (never from simswift): the last one claimed again.
+  const int slot = claimLatest(block_->sensors_latest, block_->sensors_read);
+  if (validSlot(slot)) last_slot_ = slot;
   return block_->sensors[last_slot_];
 }
 

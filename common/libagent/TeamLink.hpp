@@ -58,7 +58,10 @@ struct PacketRing {
     const TeamPacket& p = slots[t % N];
     out.time_us = p.time_us;
     out.from_player = p.from_player;
-    out.size = p.size <= kMaxTeamPacketBytes ? p.size : kMaxTeamPacketBytes;  // never trust shared memory
+    // The other process may rewrite the size at any time: read it once,
+    // then check and use that value (never trust shared memory).
+    const uint32_t size = p.size;
+    out.size = size <= kMaxTeamPacketBytes ? size : kMaxTeamPacketBytes;
     std::memcpy(out.bytes, p.bytes, out.size);
     tail.store(t + 1, std::memory_order_release);
     return true;

@@ -18,14 +18,23 @@
 
 namespace common::libagent {
 
-// Reader: returns the slot to read (now marked as being read). `latest`
-// must hold a valid slot.
+// Reader: returns the slot to read (now marked as being read), or kNoSlot
+// when `latest` holds no valid slot (the parked actuators_latest, or a value
+// a hostile or broken writer put there). The other process may change
+// `latest` at any time, so each claim reads it once, checks that value and
+// returns exactly the value it checked (never a second load). A writer that
+// keeps republishing can make the re-check fail forever: after kClaimTries
+// the claim gives up (kNoSlot), so a reader is never held by its writer.
+constexpr int kNoSlot = -1;
+constexpr int kClaimTries = 64;
 inline int claimLatest(volatile uint8_t& latest, volatile uint8_t& read) {
-  for (;;) {
+  for (int t = 0; t < kClaimTries; ++t) {
     const uint8_t l = loadIndex(latest);
+    if (!validSlot(l)) return kNoSlot;
     storeIndex(read, l);
     if (loadIndex(latest) == l) return l;
   }
+  return kNoSlot;
 }
 
 // Writer: the slot to fill next (publish it with storeIndex(latest, slot)).

@@ -14,6 +14,8 @@
 #include <msgpack.hpp>
 
 #include "common/libagent/Inertial.hpp"
+#include "common/lola/Float32.hpp"
+#include "common/lola/Slots.hpp"
 
 namespace common::lola {
 
@@ -93,30 +95,19 @@ libagent::SensorValues sensorValuesFromPacket(const std::uint8_t* data, std::siz
         s[S::InertialSensor_AngleX] = a[0];
         s[S::InertialSensor_AngleY] = a[1];
         break;
-      case SensorKey::FSR: {
-        const int slots[kNumFsrs] = {S::LFoot_FSR_FrontLeft, S::LFoot_FSR_FrontRight, S::LFoot_FSR_RearLeft,
-                                     S::LFoot_FSR_RearRight, S::RFoot_FSR_FrontLeft, S::RFoot_FSR_FrontRight,
-                                     S::RFoot_FSR_RearLeft,  S::RFoot_FSR_RearRight};
-        for (int i = 0; i < kNumFsrs; ++i) s[slots[i]] = a[i];
+      case SensorKey::FSR:  // FSR, Touch, Battery, Sonar: to the V5's slots (Slots.hpp)
+        for (int i = 0; i < kNumFsrs; ++i) s[kFsrSlots[i]] = a[i];
         break;
-      }
       case SensorKey::Touch:
-        s[S::ChestBoard_Button] = a[ChestButton];
-        s[S::Head_Touch_Front] = a[HeadFront];
-        s[S::Head_Touch_Middle] = a[HeadMiddle];
-        s[S::Head_Touch_Rear] = a[HeadRear];
-        s[S::LFoot_Bumper_Left] = a[LFootBumperLeft];
-        s[S::LFoot_Bumper_Right] = a[LFootBumperRight];
-        s[S::RFoot_Bumper_Left] = a[RFootBumperLeft];
-        s[S::RFoot_Bumper_Right] = a[RFootBumperRight];
+        for (int i = 0; i < kNumTouch; ++i)
+          if (kTouchSlots[i] != kNoSensorSlot) s[kTouchSlots[i]] = a[i];
         break;
       case SensorKey::Battery:
-        s[S::Battery_Charge] = a[BatteryCharge];
-        s[S::Battery_Current] = a[BatteryCurrent];
+        for (int i = 0; i < kNumBattery; ++i)
+          if (kBatterySlots[i] != kNoSensorSlot) s[kBatterySlots[i]] = a[i];
         break;
       case SensorKey::Sonar:
-        v.sonar[0] = a[0];
-        v.sonar[libagent::kNumSonars / 2] = a[1];
+        for (int i = 0; i < 2; ++i) v.sonar[kSonarEchoes[i]] = a[i];
         break;
       case SensorKey::Status:
       case SensorKey::RobotConfig:
@@ -135,10 +126,12 @@ std::string actuatorMap(const libagent::JointValues& joints) {
   for (const char* key : {"Position", "Stiffness"}) {
     pk.pack(std::string(key));
     pk.pack_array(kNumJoints);
+    char bytes[kFloat32Bytes];
     for (int l = 0; l < kNumJoints; ++l) {
       const int j = libagentJointOf(l);
       const float x = key[0] == 'P' ? joints.angles[j] : std::max(0.f, joints.stiffnesses[j]);
-      pk.pack_float(x);
+      writeFloat32(bytes, x);  // float32 always, as real clients send (Float32.hpp)
+      buffer.write(bytes, kFloat32Bytes);
     }
   }
   return std::string(buffer.data(), buffer.size());

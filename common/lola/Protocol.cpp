@@ -13,20 +13,21 @@ const std::array<std::string_view, kNumJoints> kJointNames{
     "LHand",          "RHand",
 };
 
+// SensorKey's order (Protocol.hpp: real LoLA's).
 const std::array<KeySpec, kNumSensorKeys> kSensorKeys{{
-    {"Stiffness", kNumJoints},
-    {"Position", kNumJoints},
-    {"Temperature", kNumJoints},
-    {"Current", kNumJoints},
-    {"Battery", kNumBattery},
-    {"Accelerometer", 3},
-    {"Gyroscope", 3},
-    {"Angles", 2},
-    {"Sonar", 2},
-    {"FSR", kNumFsrs},
-    {"Status", kNumJoints},
-    {"Touch", kNumTouch},
     {"RobotConfig", 4},
+    {"Accelerometer", 3},
+    {"Angles", 2},
+    {"Battery", kNumBattery},
+    {"Current", kNumJoints},
+    {"FSR", kNumFsrs},
+    {"Gyroscope", 3},
+    {"Position", kNumJoints},
+    {"Sonar", 2},
+    {"Stiffness", kNumJoints},
+    {"Temperature", kNumJoints},
+    {"Touch", kNumTouch},
+    {"Status", kNumJoints},
 }};
 
 // Lengths: LED counts as B-Human and HULKs write them (Chest/LFoot/RFoot RGB;

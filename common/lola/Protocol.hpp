@@ -5,8 +5,8 @@
 // which public source gives each (facts.md section 9: B-Human's NaoProvider,
 // HULKs' hula, rUNSWift 2019-2022 LoLAData/LoLAEffector, ros-sports/nao_lola).
 //
-// LoLA's official document is not public. What is reconstructed here (the
-// order of the sensor map's keys) is marked as such.
+// LoLA's official document is not public; every fact here is from a
+// public client or a packet a real robot sent (docs/lola.md, "Sources").
 #pragma once
 
 #include <array>
@@ -56,13 +56,14 @@ constexpr int kNumBattery = 4;
 enum RobotConfigIndex : int { BodyId, BodyVersion, HeadId, HeadVersion };
 constexpr std::array<std::size_t, 4> kRobotConfigLengths{20, 5, 20, 5};
 
-// --- The sensor map: 13 keys, in this order (a reconstruction: with it,
-// float32 values, array16 headers for the 25-element arrays, Status as
-// positive fixints and RobotConfig as above, the map is exactly LoLA's 896
-// bytes; real LoLA's key order is not published).
+// --- The sensor map: 13 keys, in real LoLA's order: a packet from a real
+// V6 quoted in NaoTH's Tools/LolaData.h (github.com/BerlinUnited/NaoTH,
+// facts.md section 10). With float32 values, array16 headers for the
+// 25-element arrays, Status as positive fixints and RobotConfig as above,
+// the map is exactly LoLA's 896 bytes.
 enum class SensorKey : int {
-  Stiffness, Position, Temperature, Current, Battery, Accelerometer,
-  Gyroscope, Angles, Sonar, FSR, Status, Touch, RobotConfig,
+  RobotConfig, Accelerometer, Angles, Battery, Current, FSR, Gyroscope,
+  Position, Sonar, Stiffness, Temperature, Touch, Status,
 };
 constexpr int kNumSensorKeys = 13;
 struct KeySpec {

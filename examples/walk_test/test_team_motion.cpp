@@ -1,7 +1,7 @@
 // A team's unit tests of its motion code in physics: plain GoogleTests, no
 // threads, no shared memory. Each test builds a simulation from YAML text
 // (the model and field come from the installed package's data) and drives
-// robot 0 with the team's code, called once per 10 ms tick.
+// robot 0 with the team's code, called once per tick (10 ms on a V5).
 #include <gtest/gtest.h>
 
 #include <string>

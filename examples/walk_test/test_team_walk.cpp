@@ -33,7 +33,7 @@ struct TeamWalk {
     std::memcpy(&in, &s, sizeof in);
     std::memcpy(&out, &j, sizeof out);
     walk.setRequest(c.walk, {c.forward, c.left, c.turn});
-    walk.tick(in, 0.01, out);  // s: the 10 ms motion tick
+    walk.tick(in, c.tick, out);  // s: the robot's tick, as the kit gives it (10 ms on a V5, 12 ms on a V6)
     std::memcpy(&j, &out, sizeof j);
   }
 };

@@ -37,9 +37,13 @@ struct WalkCommand {
   double left = 0;     // mm/s
   double turn = 0;     // rad/s
   bool walk = true;
+  // s: the robot's tick, filled in by the kit before each call of the gait
+  // (10 ms on a V5 over libagent, 12 ms on a V6 over LoLA): the time a
+  // gait steps by. Whatever the caller sets here is overwritten.
+  double tick = 0;
 };
 
-// The team's gait: called once per 10 ms tick with the command in force, the
+// The team's gait: called once per tick (command.tick) with the command in force, the
 // sensors of this tick, and the joint command to fill (it arrives holding
 // the previous tick's, as a Controller's).
 using Gait = std::function<void(const WalkCommand& command, const SensorValues& sensors, JointValues& joints)>;

@@ -171,7 +171,9 @@ decltype(auto) BodyHost::withBlock(F&& f) const {
 }
 
 bool BodyHost::standing() const {
-  return withBlock([](auto& b) { return static_cast<bool>(b.standing); });
+  // The program writes this byte too: read as a byte (any value but 0 is
+  // set), never as a bool that may hold something but 0 or 1.
+  return withBlock([](auto& b) { return *reinterpret_cast<const volatile uint8_t*>(&b.standing) != 0; });
 }
 
 void BodyHost::initialise(const al::JointValues& initial) {
@@ -287,26 +289,30 @@ bool BodyHost::waitAnswer(double timeout_s) {
 }
 
 ActuatorCommand BodyHost::readActuators() {
-  if (answered()) {
-    LibagentBehaviour::Standing standing;
-    withBlock([&](auto& b) {
-      using Block = std::decay_t<decltype(b)>;
-      const int slot = al::claimLatest(b.actuators_latest, b.actuators_read);
-      last_.joints = b.joints[slot];
-      last_.leds = b.leds[slot];
-      last_.sonar = b.sonar[slot];
-      last_.stiffen = false;
-      if constexpr (release::hasStiffen<Block>()) {
-        // Acted on once, then NONE in its slot (libagent's postCallback).
-        last_.stiffen = b.stiffen[slot] == al::STIFFEN;
-        if (last_.stiffen) libagent_.stiffen(standing);
-        b.stiffen[slot] = al::NONE;
-      }
-      last_.say.assign(b.sayTexts[slot], strnlen(b.sayTexts[slot], release::sayLength<Block>()));
-      if (standing.write) b.standing = *standing.write;
-      // Lock-step: consumed; the next valid index is the next answer.
-      if (sync_ == SyncMode::LockStep) al::storeIndex(b.actuators_latest, al::kActuatorsParked);
-    });
+  // The program may write any byte of the block at any time: the slot is
+  // the one value claimLatest() read and checked, never a second load.
+  LibagentBehaviour::Standing set_standing;
+  const bool read = withBlock([&](auto& b) {
+    using Block = std::decay_t<decltype(b)>;
+    const int slot = al::claimLatest(b.actuators_latest, b.actuators_read);
+    if (!al::validSlot(slot)) return false;  // no answer (parked), or a byte no slot has
+    last_.joints = b.joints[slot];
+    last_.leds = b.leds[slot];
+    last_.sonar = b.sonar[slot];
+    last_.stiffen = false;
+    if constexpr (release::hasStiffen<Block>()) {
+      // Acted on once, then NONE in its slot (libagent's postCallback).
+      last_.stiffen = b.stiffen[slot] == al::STIFFEN;
+      if (last_.stiffen) libagent_.stiffen(set_standing);
+      b.stiffen[slot] = al::NONE;
+    }
+    last_.say.assign(b.sayTexts[slot], strnlen(b.sayTexts[slot], release::sayLength<Block>()));
+    if (set_standing.write) b.standing = *set_standing.write;
+    // Lock-step: consumed; the next valid index is the next answer.
+    if (sync_ == SyncMode::LockStep) al::storeIndex(b.actuators_latest, al::kActuatorsParked);
+    return true;
+  });
+  if (read) {
     commanded_ = true;
     ++commands_read_;
   }

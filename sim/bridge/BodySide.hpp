@@ -62,6 +62,10 @@ class BodySide {
   // Lock-step: waits up to timeout_s (wall clock; for the watchdog only,
   // never deciding what the answer is) for the answer. False on timeout.
   virtual bool waitAnswer(double timeout_s) = 0;
+  // The program that was connected has gone (LoLA: its connection closed)
+  // and none has connected since: a hand-started program is waited for as
+  // at its first attach. libagent's block has no connection to lose.
+  virtual bool programGone() const { return false; }
   // The command the body gets: the program's answer (consumed), or the last
   // one, or what the interface does on its own (libagent's limp start and sit).
   virtual common::libagent::ActuatorCommand readActuators() = 0;

@@ -40,7 +40,7 @@ CameraModel OverviewCamera::cameraFor(const Scene& scene, const Eigen::Vector3d&
 bool OverviewCamera::maybeCapture(Renderer& renderer, const Scene& scene, double t,
                                   const Eigen::Vector3d& followed) {
   // Due when t has reached frame k's time; the tolerance absorbs the tick
-  // arithmetic (t = ticks * 0.01 s).
+  // arithmetic (t = ticks * the body's tick).
   if (t + 1e-9 < frames_ / cfg_.rate_hz) return false;
   CameraView v;
   v.camera = cameraFor(scene, followed);

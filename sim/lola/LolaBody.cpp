@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "common/libagent/Inertial.hpp"
+#include "common/lola/Slots.hpp"
 
 namespace simswift::lola {
 
@@ -15,14 +16,6 @@ namespace S = al::Sensors;
 using common::libagent::SyncMode;
 
 namespace {
-
-// The socket's folder made if missing (the server's bind then says what is wrong).
-const std::string& withFolder(const std::string& path) {
-  std::error_code ec;
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  return path;
-}
 
 uint8_t status(float temperature, const LolaBodyOptions& o) {
   if (temperature >= o.status_critical) return 3;
@@ -54,23 +47,18 @@ SensorPacket toLolaPacket(const al::SensorValues& v, const LolaBodyOptions& opti
     p.accelerometer[a] = static_cast<float>(kAccelerometerSign[a] * f);
   }
   p.angles = {s[S::InertialSensor_AngleX], s[S::InertialSensor_AngleY]};  // same convention on both
-  p.sonar = {v.sonar[0], v.sonar[al::kNumSonars / 2]};  // the first echo of each side, m
-  const int fsr[kNumFsrs] = {S::LFoot_FSR_FrontLeft, S::LFoot_FSR_FrontRight, S::LFoot_FSR_RearLeft,
-                             S::LFoot_FSR_RearRight, S::RFoot_FSR_FrontLeft, S::RFoot_FSR_FrontRight,
-                             S::RFoot_FSR_RearLeft,  S::RFoot_FSR_RearRight};
-  for (int i = 0; i < kNumFsrs; ++i) p.fsr[i] = s[fsr[i]];  // kg, as the V5's slots
-  p.touch[ChestButton] = s[S::ChestBoard_Button];
-  p.touch[HeadFront] = s[S::Head_Touch_Front];
-  p.touch[HeadMiddle] = s[S::Head_Touch_Middle];
-  p.touch[HeadRear] = s[S::Head_Touch_Rear];
-  p.touch[LFootBumperLeft] = s[S::LFoot_Bumper_Left];
-  p.touch[LFootBumperRight] = s[S::LFoot_Bumper_Right];
-  p.touch[RFootBumperLeft] = s[S::RFoot_Bumper_Left];
-  p.touch[RFootBumperRight] = s[S::RFoot_Bumper_Right];
-  // The hands' touch sensors are not simulated (0): nothing touches them.
-  // Battery: charge and current from the battery model; status 0 (not
-  // charging); its temperature is not modelled: an assumed 30 deg C.
-  p.battery = {s[S::Battery_Charge], 0.f, s[S::Battery_Current], 30.f};
+  // FSR, Touch, Battery, Sonar: from the V5's slots (common/lola/Slots.hpp,
+  // the mapping the robot program's client reads them back with). The
+  // hands' touch sensors are not simulated (0): nothing touches them.
+  for (int i = 0; i < kNumFsrs; ++i) p.fsr[i] = s[kFsrSlots[i]];  // kg, as the V5's slots
+  for (int i = 0; i < kNumTouch; ++i) p.touch[i] = kTouchSlots[i] == kNoSensorSlot ? 0.f : s[kTouchSlots[i]];
+  for (int i = 0; i < 2; ++i) p.sonar[i] = v.sonar[kSonarEchoes[i]];  // m
+  // Battery: charge and current from the battery model. Status 0: no bits
+  // set (not charging; a real V6 sends a 16-bit field as a float, e.g.
+  // -32552 = 0x80D8 with the charging bit 0x80 on a robot being charged:
+  // docs/lola.md). Its temperature is not modelled: an assumed 30 deg C.
+  for (int i = 0; i < kNumBattery; ++i) p.battery[i] = kBatterySlots[i] == kNoSensorSlot ? 0.f : s[kBatterySlots[i]];
+  p.battery[BatteryTemperature] = 30.f;
   p.robot_config = options.robot_config;
   return p;
 }
@@ -78,7 +66,7 @@ SensorPacket toLolaPacket(const al::SensorValues& v, const LolaBodyOptions& opti
 LolaBody::LolaBody(int team, int player, const al::JointValues& initial, LolaBodyOptions options)
     : BodySide(al::robotTag(team, player)),
       options_(std::move(options)),
-      server_(withFolder(options_.socket_path), options_.decoder),
+      server_(options_.socket_path, options_.decoder),
       objects_(std::make_unique<bridge::BodyHost>(
           team, player, options_.named ? bridge::BodyHost::Mode::Named : bridge::BodyHost::Mode::InProcess, initial,
           bridge::BodyHostOptions{false, options_.images})) {

@@ -66,6 +66,7 @@ class LolaBody final : public bridge::BodySide {
   bool publishSensors(const common::libagent::SensorValues& values, int64_t sim_time_us, int64_t tick) override;
   bool answered() const override { return answered_; }
   bool waitAnswer(double timeout_s) override;
+  bool programGone() const override { return server_.clientsAccepted() > 0 && !server_.connected(); }
   common::libagent::ActuatorCommand readActuators() override;
   common::libagent::SimExtension* extension() override { return objects_->extension(); }
   common::libagent::CameraImages* images() override { return objects_->images(); }

@@ -1,6 +1,9 @@
 #include "sim/lola/LolaServer.hpp"
 
+#include "common/lock/PidLock.hpp"
+
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -42,15 +45,55 @@ int msLeft(Clock::time_point deadline) {
   return left > 0 ? static_cast<int>(left) : 0;
 }
 
-// True if a server listens at `address` (a probe connection is accepted into its backlog).
-bool listening(const sockaddr_un& address) {
-  const int probe = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  const bool live = probe >= 0 && ::connect(probe, reinterpret_cast<const sockaddr*>(&address), sizeof(address)) == 0;
-  if (probe >= 0) ::close(probe);
-  return live;
+// How long a new server waits for the lock beside a socket when its
+// holder's pid is gone (a `simswift clean` probing it for an instant, a
+// killed run's forked workers ending): s.
+constexpr double kLockWait_s = 2.0;
+
+bool peerHungUp(int fd) {
+  pollfd p{fd, POLLRDHUP, 0};
+  return ::poll(&p, 1, 0) > 0 && (p.revents & (POLLRDHUP | POLLHUP | POLLERR)) != 0;
 }
 
 }  // namespace
+
+void makeSocketFolder(const std::string& socket_path) {
+  const std::filesystem::path parent = std::filesystem::path(socket_path).parent_path();
+  if (parent.empty()) return;
+  if (parent != kSharedSocketFolder) {
+    std::error_code ec;
+    std::filesystem::create_directories(parent, ec);  // the bind then says what is wrong
+    return;
+  }
+  const std::string dir = parent.string();
+  constexpr mode_t kShared = S_ISVTX | 0777;
+  // Made 0700 first and opened to everyone once it is certainly ours: the
+  // mode never depends on the umask, and nobody else can have made it
+  // in between (mkdir fails on an existing path).
+  if (::mkdir(dir.c_str(), 0700) == 0) {
+    if (::chmod(dir.c_str(), kShared) != 0) throw ServerError(sysError("chmod 01777", dir));
+    return;
+  }
+  if (errno != EEXIST) throw ServerError(sysError("mkdir", dir));
+  struct stat st{};
+  if (::lstat(dir.c_str(), &st) != 0) throw ServerError(sysError("lstat", dir));
+  if (!S_ISDIR(st.st_mode)) throw ServerError("LoLA sockets' folder " + dir + ": exists and is not a directory");
+  if ((st.st_mode & 07777) == kShared) return;
+  if (st.st_uid == ::geteuid() && ::chmod(dir.c_str(), kShared) == 0) return;
+  char mode[8];
+  std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(st.st_mode & 07777));
+  throw ServerError("LoLA sockets' folder " + dir + ": belongs to uid " + std::to_string(st.st_uid) + " with mode " +
+                    mode + ", so other users cannot make sockets in it: its owner (or root) runs `chmod 1777 " +
+                    dir + "` (or removes it), or name the robot's socket in the scenario (lola: {socket: ...})");
+}
+
+std::string lockPath(const std::string& socket_path) { return socket_path + ".lock"; }
+
+bool socketServed(const std::string& socket_path) {
+  struct stat st{};
+  return ::lstat(socket_path.c_str(), &st) == 0 && S_ISSOCK(st.st_mode) &&
+         common::lock::lockHeld(lockPath(socket_path));
+}
 
 std::vector<std::string> removeStaleSockets(const std::vector<std::string>& folders, const std::string& prefix) {
   std::vector<std::string> removed;
@@ -60,11 +103,18 @@ std::vector<std::string> removeStaleSockets(const std::vector<std::string>& fold
       const std::string path = entry.path().string();
       if (entry.path().filename().string().rfind(prefix, 0) != 0) continue;
       struct stat st{};
-      sockaddr_un address{};
-      if (lstat(path.c_str(), &st) != 0 || !S_ISSOCK(st.st_mode) || path.size() >= sizeof(address.sun_path)) continue;
-      address.sun_family = AF_UNIX;
-      std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
-      if (!listening(address) && ::unlink(path.c_str()) == 0) removed.push_back(path);
+      if (lstat(path.c_str(), &st) != 0 || !S_ISSOCK(st.st_mode)) continue;
+      // Its server holds the lock beside it while it lives: asked without
+      // connecting, so a live run's client is never disturbed. Taken here,
+      // it keeps a server starting now from binding while the file goes.
+      try {
+        common::lock::PidLock lock(lockPath(path));
+        if (!lock.tryLock(0)) continue;
+        if (::unlink(path.c_str()) == 0) removed.push_back(path);
+        lock.removeAndRelease();
+      } catch (const common::lock::LockError&) {
+        // Not ours to judge (no access): left.
+      }
     }
   }
   return removed;
@@ -78,13 +128,24 @@ LolaServer::LolaServer(std::string socket_path, DecoderOptions decoder)
     throw ServerError("LoLA socket \"" + path_ + "\": the path must have 1.." +
                       std::to_string(sizeof(address.sun_path) - 1) + " characters");
   std::memcpy(address.sun_path, path_.c_str(), path_.size() + 1);
+  makeSocketFolder(path_);
+  // The robot's socket is this server's while it holds the lock beside it
+  // (common/lock/PidLock.hpp): a live server's is refused, never taken
+  // over, and nobody needs to connect to find out.
+  try {
+    lock_ = common::lock::PidLock(lockPath(path_));
+    if (!lock_.tryLock(kLockWait_s)) {
+      const int pid = lock_.holderPid();
+      throw ServerError("LoLA socket " + path_ + ": another server is listening there" +
+                        (pid > 0 ? " (pid " + std::to_string(pid) + ")" : std::string()));
+    }
+  } catch (const common::lock::LockError& e) {
+    throw ServerError("LoLA socket " + path_ + ": " + e.what());
+  }
   struct stat st{};
   if (lstat(path_.c_str(), &st) == 0) {
     if (!S_ISSOCK(st.st_mode)) throw ServerError("LoLA socket " + path_ + ": exists and is not a socket");
-    // A socket someone still listens on is another live server's: refused,
-    // never taken over. One nobody answers is a stale one of an earlier run.
-    if (listening(address)) throw ServerError("LoLA socket " + path_ + ": another server is listening there");
-    ::unlink(path_.c_str());
+    ::unlink(path_.c_str());  // a stale socket of an earlier run (nobody holds its lock)
   }
   listener_ = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
   if (listener_ < 0) throw ServerError(sysError("socket", path_));
@@ -103,6 +164,7 @@ LolaServer::~LolaServer() {
     ::close(listener_);
     ::unlink(path_.c_str());
   }
+  lock_.removeAndRelease();  // after the socket: the next server finds neither
 }
 
 void LolaServer::dropClient() {
@@ -122,7 +184,13 @@ bool LolaServer::acceptPending() {
   for (;;) {
     const int fd = ::accept4(listener_, nullptr, nullptr, SOCK_CLOEXEC);
     if (fd < 0) break;  // EAGAIN: none waiting (other errors: try again next cycle)
-    adopt(fd);          // newest wins
+    // Newest wins, but only a live newcomer: one that has already hung up
+    // (a probe, a client that gave up) never replaces the client.
+    if (peerHungUp(fd)) {
+      ::close(fd);
+      continue;
+    }
+    adopt(fd);
   }
   return connected();
 }

@@ -5,8 +5,12 @@
 //
 // What happens when (docs/lola.md, "The server"):
 // - no client: exchange() waits for one until the timeout (NoClient);
-// - a new connection while one is open: the newest wins, the old one is
-//   closed (a program restarted by hand reconnects at once);
+// - a new connection while one is open: the newest live one wins, the old
+//   one is closed (a program restarted by hand reconnects at once); one
+//   that has already hung up is closed and never replaces the client;
+// - the socket is the server's while it holds the lock file beside it,
+//   <socket>.lock (common/lock/PidLock.hpp): a second server, or `simswift
+//   clean`, learns it is live from the lock, never by connecting;
 // - the client closes its end: Disconnected; the next exchange() waits for
 //   a new client, whose decoder starts afresh;
 // - bad bytes or a map LoLA would not take: ProtocolError with the
@@ -25,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "common/lock/PidLock.hpp"
 #include "sim/lola/ActuatorDecoder.hpp"
 #include "sim/lola/SensorPacket.hpp"
 
@@ -52,15 +57,35 @@ struct Exchange {
 };
 const char* toString(Exchange::Status status);
 
-// LoLA sockets a killed run left (nobody listens on them) among the entries
-// of `folders` whose names start with `prefix`: removed, their paths
-// returned; live ones are left (`simswift clean`).
+// The folder of the robots' sockets when a scenario names none
+// (/tmp/simswift-lola/t<team>p<player>, sim/runner/Bodies.hpp). Every user
+// shares it, as /tmp: it is made sticky and world-writable (01777), each
+// socket and lock file in it belonging to the user whose run made it.
+constexpr const char* kSharedSocketFolder = "/tmp/simswift-lola";
+
+// Makes the folder `socket_path` lives in, if missing. The shared folder is
+// made 01777 (mode set explicitly, whatever the umask; one this user owns
+// with another mode, made by an older simswift, is set so); a shared folder
+// that is no directory, or that another user owns with another mode, throws
+// ServerError saying what to do. Other folders are made with the umask.
+void makeSocketFolder(const std::string& socket_path);
+
+// True if a live server serves the socket at `socket_path`: the socket is
+// there and its server holds the lock beside it. Asked without connecting
+// (`simswift attach` waits for it).
+bool socketServed(const std::string& socket_path);
+
+// LoLA sockets a killed run left among the entries of `folders` whose names
+// start with `prefix`: removed (with their lock files), their paths
+// returned. A live one, whose server holds the lock beside it, is left and
+// never connected to (`simswift clean`).
 std::vector<std::string> removeStaleSockets(const std::vector<std::string>& folders, const std::string& prefix);
 
 class LolaServer {
  public:
-  // Binds and listens at `socket_path` (a stale socket file there is
-  // replaced; any other file is refused). Throws ServerError naming the path.
+  // Takes the lock beside `socket_path`, then binds and listens there (a
+  // stale socket file there is replaced; any other file is refused). Throws
+  // ServerError naming the path (and the live server's pid if it has one).
   explicit LolaServer(std::string socket_path, DecoderOptions decoder = {});
   ~LolaServer();  // closes both sockets and removes the socket file
   LolaServer(const LolaServer&) = delete;
@@ -94,6 +119,7 @@ class LolaServer {
   int client_ = -1;
   int accepted_ = 0;
   ActuatorDecoder decoder_;
+  common::lock::PidLock lock_;  // <socket>.lock, held while this server lives
 };
 
 }  // namespace simswift::lola

@@ -8,19 +8,6 @@
 
 namespace simswift::lola {
 
-// Not msgpack::packer::pack_float: msgpack-c 4 packs a float with an
-// integral value (0, 1, -3) as an integer (msgpack/v1/pack.hpp pack_float),
-// which would move every later byte of the packet.
-void writeFloat32(char* out, float value) {
-  std::uint32_t bits;
-  std::memcpy(&bits, &value, 4);
-  out[0] = static_cast<char>(0xca);
-  out[1] = static_cast<char>(bits >> 24);
-  out[2] = static_cast<char>(bits >> 16);
-  out[3] = static_cast<char>(bits >> 8);
-  out[4] = static_cast<char>(bits);
-}
-
 namespace {
 
 // A fixed-capacity stream for msgpack::packer: the packet is written into a

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "common/lola/Float32.hpp"
 #include "sim/lola/Protocol.hpp"
 
 namespace simswift::lola {
@@ -49,9 +50,7 @@ std::string checkRobotConfig(const std::array<std::string, 4>& config);
 // The packet as LoLA sends it: exactly kSensorPacketBytes bytes.
 PacketBytes encodeSensorPacket(const SensorPacket& packet);
 
-// A float32 as msgpack writes it (0xca + 4 bytes big-endian) at `out`, 5
-// bytes; the one writer of numbers for both directions' encoders.
-void writeFloat32(char* out, float value);
+// writeFloat32: the one writer of LoLA's numbers (common/lola/Float32.hpp).
 
 // Reads a sensor packet back (tests, tools). Strict: the 13 keys in
 // kSensorKeys' order with their lengths, float32 numbers, Status as positive

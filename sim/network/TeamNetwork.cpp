@@ -77,7 +77,9 @@ void TeamNetwork::exchange(int64_t t_us, const std::vector<al::TeamLink*>& links
   al::TeamPacket p;
   for (int i = 0; i < numEndpoints() && i < static_cast<int>(links.size()); ++i) {
     if (!links[i]) continue;
-    while (links[i]->outbox.pop(p)) send(i, p.bytes, p.size, t_us);
+    // At most a full ring per tick: a program that writes the ring's head
+    // (shared memory) cannot keep the simulator draining.
+    for (uint32_t n = 0; n < al::kOutboxSlots && links[i]->outbox.pop(p); ++n) send(i, p.bytes, p.size, t_us);
   }
   for (const Delivery& d : deliver(t_us)) {
     al::TeamLink* link = d.to < static_cast<int>(links.size()) ? links[d.to] : nullptr;

@@ -43,6 +43,21 @@ bool ExternalProgram::attach() {
   return true;
 }
 
+bool ExternalProgram::await(Step step, double timeout_s) {
+  bridge::BodySide& host = *slot_.host;
+  if (step != Step::Motion || !host.programGone()) return ProgramDriver::await(step, timeout_s);
+  std::fprintf(stderr, "robot %s: its program disconnected; waiting up to %g s (attach_timeout) for it to connect "
+               "again on %s\n", slot_.tag.c_str(), attach_timeout_s_, host.endpoint().c_str());
+  if (!host.waitAnswer(attach_timeout_s_)) {
+    std::ostringstream m;
+    m << "robot " << slot_.tag << ": its program disconnected and none connected again on " << host.endpoint()
+      << " within attach_timeout " << attach_timeout_s_ << " s (" << host.attachHint() << ")";
+    throw RunnerError(m.str());
+  }
+  std::fprintf(stderr, "robot %s: its program connected again\n", slot_.tag.c_str());
+  return true;
+}
+
 LaunchedProgram::LaunchedProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ClockPage> clock,
                                  std::unique_ptr<ProgramProcess> process)
     : ExternalProgram(std::move(slot), attach_timeout_s, std::move(clock)), process_(std::move(process)) {}

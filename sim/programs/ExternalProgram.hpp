@@ -25,6 +25,10 @@ class ExternalProgram : public ProgramDriver {
   // The run is over: the clock page says Ended (the program's waits for
   // time end, so it can see its shutdown: docs/shim.md).
   void stop() override { clock_->setState(common::clock::RunState::Ended); }
+  // A program that has gone (BodySide::programGone: a V6 program restarted
+  // by hand, a new gdb session) is waited for as long as the first attach,
+  // saying so on stderr; RunnerError if none comes back in time.
+  bool await(Step step, double timeout_s) override;
 
  protected:
   double attach_timeout_s_;

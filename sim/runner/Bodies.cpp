@@ -25,7 +25,7 @@ common::nao::CameraLens bodyCameraLens(bridge::BodyInterface b) {
 
 std::string defaultLolaSocket(int team, int player, bool bare) {
   if (bare) return std::string(lola::kDefaultSocketPath);
-  return "/tmp/simswift-lola/" + common::libagent::robotTag(team, player);
+  return std::string(lola::kSharedSocketFolder) + "/" + common::libagent::robotTag(team, player);
 }
 
 std::unique_ptr<bridge::BodySide> makeBody(const RobotSpec& spec, const BodyOptions& options) {

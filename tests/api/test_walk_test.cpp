@@ -3,6 +3,7 @@
 // controller path (the same physics as the team-style memcpy wrapper), the
 // trace's rows and columns, the plot, and the errors.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,7 @@
 
 #include "common/libagent/AgentShared.hpp"
 #include "agent/motion/Walk2014Generator.hpp"
+#include "simswift/Simulation.hpp"
 #include "simswift/WalkTest.hpp"
 
 namespace {
@@ -128,7 +130,7 @@ struct MemcpyWalk {
     std::memcpy(&in, &s, sizeof in);
     std::memcpy(&out, &j, sizeof out);
     walk.setRequest(c.walk, {c.forward, c.left, c.turn});
-    walk.tick(in, 0.01, out);
+    walk.tick(in, c.tick, out);  // the kit's tick: the robot's body's
     std::memcpy(&j, &out, sizeof j);
   }
 };
@@ -165,6 +167,46 @@ TEST(WalkTest, ReferenceWalkForwardWithinTenPercent) {
   EXPECT_NEAR(f.seconds, 6.0, 1e-9);
   EXPECT_GT(f.stances, 15) << f.summary();  // about 4 steps per second
   EXPECT_LT(f.slip_mean, 2.0) << f.summary();
+}
+
+// The kit on both bodies (issue 45: it stepped the V5's 10 ms tick, so on a
+// V6 run(1.0) simulated 1.2 s and the reference gait, stepping 10 ms per
+// 12 ms tick, read 0.83 of its command). A robot at the same place on each
+// body, seed 62 (not a tuning seed): run(1.0) simulates 1.0 s to within a
+// tick's rounding, the gait sees its body's tick, and 200 mm/s forward
+// reads within 10 % of the command on both (V5 measured 1.04 before and
+// after; the V6 figures are printed).
+namespace {
+simswift::Simulation onBody(bool v6) {
+  std::string yaml = "duration: 3600\nseed: 62\nnoise: off\nball: none\nrobots:\n"
+                     "  - {team: 19, player: 1, x: -3, y: 0, theta: 0";
+  if (v6) yaml += ", lola: {socket: /tmp/simswift-walk-kit-" + std::to_string(::getpid()) + "}";
+  return simswift::Simulation::fromYaml(yaml + "}\n", v6 ? "walk_v6.yaml" : "walk_v5.yaml");
+}
+}  // namespace
+
+TEST(WalkTest, RunsAndMeasuresInTheBodysOwnTickOnBothBodies) {
+  for (const bool v6 : {false, true}) {
+    SCOPED_TRACE(v6 ? "V6 (LoLA, 12 ms)" : "V5 (libagent, 10 ms)");
+    const double tick = v6 ? 0.012 : 0.010;  // s: the bodies' ticks (docs/lola.md, docs/libagent.md)
+    double seen_tick = -1;
+    simswift::Gait inner = simswift::api::referenceGait();
+    simswift::WalkTest t(onBody(v6), 0,
+                         [&](const simswift::WalkCommand& c, const simswift::SensorValues& s, simswift::JointValues& j) {
+                           seen_tick = c.tick;
+                           inner(c, s, j);
+                         });
+    t.command({0, 0, 0, false});
+    t.run(1.0);
+    EXPECT_NEAR(t.simulation().time(), 1.0, tick / 2);
+    EXPECT_NEAR(seen_tick, tick, 1e-12);
+    const simswift::WalkFigures f = t.walk({200, 0, 0});
+    std::printf("[walk kit] %s seed 62: %s\n", v6 ? "V6" : "V5", f.summary().c_str());
+    EXPECT_NEAR(f.seconds, 6.0, tick / 2);
+    EXPECT_NEAR(t.simulation().time(), 1.0 + 2.0 + 6.0, tick / 2);
+    EXPECT_NEAR(f.forward_ratio, 1.0, 0.1) << f.summary();
+    EXPECT_EQ(f.falls, 0) << f.summary();
+  }
 }
 
 // The trace: comment lines, a header, one row per tick with the true pose,

@@ -12,7 +12,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <random>
 #include <thread>
 #include <vector>
 
@@ -154,6 +156,95 @@ TEST(BodyHost, LockStepSeesAnswersFromTheEffectorSlotLoopQuirk) {
     EXPECT_FALSE(host.answered());
   }
   EXPECT_EQ(host.commandsRead(), 5);
+}
+
+// A robot program may write any byte of the block at any time (issue 45):
+// an index is read once, checked, and that value used. claimLatest() on an
+// index no slot has gives no slot and leaves the read index alone.
+TEST(BodyHost, ClaimingAnIndexNoSlotHasGivesNoSlot) {
+  for (const uint8_t bad : {uint8_t{3}, uint8_t{250}, al::kActuatorsParked}) {
+    volatile uint8_t latest = bad;
+    volatile uint8_t read = 1;
+    EXPECT_EQ(al::claimLatest(latest, read), al::kNoSlot) << int(bad);
+    EXPECT_EQ(al::loadIndex(read), 1) << int(bad);
+  }
+  volatile uint8_t latest = 2;
+  volatile uint8_t read = 0;
+  EXPECT_EQ(al::claimLatest(latest, read), 2);
+  EXPECT_EQ(al::loadIndex(read), 2);
+}
+
+// A hostile program flips actuators_latest between a valid slot and 250
+// while the body reads: every command read is the valid slot's, never
+// memory beyond the block (this crashed simswift: the body checked the
+// index, then loaded it again to index the slots).
+TEST(BodyHost, AProgramFlippingTheActuatorIndexCannotMakeTheBodyReadOutsideTheBlock) {
+  BodyHost host(19, 5, BodyHost::Mode::InProcess);
+  al::AgentData& b = *host.block();
+  for (int s = 0; s < al::kSlots; ++s) {
+    for (int j = 0; j < al::kNumJoints; ++j) b.joints[s].angles[j] = 0.25f;
+    b.stiffen[s] = al::NONE;
+  }
+  b.standing = false;  // as the Effector's first command leaves it: the body obeys
+  std::atomic<bool> stop{false};
+  std::thread hostile([&] {
+    while (!stop.load(std::memory_order_relaxed)) {
+      al::storeIndex(b.actuators_latest, 0);
+      al::storeIndex(b.actuators_latest, 250);
+    }
+  });
+  int64_t wrong = 0;
+  const auto end = Clock::now() + std::chrono::milliseconds(200);
+  int reads = 0;
+  while (Clock::now() < end || reads < 1000) {
+    const al::ActuatorCommand c = host.readActuators();
+    ++reads;
+    if (host.commandsRead() > 0) wrong += c.joints.angles[al::Joints::HeadYaw] != 0.25f;
+  }
+  stop = true;
+  hostile.join();
+  EXPECT_EQ(wrong, 0) << "of " << reads << " reads";
+  EXPECT_GT(host.commandsRead(), 0) << "the valid slot was never read: the test did not race";
+  for (int s = 0; s < al::kSlots; ++s) EXPECT_EQ(b.stiffen[s], al::NONE);
+}
+
+// A seeded fuzz of libagent's block from a hostile writer: random bytes at
+// random places (half of them in the four index bytes), between the body's
+// reads and, for 100 ms, from a thread while it reads. The body never reads
+// or writes outside the block, whatever the bytes (under ASan this is the
+// check that matters; here a stray access crashes or corrupts the heap).
+TEST(BodyHost, FuzzingTheBlockFromAHostileWriterNeverCrashesTheBody) {
+  for (const bool free_running : {false, true}) {
+    BodyHost host(20, 5, BodyHost::Mode::InProcess);
+    if (free_running) host.setSync(al::SyncMode::FreeRunning);
+    volatile uint8_t* bytes = reinterpret_cast<volatile uint8_t*>(host.block());
+    const size_t size = sizeof(al::AgentData);
+    std::mt19937_64 rng(45);  // fixed seed: the same cases every run
+    al::SensorValues v{};
+    for (int k = 1; k <= 3000; ++k) {
+      for (int m = static_cast<int>(rng() % 6); m >= 0; --m) {
+        const size_t at = rng() % 2 ? rng() % 4 : rng() % size;
+        bytes[at] = static_cast<uint8_t>(rng());
+      }
+      host.publishSensors(v, k * 10000, k);
+      host.answered();
+      const al::ActuatorCommand c = host.readActuators();
+      EXPECT_LE(c.say.size(), static_cast<size_t>(al::kSayTextLength));
+      host.standing();
+    }
+    std::atomic<bool> stop{false};
+    std::thread hostile([&] {
+      std::mt19937_64 r(46);
+      while (!stop.load(std::memory_order_relaxed)) bytes[r() % 2 ? r() % 4 : r() % size] = static_cast<uint8_t>(r());
+    });
+    const auto end = Clock::now() + std::chrono::milliseconds(100);
+    for (int k = 3001; Clock::now() < end; ++k) {
+      host.publishSensors(v, k * 10000, k);
+      host.readActuators();
+    }
+    stop = true;
+    hostile.join();
+  }
 }
 
 // Free-running: a program that does not wait on the semaphore: the body

@@ -3,6 +3,7 @@
 // stops reading, and the facts-only client (tests/lola_client) as a process.
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/un.h>
@@ -155,6 +156,113 @@ TEST(LolaServer, ALiveServersSocketIsRefusedNotTakenOver) {
   if (fd >= 0) ::close(fd);
 }
 
+// Asking whether a socket is live never touches its client (issue 45: a
+// `simswift clean` during a V6 run, or a second run of the same robot,
+// connected to find out; the live server took the probe as its newest
+// client and dropped the program's). Each step is followed by a cycle that
+// the first client must answer on its first connection.
+TEST(LolaServer, CleanAndASecondServerLeaveTheLiveClientConnected) {
+  const std::string name = "clean-" + std::to_string(::getpid());
+  LolaServer server(socketPath(name.c_str()));
+  const int fd = connectTo(server.path());
+  ASSERT_GE(fd, 0);
+  PacketBytes p;
+  const auto cycle = [&](const char* after) {
+    writeAll(fd, encodeActuatorMap(joints(0.3f, 1.f)));
+    const Exchange e = server.exchange(encodeSensorPacket({}), 1000ms);
+    EXPECT_EQ(e.status, Status::Answered) << after << ": " << toString(e.status);
+    EXPECT_EQ(server.clientsAccepted(), 1) << after;
+    EXPECT_TRUE(readPacket(fd, p)) << after;
+  };
+  cycle("the first cycle");
+  // `simswift clean`: the live socket is left, not connected to.
+  const std::string file = server.path().substr(std::string("/tmp/").size());
+  EXPECT_TRUE(removeStaleSockets({"/tmp"}, file).empty());
+  struct stat st{};
+  EXPECT_EQ(::stat(server.path().c_str(), &st), 0);
+  cycle("simswift clean");
+  // A second server of the same robot: refused, naming the first's pid.
+  try {
+    LolaServer second(server.path());
+    ADD_FAILURE() << "a second server took over " << server.path();
+  } catch (const ServerError& e) {
+    EXPECT_NE(std::string(e.what()).find("(pid " + std::to_string(::getpid()) + ")"), std::string::npos) << e.what();
+  }
+  cycle("a second server");
+  ::close(fd);
+}
+
+// Newest wins only for a live newcomer: a connection that has already hung
+// up (a probe of another tool, a client that gave up) is closed unseen.
+TEST(LolaServer, AConnectionThatHasHungUpNeverReplacesTheClient) {
+  LolaServer server(socketPath("hungup"));
+  const int fd = connectTo(server.path());
+  ASSERT_TRUE(server.acceptPending());
+  const int probe = connectTo(server.path());
+  ASSERT_GE(probe, 0);
+  ::close(probe);
+  writeAll(fd, encodeActuatorMap(joints(0.6f, 1.f)));
+  const Exchange e = server.exchange(encodeSensorPacket({}), 1000ms);
+  EXPECT_EQ(e.status, Status::Answered) << toString(e.status);
+  EXPECT_FALSE(e.new_client);
+  EXPECT_EQ(server.clientsAccepted(), 1);
+  ::close(fd);
+}
+
+// A killed server leaves its socket and lock file; the lock went with it,
+// so `simswift clean` removes both and the next server binds.
+TEST(LolaServer, AKilledServersSocketIsCleanedAndTakenOver) {
+  const std::string name = "killed-" + std::to_string(::getpid());
+  const std::string path = socketPath(name.c_str());
+  const pid_t child = ::fork();
+  if (child == 0) {
+    LolaServer s(path);
+    ::_exit(::kill(::getpid(), SIGKILL));
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  struct stat st{};
+  ASSERT_EQ(::lstat(path.c_str(), &st), 0) << "the killed server left its socket";
+  const std::vector<std::string> removed = removeStaleSockets({"/tmp"}, path.substr(std::string("/tmp/").size()));
+  ASSERT_EQ(removed.size(), 1u);
+  EXPECT_NE(::lstat(path.c_str(), &st), 0);
+  EXPECT_NE(::lstat((path + ".lock").c_str(), &st), 0);
+  LolaServer next(path);
+}
+
+// The shared socket folder is every user's, as /tmp is (issue 45: made with
+// the umask by the first user's run, 0755, a second user's bind failed with
+// EACCES). Root's run makes (or, made by an older simswift, sets) it
+// 01777; then user nobody (65534) in a forked child binds a robot's socket
+// there too. Team 97 is used by no other test.
+TEST(LolaServer, TheSharedSocketFolderTakesSocketsOfEveryUser) {
+  if (::geteuid() != 0) GTEST_SKIP() << "needs root to run a child as another user";
+  const std::string dir = kSharedSocketFolder;
+  struct stat st{};
+  if (::lstat(dir.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && st.st_uid == 0)
+    ::chmod(dir.c_str(), 0755);  // as an older simswift left it
+  const mode_t old_umask = ::umask(022);
+  LolaServer root_run(dir + "/t97p1");
+  ::umask(old_umask);
+  ASSERT_EQ(::lstat(dir.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 07777, static_cast<mode_t>(01777));
+  const pid_t child = ::fork();
+  if (child == 0) {
+    if (::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(4);
+    try {
+      { LolaServer other_user(dir + "/t97p2"); }  // bound, then removed
+      ::_exit(0);
+    } catch (const ServerError& e) {
+      std::fprintf(stderr, "user 65534: %s\n", e.what());
+      ::_exit(3);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "user 65534 could not bind in " << dir << " (4: setuid failed)";
+}
+
 TEST(LolaServer, GarbageClosesTheConnectionAndTheClientMayReconnect) {
   LolaServer server(socketPath("garbage"));
   int fd = connectTo(server.path());
@@ -183,6 +291,7 @@ TEST(LolaServer, DisconnectThenReconnect) {
   LolaServer server(socketPath("reconnect"));
   int fd = connectTo(server.path());
   ASSERT_GE(fd, 0);
+  ASSERT_TRUE(server.acceptPending());  // accepted live (one that hung up before would never be the client)
   // A half-sent map, then the client goes: the half map is forgotten.
   const std::string bytes = encodeActuatorMap(joints(0.9f, 1.f));
   writeAll(fd, bytes.substr(0, 40));

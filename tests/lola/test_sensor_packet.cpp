@@ -100,9 +100,11 @@ TEST(SensorPacket, KeysInOrderWithLoLAsLengthsAndEncodings) {
   ASSERT_EQ(m.type, msgpack::type::MAP);
   ASSERT_EQ(m.via.map.size, 13u);
   EXPECT_EQ(b[0], 0x8d);  // fixmap of 13
-  const char* const order[13] = {"Stiffness", "Position", "Temperature", "Current", "Battery", "Accelerometer",
-                                 "Gyroscope", "Angles", "Sonar", "FSR", "Status", "Touch", "RobotConfig"};
-  const std::uint32_t lengths[13] = {25, 25, 25, 25, 4, 3, 3, 2, 2, 8, 25, 14, 4};
+  // Real LoLA's order: a real V6's packet quoted in NaoTH's Tools/LolaData.h.
+  const char* const order[13] = {"RobotConfig", "Accelerometer", "Angles",    "Battery",     "Current",
+                                 "FSR",         "Gyroscope",     "Position",  "Sonar",       "Stiffness",
+                                 "Temperature", "Touch",         "Status"};
+  const std::uint32_t lengths[13] = {4, 3, 2, 4, 25, 8, 3, 25, 2, 25, 25, 14, 25};
   for (int k = 0; k < 13; ++k) {
     const msgpack::object_kv& kv = m.via.map.ptr[k];
     EXPECT_EQ(kv.key.as<std::string>(), order[k]);
@@ -110,10 +112,10 @@ TEST(SensorPacket, KeysInOrderWithLoLAsLengthsAndEncodings) {
     ASSERT_EQ(kv.val.via.array.size, lengths[k]) << order[k];
     for (std::uint32_t i = 0; i < lengths[k]; ++i) {
       const msgpack::object& v = kv.val.via.array.ptr[i];
-      if (k == 10) {
+      if (k == 12) {
         EXPECT_EQ(v.type, msgpack::type::POSITIVE_INTEGER);
         EXPECT_LE(v.via.u64, 3u);
-      } else if (k == 12) {
+      } else if (k == 0) {
         ASSERT_EQ(v.type, msgpack::type::STR);
         EXPECT_EQ(v.via.str.size, i % 2 == 0 ? 20u : 5u);
       } else {
@@ -132,6 +134,7 @@ TEST(SensorPacket, KeysInOrderWithLoLAsLengthsAndEncodings) {
 TEST(SensorPacket, ValuesSitAtTheSameBytesInEveryPacket) {
   const Layout layout = expectedLayout();
   ASSERT_EQ(layout.floats.size(), 4u * 25 + 4 + 3 + 3 + 2 + 2 + 8 + 14);
+  EXPECT_EQ(layout.status.back(), 895u);  // Status ends the packet
   const PacketBytes zero = encodeSensorPacket(SensorPacket{});
   for (unsigned seed = 1; seed <= 20; ++seed) {
     const PacketBytes other = encodeSensorPacket(randomPacket(seed));
@@ -145,15 +148,18 @@ TEST(SensorPacket, ValuesSitAtTheSameBytesInEveryPacket) {
       ASSERT_LT(other[at], 0x80) << "Status fixint at " << at;
       value_byte[at] = true;
     }
-    // RobotConfig strings belong to the layout here: same lengths, other text.
-    const std::size_t config_text = 896 - (1 + 20 + 1 + 5 + 1 + 20 + 1 + 5);
-    for (std::size_t i = config_text; i < 896; ++i) value_byte[i] = true;
+    // RobotConfig strings (the first key: after the map byte, its 12-byte
+    // key and the fixarray byte) belong to the layout here: same lengths,
+    // other text.
+    const std::size_t config_text = 1 + 12 + 1;
+    for (std::size_t i = config_text; i < config_text + (1 + 20 + 1 + 5 + 1 + 20 + 1 + 5); ++i) value_byte[i] = true;
     for (std::size_t i = 0; i < 896; ++i)
       if (!value_byte[i]) {
         ASSERT_EQ(zero[i], other[i]) << "layout byte " << i << " differs, seed " << seed;
       }
     // And the values really are at those bytes: Position[10] (LKneePitch).
-    const std::size_t knee = layout.floats[25 + LKneePitch];
+    // Before Position: Accelerometer 3, Angles 2, Battery 4, Current 25, FSR 8, Gyroscope 3.
+    const std::size_t knee = layout.floats[45 + LKneePitch];
     const SensorPacket p = randomPacket(seed);
     std::uint32_t bits = (std::uint32_t(other[knee + 1]) << 24) | (std::uint32_t(other[knee + 2]) << 16) |
                          (std::uint32_t(other[knee + 3]) << 8) | other[knee + 4];
@@ -161,13 +167,15 @@ TEST(SensorPacket, ValuesSitAtTheSameBytesInEveryPacket) {
     std::memcpy(&read, &bits, 4);
     EXPECT_EQ(read, p.position[LKneePitch]);
   }
-  // Two fixed points of the layout: Stiffness[0]'s marker follows the map
-  // byte, the 10-byte key and the array16 header; Status is 25 bytes after
-  // the FSR key's 41 bytes of values and its own key.
-  EXPECT_EQ(layout.floats[0], 14u);
-  EXPECT_EQ(zero[11], 0xdc);
-  EXPECT_EQ(zero[12], 0x00);
-  EXPECT_EQ(zero[13], 25);
+  // Two fixed points of the layout: Accelerometer[0]'s marker follows
+  // RobotConfig (68 bytes with the map byte), its own 14-byte key and the
+  // fixarray byte; Status's 25 fixints end the packet after its array16 header.
+  EXPECT_EQ(layout.floats[0], 83u);
+  EXPECT_EQ(zero[82], 0x93);
+  EXPECT_EQ(layout.status.front(), 871u);
+  EXPECT_EQ(zero[868], 0xdc);
+  EXPECT_EQ(zero[869], 0x00);
+  EXPECT_EQ(zero[870], 25);
 }
 
 TEST(SensorPacket, RoundTrips) {
@@ -198,10 +206,10 @@ TEST(SensorPacket, DecoderRefusesOtherLayoutsNamingTheByte) {
   std::string error;
   EXPECT_FALSE(decodeSensorPacket(b.data(), 895, &error));
   EXPECT_NE(error.find("size 895"), std::string::npos) << error;
-  b[14] = 0xcb;  // Stiffness[0] as a float64 marker
+  b[83] = 0xcb;  // Accelerometer[0] as a float64 marker
   EXPECT_FALSE(decodeSensorPacket(b.data(), b.size(), &error));
-  EXPECT_NE(error.find("byte 14"), std::string::npos) << error;
-  EXPECT_NE(error.find("Stiffness"), std::string::npos) << error;
+  EXPECT_NE(error.find("byte 83"), std::string::npos) << error;
+  EXPECT_NE(error.find("Accelerometer"), std::string::npos) << error;
 }
 
 TEST(SensorPacket, RobotConfigCheck) {

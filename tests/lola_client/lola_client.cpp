@@ -37,12 +37,12 @@
 namespace {
 
 constexpr std::size_t kPacketBytes = 896;
-// The 13 sensor keys, lengths (B-Human's NaoProvider, HULKs' hula); the order is a
-// reconstruction (real LoLA's is not published) that fills the 896 bytes exactly.
+// The 13 sensor keys and lengths (B-Human's NaoProvider, HULKs' hula), in
+// real LoLA's order (a real V6's packet quoted in NaoTH's Tools/LolaData.h).
 const std::vector<std::pair<std::string, std::size_t>> kKeys = {
-    {"Stiffness", 25}, {"Position", 25}, {"Temperature", 25}, {"Current", 25}, {"Battery", 4},
-    {"Accelerometer", 3}, {"Gyroscope", 3}, {"Angles", 2}, {"Sonar", 2}, {"FSR", 8},
-    {"Status", 25}, {"Touch", 14}, {"RobotConfig", 4}};
+    {"RobotConfig", 4}, {"Accelerometer", 3}, {"Angles", 2}, {"Battery", 4}, {"Current", 25},
+    {"FSR", 8}, {"Gyroscope", 3}, {"Position", 25}, {"Sonar", 2}, {"Stiffness", 25},
+    {"Temperature", 25}, {"Touch", 14}, {"Status", 25}};
 const std::size_t kConfigLengths[4] = {20, 5, 20, 5};
 
 [[noreturn]] void fail(const std::string& what) {
@@ -197,7 +197,9 @@ int main(int argc, char** argv) {
       if (!payload[b] && packet[b] != first[b])
         fail("packet " + std::to_string(cycle) + ": byte " + std::to_string(b) + " of the layout changed");
     // Position[10] (LKneePitch) through its cached offset agrees with msgpack-c.
-    const std::size_t position_first = 25;  // Stiffness's 25 values come first
+    std::size_t position_first = 0;  // the values before Position's (RobotConfig's strings are layout)
+    for (std::size_t k = 0; kKeys[k].first != "Position"; ++k)
+      if (kKeys[k].first != "RobotConfig") position_first += kKeys[k].second;
     const float knee = floatAt(packet + offsets[position_first + 10].first);
     if (knee != values["Position"][10]) fail("cached offset and msgpack-c disagree");
 

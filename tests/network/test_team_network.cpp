@@ -167,3 +167,14 @@ TEST(TeamNetwork, RejectsBadConfiguration) {
   c.delay_ms = -1;
   EXPECT_THROW(TeamNetwork(c, 1), std::invalid_argument);
 }
+
+// The outbox is shared memory the robot program writes: a head moved far
+// past the tail (a hostile or broken program) is drained a ring's worth
+// per exchange, not four billion packets (issue 45).
+TEST(TeamNetwork, AnOutboxHeadFarPastItsTailDrainsOneRingPerExchange) {
+  Harness h({}, 1, {{0, 1}, {0, 2}});
+  h.links[0]->outbox.head.store(1u << 30);
+  h.net.exchange(10000, h.ptrs);
+  EXPECT_LE(h.net.stats().sent, static_cast<int64_t>(al::kOutboxSlots));
+  EXPECT_EQ(h.links[0]->outbox.head.load() - h.links[0]->outbox.tail.load(), (1u << 30) - al::kOutboxSlots);
+}
