@@ -33,6 +33,7 @@ class LaunchedProgram final : public ExternalProgram {
   bool await(Step step, double timeout_s) override;
   void stop() override { process_->stop(); }
   std::string log() const override { return slot_.tag + ": " + process_->logPath(); }
+  int takeNetwork() override { return process_->takeNetwork(); }
 
  private:
   bool awaitChecked(Step step, double timeout_s);
