@@ -279,6 +279,9 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
       if (std::strncmp(*e, k.c_str(), k.size()) == 0 && (*e)[k.size()] == '=') replaced = true;
     if (!replaced) envp.push_back(*e);
   }
+  // Under its own PID namespace the program cannot see simswift's pid:
+  // simswift's own client (common/libagent/Liveness.cpp) is told so.
+  if (view.isolate) env_strings.push_back("SIMSWIFT_PID_NAMESPACE_OF_PROGRAM=1");
   for (std::string& s : env_strings) envp.push_back(s.data());
   envp.push_back(nullptr);
   const IdMaps maps = selfIdMaps();

@@ -76,7 +76,7 @@ TEST(ProgramView, KillNineOfSimswiftEndsAWrapperScriptsGrandchild) {
   {
     std::ofstream y(d + "/wrapper.yaml");
     y << "duration: 600\nattach_timeout: 60\nprogram_logs: " << d << "/logs\nrobots:\n"
-      << "  - {team: 61, player: 1, x: -1, y: 0, program: {command: [sh, -c, 'sleep " << marker
+      << "  - {team: 72, player: 1, x: -1, y: 0, program: {command: [sh, -c, 'sleep " << marker
       << " & sleep " << marker << "; wait']}}\n";
   }
   const std::string simswift = kBin + "/simswift";
@@ -92,6 +92,7 @@ TEST(ProgramView, KillNineOfSimswiftEndsAWrapperScriptsGrandchild) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
     started = processesNamed(marker) == 2;  // the background sleep and the foreground one
   }
+  if (!started) kill(sim, SIGKILL), waitpid(sim, nullptr, 0);
   ASSERT_TRUE(started) << readFile(d + "/run.log");
   kill(sim, SIGKILL);
   int status = 0;
@@ -112,7 +113,7 @@ TEST(ProgramView, TwoProgramsTakeTheSameLockFileAndSeeTheRobotsFiles) {
   const std::string d = tempDir("tmp");
   const std::string lock = "/tmp/simswift-view-test-" + std::to_string(getpid()) + ".pid";
   fs::create_directories(d + "/config");
-  std::ofstream(d + "/config/naoth.cfg") << "[team]\nnumber=61\n";
+  std::ofstream(d + "/config/naoth.cfg") << "[team]\nnumber=71\n";
   // Written as a team's start-up checks would be: each failure its own exit
   // status. $1: the player, $2: the {config} file.
   std::ofstream(d + "/check.sh")
@@ -122,32 +123,32 @@ TEST(ProgramView, TwoProgramsTakeTheSameLockFileAndSeeTheRobotsFiles) {
       << "test -x /opt/aldebaran/bin/lola -a -x /usr/bin/lola || exit 5\n"
       << "echo hi > /home/nao/written || exit 6\n"
       << "test \"$(cat /etc/simswift-view-test)\" = \"robot $1\" || exit 7\n"
-      << "grep -q number=61 /home/nao/Config/naoth.cfg || exit 8\n"
+      << "grep -q number=71 /home/nao/Config/naoth.cfg || exit 8\n"
       << "test $(ls /proc | grep -c '^[0-9]') -le 8 || exit 9\n"  // its PID namespace's processes only
       << "sleep 0.2\n"
       << "exec " << kBin << "/simswift-agent --config \"$2\"\n";
   std::ostringstream y;
   y << "duration: 0.3\nseed: 3\nprogram_logs: " << d << "/logs\nrobots:\n";
   for (int p = 1; p <= 2; ++p)
-    y << "  - {team: 61, player: " << p << ", x: -1, y: " << p << ", posture: stand, program: {command: [sh, "
+    y << "  - {team: 71, player: " << p << ", x: -1, y: " << p << ", posture: stand, program: {command: [sh, "
       << d << "/check.sh, '{player}', '{config}'], files: {/etc/simswift-view-test: 'robot " << p
       << "', /home/nao/Config: {from: config}}}}\n";
   std::ofstream(d + "/two.yaml") << y.str();
   RunOptions o;
   o.progress = false;
-  Runner r(Scenario::loadFile(d + "/two.yaml"), o);
-  EXPECT_NO_THROW(r.run()) << readFile(d + "/logs/t61p1.log") << readFile(d + "/logs/t61p2.log");
+  Runner r(Scenario::loadFile(d + "/two.yaml"));
+  EXPECT_NO_THROW(r.run(o)) << readFile(d + "/logs/t71p1.log") << readFile(d + "/logs/t71p2.log");
   EXPECT_NE(access(lock.c_str(), F_OK), 0) << "a program wrote into the machine's /tmp";
   // Each program's /tmp and /home/nao are folders of the run.
-  EXPECT_EQ(readFile(d + "/logs/t61p1.view/tmp/" + fs::path(lock).filename().string()), "2\n");
-  EXPECT_EQ(readFile(d + "/logs/t61p2.view/home/written"), "hi\n");
+  EXPECT_EQ(readFile(d + "/logs/t71p1.view/tmp/" + fs::path(lock).filename().string()), "2\n");
+  EXPECT_EQ(readFile(d + "/logs/t71p2.view/home/written"), "hi\n");
   fs::remove_all(d);
 }
 
 TEST(ProgramView, BadFileEntriesAreRefusedWithFileAndLine) {
   auto parse = [](const std::string& files) {
     return simswift::testing::configError([&] {
-      Scenario::parse("robots:\n  - {team: 61, player: 1,\n     program: {command: [x],\n       files: " + files +
+      Scenario::parse("robots:\n  - {team: 71, player: 1,\n     program: {command: [x],\n       files: " + files +
                           "}}\n",
                       "files.yaml");
     });
