@@ -91,6 +91,7 @@ void GameControllerUdp::update(int64_t t_us, const common::libagent::GameStateBl
       ++sent_;
     else
       ++send_errors_;
+    if (also_) also_(d);
     while (next_send_us_ <= t_us) next_send_us_ += spl::kSendIntervalUs;
   }
   drainReturns();
@@ -101,19 +102,24 @@ void GameControllerUdp::drainReturns() {
   for (int i = 0; i < kMaxReadsPerTick; ++i) {
     const ssize_t n = recv(recv_fd_, buf, sizeof buf, MSG_DONTWAIT | MSG_TRUNC);
     if (n < 0) return;  // EAGAIN: none left (or a transient error: read again next tick)
-    spl::Return r;
-    if (!spl::decodeReturnData(*version_, buf, static_cast<size_t>(n), &r)) {
-      ++bad_returns_;
-      continue;
-    }
-    Returns& c = returns_[{r.team, r.player}];
-    c.team = r.team;
-    c.player = r.player;
-    ++c.packets;
-    c.alive += r.alive;
-    c.penalise += r.penalise;
-    c.unpenalise += r.unpenalise;
+    // MSG_TRUNC: n is the datagram's size; one larger than buf is refused by size.
+    countReturn(buf, static_cast<size_t>(n));
   }
+}
+
+void GameControllerUdp::countReturn(const uint8_t* bytes, size_t size) {
+  spl::Return r;
+  if (!spl::decodeReturnData(*version_, bytes, size, &r)) {
+    ++bad_returns_;
+    return;
+  }
+  Returns& c = returns_[{r.team, r.player}];
+  c.team = r.team;
+  c.player = r.player;
+  ++c.packets;
+  c.alive += r.alive;
+  c.penalise += r.penalise;
+  c.unpenalise += r.unpenalise;
 }
 
 std::vector<GameControllerUdp::Returns> GameControllerUdp::returns() const {

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -62,6 +63,12 @@ class GameControllerUdp {
   // at simulated time t_us, then counts the return packets waiting.
   void update(int64_t t_us, const common::libagent::GameStateBlock& b);
 
+  // Robots with a network of their own (sim/network/RobotLan.hpp): every
+  // packet sent is also handed here, and their return packets, read from
+  // their networks, are counted through countReturn as those on return_port.
+  void alsoSendTo(std::function<void(const std::vector<uint8_t>&)> sink) { also_ = std::move(sink); }
+  void countReturn(const uint8_t* bytes, size_t size);
+
   // Return packets from one robot (team: SPL team number in the packet).
   struct Returns {
     int team = 0, player = 0;
@@ -87,6 +94,7 @@ class GameControllerUdp {
   uint8_t packet_number_ = 0;
   int64_t sent_ = 0, send_errors_ = 0, bad_returns_ = 0;
   std::map<std::pair<int, int>, Returns> returns_;
+  std::function<void(const std::vector<uint8_t>&)> also_;
 };
 
 }  // namespace simswift::game

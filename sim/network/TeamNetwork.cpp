@@ -34,7 +34,7 @@ int64_t TeamNetwork::teamBudgetLeft(int team) const {
   return std::max<int64_t>(0, config_.budget - stats_.team_sent[team]);
 }
 
-void TeamNetwork::send(int from, const uint8_t* bytes, size_t size, int64_t t_us) {
+void TeamNetwork::send(int from, const uint8_t* bytes, size_t size, int64_t t_us, Channel channel) {
   const Endpoint& src = endpoints_.at(from);
   if (config_.budget > 0 && stats_.team_sent[src.team] >= config_.budget) {
     ++stats_.over_budget;
@@ -55,6 +55,7 @@ void TeamNetwork::send(int from, const uint8_t* bytes, size_t size, int64_t t_us
     Delivery d;
     d.to = to;
     d.from = from;
+    d.channel = channel;
     d.sent_us = t_us;
     d.arrival_us = t_us + delay_us_;
     d.bytes.assign(bytes, bytes + size);
@@ -73,7 +74,8 @@ std::vector<Delivery> TeamNetwork::deliver(int64_t t_us) {
   return out;
 }
 
-void TeamNetwork::exchange(int64_t t_us, const std::vector<al::TeamLink*>& links) {
+void TeamNetwork::exchange(int64_t t_us, const std::vector<al::TeamLink*>& links,
+                           const std::function<void(const Delivery&)>& lan) {
   al::TeamPacket p;
   for (int i = 0; i < numEndpoints() && i < static_cast<int>(links.size()); ++i) {
     if (!links[i]) continue;
@@ -82,6 +84,10 @@ void TeamNetwork::exchange(int64_t t_us, const std::vector<al::TeamLink*>& links
     for (uint32_t n = 0; n < al::kOutboxSlots && links[i]->outbox.pop(p); ++n) send(i, p.bytes, p.size, t_us);
   }
   for (const Delivery& d : deliver(t_us)) {
+    if (d.channel == Channel::Lan) {
+      if (lan) lan(d);
+      continue;
+    }
     al::TeamLink* link = d.to < static_cast<int>(links.size()) ? links[d.to] : nullptr;
     if (!link || !link->inbox.push(d.bytes.data(), d.bytes.size(), t_us, endpoints_[d.from].player))
       ++stats_.inbox_overflow;

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <random>
 #include <utility>
@@ -33,8 +34,13 @@ struct TeamNetworkConfig {
   int64_t budget = 0;     // packets per team per game; 0 = unlimited
 };
 
+// Which way a packet came and goes: the extension object's team link, or a
+// robot's own network (UDP through its wlan0: sim/network/RobotLan.hpp).
+enum class Channel : uint8_t { Link, Lan };
+
 struct Delivery {
   int to = -1, from = -1;  // endpoint indices
+  Channel channel = Channel::Link;
   int64_t sent_us = 0, arrival_us = 0;
   std::vector<uint8_t> bytes;
 };
@@ -58,14 +64,16 @@ class TeamNetwork {
   int numEndpoints() const { return static_cast<int>(endpoints_.size()); }
 
   // Endpoint `from` sends `bytes` at simulated time `t_us`.
-  void send(int from, const uint8_t* bytes, size_t size, int64_t t_us);
+  void send(int from, const uint8_t* bytes, size_t size, int64_t t_us, Channel channel = Channel::Link);
   // Packets due by `t_us`, in arrival order (ties: send order, then receiver).
   std::vector<Delivery> deliver(int64_t t_us);
 
   // The runner's once-per-tick call: drains every link's outbox (endpoint
   // order, FIFO) as sent at t_us, then writes the packets due by t_us into
   // the receivers' inboxes. links[i] belongs to endpoint i (null: none).
-  void exchange(int64_t t_us, const std::vector<common::libagent::TeamLink*>& links);
+  // Deliveries of Channel::Lan go to `lan` (none: dropped) instead.
+  void exchange(int64_t t_us, const std::vector<common::libagent::TeamLink*>& links,
+                const std::function<void(const Delivery&)>& lan = nullptr);
 
   const TeamNetworkStats& stats() const { return stats_; }
   const TeamNetworkConfig& config() const { return config_; }

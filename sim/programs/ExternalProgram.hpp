@@ -50,6 +50,7 @@ class LaunchedProgram final : public ExternalProgram {
     process_->stop();
   }
   std::string log() const override { return slot_.tag + ": " + process_->logPath(); }
+  int takeNetwork() override { return process_->takeNetwork(); }
 
  private:
   bool awaitChecked(Step step, double timeout_s);

@@ -51,6 +51,20 @@ int enterOwnMountNamespace(const IdMaps& maps, const char** step) {
   return 0;
 }
 
+int enterMountNamespaceInNewUser(const IdMaps& maps, const char** step) {
+  auto fail = [&](const char* what, int err) {
+    if (step) *step = what;
+    return err;
+  };
+  writeProc("/proc/self/setgroups", "deny");
+  errno = 0;
+  if (!writeProc("/proc/self/uid_map", maps.uid) || !writeProc("/proc/self/gid_map", maps.gid))
+    return fail("uid_map/gid_map", errno != 0 ? errno : EIO);
+  if (unshare(CLONE_NEWNS) != 0) return fail("unshare(mount namespace)", errno);
+  if (mount("none", "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return fail("mount --make-rprivate /", errno);
+  return 0;
+}
+
 namespace {
 
 // The probe: a child tries and writes into a pipe its errno, then the name

@@ -23,6 +23,12 @@ IdMaps selfIdMaps();
 // or "mount --make-rprivate /".
 int enterOwnMountNamespace(const IdMaps& maps, const char** step = nullptr);
 
+// For a process made with clone(CLONE_NEWUSER) (ProgramProcess's init when
+// simswift is not root): maps its ids to the caller's own, then enters a
+// mount namespace of that user namespace (so the PID namespace it owns may
+// mount its /proc) with every mount private. 0 or the errno; `step` as above.
+int enterMountNamespaceInNewUser(const IdMaps& maps, const char** step = nullptr);
+
 // Whether this machine gives a process a mount namespace of its own (no
 // unprivileged user namespaces, or a container without CAP_SYS_ADMIN: no).
 // Probed once per process, in a forked child that tries

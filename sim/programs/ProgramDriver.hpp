@@ -77,6 +77,9 @@ class ProgramDriver {
   virtual void join() {}
   // Its log file ("t19p2: simswift-logs/t19p2.log"); empty if none.
   virtual std::string log() const { return {}; }
+  // A launched program's wlan0 (a TAP descriptor, handed over once, the
+  // caller owns it: sim/programs/RobotNetwork.hpp); -1 for every other.
+  virtual int takeNetwork() { return -1; }
   // The observer hook: the robot's FindBall search as the FindBall view
   // draws it (what the robot itself believes), filled by the program side
   // between ticks. False: nothing to show (no search published).

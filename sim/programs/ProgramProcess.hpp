@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/programs/ProgramView.hpp"
+
 namespace simswift::programs {
 
 struct LaunchSpec {
@@ -31,6 +33,10 @@ struct LaunchSpec {
   std::string cwd;                   // "" = the scenario's folder
   std::vector<std::pair<std::string, std::string>> env;  // added to simswift's environment
   double stop_grace_s = 2;           // s between SIGTERM and SIGKILL at the end
+  std::vector<FileEntry> files;      // the robot's files beyond the defaults (ProgramView.hpp)
+  // Its own network (wlan0, RobotNetwork.hpp): Auto where the machine gives
+  // one, On (refused where it does not), Off (the machine's network).
+  enum class Network { Auto, On, Off } network = Network::Auto;
   bool launched() const { return !command.empty(); }
   // Whether the placeholder {name} appears in the command or in an
   // environment value.
@@ -48,23 +54,31 @@ class ProgramProcess {
  public:
   // Starts `argv` (placeholders already filled) in `cwd` with `env` added,
   // stdout and stderr into `log_path` (created; its folder too). The child
-  // leads its own process group and is killed if simswift dies
-  // (PR_SET_PDEATHSIG). With `robocup_socket` (a LoLA robot's socket), the
-  // child gets a mount namespace of its own in which /tmp/robocup is that
-  // socket (bound onto the machine's /tmp/robocup, made once as the mount
-  // point: a socket nobody listens on): an unchanged V6 program opens its own robot,
-  // several side by side; the mount goes with the program (also after
-  // kill -9). Throws std::runtime_error naming the program if the
-  // command cannot be started (not found, not executable: the exec error;
-  // the namespace refused: why).
+  // runs under a small init of simswift's (pid() is the init's), which
+  // leads its own process group, is killed if simswift dies
+  // (PR_SET_PDEATHSIG), forwards SIGTERM/SIGINT/SIGHUP to the program, reaps
+  // and reports how the program ended. With `view.isolate` the init is PID 1
+  // of a PID namespace of its own (its death ends every process in it: a
+  // wrapper script's children too) and gives the program the view of
+  // ProgramView.hpp (its own /tmp, /tmp/robocup, /home/nao, the robot's
+  // files). Throws std::runtime_error naming the program if the command
+  // cannot be started (not found, not executable: the exec error; the
+  // namespace or a mount refused: why).
   ProgramProcess(std::string robot, const std::vector<std::string>& argv, const std::string& cwd,
                  const std::vector<std::pair<std::string, std::string>>& env, std::string log_path,
-                 double stop_grace_s, const std::string& robocup_socket = "");
+                 double stop_grace_s, const ProgramView& view = {});
   ~ProgramProcess();  // stop()
   ProgramProcess(const ProgramProcess&) = delete;
   ProgramProcess& operator=(const ProgramProcess&) = delete;
 
   pid_t pid() const { return pid_; }
+  // The robot's wlan0 (a TAP descriptor, non-blocking) with a network view,
+  // handed over once (the caller owns it); -1 otherwise.
+  int takeNetwork() {
+    const int fd = net_fd_;
+    net_fd_ = -1;
+    return fd;
+  }
   const std::string& logPath() const { return log_path_; }
   // Empty while it runs; once it has ended, how: "exited with status 3",
   // "killed by signal 11 (Segmentation fault)". Non-blocking (reaps).
@@ -98,7 +112,11 @@ class ProgramProcess {
   std::string log_path_;
   double stop_grace_s_;
   pid_t pid_ = -1;
+  int status_fd_ = -1;  // the init writes the program's wait status here
+  int life_fd_ = -1;
+  int net_fd_ = -1;     // the robot's wlan0, until taken    // held while simswift lives: the init sees it closed if simswift died before its prctl
   bool reaped_ = false;
+  std::string reapedHow(int init_status);
   std::optional<std::string> how_;
 };
 

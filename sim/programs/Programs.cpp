@@ -1,4 +1,5 @@
 #include "sim/programs/Programs.hpp"
+#include "sim/programs/RobotNetwork.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -166,6 +167,49 @@ std::unique_ptr<ClockPage> Programs::clockPage(const ProgramRun& run, const Prog
   }
 }
 
+// What a launched program sees (ProgramView.hpp), where the machine gives
+// namespaces: its robot's socket at /tmp/robocup (a bare LoLA robot's is the
+// machine's /tmp/robocup itself, bound at the same place), its folder of the
+// run (<program_logs>/<tag>.view), the machine's /tmp paths its launch
+// names, the default files and the scenario's.
+ProgramView Programs::programView(const ProgramEntry& e, const std::filesystem::path& logs, const std::string& robocup,
+                                  const std::vector<std::string>& argv, const std::string& cwd,
+                                  const std::vector<std::pair<std::string, std::string>>& env,
+                                  const std::string& config) {
+  ProgramView view;
+  view.isolate = mountNamespaceSupport().available;
+  if (!view.isolate && e.launch.network == LaunchSpec::Network::On)
+    throw ProgramError("robot " + e.slot.tag + ": network: on, but this machine gives its program no namespaces (" +
+                           mountNamespaceSupport().why + "); give network: off",
+                       e.slot.tag + ": no network namespace");
+  if (!view.isolate) return view;
+  view.robocup_socket = robocup;
+  if (robocup.empty() && e.slot.host->interface() == bridge::BodyInterface::Lola)
+    view.robocup_socket = e.slot.host->endpoint();  // names: bare: /tmp/robocup itself
+  view.folder = std::filesystem::absolute(logs / (e.slot.tag + ".view")).lexically_normal().string();
+  std::vector<std::string> named(argv.begin(), argv.end());
+  named.push_back(std::filesystem::absolute(cwd).string());
+  named.push_back(std::filesystem::absolute(config).string());
+  named.push_back(view.folder);
+  for (const auto& kv : env) named.push_back(kv.second);
+  view.carry = pathsUnderTmp(named);
+  view.files = defaultFiles();
+  if (e.launch.network != LaunchSpec::Network::Off) {
+    const NamespaceSupport net = robotNetworkSupport();
+    if (net.available)
+      view.network_address = (10u << 24) | (static_cast<uint32_t>(e.setup.team & 0xff) << 8) |
+                             static_cast<uint32_t>(e.setup.player & 0xff);  // 10.0.<team>.<player>
+    else if (e.launch.network == LaunchSpec::Network::On)
+      throw ProgramError("robot " + e.slot.tag + ": network: on, but this machine gives its program no network of "
+                         "its own (" + net.why + "); give network: off (the machine's network) or run where "
+                         "network namespaces and /dev/net/tun are allowed (as root, or with unprivileged user "
+                         "namespaces and a /dev/net/tun the user may open)",
+                         e.slot.tag + ": no network namespace");
+  }
+  view.files.insert(view.files.end(), e.launch.files.begin(), e.launch.files.end());
+  return view;
+}
+
 // A launched robot's program: started with its names, seed and setup
 // filled into its command, its output in program_logs/<tag>.log. It
 // attaches by name like any external program (the first tick waits).
@@ -214,6 +258,13 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const ProgramRun& run, con
     process = std::make_unique<ProgramProcess>(slot.tag, argv, ProgramProcess::fill(e.launch.cwd, values), env,
                                                (logs / (slot.tag + ".log")).string(), e.launch.stop_grace_s,
                                                robocup);
+}
+
+  const std::string cwd = ProgramProcess::fill(e.launch.cwd, values);
+  std::unique_ptr<ProgramProcess> process;
+  try {
+    process = std::make_unique<ProgramProcess>(slot.tag, argv, cwd, env, (logs / (slot.tag + ".log")).string(),
+                                               e.launch.stop_grace_s, programView(e, logs, robocup, argv, cwd, env, config));
   } catch (const std::runtime_error& err) {
     throw ProgramError(err.what(), slot.tag + ": program could not be started");
   }

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -129,6 +130,10 @@ class Programs {
     std::string socket_placeholder;
   };
   static LolaView lolaView(const ProgramEntry& e);
+  static ProgramView programView(const ProgramEntry& e, const std::filesystem::path& logs, const std::string& robocup,
+                                 const std::vector<std::string>& argv, const std::string& cwd,
+                                 const std::vector<std::pair<std::string, std::string>>& env,
+                                 const std::string& config);
 
   std::vector<Robot> robots_;
   agent::program::Threading threading_ = agent::program::Threading::Named;

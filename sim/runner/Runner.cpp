@@ -171,6 +171,7 @@ void Runner::buildTeamAndGame() {
       throw RunnerError(std::string(e.what()) + " (scenario " + scenario_.source + ")");
     }
   }
+  buildRobotLan();
   teamAndGame(0);
 }
 
@@ -451,8 +452,28 @@ void Runner::captureFindBallView(int64_t t_us) {
   findball_view_->maybeCapture(t_us, views);
 }
 
+// The robots' own networks (launched programs with a wlan0 each:
+// sim/network/RobotLan.hpp): the GameController's packets go into them too.
+void Runner::buildRobotLan() {
+  lan_ = std::make_unique<network::RobotLan>();
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    const int fd = programs_->driver(static_cast<int>(i)).takeNetwork();
+    if (fd >= 0) lan_->add(static_cast<int>(i), robots_[i]->spec.team, robots_[i]->spec.player, fd);
+  }
+  if (gc_udp_ && !lan_->empty())
+    gc_udp_->alsoSendTo([lan = lan_.get()](const std::vector<uint8_t>& p) { lan->sendGameData(p); });
+}
+
 void Runner::teamAndGame(int64_t t_us) {
-  network_->exchange(t_us, links_);
+  if (lan_ && !lan_->empty()) {
+    // Read before the exchange: a message read now is sent at t_us.
+    lan_->readFrames(t_us, *network_, [this](const uint8_t* b, size_t n) {
+      if (gc_udp_) gc_udp_->countReturn(b, n);
+    });
+    network_->exchange(t_us, links_, [this](const network::Delivery& d) { lan_->deliver(d); });
+  } else {
+    network_->exchange(t_us, links_);
+  }
   for (const game::GameEvent& e : game_->update(t_us)) {
     Robot& r = *robots_[e.robot];
     if (e.kind == game::GameEvent::Kind::Penalised) {

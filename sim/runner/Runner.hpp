@@ -37,7 +37,9 @@
 //                         a launched program's V4L2 cameras it streams are
 //                         rendered and published, and the runner waits
 //                         until it has dequeued them (common/v4l2/DeviceBlock.hpp)
-//  11. teamAndGame        team network and GameController: outboxes drained,
+//  11. teamAndGame        team network and GameController: the robots' own
+//                         networks read (non-blocking, robot order:
+//                         sim/network/RobotLan.hpp), outboxes drained,
 //                         due packets delivered, game state advanced (robots
 //                         penalised to the sideline and back) and written;
 //                         with game: {udp: on} the SPL GameController packet
@@ -83,6 +85,7 @@
 #include "sim/bridge/V4l2Devices.hpp"
 #include "sim/game/GameController.hpp"
 #include "sim/game/GameControllerUdp.hpp"
+#include "sim/network/RobotLan.hpp"
 #include "sim/game/Sideline.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/network/TeamNetwork.hpp"
@@ -188,6 +191,8 @@ class Runner {
   const game::GameController& gameController() const { return *game_; }
   // The UDP GameController (null unless the scenario's game: has udp: on).
   const game::GameControllerUdp* gameControllerUdp() const { return gc_udp_.get(); }
+  // The robots' own networks (launched programs with wlan0); null before start.
+  const network::RobotLan* robotLan() const { return lan_.get(); }
   // FindBall view frames (`--findball-view DIR`): every robot whose program
   // shows a search (ProgramDriver::findBallView, the observer hook) gets a
   // PNG per 1/rate_hz s of simulated time; run() assembles the videos.
@@ -221,6 +226,7 @@ class Runner {
   void buildHosts();        // per robot: World body, SensorSuite, body side (Bodies.hpp)
   void attachPrograms();    // per robot: its program driver (sim/programs), from the scenario
   void buildTeamAndGame();  // TeamNetwork, GameController (and its UDP sender), the t = 0 game state
+  void buildRobotLan();     // the launched programs' own networks (their wlan0s)
   void startCameras();      // if the scenario renders
   void buildVision();       // the vision oracle
   sensors::SensorConfig sensorConfig() const;
@@ -259,6 +265,7 @@ class Runner {
   std::unique_ptr<game::GameController> game_;
   std::unique_ptr<game::PenaltyPlacer> placer_;
   std::unique_ptr<game::GameControllerUdp> gc_udp_;
+  std::unique_ptr<network::RobotLan> lan_;  // the robots' own networks (after gc_udp_: it refers to them)
   std::vector<common::libagent::TeamLink*> links_;  // by robot index, for the network
   // Tick stages (see the top of this file).
   void applyCommands();

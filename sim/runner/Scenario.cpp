@@ -363,6 +363,46 @@ void readPhysics(const YamlReader& top, WorldConfig& world) {
   p->fail(key, bad->why);
 }
 
+// program: {files: {PATH: CONTENT, PATH: {from: FILE_OR_FOLDER}}}: the
+// robot's files its program sees (sim/programs/ProgramView.hpp).
+std::vector<programs::FileEntry> readFiles(const YamlReader& files, const std::string& base_dir) {
+  std::vector<programs::FileEntry> out;
+  for (const auto& kv : files.node()) {
+    if (!kv.first.IsScalar()) files.fail("every key must be a path");
+    const std::string path = kv.first.Scalar();
+    (void)files.has(path);
+    if (const std::string why = programs::fileEntryProblem(path); !why.empty()) files.fail(path, why);
+    programs::FileEntry e;
+    e.path = path;
+    const common::config::ConfigPlace at = files.place(path);
+    e.where = at.file + ":" + std::to_string(at.line);
+    if (kv.second.IsScalar()) {
+      e.content = kv.second.Scalar();
+    } else if (kv.second.IsMap()) {
+      const YamlReader m = files.map(path);
+      e.from = m.string("from", "");
+      if (e.from.empty()) m.missing("from", "a file or folder of the machine to map in (or give the content as a string)");
+      if (e.from[0] != '/') e.from = (std::filesystem::path(base_dir.empty() ? "." : base_dir) / e.from).lexically_normal().string();
+      std::error_code ec;
+      if (!std::filesystem::exists(e.from, ec)) m.fail("from", "no such file or folder: " + e.from);
+      m.finish();
+    } else {
+      files.fail(path, "expected the file's content (a string) or {from: PATH}");
+    }
+    auto inside = [](const std::string& a, const std::string& b) {  // a below b
+      return a.size() > b.size() && a.compare(0, b.size(), b) == 0 && a[b.size()] == '/';
+    };
+    for (const programs::FileEntry& o : out) {
+      if (!o.from.empty() && inside(e.path, o.path)) files.fail(path, "is inside " + o.path + ", a folder mapped in");
+      if (!e.from.empty() && inside(o.path, e.path))
+        files.fail(path, "would cover " + o.path + " (given above): map the folder in, or give its files");
+    }
+    if (e.path == "/home/nao" && e.from.empty()) files.fail(path, "/home/nao is a folder: map one in with {from: PATH}");
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
 void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base_dir, bool any_body) {
   rs.program = RobotSpec::Program::Builtin;
   if (!robot.has("program") || !robot.node()["program"].IsMap()) {
@@ -392,6 +432,11 @@ void readProgram(const YamlReader& robot, RobotSpec& rs, const std::string& base
     }
   }
   rs.launch.stop_grace_s = p.number("stop_grace", rs.launch.stop_grace_s, Range::closed(0, 60));
+  if (auto files = p.optionalMap("files")) rs.launch.files = readFiles(*files, base_dir);
+  rs.launch.network = p.enumChoice("network", rs.launch.network,
+                                   {{"auto", programs::LaunchSpec::Network::Auto},
+                                    {"on", programs::LaunchSpec::Network::On},
+                                    {"off", programs::LaunchSpec::Network::Off}});
   // Placeholders are checked now, not when the run starts: the run's, and
   // the body's (BodySide::placeholders: a LoLA body's socket, libagent's names).
   std::map<std::string, std::string> names;

@@ -1,0 +1,165 @@
+// What a launched program sees (sim/programs/ProgramView.hpp): its PID
+// namespace (a kill -9 of simswift ends a wrapper script's grandchild), its
+// own /tmp (two programs' lock files never meet), the robot's files, and a
+// bad `files:` entry refused with file:line.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "sim/programs/MountNamespace.hpp"
+#include "sim/programs/ProgramView.hpp"
+#include "sim/runner/Runner.hpp"
+#include "tests/support/ConfigErrors.hpp"
+
+namespace fs = std::filesystem;
+using simswift::runner::RunOptions;
+using simswift::runner::Runner;
+using simswift::runner::Scenario;
+
+namespace {
+
+const std::string kBin = SIMSWIFT_BINARY_DIR;
+
+std::string tempDir(const std::string& tag) {
+  const fs::path d = fs::temp_directory_path() / ("simswift_view_" + tag + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d.string();
+}
+
+std::string readFile(const std::string& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The pids of processes whose command line holds `marker`.
+int processesNamed(const std::string& marker) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    std::ifstream in(e.path() / "cmdline");
+    std::string cmd((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (cmd.find(marker) != std::string::npos) ++n;
+  }
+  return n;
+}
+
+// Skips (saying why) where the machine gives no namespaces: there a
+// launched program has none of this view (docs/porting.md).
+#define REQUIRE_NAMESPACES()                                                                   \
+  do {                                                                                         \
+    const auto ns = simswift::programs::mountNamespaceSupport();                               \
+    if (!ns.available) GTEST_SKIP() << "this machine gives no namespaces: " << ns.why;         \
+  } while (0)
+
+}  // namespace
+
+// A team program started through a wrapper script whose child outlives it
+// in the background: kill -9 of simswift ends the grandchild too (its PID
+// namespace's init dies with simswift), within 2 s. Before: only the
+// direct child had PR_SET_PDEATHSIG and the grandchild ran on.
+TEST(ProgramView, KillNineOfSimswiftEndsAWrapperScriptsGrandchild) {
+  REQUIRE_NAMESPACES();
+  const std::string d = tempDir("kill");
+  // A sleep no other process has: 5000 s plus this test's pid in ms.
+  const std::string marker = "5000." + std::to_string(getpid() % 1000);
+  {
+    std::ofstream y(d + "/wrapper.yaml");
+    y << "duration: 600\nattach_timeout: 60\nprogram_logs: " << d << "/logs\nrobots:\n"
+      << "  - {team: 72, player: 1, x: -1, y: 0, program: {command: [sh, -c, 'sleep " << marker
+      << " & sleep " << marker << "; wait']}}\n";
+  }
+  const std::string simswift = kBin + "/simswift";
+  const pid_t sim = fork();
+  if (sim == 0) {
+    const int fd = open((d + "/run.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) dup2(fd, 1), dup2(fd, 2);
+    execl(simswift.c_str(), simswift.c_str(), "run", (d + "/wrapper.yaml").c_str(), "--quiet", nullptr);
+    _exit(127);
+  }
+  bool started = false;
+  for (int i = 0; i < 1000 && !started; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    started = processesNamed(marker) == 2;  // the background sleep and the foreground one
+  }
+  if (!started) kill(sim, SIGKILL), waitpid(sim, nullptr, 0);
+  ASSERT_TRUE(started) << readFile(d + "/run.log");
+  kill(sim, SIGKILL);
+  int status = 0;
+  ASSERT_EQ(waitpid(sim, &status, 0), sim);
+  for (int i = 0; i < 200 && processesNamed(marker) > 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(processesNamed(marker), 0) << "the wrapper's children outlived simswift";
+  fs::remove_all(d);
+}
+
+// Two unchanged programs that take the same lock file in /tmp (noclobber:
+// the second would fail if they shared it) and check the robot's files,
+// then run simswift-agent: a run with both ends normally. Each sees its own
+// /tmp, the hwmon temperatures B-Human opens, LoLA's executable at NaoTH's
+// two paths, a writable /home/nao, and the scenario's files (content and a
+// folder mapped in); the machine's /tmp stays untouched.
+TEST(ProgramView, TwoProgramsTakeTheSameLockFileAndSeeTheRobotsFiles) {
+  REQUIRE_NAMESPACES();
+  const std::string d = tempDir("tmp");
+  const std::string lock = "/tmp/simswift-view-test-" + std::to_string(getpid()) + ".pid";
+  fs::create_directories(d + "/config");
+  std::ofstream(d + "/config/naoth.cfg") << "[team]\nnumber=71\n";
+  // Written as a team's start-up checks would be: each failure its own exit
+  // status. $1: the player, $2: the {config} file.
+  std::ofstream(d + "/check.sh")
+      << "set -C\n"
+      << "echo $$ > " << lock << " || exit 3\n"
+      << "for i in 2 3 4 5; do test \"$(cat /sys/class/hwmon/hwmon1/temp\"$i\"_input)\" = 50000 || exit 4; done\n"
+      << "test -x /opt/aldebaran/bin/lola -a -x /usr/bin/lola || exit 5\n"
+      << "echo hi > /home/nao/written || exit 6\n"
+      << "test \"$(cat /etc/simswift-view-test)\" = \"robot $1\" || exit 7\n"
+      << "grep -q number=71 /home/nao/Config/naoth.cfg || exit 8\n"
+      << "test $(ls /proc | grep -c '^[0-9]') -le 8 || exit 9\n"  // its PID namespace's processes only
+      << "sleep 0.2\n"
+      << "exec " << kBin << "/simswift-agent --config \"$2\"\n";
+  std::ostringstream y;
+  y << "duration: 0.3\nseed: 3\nprogram_logs: " << d << "/logs\nrobots:\n";
+  for (int p = 1; p <= 2; ++p)
+    y << "  - {team: 71, player: " << p << ", x: -1, y: " << p << ", posture: stand, program: {command: [sh, "
+      << d << "/check.sh, '{player}', '{config}'], files: {/etc/simswift-view-test: 'robot " << p
+      << "', /home/nao/Config: {from: config}}}}\n";
+  std::ofstream(d + "/two.yaml") << y.str();
+  RunOptions o;
+  o.progress = false;
+  Runner r(Scenario::loadFile(d + "/two.yaml"));
+  EXPECT_NO_THROW(r.run(o)) << readFile(d + "/logs/t71p1.log") << readFile(d + "/logs/t71p2.log");
+  EXPECT_NE(access(lock.c_str(), F_OK), 0) << "a program wrote into the machine's /tmp";
+  // Each program's /tmp and /home/nao are folders of the run.
+  EXPECT_EQ(readFile(d + "/logs/t71p1.view/tmp/" + fs::path(lock).filename().string()), "2\n");
+  EXPECT_EQ(readFile(d + "/logs/t71p2.view/home/written"), "hi\n");
+  fs::remove_all(d);
+}
+
+TEST(ProgramView, BadFileEntriesAreRefusedWithFileAndLine) {
+  auto parse = [](const std::string& files) {
+    return simswift::testing::configError([&] {
+      Scenario::parse("robots:\n  - {team: 71, player: 1,\n     program: {command: [x],\n       files: " + files +
+                          "}}\n",
+                      "files.yaml");
+    });
+  };
+  EXPECT_NE(parse("{/proc/cpuinfo: x}").find("files.yaml:4: robots[0].program.files./proc/cpuinfo: cannot be under"),
+            std::string::npos)
+      << parse("{/proc/cpuinfo: x}");
+  EXPECT_NE(parse("{etc/x: x}").find("files.yaml:4:"), std::string::npos) << parse("{etc/x: x}");
+  EXPECT_NE(parse("{/etc/x: {from: /no/such/folder}}").find("no such file or folder: /no/such/folder"),
+            std::string::npos);
+  EXPECT_NE(parse("{/etc/x: [1]}").find("expected the file's content"), std::string::npos);
+  EXPECT_NE(parse("{/opt/a: {from: /}, /opt/a/b: x}").find("is inside /opt/a"), std::string::npos);
+  EXPECT_NE(parse("{/tmp/robocup: x}").find("the robot's LoLA socket"), std::string::npos);
+}
