@@ -12,6 +12,7 @@
 
 #include "sim/record/McapWriter.hpp"
 #include "sim/record/Recorder.hpp"
+#include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "tests/record/NodeReader.hpp"
 #include "tests/support/Shell.hpp"
