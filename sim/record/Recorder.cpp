@@ -8,6 +8,8 @@
 #include "common/libagent/AgentShared.hpp"
 #include "common/libagent/SharedNames.hpp"
 #include "sim/game/GameController.hpp"
+#include "sim/programs/Programs.hpp"
+#include "sim/record/PngBytes.hpp"
 #include "sim/record/Schemas.hpp"
 #include "sim/runner/Bodies.hpp"
 #include "sim/runner/Runner.hpp"
@@ -92,6 +94,7 @@ void Recorder::begin(const runner::Runner& r) {
   const uint16_t joint_schema = writer_.addSchema("simswift.JointState", kJsonSchema, jsonSchema("simswift.JointState"));
   const uint16_t sensor_schema = writer_.addSchema("simswift.Sensors", kJsonSchema, jsonSchema("simswift.Sensors"));
   const uint16_t team_schema = writer_.addSchema("simswift.TeamMessage", kJsonSchema, jsonSchema("simswift.TeamMessage"));
+  uint16_t belief_schema = 0, image_schema = 0;
   tf_ = channel("foxglove.FrameTransforms", "/tf");
   scene_ = channel("foxglove.SceneUpdate", "/scene");
   events_ = channel("foxglove.Log", "/events");
@@ -102,6 +105,19 @@ void Recorder::begin(const runner::Runner& r) {
     RobotChannels c{};
     c.joints = writer_.addChannel(joint_schema, "/" + robotName(i) + "/joints", kJson);
     c.sensors = writer_.addChannel(sensor_schema, "/" + robotName(i) + "/sensors", kJson);
+    if (r.images(i) && options_.camera_rate_hz > 0 && pngAvailable()) {  // the run renders its cameras
+      if (!image_schema)
+        image_schema = writer_.addSchema("foxglove.CompressedImage", kJsonSchema, jsonSchema("foxglove.CompressedImage"));
+      c.camera_top = writer_.addChannel(image_schema, "/" + robotName(i) + "/camera/top", kJson);
+      c.camera_bottom = writer_.addChannel(image_schema, "/" + robotName(i) + "/camera/bottom", kJson);
+      c.has_cameras = true;
+    }
+    programs::Belief unused;
+    c.has_belief = r.programs().driver(i).belief(unused);  // a builtin program's (the observer hook)
+    if (c.has_belief) {
+      if (!belief_schema) belief_schema = writer_.addSchema("simswift.Belief", kJsonSchema, jsonSchema("simswift.Belief"));
+      c.belief = writer_.addChannel(belief_schema, "/" + robotName(i) + "/belief", kJson);
+    }
     robots_.push_back(c);
     std::vector<std::string> ids;
     for (const LinkSpec& l : w.robot(i).model().links()) ids.push_back(robotName(i) + "/" + l.name);
@@ -126,6 +142,32 @@ void Recorder::observe(const runner::Runner& r, int64_t t_us) {
   }
   writeEvents(r, t_ns);
   writeTeam(r, t_ns);
+  if (options_.camera_rate_hz > 0) {
+    const auto image = static_cast<int64_t>(static_cast<double>(t_us) * options_.camera_rate_hz / 1e6 + 1e-9);
+    if (image > last_image_) {
+      last_image_ = image;
+      writeCameras(r, t_ns);
+    }
+  }
+}
+
+// The images of the last rendered camera frame (both cameras), PNG; each
+// message's time is the recording's tick, its frame_id the head link the
+// cameras are fixed to (the model has no camera link).
+void Recorder::writeCameras(const runner::Runner& r, uint64_t t_ns) {
+  for (int i = 0; i < r.numRobots(); ++i) {
+    if (!robots_[i].has_cameras) continue;
+    const al::CameraImages* im = r.images(i);
+    if (!im) continue;
+    for (int c = 0; c < al::kNumCameras; ++c) {
+      if (!im->valid[c]) continue;
+      const std::string png = encodePng(im->rgb[c], im->size[c].width, im->size[c].height);
+      json_.clear();
+      json_.open().key("timestamp").time(t_ns).key("frame_id").str(robotName(i) + "/Head");  // the link both cameras are fixed to
+      json_.key("format").str("png").key("data").base64(reinterpret_cast<const uint8_t*>(png.data()), png.size()).close();
+      writer_.write(c == 0 ? robots_[i].camera_top : robots_[i].camera_bottom, t_ns, json_.text());
+    }
+  }
 }
 
 // A message naming a robot as the runner does ("robot t19p2: ...") is
@@ -217,6 +259,21 @@ void Recorder::writeSample(const runner::Runner& r, uint64_t t_ns) {
     json_.key("right_right").num(s[S::RFoot_Bumper_Right]).close();
     json_.close();
     writer_.write(robots_[i].sensors, t_ns, json_.text());
+  }
+  writeBeliefs(r, t_ns);
+}
+
+void Recorder::writeBeliefs(const runner::Runner& r, uint64_t t_ns) {
+  for (int i = 0; i < r.numRobots(); ++i) {
+    programs::Belief b;
+    if (!robots_[i].has_belief || !r.programs().driver(i).belief(b)) continue;
+    json_.clear();
+    json_.open().key("timestamp").time(t_ns).key("ball");
+    if (b.ball_known) json_.open().key("x").num(b.ball_x).key("y").num(b.ball_y).close();
+    else json_.null();
+    json_.key("pose").open().key("x").num(b.x).key("y").num(b.y).key("theta").num(b.theta).close();
+    json_.key("behaviour").str(b.behaviour).close();
+    writer_.write(robots_[i].belief, t_ns, json_.text());
   }
 }
 

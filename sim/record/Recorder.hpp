@@ -25,7 +25,11 @@ struct RecordOptions {
   // run's speed (docs/recording.md, bench/bench_record).
   static constexpr double kDefaultRateHz = 30;
   double rate_hz = kDefaultRateHz;
-  bool cameras = true;   // camera images when the run renders them
+  // Camera images (both cameras of every robot) when the run renders them,
+  // as PNG: images per simulated second, at most the cameras' 30 Hz. 10:
+  // each PNG costs about as much as rendering it.
+  static constexpr double kDefaultCameraRateHz = 10;
+  double camera_rate_hz = kDefaultCameraRateHz;  // 0: no images
 };
 
 // What the metadata names: simswift's version and the commit the build was
@@ -63,6 +67,8 @@ class Recorder : public runner::TickObserver {
  private:
   struct RobotChannels {
     uint16_t joints, sensors, belief, camera_top, camera_bottom;
+    bool has_belief;  // a builtin program: its driver's belief hook answers
+    bool has_cameras;  // its cameras are rendered
   };
   void writeScene(const runner::Runner& runner);
   void writeSample(const runner::Runner& runner, uint64_t t_ns);
@@ -78,7 +84,7 @@ class Recorder : public runner::TickObserver {
   Json json_;
   bool begun_ = false;
   int64_t last_sample_ = -1;  // index of the last pose/joint/sensor sample
-  int64_t last_frame_ = -1;   // the Runner's last camera frame recorded
+  int64_t last_image_ = -1;   // index of the last camera image sample
   uint64_t last_t_ns_ = 0;
   uint16_t tf_ = 0, scene_ = 0, events_ = 0, team_sent_ = 0, team_delivered_ = 0;
   std::vector<RobotChannels> robots_;

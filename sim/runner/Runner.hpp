@@ -65,6 +65,7 @@
 // down). Builtin programs stay in lock-step.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -193,6 +194,9 @@ class Runner {
   // Observers called at the end of every tick (stage 13), in the order
   // added; not owned (they must outlive the run's ticks).
   void addObserver(TickObserver* observer) { observers_.push_back(observer); }
+  void removeObserver(TickObserver* observer) {
+    observers_.erase(std::remove(observers_.begin(), observers_.end(), observer), observers_.end());
+  }
   // Robot i's scenario pushes applied so far (stage 2).
   int pushesApplied(int i) const { return static_cast<int>(robots_[i]->next_push); }
   // After run(): the overview video line (empty if no overview).

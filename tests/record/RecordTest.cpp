@@ -10,6 +10,7 @@
 #include <regex>
 #include <sstream>
 
+#include "simswift/Simulation.hpp"
 #include "sim/record/McapWriter.hpp"
 #include "sim/record/Recorder.hpp"
 #include "sim/programs/Programs.hpp"
@@ -164,4 +165,25 @@ TEST(Recording, WalkOneOpensInTheMcapProjectsReader) {
   EXPECT_TRUE(has(R"(\"body\":\"V5\")"));
   EXPECT_TRUE(has(R"("child_frame_id":"robot0/)"));
   EXPECT_TRUE(has(R"("frame_id":"robot0/)"));
+}
+
+// The library's Simulation::record: the same recording as the Runner's
+// observer gives, complete after finishRecording().
+TEST(Recording, LibraryApiRecords) {
+  const std::string path = tempPath("api.mcap");
+  simswift::Simulation sim = simswift::Simulation::fromScenario(std::string(SIMSWIFT_SOURCE_DIR) +
+                                                                 "/scenarios/walk_one.yaml");
+  sim.record(path, 10);
+  EXPECT_THROW(sim.record(tempPath("again.mcap")), std::logic_error);
+  sim.run(1.0);
+  sim.finishRecording();
+  const std::string b = bytesOf(path);
+  ASSERT_GT(b.size(), 16u);
+  EXPECT_EQ(b.substr(b.size() - 8), std::string("\x89MCAP0\r\n", 8));
+  size_t n = 0;
+  for (size_t at = b.find("\"child_frame_id\":\"robot0/torso\""); at != std::string::npos;
+       at = b.find("\"child_frame_id\":\"robot0/torso\"", at + 1))
+    ++n;
+  EXPECT_EQ(n, 11u);  // 0.01 s, then every 0.1 s to 1.0 s
+  EXPECT_THROW(sim.record("/nonexistent-dir/x.mcap"), std::runtime_error);
 }
