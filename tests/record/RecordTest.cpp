@@ -136,7 +136,8 @@ TEST(Recording, WalkOneOpensInTheMcapProjectsReader) {
                         R"("/events":{"schema":"foxglove.Log","encoding":"json"})",
                         R"("/robot0/joints":{"schema":"simswift.JointState","encoding":"json"})",
                         R"("/robot0/sensors":{"schema":"simswift.Sensors","encoding":"json"})",
-                        R"("/team/sent":{"schema":"simswift.TeamMessage","encoding":"json"})"})
+                        R"("/team/sent":{"schema":"simswift.TeamMessage","encoding":"json"})",
+                        R"("/robot0/belief":{"schema":"simswift.Belief","encoding":"json"})"})
     EXPECT_TRUE(has(c)) << c;
   // 20 s at 30 Hz: 601 samples (t = 0.01 s, then every 1/30 s to 20 s) of
   // poses, joints, sensors; one scene; both
@@ -150,6 +151,7 @@ TEST(Recording, WalkOneOpensInTheMcapProjectsReader) {
     EXPECT_NE(s.find(R"("/tf":601)"), std::string::npos) << reader << ": " << s;
     EXPECT_NE(s.find(R"("/robot0/joints":601)"), std::string::npos) << reader << ": " << s;
     EXPECT_NE(s.find(R"("/robot0/sensors":601)"), std::string::npos) << reader << ": " << s;
+    EXPECT_NE(s.find(R"("/robot0/belief":601)"), std::string::npos) << reader << ": " << s;
     EXPECT_NE(s.find(counts), std::string::npos) << reader << ": " << s;
   }
   EXPECT_TRUE(has(R"("stream_done":true)"));

@@ -10,7 +10,7 @@
 const path = require("path");
 const fs = require("fs");
 const [modules, file] = process.argv.slice(2);
-const { McapStreamReader, McapIndexedReader } = require(path.join(modules, "@mcap/core"));
+const { McapStreamReader, McapIndexedReader } = require(path.resolve(modules, "@mcap/core"));
 
 async function main() {
   const bytes = fs.readFileSync(file);
