@@ -2,7 +2,7 @@
 // costs. 1 and 3 robots walking with the builtin program (Motion, and
 // Perception at 30 Hz with team messages), inline; each run timed in CPU
 // seconds of this process without a recorder and with one at the default
-// rate (30 Hz), interleaved, the fastest of --repeats each; then the
+// rate (20 Hz), interleaved, the fastest of --repeats each; then the
 // recording's size per robot per simulated minute.
 //
 //   bench_record [--seconds S] [--repeats N]     (defaults 20 s, 3)

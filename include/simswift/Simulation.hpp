@@ -120,7 +120,7 @@ class Simulation {
   // complete once finishRecording() runs or the Simulation goes. Throws
   // std::runtime_error if the file cannot be written, std::logic_error if a
   // recording is already running, std::invalid_argument for a bad rate.
-  void record(const std::string& path, double rate_hz = 30);
+  void record(const std::string& path, double rate_hz = 20);
   // Writes the recording's index and closes it (nothing if none runs).
   void finishRecording();
 

@@ -19,11 +19,11 @@
 namespace simswift::record {
 
 struct RecordOptions {
-  // Samples per simulated second of the poses (/tf), joints and sensors, in
-  // (0, 1000]; one per tick at most (a 10 ms tick: 100 Hz). 30 Hz: Foxglove
-  // and the viewer replay it smoothly, and it costs under a tenth of the
-  // run's speed (docs/recording.md, bench/bench_record).
-  static constexpr double kDefaultRateHz = 30;
+  // Samples per simulated second of the poses (/tf), joints, sensors and
+  // beliefs, in (0, 1000]; one per tick at most (a 10 ms tick: 100 Hz).
+  // 20 Hz: smooth enough to replay, and under a tenth of the run's speed
+  // (30 Hz cost 10.6 % with one robot: docs/recording.md, bench/bench_record).
+  static constexpr double kDefaultRateHz = 20;
   double rate_hz = kDefaultRateHz;
   // Camera images (both cameras of every robot) when the run renders them,
   // as PNG: images per simulated second, at most the cameras' 30 Hz. 10:

@@ -139,7 +139,7 @@ TEST(Recording, WalkOneOpensInTheMcapProjectsReader) {
                         R"("/team/sent":{"schema":"simswift.TeamMessage","encoding":"json"})",
                         R"("/robot0/belief":{"schema":"simswift.Belief","encoding":"json"})"})
     EXPECT_TRUE(has(c)) << c;
-  // 20 s at 30 Hz: 601 samples (t = 0.01 s, then every 1/30 s to 20 s) of
+  // 20 s at 20 Hz: 401 samples (t = 0.01 s, then every 0.05 s to 20 s) of
   // poses, joints, sensors; one scene; both
   // readers count the same.
   for (const char* reader : {"stream", "indexed"}) {
@@ -148,10 +148,10 @@ TEST(Recording, WalkOneOpensInTheMcapProjectsReader) {
     const std::regex section(std::string("\"") + reader + R"(":\{([^}]*)\})");
     ASSERT_TRUE(std::regex_search(j, m, section)) << reader;
     const std::string s = m[1];
-    EXPECT_NE(s.find(R"("/tf":601)"), std::string::npos) << reader << ": " << s;
-    EXPECT_NE(s.find(R"("/robot0/joints":601)"), std::string::npos) << reader << ": " << s;
-    EXPECT_NE(s.find(R"("/robot0/sensors":601)"), std::string::npos) << reader << ": " << s;
-    EXPECT_NE(s.find(R"("/robot0/belief":601)"), std::string::npos) << reader << ": " << s;
+    EXPECT_NE(s.find(R"("/tf":401)"), std::string::npos) << reader << ": " << s;
+    EXPECT_NE(s.find(R"("/robot0/joints":401)"), std::string::npos) << reader << ": " << s;
+    EXPECT_NE(s.find(R"("/robot0/sensors":401)"), std::string::npos) << reader << ": " << s;
+    EXPECT_NE(s.find(R"("/robot0/belief":401)"), std::string::npos) << reader << ": " << s;
     EXPECT_NE(s.find(counts), std::string::npos) << reader << ": " << s;
   }
   EXPECT_TRUE(has(R"("stream_done":true)"));
