@@ -101,3 +101,19 @@ TEST(RecordCommands, TestRecordFailuresKeepsAndNamesTheFailingRuns) {
             std::string::npos);
   EXPECT_EQ(shell(kBin + " test " + d + "/tiny.yaml --record sometimes").code, 2);
 }
+
+TEST(RecordCommands, ExperimentRecordsTheChosenTrials) {
+  const std::string d = freshDir("experiment");
+  const auto r = shell(kBin + " experiment " + SIMSWIFT_SOURCE_DIR + "/scenarios/findball_quick.yaml --trial 0 --record 0 --out " +
+                       d + "/out");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string b = bytes(d + "/out/recordings/trial_0.mcap");
+  ASSERT_GT(b.size(), 16u) << r.output;
+  EXPECT_EQ(b.substr(b.size() - 8), std::string("\x89MCAP0\r\n", 8));  // complete
+  // Each robot's belief through the observer hook: its behaviour's activity.
+  EXPECT_NE(b.find("\"behaviour\":\"findball2016\""), std::string::npos);
+  EXPECT_NE(b.find("robot2: penalised manual"), std::string::npos);
+  const auto bad = shell(kBin + " experiment " + SIMSWIFT_SOURCE_DIR + "/scenarios/findball_quick.yaml --record 99 --out " + d +
+                         "/bad");
+  EXPECT_EQ(bad.code, 2) << bad.output;
+}
