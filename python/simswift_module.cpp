@@ -168,7 +168,10 @@ PYBIND11_MODULE(simswift, m) {
       .def_property_readonly("ticks", &sa::Simulation::ticks)
       .def_property_readonly("state_hash", &sa::Simulation::stateHash)
       .def_property_readonly("ball", &sa::Simulation::ball)
-      .def("place_ball", &sa::Simulation::placeBall, py::arg("x"), py::arg("y"));
+      .def("place_ball", &sa::Simulation::placeBall, py::arg("x"), py::arg("y"))
+      .def("record", &sa::Simulation::record, py::arg("path"), py::arg("rate_hz") = 20.0,
+           "record the run from the next step on as MCAP (docs/recording.md)")
+      .def("finish_recording", &sa::Simulation::finishRecording, "complete and close the recording");
 
   m.def(
       "run_experiment",

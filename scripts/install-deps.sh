@@ -12,6 +12,7 @@ pkgs=(build-essential cmake pkg-config git
       libboost-math-dev   # the report's statistics (app/experiment/Statistics.cpp)
       libmsgpack-dev      # the LoLA protocol (sim/lola): msgpack-c
       libcli11-dev        # the programs' command lines (app/cli): CLI11, header-only
+      nodejs npm          # tests/record: the MCAP project's reader (@mcap/core from npm) reads a recording
       libxml2-utils       # xmllint: the JUnit XML of `simswift test` checked against its schema (tests/scenario_tests)
       clang libclang-rt-14-dev)   # libFuzzer targets (docs/testing.md, "Fuzzing the loaders")
 missing=()

@@ -12,6 +12,7 @@
 
 #include "common/libagent/AgentShared.hpp"
 #include "sim/programs/Programs.hpp"
+#include "sim/record/Recorder.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/runner/Scenario.hpp"
 #include "sim/world/FieldConfig.hpp"
@@ -56,6 +57,7 @@ auto translated(F&& f) -> decltype(f()) {
 struct Simulation::Impl {
   explicit Impl(runner::Scenario sc) : runner(std::move(sc)) {}
   runner::Runner runner;
+  std::unique_ptr<record::Recorder> recorder;  // Simulation::record (after the runner: goes first)
   std::vector<std::shared_ptr<JointValues>> held;  // setJoints' commands, by robot (null: none)
   bool begun = false;    // start() was called (a controller is too late from here on)
   bool started = false;  // ... and succeeded
@@ -96,6 +98,31 @@ Simulation Simulation::fromYaml(const std::string& text, const std::string& name
 void Simulation::step() {
   impl_->start();
   impl_->runner.tick();
+}
+
+void Simulation::record(const std::string& path, double rate_hz) {
+  if (impl_->recorder) throw std::logic_error("record(" + path + "): already recording " + impl_->recorder->path());
+  if (!(rate_hz > 0 && rate_hz <= 1000))
+    throw std::invalid_argument("record(" + path + "): rate_hz must be in (0, 1000] (got " + std::to_string(rate_hz) + ")");
+  record::RecordOptions o;
+  o.rate_hz = rate_hz;
+  try {
+    impl_->recorder = std::make_unique<record::Recorder>(path, o);
+  } catch (const record::RecordError& e) {
+    throw std::runtime_error(e.what());
+  }
+  impl_->runner.addObserver(impl_->recorder.get());
+}
+
+void Simulation::finishRecording() {
+  if (!impl_->recorder) return;
+  impl_->runner.removeObserver(impl_->recorder.get());
+  std::unique_ptr<record::Recorder> rec = std::move(impl_->recorder);
+  try {
+    rec->finish();
+  } catch (const record::RecordError& e) {
+    throw std::runtime_error(e.what());
+  }
 }
 
 double Simulation::run(double seconds, const std::function<bool(const Simulation&)>& until) {

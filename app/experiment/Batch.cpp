@@ -75,7 +75,8 @@ std::string endOfBatch(const Experiment& e, const BatchOptions& opt, BatchOutcom
 
 void runAndWriteTrial(const Experiment& e, const TrialHooks& hooks, int trial, const std::string& dir) {
   // Launched programs' logs and setups: dir/trials/<trial>/.
-  TrialResult r = runTrial(e, trial, hooks, dir + "/trials/" + std::to_string(trial));
+  const std::string rec = hooks.record.count(trial) ? dir + "/recordings/trial_" + std::to_string(trial) + ".mcap" : "";
+  TrialResult r = runTrial(e, trial, hooks, dir + "/trials/" + std::to_string(trial), rec);
   // This process's peak resident memory: the trial's worker (ru_maxrss is in
   // KiB on Linux; launched robot programs are processes of their own).
   rusage usage{};

@@ -45,6 +45,12 @@ ExperimentCommand::ExperimentCommand(CLI::App& parent) {
                                  "(to debug or repeat one trial; its seed is in results.csv)")
                     ->type_name("I")
                     ->transform(cli::wholeNumber(0, kMaxCount)));
+  own.push_back(cmd_->add_option("--record", record_,
+                                 "record these trials as MCAP in DIR/recordings/trial_<I>.mcap\n"
+                                 "(docs/recording.md; `simswift view` replays them)")
+                    ->type_name("I,J,...")
+                    ->delimiter(',')
+                    ->transform(cli::wholeNumber(0, kMaxCount)));
   own.push_back(
       cmd_->add_flag("--check", check_, "validate the file (and that this build runs its behaviours), run nothing"));
 
@@ -56,7 +62,9 @@ ExperimentCommand::ExperimentCommand(CLI::App& parent) {
 
 bool ExperimentCommand::chosen() const { return cmd_->parsed(); }
 
-int ExperimentCommand::run(const TrialHooks& hooks) const {
+int ExperimentCommand::run(const TrialHooks& given) const {
+  TrialHooks hooks = given;
+  hooks.record.insert(record_.begin(), record_.end());
   try {
     if (merge_->parsed()) {
       const BatchOutcome o = mergeRuns(merge_dirs_, merge_out_);
@@ -84,6 +92,10 @@ int ExperimentCommand::run(const TrialHooks& hooks) const {
                   : opt.shards == 1 ? "results/" + e.name
                                     : "results/" + e.name + "-shard" + std::to_string(opt.shard) + "of" +
                                           std::to_string(opt.shards);
+    for (const int t : record_)
+      if (t >= e.numTrials())
+        return cli::usageError(*cmd_, "--record: no trial " + std::to_string(t) + " (the experiment has trials 0.." +
+                                          std::to_string(e.numTrials() - 1) + ")");
     if (trial_) {
       const TrialResult r =
           parseCsvRow(runSingleTrial(e, hooks, *trial_, opt.out_dir), static_cast<int>(e.sweep.size()));

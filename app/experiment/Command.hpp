@@ -41,6 +41,7 @@ class ExperimentCommand {
   std::string shard_;
   std::string progress_;
   std::optional<int> trial_;
+  std::vector<int> record_;  // --record: trial indices
   bool check_ = false;
 };
 

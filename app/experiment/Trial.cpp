@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 
 #include "common/libagent/SharedNames.hpp"
 #include "sim/programs/Programs.hpp"
+#include "sim/record/Recorder.hpp"
 
 namespace simswift::experiment {
 
@@ -259,16 +261,28 @@ void recordFailure(TrialState& s, const Experiment& e, const runner::ProgramErro
 
 }  // namespace
 
-TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs) {
+TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs,
+                     const std::string& record_path) {
   const auto wall0 = std::chrono::steady_clock::now();  // timing only
   TrialState s = setUpTrial(e, index, hooks, program_logs);  // 1.
+  std::unique_ptr<record::Recorder> rec;  // watches the ticks; changes nothing
   try {
     startRunner(s, hooks);     // 2.
+    if (!record_path.empty()) {
+      std::filesystem::create_directories(std::filesystem::path(record_path).parent_path());
+      rec = std::make_unique<record::Recorder>(record_path);
+      s.runner->addObserver(rec.get());
+      rec->begin(*s.runner);
+    }
     playUntilFound(s, hooks);  // 3.
     classifyOutcome(s);        // 4.
     recordRunStats(s);         // 5.
   } catch (const runner::ProgramError& err) {
     recordFailure(s, e, err);
+  }
+  if (rec) {
+    if (s.runner) s.runner->removeObserver(rec.get());
+    rec->finish();
   }
   s.result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();  // 6.
   return s.result;

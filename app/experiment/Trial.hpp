@@ -49,7 +49,9 @@ namespace simswift::experiment {
 // Runs trial `index`. Launched robot programs (program: {command: ...})
 // start fresh for the trial, their logs and setups in program_logs ("" =
 // the experiment's default); if one fails the result says so in `failed`.
-TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs = "");
+// record_path: the trial recorded as MCAP there ("" = not recorded).
+TrialResult runTrial(const Experiment& e, int index, const TrialHooks& hooks, const std::string& program_logs = "",
+                     const std::string& record_path = "");
 
 // Trial `index` through runTrial's stages 1-2: its scenario with the
 // behaviour hooks, the robot programs inline, the robots on their start

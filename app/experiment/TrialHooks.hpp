@@ -12,6 +12,7 @@
 #pragma once
 
 #include <memory>
+#include <set>
 
 #include "app/experiment/Experiment.hpp"
 #include "sim/runner/Runner.hpp"
@@ -47,6 +48,9 @@ class FoundRule {
 struct TrialHooks {
   std::shared_ptr<const BehaviourFactory> behaviours;
   std::shared_ptr<const FoundRule> found;
+  // `--record I,J,...`: these trials recorded as MCAP (docs/recording.md)
+  // into <out>/recordings/trial_<I>.mcap.
+  std::set<int> record;
 };
 
 // Found by what the robot's vision reports (thesis §5.1: a robot "could both

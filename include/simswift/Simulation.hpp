@@ -114,6 +114,16 @@ class Simulation {
   uint64_t stateHash() const;          // the World's (the same as `simswift run --print-hash-every`); 0 before the first step
   double duration() const;             // the scenario's duration, s
 
+  // Records the run from the next step on as MCAP (docs/recording.md: the
+  // links' and the ball's poses, joints, sensors, events, team messages),
+  // rate_hz samples per simulated second (0 < rate_hz <= 1000). The file is
+  // complete once finishRecording() runs or the Simulation goes. Throws
+  // std::runtime_error if the file cannot be written, std::logic_error if a
+  // recording is already running, std::invalid_argument for a bad rate.
+  void record(const std::string& path, double rate_hz = 20);
+  // Writes the recording's index and closes it (nothing if none runs).
+  void finishRecording();
+
  private:
   friend class Robot;
   friend struct SimulationAccess;

@@ -36,6 +36,10 @@ int64_t TeamNetwork::teamBudgetLeft(int team) const {
 
 void TeamNetwork::send(int from, const uint8_t* bytes, size_t size, int64_t t_us, Channel channel) {
   const Endpoint& src = endpoints_.at(from);
+  // The tick's traffic for observers (lastSent), over the budget or not,
+  // from the block's outbox or a robot's own network: a new tick, a new list.
+  if (!last_sent_.empty() && last_sent_.back().sent_us != t_us) last_sent_.clear();
+  last_sent_.push_back({-1, from, channel, t_us, t_us, std::vector<uint8_t>(bytes, bytes + size)});
   if (config_.budget > 0 && stats_.team_sent[src.team] >= config_.budget) {
     ++stats_.over_budget;
     ++stats_.team_over_budget[src.team];
@@ -77,20 +81,25 @@ std::vector<Delivery> TeamNetwork::deliver(int64_t t_us) {
 void TeamNetwork::exchange(int64_t t_us, const std::vector<al::TeamLink*>& links,
                            const std::function<void(const Delivery&)>& lan) {
   al::TeamPacket p;
+  if (!last_sent_.empty() && last_sent_.back().sent_us != t_us) last_sent_.clear();  // none sent this tick
+  last_delivered_.clear();
   for (int i = 0; i < numEndpoints() && i < static_cast<int>(links.size()); ++i) {
     if (!links[i]) continue;
     // At most a full ring per tick: a program that writes the ring's head
     // (shared memory) cannot keep the simulator draining.
     for (uint32_t n = 0; n < al::kOutboxSlots && links[i]->outbox.pop(p); ++n) send(i, p.bytes, p.size, t_us);
   }
-  for (const Delivery& d : deliver(t_us)) {
+  for (Delivery& d : deliver(t_us)) {
     if (d.channel == Channel::Lan) {
       if (lan) lan(d);
+      last_delivered_.push_back(std::move(d));
       continue;
     }
     al::TeamLink* link = d.to < static_cast<int>(links.size()) ? links[d.to] : nullptr;
     if (!link || !link->inbox.push(d.bytes.data(), d.bytes.size(), t_us, endpoints_[d.from].player))
       ++stats_.inbox_overflow;
+    else
+      last_delivered_.push_back(std::move(d));
   }
 }
 

@@ -1,5 +1,7 @@
 #include "sim/programs/BuiltinProgram.hpp"
 
+#include <cstring>
+
 #include "sim/bridge/BodyHost.hpp"
 #include "sim/programs/FindBallObserver.hpp"
 #include "sim/programs/Errors.hpp"
@@ -36,6 +38,22 @@ bool BuiltinProgram::findBallView(sim::views::FindBallViewData& out) const {
   const agent::blackboard::FindBallInfo info = program_->board().findball.read();
   if (!info.active) return false;
   out = viewFromInfo(info, slot_.player, slot_.tag);
+  return true;
+}
+
+// The Blackboard's ball, localisation and findball sections (mm -> m).
+bool BuiltinProgram::belief(Belief& out) const {
+  agent::blackboard::Blackboard& b = program_->board();
+  const agent::blackboard::BallEstimate ball = b.ball.read();
+  const agent::blackboard::LocalisationEstimate loc = b.localisation.read();
+  out.ball_known = ball.valid || ball.team_valid;
+  out.ball_x = (ball.valid ? ball.x : ball.team_x) / 1000.0;
+  out.ball_y = (ball.valid ? ball.y : ball.team_y) / 1000.0;
+  out.x = loc.pose.x / 1000.0;
+  out.y = loc.pose.y / 1000.0;
+  out.theta = loc.pose.theta;
+  const agent::blackboard::FindBallInfo fb = b.findball.read();
+  out.behaviour = fb.active ? std::string(fb.activity, strnlen(fb.activity, sizeof fb.activity)) : "";
   return true;
 }
 

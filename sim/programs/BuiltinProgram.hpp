@@ -22,6 +22,7 @@ class BuiltinProgram : public ProgramDriver {
   std::string error() const override { return program_->error(); }
   void join() override { program_->join(); }
   bool findBallView(sim::views::FindBallViewData& out) const override;
+  bool belief(Belief& out) const override;
   agent::program::RobotProgram& program() { return *program_; }
 
  protected:

@@ -38,6 +38,15 @@ struct RobotSlot {
   bridge::BodySide* host = nullptr;  // its body side (libagent's BodyHost, LoLA's LolaBody)
 };
 
+// What a builtin robot program believes, for observers (the recording's
+// /robot<i>/belief, docs/recording.md): field frame, m and rad.
+struct Belief {
+  bool ball_known = false;         // its ball estimate (its own, else its team's) holds a ball
+  double ball_x = 0, ball_y = 0;   // m
+  double x = 0, y = 0, theta = 0;  // its localisation's pose: m, m, rad
+  std::string behaviour;           // what its behaviour does now ("findball2017", "penalised", ...; "" none)
+};
+
 class ProgramDriver {
  public:
   enum class Step { Motion, Perception };  // a tick, a camera frame
@@ -84,6 +93,10 @@ class ProgramDriver {
   // draws it (what the robot itself believes), filled by the program side
   // between ticks. False: nothing to show (no search published).
   virtual bool findBallView(sim::views::FindBallViewData& /*out*/) const { return false; }
+  // The observer hook for what the program believes (its ball estimate,
+  // its pose, its behaviour's state), between ticks. False: not known (a
+  // program simswift does not compose).
+  virtual bool belief(Belief& /*out*/) const { return false; }
 
   const RobotSlot& slot() const { return slot_; }
 

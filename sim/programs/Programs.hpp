@@ -94,6 +94,7 @@ class Programs {
   void build(const ProgramRun& run, const std::vector<ProgramEntry>& robots);
   bool built() const { return built_; }
   ProgramDriver& driver(int i) { return *robots_[i].driver; }
+  const ProgramDriver& driver(int i) const { return *robots_[i].driver; }
   int size() const { return static_cast<int>(robots_.size()); }
 
   // Robot i's builtin program (null for an external one, or before the
