@@ -33,12 +33,14 @@
 
   async function getJson(url) {
     S.pending++;
+    S.generation = (S.generation || 0) + 1;  // a change to draw (frame())
     try {
       const r = await fetch(url);
       if (!r.ok) throw new Error(url + ': ' + r.status + ' ' + (await r.text()));
       return await r.json();
     } finally {
       S.pending--;
+      S.dirty = true;
     }
   }
   const topicUrl = (path, topic, params) =>
@@ -69,6 +71,7 @@
     controls = new THREE.OrbitControls(camera, renderer.domElement);
     controls.target.set(0, 0, 0);
     controls.update();
+    controls.addEventListener('change', () => { S.dirty = true; });
     S.webgl = true;
   } catch (e) {
     $('notice').textContent = 'No WebGL in this browser: the 3D view is off (timeline, plots and images still work).';
@@ -202,7 +205,7 @@
     camera.aspect = el.clientWidth / Math.max(1, el.clientHeight);
     camera.updateProjectionMatrix();
   }
-  window.addEventListener('resize', () => { resize(); drawTimeline(); });
+  window.addEventListener('resize', () => { resize(); S.dirty = true; });
 
   // ---------------------------------------------------------------- data
   function tfBlock(b) {
@@ -401,14 +404,22 @@
 
   // ---------------------------------------------------------------- the loop
   let lastFrame = null, urlT = null;
+  // Draws only when something changed (the cursor, data arriving, the
+  // controls): a still page costs nothing, which matters on a CPU renderer.
+  let drawnKey = '';
   function frame(now) {
     if (S.ready && S.playing && lastFrame !== null) {
       S.t = Math.min(S.t1, S.t + (now - lastFrame) * 1e6 * S.speed);
       if (S.t >= S.t1) setPlaying(false);
     }
     lastFrame = now;
-    if (S.ready) update();
-    if (renderer) renderer.render(scene, camera);
+    const key = [S.ready, S.t, S.robot, S.joint, S.camera, S.follow, S.pending, S.generation].join();
+    if (key !== drawnKey || S.dirty) {
+      drawnKey = key;
+      S.dirty = false;
+      if (S.ready) update();
+      if (renderer) renderer.render(scene, camera);
+    }
     requestAnimationFrame(frame);
   }
 
