@@ -8,6 +8,7 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -287,12 +288,17 @@ McapFile McapFile::parse(std::string bytes, const std::string& name) {
 }
 
 McapFile McapFile::open(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw McapError(path, 0, "is a folder, not a recording");
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw McapError(path, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream all;
-  all << in.rdbuf();
-  if (in.bad()) throw McapError(path, 0, "read error");
-  return parse(std::move(all).str(), path);
+  const std::streamoff size = in.tellg();
+  if (size < 0 || !std::filesystem::is_regular_file(path, ec))
+    throw McapError(path, 0, "not a regular file (a recording is read whole, with its size known)");
+  std::string bytes(static_cast<std::size_t>(size), '\0');  // read once, into its final place
+  in.seekg(0);
+  if (!in.read(bytes.data(), size)) throw McapError(path, static_cast<std::uint64_t>(in.gcount()), "read error");
+  return parse(std::move(bytes), path);
 }
 
 const McapChannel* McapFile::channelOf(const std::string& topic) const {
