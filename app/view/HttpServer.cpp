@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
 
 namespace simswift::view {
 
@@ -19,7 +20,8 @@ namespace {
 volatile std::sig_atomic_t g_stop = 0;
 void onSignal(int) { g_stop = 1; }
 
-constexpr int kClientTimeoutS = 5;  // a client that stalls mid-request or mid-answer is dropped
+constexpr int kClientTimeoutS = 5;   // s: a client that stalls mid-request or mid-answer is dropped
+constexpr int kMaxConnections = 32;  // open at once
 
 int hexDigit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -157,9 +159,21 @@ void HttpServer::serve(const Handler& handler) {
     timeval tv{kClientTimeoutS, 0};
     ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
     ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);
-    answer(fd, handler);
-    ::close(fd);
+    // A thread per connection: a browser keeps idle connections open
+    // (preconnects), which must not hold up the requests on the others.
+    if (active_ >= kMaxConnections) {
+      ::close(fd);  // more than a page asks for at once: dropped, the browser retries
+      continue;
+    }
+    ++active_;
+    std::thread([this, fd, &handler] {
+      answer(fd, handler);
+      ::close(fd);
+      --active_;
+    }).detach();
   }
+  // Let the answers under way finish (each is bounded by the client timeout).
+  for (int i = 0; active_ > 0 && i < 10 * (kClientTimeoutS + 1); ++i) ::usleep(100000);
 }
 
 void HttpServer::answer(int fd, const Handler& handler) {

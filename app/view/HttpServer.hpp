@@ -1,6 +1,7 @@
 // A small HTTP/1.1 server on the loopback interface for `simswift view`
 // (docs/viewer.md): GET and HEAD only, one request per connection
-// (Connection: close), served one at a time. Requests are parsed by
+// (Connection: close), each connection on a thread of its own (at most
+// 32 at once; the handler must be safe to call from several threads). Requests are parsed by
 // parseRequest (a pure function, tested alone): a bad request line, an
 // unknown method, a path that is not absolute, an invalid or NUL %-escape,
 // or a head over kMaxHead bytes is refused with its status. The handler
@@ -8,6 +9,7 @@
 // (ViewerSite refuses anything but its own names).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -60,6 +62,7 @@ class HttpServer {
   void answer(int fd, const Handler& handler);
   int listen_fd_ = -1;
   int port_ = 0;
+  std::atomic<int> active_{0};  // connections being answered
 };
 
 }  // namespace simswift::view
