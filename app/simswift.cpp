@@ -31,6 +31,7 @@
 #include "sim/programs/Programs.hpp"
 #include "sim/programs/ProgramProcess.hpp"
 #include "sim/runner/Bodies.hpp"
+#include "sim/record/Recorder.hpp"
 #include "sim/runner/RunStats.hpp"
 #include "sim/runner/Runner.hpp"
 
@@ -159,6 +160,18 @@ class RunCommand {
         ->type_name("HZ")
         ->transform(cli::number(1e-3, 100))
         ->needs(findball);
+    CLI::Option* record = cmd_->add_option("--record", record_path_,
+                                           "record the run as MCAP (docs/recording.md): poses, joints,\n"
+                                           "sensors, events, team messages; `simswift view FILE.mcap` replays it")
+                              ->type_name("FILE.mcap")
+                              ->transform(cli::nonEmpty());
+    cmd_->add_option("--record-rate", record_rate_,
+                     "samples per simulated second of poses, joints and sensors (default " +
+                         simswift::runner::formatNumber("%g", simswift::record::RecordOptions::kDefaultRateHz) +
+                         "; at most one per tick)")
+        ->type_name("HZ")
+        ->transform(cli::number(0.1, 1000))
+        ->needs(record);
   }
 
   std::optional<int> loadScenario(simswift::runner::Scenario& sc) const;
@@ -178,6 +191,8 @@ class RunCommand {
   std::optional<std::string> model_, field_, dump_dir_, overview_dir_, resolution_, findball_dir_;
   std::optional<int> every_;
   std::optional<double> findball_rate_;  // frames per simulated s
+  std::optional<std::string> record_path_;  // --record FILE.mcap
+  std::optional<double> record_rate_;       // Hz of simulated time
 };
 
 int RunCommand::run() {
@@ -255,15 +270,32 @@ int RunCommand::runScenario(const simswift::runner::Scenario& sc) {
       if (findball_rate_) fc.rate_hz = *findball_rate_;
       runner.setFindBallView(fc);
     }
+    std::unique_ptr<simswift::record::Recorder> recorder;
+    if (record_path_) {
+      simswift::record::RecordOptions ro;
+      if (record_rate_) ro.rate_hz = *record_rate_;
+      recorder = std::make_unique<simswift::record::Recorder>(*record_path_, ro);
+      runner.addObserver(recorder.get());
+    }
     try {
       const RunStats stats = runner.run(opt_);
       std::printf("%s\n%s", stats.summary().c_str(), stats.robotLines().c_str());
       for (const std::string& log : runner.programs().logs()) std::printf("  program log %s\n", log.c_str());
+      if (recorder) {
+        recorder->finish();
+        std::printf("  recording %s (%llu messages; simswift view %s)\n", recorder->path().c_str(),
+                    static_cast<unsigned long long>(recorder->messages()), recorder->path().c_str());
+      }
       std::fflush(stdout);
     } catch (const WatchdogError& e) {
       // The silent robot thread cannot be joined; remove the named objects
       // and leave without waiting for it.
       std::fprintf(stderr, "simswift: %s\n", e.what());
+      if (recorder) {
+        recorder->event(simswift::record::LogLevel::Error, "watchdog", e.what());
+        recorder->finish();
+        std::fprintf(stderr, "simswift: recording %s\n", recorder->path().c_str());
+      }
       std::fflush(stdout);
       simswift::bridge::cleanup::removeAll();
       _exit(1);

@@ -75,14 +75,21 @@ std::vector<Delivery> TeamNetwork::deliver(int64_t t_us) {
 
 void TeamNetwork::exchange(int64_t t_us, const std::vector<al::TeamLink*>& links) {
   al::TeamPacket p;
+  last_sent_.clear();
+  last_delivered_.clear();
   for (int i = 0; i < numEndpoints() && i < static_cast<int>(links.size()); ++i) {
     if (!links[i]) continue;
-    while (links[i]->outbox.pop(p)) send(i, p.bytes, p.size, t_us);
+    while (links[i]->outbox.pop(p)) {
+      send(i, p.bytes, p.size, t_us);
+      last_sent_.push_back({-1, i, t_us, t_us, std::vector<uint8_t>(p.bytes, p.bytes + p.size)});
+    }
   }
-  for (const Delivery& d : deliver(t_us)) {
+  for (Delivery& d : deliver(t_us)) {
     al::TeamLink* link = d.to < static_cast<int>(links.size()) ? links[d.to] : nullptr;
     if (!link || !link->inbox.push(d.bytes.data(), d.bytes.size(), t_us, endpoints_[d.from].player))
       ++stats_.inbox_overflow;
+    else
+      last_delivered_.push_back(std::move(d));
   }
 }
 

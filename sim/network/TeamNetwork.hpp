@@ -67,6 +67,12 @@ class TeamNetwork {
   // the receivers' inboxes. links[i] belongs to endpoint i (null: none).
   void exchange(int64_t t_us, const std::vector<common::libagent::TeamLink*>& links);
 
+  // The last exchange's traffic, for observers (the recorder): the packets
+  // the robots sent (to = -1, whether or not the budget let them through)
+  // and those handed to a receiver's inbox, in exchange order.
+  const std::vector<Delivery>& lastSent() const { return last_sent_; }
+  const std::vector<Delivery>& lastDelivered() const { return last_delivered_; }
+
   const TeamNetworkStats& stats() const { return stats_; }
   const TeamNetworkConfig& config() const { return config_; }
   int64_t teamBudgetLeft(int team) const;  // -1 if unlimited
@@ -84,6 +90,7 @@ class TeamNetwork {
   std::map<std::pair<int64_t, uint64_t>, Delivery> pending_;
   uint64_t sequence_ = 0;
   TeamNetworkStats stats_;
+  std::vector<Delivery> last_sent_, last_delivered_;
 };
 
 }  // namespace simswift::network

@@ -378,6 +378,7 @@ void Runner::tick() {
   cameraFrame(t_us);
   teamAndGame(t_us);
   captureViews(t_us);
+  for (TickObserver* o : observers_) o->observe(*this, t_us);
 }
 
 void Runner::captureFindBallView(int64_t t_us) {

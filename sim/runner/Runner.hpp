@@ -41,6 +41,8 @@
 //                         counted (never acted on: sim/game/GameControllerUdp)
 //  12. captureViews       FindBall view frames, if asked (drawing only; the
 //                         data from each driver's observer hook)
+//  13. observe           each TickObserver (sim/runner/TickObserver.hpp)
+//                         reads the finished tick: the recorder (sim/record)
 // Robot threads run only inside stages 6-7 and 10, and the runner reads
 // nothing of theirs until all have answered, so the outcome does not depend
 // on thread timing: the same scenario and seed give the same state hash.
@@ -86,6 +88,7 @@
 #include "sim/runner/RunCameras.hpp"
 #include "sim/runner/RunStats.hpp"
 #include "sim/runner/Scenario.hpp"
+#include "sim/runner/TickObserver.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/views/FindBallRecorder.hpp"
 #include "sim/world/World.hpp"
@@ -187,6 +190,11 @@ class Runner {
   // shows a search (ProgramDriver::findBallView, the observer hook) gets a
   // PNG per 1/rate_hz s of simulated time; run() assembles the videos.
   void setFindBallView(const sim::views::FindBallRecorderConfig& c) { findball_view_config_ = c; }
+  // Observers called at the end of every tick (stage 13), in the order
+  // added; not owned (they must outlive the run's ticks).
+  void addObserver(TickObserver* observer) { observers_.push_back(observer); }
+  // Robot i's scenario pushes applied so far (stage 2).
+  int pushesApplied(int i) const { return static_cast<int>(robots_[i]->next_push); }
   // After run(): the overview video line (empty if no overview).
   const std::string& overviewMessage() const { return overview_message_; }
   // Ends the overview (assembles the video) and returns its message; run() calls it.
@@ -260,6 +268,7 @@ class Runner {
   void cameraFrame(int64_t t_us);
   void teamAndGame(int64_t t_us);
   void captureViews(int64_t t_us);
+  std::vector<TickObserver*> observers_;
   std::optional<sim::views::FindBallRecorderConfig> findball_view_config_;
   std::unique_ptr<sim::views::FindBallRecorder> findball_view_;
   void captureFindBallView(int64_t t_us);
