@@ -438,11 +438,19 @@
     if (!S.playing && urlT !== S.t) writeUrl();
   }
 
+  // Keeps the followed body at the view's centre; on starting to follow,
+  // the camera comes close (2 m behind and to the right, 1.1 m up).
+  let followed = null;
   function follow() {
-    if (S.follow === 'none' || !controls) return;
+    if (S.follow === 'none' || !controls) { followed = null; return; }
     const id = S.follow === 'ball' ? 'ball' : robotId(S.robot) + '/' + robotRoot(S.robot);
     const g = frames.get(id);
     if (!g) return;
+    if (followed !== id) {
+      followed = id;
+      controls.target.copy(g.position);
+      camera.position.set(g.position.x - 1.4, g.position.y - 1.4, g.position.z + 1.1);
+    }
     const d = new THREE.Vector3().subVectors(g.position, controls.target);
     controls.target.add(d);
     camera.position.add(d);
@@ -527,7 +535,7 @@
     S.robots = Array.from(S.robots, (r, i) => r || { id: 'robot' + i });
     const sel = $('robot');
     S.robots.forEach((r, i) => sel.add(new Option(r.id + (r.team ? ' (team ' + r.team + ', player ' + r.player + ')' : ''), i)));
-    $('title').textContent = [S.meta.scenario, S.meta.seed !== undefined ? 'seed ' + S.meta.seed : '', S.meta.version ? 'simswift ' + S.meta.version : '',
+    $('title').textContent = [S.meta.scenario ? S.meta.scenario.split('/').pop() : '', S.meta.seed !== undefined ? 'seed ' + S.meta.seed : '', (S.meta.simswift_version || S.meta.version) ? 'simswift ' + (S.meta.simswift_version || S.meta.version) : '',
                               S.meta.commit ? 'commit ' + S.meta.commit : ''].filter(Boolean).join(' · ') || S.info.file;
     document.title = 'simswift view: ' + (S.meta.scenario || S.info.file);
 
