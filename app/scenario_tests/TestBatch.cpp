@@ -1,6 +1,7 @@
 #include "app/scenario_tests/TestBatch.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -58,15 +59,23 @@ class RunJob : public experiment::ForkJob {
   void run(int t) const override {
     const RunSpec s = runSpec(f_, opt_.short_form, t, opt_.seed, opt_.has_seed);
     // Launched programs' logs and setups: DIR/trials/<run>/.
-    writeRun(opt_.out_dir, runTest(f_, s, opt_.out_dir + "/trials/" + std::to_string(t)));
+    RunResult probe;
+    probe.test = f_.tests[s.test].name;
+    probe.run = s.run;
+    const std::string rec = opt_.record == TestOptions::Record::None ? "" : recordingPath(opt_, probe);
+    const RunResult r = runTest(f_, s, opt_.out_dir + "/trials/" + std::to_string(t), "", rec);
+    // --record failures: a passing run's recording is not kept.
+    if (!rec.empty() && r.passed && opt_.record == TestOptions::Record::Failures) std::remove(rec.c_str());
+    writeRun(opt_.out_dir, r);
   }
   bool done(int t) const override { return experiment::trialDone(opt_.out_dir, t); }
   void finished(int t, double) override {
     const RunResult r = readRun(opt_.out_dir, t);
     char what[400];
-    std::snprintf(what, sizeof what, "%s run %d (seed %llu): %s at %.2f s%s%s", r.test.c_str(), r.run,
+    std::snprintf(what, sizeof what, "%s run %d (seed %llu): %s at %.2f s%s%s%s", r.test.c_str(), r.run,
                   static_cast<unsigned long long>(r.seed), r.passed ? "passed" : "failed",
-                  r.passed ? r.decided_s : r.failure_s, r.passed ? "" : ": ", r.failure.c_str());
+                  r.passed ? r.decided_s : r.failure_s, r.passed ? "" : ": ", r.failure.c_str(),
+                  recordingNote(opt_, r).c_str());
     progress_.step(what);
   }
   // A run whose process died (a crash, a hang ended by the watchdog, a
@@ -187,6 +196,20 @@ std::string folderText(const TestFile& f, const TestOptions& opt) {
     for (size_t k = 0; k < f.tests.size(); ++k) t += (k ? "," : "") + f.tests[k].name;
   }
   return t + "\n";
+}
+
+std::string recordingPath(const TestOptions& opt, const RunResult& r) {
+  std::string name = r.test;
+  for (char& c : name)  // a file name whatever the test is called
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  return opt.out_dir + "/recordings/" + name + "_run" + std::to_string(r.run) + ".mcap";
+}
+
+std::string recordingNote(const TestOptions& opt, const RunResult& r) {
+  if (opt.record == TestOptions::Record::None || r.passed) return "";
+  const std::string path = recordingPath(opt, r);
+  if (access(path.c_str(), R_OK) != 0) return "";  // a resumed folder's run recorded before --record
+  return " (recording " + path + ")";
 }
 
 std::string replayCommand(const TestFile& f, const TestOptions& opt, const RunResult& r) {

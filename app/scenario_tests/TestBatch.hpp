@@ -9,6 +9,7 @@
 //   trials/trial_NNNNNN.csv          one results row per run (written last: done)
 //   trials/trial_NNNNNN.timing.csv   its simulated and wall seconds (never in results)
 //   trials/trial_NNNNNN.log          the run's messages, kept only if its process failed
+//   recordings/<test>_run<N>.mcap   with --record: the failing runs' (or every run's) recording
 //   results.csv         every run: test, seed, passed, when, first failure
 //   summary.csv         per test: passes, rate, Wilson interval, verdict (and the
 //                       baseline's figures and p-values with --baseline)
@@ -41,7 +42,15 @@ struct TestOptions {
   std::string junit;              // also write the JUnit XML here ("" = only in out_dir)
   std::string command;            // how this file was run, for the replay commands
   bool progress_lines = true;     // a line per run on stderr
+  // --record: each run recorded as MCAP (docs/recording.md) into
+  // DIR/recordings/, kept for the failing runs only or for all.
+  enum class Record { None, Failures, All } record = Record::None;
 };
+
+// Where run r's recording goes: DIR/recordings/<test>_run<N>.mcap.
+std::string recordingPath(const TestOptions& opt, const RunResult& r);
+// " (recording PATH)" when run r failed and its recording is there, else "".
+std::string recordingNote(const TestOptions& opt, const RunResult& r);
 
 struct TestOutcome {
   int runs = 0, already = 0, ran = 0, failed = 0;

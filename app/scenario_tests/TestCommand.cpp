@@ -84,6 +84,11 @@ TestCommand::TestCommand(CLI::App& parent) {
       ->type_name("DIR")
       ->transform(cli::nonEmpty())
       ->needs(trial);
+  cmd_->add_option("--record", record_,
+                   "record runs as MCAP in DIR/recordings/ (docs/recording.md): failures keeps\n"
+                   "the failing runs' recordings, all every run's (named in the report)")
+      ->type_name("failures|all")
+      ->transform(cli::oneOf({"failures", "all"}));
   cmd_->add_flag("--check", check_, "validate the file and every run's fuzzed placement; run nothing");
   cmd_->add_option("--merge", merge_dirs_, "join shard folders (--shard K/N runs) into --out DIR")
       ->type_name("DIR")
@@ -99,6 +104,7 @@ int TestCommand::run() const {
     opt.shards = s->n;
   }
   if (!progress_.empty()) opt.progress_lines = progress_ == "lines";
+  if (!record_.empty()) opt.record = record_ == "all" ? TestOptions::Record::All : TestOptions::Record::Failures;
   if (seed_) {
     opt.seed = *seed_;
     opt.has_seed = true;
@@ -125,7 +131,12 @@ int TestCommand::run() const {
       s.test = k;
       s.run = *trial_;
       s.seed = runSeed(opt.has_seed ? opt.seed : f.seed, test_name_, s.run);
-      const RunResult r = runTest(f, s, "", overview_);
+      RunResult probe;
+      probe.test = test_name_;
+      probe.run = s.run;
+      const std::string rec = opt.record == TestOptions::Record::None ? "" : recordingPath(opt, probe);
+      const RunResult r = runTest(f, s, "", overview_, rec);
+      if (!rec.empty()) std::printf("recording %s\n", rec.c_str());
       std::printf("%s run %d (seed %llu): %s at %.2f s%s%s (falls %d; %.1f simulated s in %.1f s of wall time)\n",
                   r.test.c_str(), r.run, static_cast<unsigned long long>(r.seed), r.passed ? "passed" : "failed",
                   r.passed ? r.decided_s : r.failure_s, r.passed ? "" : ": ", r.failure.c_str(), r.falls, r.sim_s,

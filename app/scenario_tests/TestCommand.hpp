@@ -36,6 +36,7 @@ class TestCommand {
   TestOptions opt_;
   std::string shard_;
   std::string progress_;
+  std::string record_;  // --record failures|all
   std::optional<uint64_t> seed_;
   std::string test_name_;
   std::optional<int> trial_;

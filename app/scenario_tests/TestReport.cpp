@@ -44,8 +44,8 @@ std::string verdictLine(const TestSummary& s) {
 std::string failureText(const TestFile& f, const TestOptions& opt, const TestSummary& s) {
   std::ostringstream o;
   for (const RunResult& r : s.failures)
-    o << "run " << r.run << " (seed " << r.seed << "): " << r.failure << "\n  replay: " << replayCommand(f, opt, r)
-      << "\n";
+    o << "run " << r.run << " (seed " << r.seed << "): " << r.failure << recordingNote(opt, r)
+      << "\n  replay: " << replayCommand(f, opt, r) << "\n";
   return o.str();
 }
 
@@ -62,7 +62,7 @@ std::string consoleSummary(const TestFile& f, const TestOptions& opt, const std:
     const size_t shown = std::min<size_t>(s.failures.size(), 5);
     for (size_t i = 0; i < shown; ++i) {
       const RunResult& r = s.failures[i];
-      o << "     run " << r.run << " (seed " << r.seed << "): " << r.failure << "\n       replay: "
+      o << "     run " << r.run << " (seed " << r.seed << "): " << r.failure << recordingNote(opt, r) << "\n       replay: "
         << replayCommand(f, opt, r) << "\n";
     }
     if (s.failures.size() > shown)
@@ -139,8 +139,8 @@ std::string reportMarkdown(const TestFile& f, const TestOptions& opt, const std:
       if (s.failures.empty()) continue;
       o << "\n### " << s.name << "\n\n";
       for (const RunResult& r : s.failures)
-        o << "- run " << r.run << " (seed " << r.seed << "): " << r.failure << ". `" << replayCommand(f, opt, r)
-          << "`\n";
+        o << "- run " << r.run << " (seed " << r.seed << "): " << r.failure << recordingNote(opt, r) << ". `"
+          << replayCommand(f, opt, r) << "`\n";
     }
   }
   return o.str();

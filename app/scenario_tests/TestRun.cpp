@@ -2,12 +2,15 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <memory>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
 #include "app/experiment/Csv.hpp"
 #include "app/experiment/Trial.hpp"
+#include "sim/record/Recorder.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Errors.hpp"
 #include "sim/runner/Runner.hpp"
@@ -23,12 +26,20 @@ std::string oneLine(std::string s) {
   return s;
 }
 
-void play(const ScenarioTest& test, runner::Scenario sc, RunResult& res) {
+const char* kSideGoal[2] = {"the goal blue defends (-x)", "the goal red defends (+x)"};
+
+void play(const ScenarioTest& test, const std::string& source, runner::Scenario sc, RunResult& res,
+          record::Recorder* rec) {
   runner::Runner run(sc);
   // The robot programs' steps on this thread (as an experiment's trials:
   // the same results as named threads; one run per core).
   run.programs().setThreading(agent::program::Threading::Inline);
   run.start();
+  if (rec) {
+    run.addObserver(rec);
+    rec->begin(run);
+  }
+  bool in_goal[2] = {false, false};
   ConditionRun cond(test.pass, test.field);
   const int64_t ticks = run.world().ticksIn(test.time_limit);
   const double tick_s = run.world().tickSeconds();
@@ -39,6 +50,11 @@ void play(const ScenarioTest& test, runner::Scenario sc, RunResult& res) {
     run.tick();
     ++k;
     truth = observe(run, static_cast<double>(k) * tick_s, &truth);
+    for (int side = 0; side < 2 && rec; ++side) {
+      const bool now = truth.has_ball && ballInGoal(truth, test.field, side);
+      if (now && !in_goal[side]) rec->event(record::LogLevel::Info, "goal", std::string("goal: the ball in ") + kSideGoal[side]);
+      in_goal[side] = now;
+    }
     v = cond.update(truth);
   }
   if (v == Verdict3::Pending) v = cond.finish(truth);
@@ -48,6 +64,13 @@ void play(const ScenarioTest& test, runner::Scenario sc, RunResult& res) {
     res.failure = cond.failure();
     res.failure_s = cond.failureTime();
   }
+  if (rec) {
+    char when[64];
+    std::snprintf(when, sizeof when, " at %.2f s", res.passed ? res.decided_s : res.failure_s);
+    rec->event(res.passed ? record::LogLevel::Info : record::LogLevel::Error, "verdict",
+               test.name + (res.passed ? ": passed" : ": failed") + when + (res.passed ? "" : ": " + res.failure),
+               source, test.line);
+  }
   for (const RobotTruth& r : truth.robots) res.falls += r.falls;
   res.sim_s = static_cast<double>(k) * tick_s;
 }
@@ -55,7 +78,7 @@ void play(const ScenarioTest& test, runner::Scenario sc, RunResult& res) {
 }  // namespace
 
 RunResult runTest(const TestFile& f, const RunSpec& spec, const std::string& program_logs,
-                  const std::string& overview_dir) {
+                  const std::string& overview_dir, const std::string& record_path) {
   using Clock = std::chrono::steady_clock;  // wall clock: reporting only
   const auto wall0 = Clock::now();
   const ScenarioTest& test = f.tests.at(spec.test);
@@ -72,9 +95,15 @@ RunResult runTest(const TestFile& f, const RunSpec& spec, const std::string& pro
   }
   for (runner::RobotSpec& r : sc.robots)
     if (r.body == bridge::BodyInterface::Lola) r.lola_socket.clear();  // private to this process
+  std::unique_ptr<record::Recorder> rec;
+  if (!record_path.empty()) {
+    std::filesystem::create_directories(std::filesystem::path(record_path).parent_path());
+    rec = std::make_unique<record::Recorder>(record_path);
+  }
   try {
-    play(test, sc, res);
+    play(test, f.source, sc, res, rec.get());
   } catch (const runner::ProgramError& err) {
+    if (rec) rec->event(record::LogLevel::Error, "verdict", std::string("robot program failed: ") + err.what());
     const std::string name = res.test;
     const int run = res.run;
     res = RunResult{};
@@ -85,6 +114,7 @@ RunResult runTest(const TestFile& f, const RunSpec& spec, const std::string& pro
     res.failure = "robot program failed: " + err.brief;
     std::fprintf(stderr, "%s run %d failed: %s\n", name.c_str(), run, err.what());
   }
+  if (rec) rec->finish();
   res.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
   return res;
 }

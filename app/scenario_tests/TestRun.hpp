@@ -30,8 +30,10 @@ struct RunResult {
 // Runs it. A launched program that fails is a failed run (failure says why,
 // without pids or paths). program_logs: launched programs' logs ("" = the
 // scenario's); overview_dir: whole-field overview PNGs of the run ("" = none).
+// record_path: the run's MCAP recording (docs/recording.md; "" = none),
+// with the goals and the verdict among its events.
 RunResult runTest(const TestFile& f, const RunSpec& spec, const std::string& program_logs = "",
-                  const std::string& overview_dir = "");
+                  const std::string& overview_dir = "", const std::string& record_path = "");
 
 // results.csv
 std::string resultsHeader();

@@ -56,6 +56,7 @@ void Recorder::finish() { writer_.close(); }
 // The metadata, every channel (so a streaming reader sees them all before
 // any message) and the scene at t = 0.
 void Recorder::begin(const runner::Runner& r) {
+  if (begun_) return;
   begun_ = true;
   const runner::Scenario& sc = r.scenario();
   const World& w = r.world();
@@ -114,7 +115,7 @@ void Recorder::begin(const runner::Runner& r) {
 }
 
 void Recorder::observe(const runner::Runner& r, int64_t t_us) {
-  if (!begun_) begin(r);
+  begin(r);
   const uint64_t t_ns = static_cast<uint64_t>(t_us) * 1000;
   last_t_ns_ = t_ns;
   // Sample k is due once t_us * rate / 1e6 reaches k (the first tick: 0).

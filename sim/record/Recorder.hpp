@@ -44,6 +44,9 @@ class Recorder : public runner::TickObserver {
   Recorder(const Recorder&) = delete;
   Recorder& operator=(const Recorder&) = delete;
 
+  // The metadata, the channels and the scene, at t = 0 (after the
+  // Runner's start; observe() does it at the first tick if not called).
+  void begin(const runner::Runner& runner);
   void observe(const runner::Runner& runner, int64_t t_us) override;
   // An event only the caller knows (a test's verdict, the watchdog), on
   // /events at the last observed time. kind: the event's name (verdict,
@@ -61,7 +64,6 @@ class Recorder : public runner::TickObserver {
   struct RobotChannels {
     uint16_t joints, sensors, belief, camera_top, camera_bottom;
   };
-  void begin(const runner::Runner& runner);
   void writeScene(const runner::Runner& runner);
   void writeSample(const runner::Runner& runner, uint64_t t_ns);
   void writeEvents(const runner::Runner& runner, uint64_t t_ns);
