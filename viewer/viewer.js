@@ -281,6 +281,9 @@
     const key = topic + '@' + S.t;
     if (!S.topics.has(topic)) { S[slot] = null; S[slot + 'Key'] = key; return; }
     if (S[slot + 'Key'] === key || S[slot + 'Loading']) return;
+    // While playing, at most one fetch per 100 ms of run time (camera images are large).
+    if (S.playing && S[slot + 'At'] !== undefined && Math.abs(S.t - S[slot + 'At']) < 0.1 * NS) return;
+    S[slot + 'At'] = S.t;
     S[slot + 'Loading'] = true;
     getJson(topicUrl('/api/at', topic, { t: S.t }))
       .then((m) => { S[slot] = m.data ? m : null; S[slot + 'Key'] = key; })
@@ -409,7 +412,9 @@
   let drawnKey = '';
   function frame(now) {
     if (S.ready && S.playing && lastFrame !== null) {
-      S.t = Math.min(S.t1, S.t + (now - lastFrame) * 1e6 * S.speed);
+      // At most 100 ms of wall clock per frame: a browser that draws seldom
+      // (a hidden tab, a loaded machine) plays slower rather than leaping.
+      S.t = Math.min(S.t1, S.t + Math.min(now - lastFrame, 100) * 1e6 * S.speed);
       if (S.t >= S.t1) setPlaying(false);
     }
     lastFrame = now;

@@ -10,7 +10,7 @@ file's own (not the server's): the drawn pose of every frame (the robot's
 links, the ball) against /tf at that time, the timeline's time, the
 selected robot's plot values against /robot0/joints and /robot0/sensors;
 one tick on with the step button; ?t=&robot= opening the page at a time;
-and no error in the console or the page. Keeps a screenshot (--out).
+play and pause; and no error in the console or the page. Keeps a screenshot (--out).
 
 Exit 0 pass, 1 fail, 77 skipped (no chromium, chromedriver or selenium:
 scripts/install-deps.sh installs them; CI has them).
@@ -228,6 +228,22 @@ def main():
         driver.get(url + '?t=%g&robot=0' % t_open)
         s = settled()
         check(abs(s['t_s'] - t_open) < 1e-9, '?t=%g opens the page there: %r' % (t_open, s['t_s']))
+        check_pose(s, s['t_ns'])
+
+        # Play at 0.1x (a slow machine must not reach the end between the clicks), then pause.
+        from selenium.webdriver.support.ui import Select
+        Select(driver.find_element(By.ID, 'speed')).select_by_visible_text('0.1')
+        driver.find_element(By.ID, 'play').click()
+        deadline = time.time() + SETTLE_S
+        while driver.execute_script('return window.simswiftView.state().t_s') <= t_open and time.time() < deadline:
+            time.sleep(0.05)
+        driver.find_element(By.ID, 'play').click()
+        s = settled()
+        time.sleep(0.3)
+        later = settled()
+        check(not s['playing'] and s['speed'] == 0.1 and s['t_s'] > t_open and later['t_ns'] == s['t_ns'],
+              'play moves the cursor on and pause stops it: t %r s then %r s, playing %r' %
+              (s['t_s'], later['t_s'], s['playing']))
         check_pose(s, s['t_ns'])
 
         errors = [e for e in driver.get_log('browser') if e['level'] == 'SEVERE']
