@@ -85,7 +85,6 @@ class Cursor {
     return std::string(bytes(n, field));
   }
   std::map<std::string, std::string> map(const char* field) {
-    const std::uint64_t at = pos_;
     const std::uint32_t n = uint<std::uint32_t>(field);
     need(n, field);
     Cursor inner(f_, pos_, pos_ + n, what_);
@@ -94,7 +93,6 @@ class Cursor {
       std::string k = inner.string(field);
       m[k] = inner.string(field);
     }
-    (void)at;
     pos_ += n;
     return m;
   }
