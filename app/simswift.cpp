@@ -1,7 +1,7 @@
 // simswift: runs a scenario headless, as fast as it can (or paced with
 // --realtime), and prints a one-line summary; and its other subcommands:
 // experiment [merge] (app/experiment/Command.cpp), test
-// (app/scenario_tests/TestCommand.cpp), clean, attach. The command line is
+// (app/scenario_tests/TestCommand.cpp), clean, attach, view (app/view/ViewCommand.cpp). The command line is
 // declared once, with CLI11 (app/cli): `simswift [SUBCOMMAND] --help` prints
 // what the parser reads.
 //
@@ -37,6 +37,7 @@
 #include "app/experiment/BehaviourHooks.hpp"
 #include "app/experiment/Command.hpp"
 #include "app/scenario_tests/TestCommand.hpp"
+#include "app/view/ViewCommand.hpp"
 #include "sim/lola/LolaServer.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
@@ -607,6 +608,7 @@ int main(int argc, char** argv) {
   simswift::scenario_tests::TestCommand test(app);
   CleanCommand clean(app);
   AttachCommand attach(app);
+  simswift::view::ViewCommand view(app);
 
   if (const std::optional<int> code = checkFirstWord(app, argc, argv)) return *code;
   std::vector<std::string> command;
@@ -617,5 +619,6 @@ int main(int argc, char** argv) {
   if (experiment.chosen()) return experiment.run(simswift::experiment::behaviourHooks());  // agent/behaviour's
   if (test.chosen()) return test.run();
   if (clean.chosen()) return clean.run();
+  if (view.chosen()) return view.run();
   return attach.run(command);
 }

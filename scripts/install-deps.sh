@@ -13,6 +13,8 @@ pkgs=(build-essential cmake pkg-config git
       libmsgpack-dev      # the LoLA protocol (sim/lola): msgpack-c
       libcli11-dev        # the programs' command lines (app/cli): CLI11, header-only
       nodejs npm          # tests/record: the MCAP project's reader (@mcap/core from npm) reads a recording
+      libjs-three         # three.js r111 for `simswift view`'s page (served from /usr/share/javascript/three)
+      chromium chromium-driver python3-selenium   # the viewer's browser test (tests/view/browser_test.py)
       libxml2-utils       # xmllint: the JUnit XML of `simswift test` checked against its schema (tests/scenario_tests)
       clang libclang-rt-14-dev)   # libFuzzer targets (docs/testing.md, "Fuzzing the loaders")
 missing=()

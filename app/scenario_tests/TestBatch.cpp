@@ -209,7 +209,10 @@ std::string recordingNote(const TestOptions& opt, const RunResult& r) {
   if (opt.record == TestOptions::Record::None || r.passed) return "";
   const std::string path = recordingPath(opt, r);
   if (access(path.c_str(), R_OK) != 0) return "";  // a resumed folder's run recorded before --record
-  return " (recording " + path + ")";
+  // The viewer opened at the failing moment (docs/viewer.md).
+  char at[32];
+  std::snprintf(at, sizeof at, "%.3f", r.failure_s);
+  return " (recording " + path + ") (at the failure: simswift view " + path + " --at " + at + ")";
 }
 
 std::string replayCommand(const TestFile& f, const TestOptions& opt, const RunResult& r) {

@@ -52,7 +52,8 @@ const std::vector<Command> kCommands = {
      {"--short", "--only", "--out", "--jobs", "--shard", "--seed", "--baseline", "--alpha", "--junit", "--progress",
       "--test", "--trial", "--overview", "--record", "--check", "--merge"}},
     {kSimswift + " clean", {"--team", "--player"}},
-    {kSimswift + " attach", {"--team", "--player", "--socket", "--clock"}},
+    {kSimswift + " attach", {"--team", "--player", "--socket", "--clock", "--wait"}},
+    {kSimswift + " view", {"--port", "--no-browser", "--at"}},
     {kAgent,
      {"--team", "--player", "--config", "--behaviour", "--seed", "--start", "--bare", "--posture", "--move", "--at",
       "--print", "--attach-timeout", "--lola"}},
@@ -87,7 +88,7 @@ TEST(CommandLine, EachHelpListsTheOptionsItsParserTakes) {
   // The top level names every subcommand.
   const ShellResult top = shell(kSimswift + " --help");
   EXPECT_EQ(top.code, 0) << top.output;
-  for (const char* sub : {"run", "experiment", "test", "clean", "attach"})
+  for (const char* sub : {"run", "experiment", "test", "clean", "attach", "view"})
     EXPECT_NE(top.output.find(std::string("\n  ") + sub + " "), std::string::npos) << sub << "\n" << top.output;
   EXPECT_EQ(shell(kSimswift + " help").output, top.output);
 }
@@ -100,6 +101,7 @@ TEST(CommandLine, AnUnknownOptionExitsTwoNamingIt) {
   expectRefused(kSimswift + " test x.yaml --bogus", "--bogus");
   expectRefused(kSimswift + " clean --bogus", "--bogus");
   expectRefused(kSimswift + " attach --bogus -- true", "--bogus");
+  expectRefused(kSimswift + " view x.mcap --bogus", "--bogus");
   expectRefused(kSimswift + " --bogus", "unknown option '--bogus'");
   expectRefused(kSimswift + " bogus", "unknown command 'bogus'");
   expectRefused(kAgent + " --bogus", "--bogus");

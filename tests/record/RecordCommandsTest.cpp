@@ -87,6 +87,7 @@ TEST(RecordCommands, TestRecordFailuresKeepsAndNamesTheFailingRuns) {
   // report.md and the JUnit failure.
   EXPECT_NE(r.output.find("never_scores run 0 (seed"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("(recording " + rec0 + ")"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(at the failure: simswift view " + rec0 + " --at "), std::string::npos) << r.output;  // docs/viewer.md
   EXPECT_NE(readText(d + "/out/report.md").find("(recording " + rec1 + ")"), std::string::npos);
   EXPECT_NE(readText(d + "/junit.xml").find("(recording " + rec1 + ")"), std::string::npos);
   // The recording ends with the verdict, an ERROR naming the condition.
