@@ -239,6 +239,7 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const ProgramRun& run, con
   argv[0] = ProgramProcess::resolveCommand(argv[0], run.base_dir);
   std::vector<std::pair<std::string, std::string>> env;
   for (const auto& [k, v] : e.launch.env) env.emplace_back(k, ProgramProcess::fill(v, values));
+  const std::string cwd = ProgramProcess::fill(e.launch.cwd, values);
   std::unique_ptr<ClockPage> clock = clockPage(run, e);
   std::unique_ptr<ProgramProcess> process;
   try {
@@ -255,16 +256,11 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const ProgramRun& run, con
       env.erase(std::remove_if(env.begin(), env.end(), [&](const auto& x) { return x.first == kv.first; }), env.end());
       env.push_back(std::move(kv));
     }
-    process = std::make_unique<ProgramProcess>(slot.tag, argv, ProgramProcess::fill(e.launch.cwd, values), env,
-                                               (logs / (slot.tag + ".log")).string(), e.launch.stop_grace_s,
-                                               robocup);
-}
-
-  const std::string cwd = ProgramProcess::fill(e.launch.cwd, values);
-  std::unique_ptr<ProgramProcess> process;
-  try {
+    ProgramView view = programView(e, logs, robocup, argv, cwd, env, config);
     process = std::make_unique<ProgramProcess>(slot.tag, argv, cwd, env, (logs / (slot.tag + ".log")).string(),
-                                               e.launch.stop_grace_s, programView(e, logs, robocup, argv, cwd, env, config));
+                                               e.launch.stop_grace_s, std::move(view));
+  } catch (const ProgramError&) {
+    throw;  // already names the robot and says what (programView)
   } catch (const std::runtime_error& err) {
     throw ProgramError(err.what(), slot.tag + ": program could not be started");
   }
