@@ -65,12 +65,10 @@ int enterMountNamespaceInNewUser(const IdMaps& maps, const char** step) {
   return 0;
 }
 
-namespace {
-
 // The probe: a child tries and writes into a pipe its errno, then the name
-// of the step that failed (enterOwnMountNamespace's own words); a child that
-// writes nothing (killed) counts as no.
-NamespaceSupport probe() {
+// of the step that failed (the attempt's own words); a child that writes
+// nothing (killed) counts as no.
+NamespaceSupport probeInChild(int (*attempt)(const IdMaps& maps, const char** step)) {
   const IdMaps maps = selfIdMaps();
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) return {false, std::string("pipe: ") + std::strerror(errno)};
@@ -83,7 +81,7 @@ NamespaceSupport probe() {
   if (pid == 0) {
     const char* step = "";
     char report[128] = {};
-    const int err = enterOwnMountNamespace(maps, &step);
+    const int err = attempt(maps, &step);
     std::memcpy(report, &err, sizeof err);
     std::strncpy(report + sizeof err, step ? step : "", sizeof report - sizeof err - 1);
     ssize_t w = write(fds[1], report, sizeof report);
@@ -107,14 +105,13 @@ NamespaceSupport probe() {
   return {false, std::string(report + sizeof err) + ": " + std::strerror(err)};
 }
 
-}  // namespace
 
 NamespaceSupport mountNamespaceSupport() {
   const char* forced = std::getenv("SIMSWIFT_MOUNT_NAMESPACE");
   if (forced && std::strcmp(forced, "off") == 0) return {false, "SIMSWIFT_MOUNT_NAMESPACE=off"};
   static std::once_flag once;
   static NamespaceSupport probed;
-  std::call_once(once, [] { probed = probe(); });
+  std::call_once(once, [] { probed = probeInChild(enterOwnMountNamespace); });
   return probed;
 }
 

@@ -41,4 +41,10 @@ struct NamespaceSupport {
 };
 NamespaceSupport mountNamespaceSupport();
 
+// Runs `attempt` (syscalls only: 0, or an errno with `*step` naming what
+// failed) in a forked child and says whether it succeeded, or why not.
+// The namespace probes (mount, sim/programs/RobotNetwork's network) use it.
+NamespaceSupport probeInChild(int (*attempt)(const IdMaps& maps, const char** step));
+
+
 }  // namespace simswift::programs

@@ -147,60 +147,31 @@ int receiveRobotNetwork(int from_init) {
 
 namespace {
 
-NamespaceSupport probeNetwork() {
-  const IdMaps maps = selfIdMaps();
-  int fds[2];
-  if (pipe2(fds, O_CLOEXEC) != 0) return {false, std::string("pipe: ") + std::strerror(errno)};
-  const pid_t pid = fork();
-  if (pid < 0) {
-    const int e = errno;
-    close(fds[0]), close(fds[1]);
-    return {false, std::string("fork: ") + std::strerror(e)};
-  }
-  if (pid == 0) {
-    const char* step = "";
-    int err = 0;
-    if (geteuid() != 0 || unshare(CLONE_NEWNET) != 0) {
-      // As the init does when not root: a user namespace first.
-      step = "unshare(user + network namespace)";
-      if (unshare(CLONE_NEWUSER) != 0) {
-        err = errno;
-      } else {
-        const int u = open("/proc/self/setgroups", O_WRONLY);
-        if (u >= 0) (void)!write(u, "deny", 4), close(u);
-        for (const auto& [path, text] : {std::pair{"/proc/self/uid_map", maps.uid}, {"/proc/self/gid_map", maps.gid}}) {
-          const int f = open(path, O_WRONLY);
-          if (f >= 0) (void)!write(f, text, std::strlen(text)), close(f);
-        }
-        if (unshare(CLONE_NEWNET) != 0) err = errno;
-      }
-    }
-    if (err == 0) {
-      const int s = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-      const int tap = makeWlan0(s, 0x0A000101u, &step);
-      if (tap < 0) err = -tap;
-    }
-    char report[128] = {};
-    std::memcpy(report, &err, sizeof err);
-    std::strncpy(report + sizeof err, step ? step : "", sizeof report - sizeof err - 1);
-    (void)!write(fds[1], report, sizeof report);
-    _exit(0);
-  }
-  close(fds[1]);
-  char report[128] = {};
-  ssize_t n;
-  do n = read(fds[0], report, sizeof report);
-  while (n < 0 && errno == EINTR);
-  close(fds[0]);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (n != static_cast<ssize_t>(sizeof report)) return {false, "the probe's child gave no answer"};
+// The probe's attempt (in a forked child, probeInChild): a network
+// namespace (in a user namespace when not root) and a wlan0 in it.
+int tryRobotNetwork(const IdMaps& maps, const char** step) {
   int err = 0;
-  std::memcpy(&err, report, sizeof err);
-  if (err == 0) return {true, ""};
-  report[sizeof report - 1] = '\0';
-  return {false, std::string(report + sizeof err) + ": " + std::strerror(err)};
+  if (geteuid() != 0 || unshare(CLONE_NEWNET) != 0) {
+    // As the init does when not root: a user namespace first.
+    *step = "unshare(user + network namespace)";
+    if (unshare(CLONE_NEWUSER) != 0) {
+      err = errno;
+    } else {
+      const int u = open("/proc/self/setgroups", O_WRONLY);
+      if (u >= 0) (void)!write(u, "deny", 4), close(u);
+      for (const auto& [path, text] : {std::pair{"/proc/self/uid_map", maps.uid}, {"/proc/self/gid_map", maps.gid}}) {
+        const int f = open(path, O_WRONLY);
+        if (f >= 0) (void)!write(f, text, std::strlen(text)), close(f);
+      }
+      if (unshare(CLONE_NEWNET) != 0) err = errno;
+    }
+  }
+  if (err == 0) {
+    const int s = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    const int tap = makeWlan0(s, 0x0A000101u, step);
+    if (tap < 0) err = -tap;
+  }
+  return err;
 }
 
 }  // namespace
@@ -210,7 +181,7 @@ NamespaceSupport robotNetworkSupport() {
   if (forced && std::strcmp(forced, "off") == 0) return {false, "SIMSWIFT_NETWORK_NAMESPACE=off"};
   static std::once_flag once;
   static NamespaceSupport probed;
-  std::call_once(once, [] { probed = probeNetwork(); });
+  std::call_once(once, [] { probed = probeInChild(tryRobotNetwork); });
   return probed;
 }
 
