@@ -286,7 +286,7 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
   envp.push_back(nullptr);
   const IdMaps maps = selfIdMaps();
   int net[2] = {-1, -1};  // wlan0's descriptor, from the init
-  if (view.isolate && view.network_address != 0 && socketpair(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC, 0, net) != 0) {
+  if (view.isolate && view.network_address != 0 && socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, net) != 0) {
     const int e = errno;
     close(log), close(report[0]), close(report[1]), close(status[0]), close(status[1]), close(life[0]), close(life[1]);
     throw std::runtime_error(std::string("socketpair: ") + std::strerror(e));
