@@ -84,13 +84,15 @@ V4l2Devices::V4l2Devices(const std::string& tag, const std::array<std::string, c
     makeFifo(taken);
     taken_ = openFifo(taken, O_RDONLY);
   } catch (...) {
-    this->~V4l2Devices();
+    release();  // a destructor does not run for a constructor that throws
     throw;
   }
   block_->magic.store(cv::kBlockMagic, std::memory_order_release);
 }
 
-V4l2Devices::~V4l2Devices() {
+V4l2Devices::~V4l2Devices() { release(); }
+
+void V4l2Devices::release() {
   for (int& fd : ready_)
     if (fd >= 0) ::close(fd), fd = -1;
   if (taken_ >= 0) ::close(taken_), taken_ = -1;

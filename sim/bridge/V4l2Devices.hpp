@@ -55,6 +55,7 @@ class V4l2Devices {
   void shutdown();
 
  private:
+  void release();  // closes, unlinks and unmaps what was made (the destructor; a failed constructor)
   bool allTaken();
   [[noreturn]] void corrupt(int c, const std::string& what) const;
 
