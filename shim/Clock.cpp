@@ -147,6 +147,9 @@ WaitEnd waitUntil(int64_t deadline_run_ns) {
       if (!g_starting_reported.exchange(true))
         std::fprintf(stderr, "simswift shim: %s waits for time before answering its first packet: simulated time "
                              "starts with the run, so waits before it end at once (docs/shim.md)\n", programName());
+      // A short real nap first: a program that retries its timed wait in a
+      // loop (libagent's liveness check) must not spin a core until then.
+      runOverNap();
       return WaitEnd::Reached;
     }
     if (!waitGeneration(g)) return WaitEnd::Interrupted;

@@ -32,7 +32,12 @@ pthread_mutex_t g_lock = PTHREAD_MUTEX_INITIALIZER;  // guards spec of Armed slo
 pthread_once_t g_once = PTHREAD_ONCE_INIT;
 
 int (*realCondBroadcast())(pthread_cond_t*) {
-  static auto f = reinterpret_cast<int (*)(pthread_cond_t*)>(dlvsym(RTLD_NEXT, "pthread_cond_broadcast", "GLIBC_2.3.2"));
+  // glibc's 2.3.2 condvar ABI (Waits.cpp's realCond), else the default version
+  // (an architecture whose glibc began later has only that one).
+  static auto f = [] {
+    void* s = dlvsym(RTLD_NEXT, "pthread_cond_broadcast", "GLIBC_2.3.2");
+    return reinterpret_cast<int (*)(pthread_cond_t*)>(s != nullptr ? s : nextSymbol("pthread_cond_broadcast"));
+  }();
   return f;
 }
 
