@@ -20,7 +20,7 @@ inline std::string prepareMcapReader(std::string& modules) {
   if (shell("test -f " + modules + "/@mcap/core/package.json").code == 0) return "";
   const ShellResult r = shell("mkdir -p " + dir + " && cd " + dir + " && flock " + dir +
                               ".lock sh -c 'test -f node_modules/@mcap/core/package.json || "
-                              "npm install --no-audit --no-fund --no-save --prefix . @mcap/core@2'");
+                              "npm install --no-audit --no-fund --no-save --prefix . @mcap/core@2.2.2'");
   if (r.code != 0) return "npm install @mcap/core failed (no registry?): " + r.output;
   return "";
 }
