@@ -12,38 +12,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/mcap/Format.hpp"
+
 namespace simswift::view {
 
 namespace {
 
-constexpr char kMagic[8] = {'\x89', 'M', 'C', 'A', 'P', '0', '\r', '\n'};
-
-enum Op : std::uint8_t {
-  kHeader = 0x01,
-  kFooter = 0x02,
-  kSchema = 0x03,
-  kChannel = 0x04,
-  kMessage = 0x05,
-  kChunk = 0x06,
-  kDataEnd = 0x0F,
-  kMaxOp = 0x0F,  // higher opcodes: 0x80+ are private records (skipped), the rest unknown
-};
-
-// CRC-32 (ISO-HDLC, the one the spec names: zlib's), for a chunk's records.
-std::uint32_t crc32(std::string_view data) {
-  static const std::array<std::uint32_t, 256> table = [] {
-    std::array<std::uint32_t, 256> t{};
-    for (std::uint32_t i = 0; i < 256; ++i) {
-      std::uint32_t c = i;
-      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[i] = c;
-    }
-    return t;
-  }();
-  std::uint32_t c = 0xFFFFFFFFu;
-  for (unsigned char b : data) c = table[(c ^ b) & 0xFF] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
-}
+using namespace common::mcap;  // the magic, the record opcodes, crc32 (mcap.dev/spec)
+constexpr std::uint8_t kMaxOp = kDataEnd;  // higher opcodes: 0x80+ are private records (skipped), the rest unknown
 
 }  // namespace
 
@@ -258,7 +234,7 @@ class McapScanner {
     c.bytes(length, "records");
     if (length != uncompressed)
       c.fail("chunk of " + std::to_string(length) + " bytes says it holds " + std::to_string(uncompressed), at);
-    if (crc != 0 && crc32(std::string_view(f_.bytes_).substr(begin, length)) != crc)
+    if (crc != 0 && crc32(0, f_.bytes_.data() + begin, length) != crc)
       c.fail("chunk's CRC does not match its records (corrupt)", begin);
     for (std::uint64_t pos = begin; pos < begin + length;) {
       const Record inside = record(pos, begin + length);

@@ -5,16 +5,12 @@
 #include <cstring>
 #include <tuple>
 
+#include "common/mcap/Format.hpp"
+
 namespace simswift::record {
 namespace {
 
-// Record opcodes (mcap.dev/spec, "Records").
-enum Op : uint8_t {
-  kHeader = 0x01, kFooter = 0x02, kSchema = 0x03, kChannel = 0x04, kMessage = 0x05, kChunk = 0x06,
-  kMessageIndex = 0x07, kChunkIndex = 0x08, kStatistics = 0x0B, kMetadata = 0x0C, kMetadataIndex = 0x0D,
-  kSummaryOffset = 0x0E, kDataEnd = 0x0F
-};
-constexpr char kMagic[8] = {'\x89', 'M', 'C', 'A', 'P', '0', '\r', '\n'};
+using namespace common::mcap;  // the magic, the record opcodes, crc32 (mcap.dev/spec)
 
 // Little-endian field writers (the spec's primitive types).
 void u8(std::string& s, uint8_t v) { s.push_back(static_cast<char>(v)); }
@@ -48,25 +44,8 @@ std::string record(uint8_t op, const std::string& body) {
   return r;
 }
 
-std::array<uint32_t, 256> crcTable() {
-  std::array<uint32_t, 256> t{};
-  for (uint32_t i = 0; i < 256; ++i) {
-    uint32_t c = i;
-    for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-    t[i] = c;
-  }
-  return t;
-}
-
 }  // namespace
 
-uint32_t crc32(uint32_t crc, const void* data, size_t size) {
-  static const std::array<uint32_t, 256> table = crcTable();
-  const auto* p = static_cast<const uint8_t*>(data);
-  crc = ~crc;
-  for (size_t i = 0; i < size; ++i) crc = table[(crc ^ p[i]) & 0xff] ^ (crc >> 8);
-  return ~crc;
-}
 
 McapWriter::McapWriter(const std::string& path, const std::string& library, size_t chunk_bytes)
     : path_(path), chunk_bytes_(chunk_bytes) {

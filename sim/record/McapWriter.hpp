@@ -83,7 +83,4 @@ class McapWriter {
   uint64_t message_count_ = 0, first_time_ = 0, last_time_ = 0;
 };
 
-// CRC-32 (ISO-HDLC, the zlib polynomial 0xEDB88320), as MCAP's CRC fields use.
-uint32_t crc32(uint32_t crc, const void* data, size_t size);
-
 }  // namespace simswift::record

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "simswift/Simulation.hpp"
+#include "common/mcap/Format.hpp"
 #include "sim/record/McapWriter.hpp"
 #include "sim/record/Recorder.hpp"
 #include "sim/programs/Programs.hpp"
@@ -91,7 +92,7 @@ TEST(McapWriter, FileLayoutFollowsTheSpecification) {
   EXPECT_EQ(b[offsets], '\x0E');
   EXPECT_EQ(b[summary - 13], '\x0F');  // DataEnd (opcode, length 4, crc) just before the summary
   // The CRC table: crc32("123456789") is the standard check value.
-  EXPECT_EQ(record::crc32(0, "123456789", 9), 0xCBF43926u);
+  EXPECT_EQ(common::mcap::crc32(0, "123456789", 9), 0xCBF43926u);
 }
 
 TEST(McapWriter, RefusesWhatTheFormatCannotHold) {
