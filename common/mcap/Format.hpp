@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace simswift::common::mcap {
+namespace common::mcap {
 
 // The 8 bytes that open and close a file.
 constexpr char kMagic[8] = {'\x89', 'M', 'C', 'A', 'P', '0', '\r', '\n'};
@@ -47,4 +47,4 @@ inline std::uint32_t crc32(std::uint32_t crc, const void* data, std::size_t size
   return ~crc;
 }
 
-}  // namespace simswift::common::mcap
+}  // namespace common::mcap
