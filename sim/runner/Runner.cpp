@@ -144,7 +144,11 @@ void Runner::buildHosts() {
     if (external && free_running_) r.body->setSync(SyncMode::FreeRunning);
     r.latched = r.body->readActuators();  // what the body gets before any command (limp or stiff start)
     r.ext = r.body->extension();  // game state + team link, beside the block
-    if (servesV4l2(r.spec)) r.v4l2 = std::make_unique<bridge::V4l2Devices>(r.tag, r.spec.v4l2.path);
+    if (servesV4l2(r.spec)) {
+      // A robot set up in code (an experiment's) has no paths: its body's.
+      const bool unset = r.spec.v4l2.path[0].empty() && r.spec.v4l2.path[1].empty();
+      r.v4l2 = std::make_unique<bridge::V4l2Devices>(r.tag, unset ? defaultCameraDevices(r.spec.body) : r.spec.v4l2.path);
+    }
   }
 }
 

@@ -747,13 +747,20 @@ void checkBuiltinRelease(const YamlReader& r, const RobotSpec& rs) {
                            std::to_string(bridge::releaseYear(rs.release)) + " needs program: external");
 }
 
+}  // namespace
+
+std::array<std::string, 2> defaultCameraDevices(bridge::BodyInterface body) {
+  if (body == bridge::BodyInterface::Lola) return {"/dev/video-top", "/dev/video-bottom"};
+  return {"/dev/video0", "/dev/video1"};
+}
+
+namespace {
+
 // v4l2: the cameras' device paths (RobotSpec::CameraDevices): under /dev/
 // (where the shim looks), shorter than the block's field, two distinct ones.
 void readCameraDevices(const YamlReader& r, RobotSpec& rs) {
   RobotSpec::CameraDevices& d = rs.v4l2;
-  const bool v6 = rs.body == bridge::BodyInterface::Lola;
-  d.path = v6 ? std::array<std::string, 2>{"/dev/video-top", "/dev/video-bottom"}
-              : std::array<std::string, 2>{"/dev/video0", "/dev/video1"};
+  d.path = defaultCameraDevices(rs.body);
   if (!r.has("v4l2")) return;
   if (!rs.launch.launched())
     r.fail("v4l2", "the cameras as V4L2 devices are for a launched program (program: {command: [...]})");

@@ -102,10 +102,15 @@ struct RobotSpec {
   // /dev/video0 (top) and /dev/video1 (bottom)), else off.
   struct CameraDevices {
     enum class Mode { Default, On, Off } mode = Mode::Default;
-    std::array<std::string, 2> path;  // top, bottom: under /dev/, set whatever the mode
+    std::array<std::string, 2> path;  // top, bottom: under /dev/; empty: the body's (defaultCameraDevices)
   };
   CameraDevices v4l2;
 };
+
+// The NAO's camera device names (top, bottom): a V6's /dev/video-top and
+// /dev/video-bottom (B-Human, rUNSWift 2022), a V5's /dev/video0 and
+// /dev/video1 (every V5 build).
+std::array<std::string, 2> defaultCameraDevices(bridge::BodyInterface body);
 
 // Camera rendering. Off unless a scenario or flag asks.
 struct CameraSpec {

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "common/lock/PidLock.hpp"
 #include "sim/programs/ClockPage.hpp"
 #include "tests/support/Shell.hpp"
 
@@ -179,6 +180,10 @@ TEST(CommandLine, AttachPassesEverythingAfterTheDashesThrough) {
   addr.sun_family = AF_UNIX;
   socket_path.copy(addr.sun_path, sizeof addr.sun_path - 1);
   ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  // Served, as a run serves it: the run's lock beside the socket (attach
+  // waits for a served socket, sim/lola/LolaServer.hpp).
+  common::lock::PidLock served(socket_path + ".lock");
+  ASSERT_TRUE(served.tryLock(0));
   // The robot's clock page, as a run makes it (the socket is not named by its robot: --clock).
   const std::string clock = "/simswift-clock-cmdline-" + std::to_string(getpid());
   simswift::programs::ClockPage page(clock, 12'000'000, 0);

@@ -26,6 +26,7 @@
 
 #include "common/libagent/Inertial.hpp"
 #include "agent/program/StandardModules.hpp"
+#include "common/clock/ClockPage.hpp"
 #include "sim/lola/LolaBody.hpp"
 #include "sim/nao_model/RobotModel.hpp"
 #include "sim/runner/Bodies.hpp"
@@ -396,8 +397,9 @@ TEST(V6Run, AttachWaitsForTheLiveSocketOfARunThatStartsLater) {
       const std::string simswift = std::string(SIMSWIFT_BINARY_DIR) + "/simswift";
       const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
-      ::execl(simswift.c_str(), simswift.c_str(), "attach", "--wait", "20", "--socket", socket.c_str(), "--",
-              kClient.c_str(), "-", "0", "hold", nullptr);
+      // --clock: the socket's name does not name its robot (t75p1's page).
+      ::execl(simswift.c_str(), simswift.c_str(), "attach", "--wait", "20", "--socket", socket.c_str(), "--clock",
+              common::clock::pageName("t75p1").c_str(), "--", kClient.c_str(), "-", "0", "hold", nullptr);
       ::_exit(127);
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(300));  // wall clock: attach is waiting by now
