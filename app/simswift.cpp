@@ -459,23 +459,6 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   if (socket_.empty() && !robot_.team) return cli::usageError(*cmd_, "give --team and --player, or --socket");
   const std::string socket =
       socket_.empty() ? simswift::runner::defaultLolaSocket(*robot_.team, *robot_.player, false) : socket_;
-  // The socket of a run that serves it, never one a run left or one not
-  // made yet: waited for (bounded), as a real client retries its connect.
-  // Wall clock: only how long to wait, never what the run does.
-  if (!simswift::lola::socketServed(socket)) {
-    std::fprintf(stderr, "simswift attach: waiting up to %g s for a run to serve %s\n", wait_s_, socket.c_str());
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s_);
-    while (!simswift::lola::socketServed(socket)) {
-      if (std::chrono::steady_clock::now() >= deadline) {
-        std::fprintf(stderr,
-                     "simswift attach: no run served %s within %g s (start the run with this robot, or give "
-                     "--wait more time)\n",
-                     socket.c_str(), wait_s_);
-        return 1;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-  }
   // The robot's clock page: named by its robot (common/clock/ClockPage.hpp).
   std::string tag;
   int team = 0, player = 0;
@@ -486,12 +469,28 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   if (clock.empty())
     return cli::usageError(*cmd_, "the robot's clock page cannot be told from --socket " + socket +
                                       ": give --clock NAME (the run's /simswift-clock-t<T>p<P>)");
-  if (const int fd = shm_open(clock.c_str(), O_RDONLY, 0); fd >= 0) {
-    close(fd);
-  } else {
-    std::fprintf(stderr, "simswift attach: the robot's clock page %s: %s (start the run first)\n", clock.c_str(),
-                 std::strerror(errno));
-    return 1;
+  // The socket of a run that serves it, never one a run left or one not
+  // made yet, and the run's clock page (made after the socket, with the
+  // robot's program): waited for (bounded), as a real client retries its
+  // connect. Wall clock: only how long to wait, never what the run does.
+  const auto clockPageThere = [&] {
+    const int fd = shm_open(clock.c_str(), O_RDONLY, 0);
+    if (fd >= 0) close(fd);
+    return fd >= 0;
+  };
+  if (!simswift::lola::socketServed(socket) || !clockPageThere()) {
+    std::fprintf(stderr, "simswift attach: waiting up to %g s for a run to serve %s\n", wait_s_, socket.c_str());
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s_);
+    while (!simswift::lola::socketServed(socket) || !clockPageThere()) {
+      if (std::chrono::steady_clock::now() >= deadline) {
+        std::fprintf(stderr,
+                     "simswift attach: no run served %s with its clock page %s within %g s (start the run with "
+                     "this robot, or give --wait more time)\n",
+                     socket.c_str(), clock.c_str(), wait_s_);
+        return 1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
   }
   const std::string exe = simswift::programs::findExecutable(command[0]);
   if (const std::string why = exe.empty() ? "" : simswift::programs::shimRefusal(exe); !why.empty()) {

@@ -11,6 +11,7 @@
 #include <sys/select.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -99,7 +100,28 @@ class Deadline {
   int handle_ = -1;
 };
 
+// Before the run's first answer (Starting) time has not started, but the
+// program's other threads may be about to give it its first answer: a wait
+// on fds waits for them in slices of wall clock (kRunOverNapNs) until they
+// are ready, the run starts (then the simulated deadline counts from there)
+// or its timeout has passed as wall clock. `once(slice)` waits one slice:
+// non-zero (ready, or an error) ends the wait with that result.
+template <typename Once>
+int whileStarting(int64_t timeout_ns, Once once, bool* started) {
+  for (int64_t waited = 0; runStarting() && waited < timeout_ns; waited += kRunOverNapNs) {
+    const int r = once(toTimespec(std::min(kRunOverNapNs, timeout_ns - waited)));
+    if (r != 0) return r;
+  }
+  *started = !runStarting();
+  return 0;
+}
+
 int pollUntil(pollfd* fds, nfds_t n, int64_t timeout_ns, const sigset_t* mask) {
+  if (n > 0 && runStarting()) {
+    bool started = false;
+    const int r = whileStarting(timeout_ns, [&](timespec s) { return realPpoll()(fds, n, &s, mask); }, &started);
+    if (r != 0 || !started) return r;
+  }
   Deadline d(timeout_ns);
   const int efd = d.arm();
   if (efd < 0) {
@@ -159,6 +181,14 @@ int selectUntil(int nfds, fd_set* rd, fd_set* wr, fd_set* ex, int64_t timeout_ns
 
 int epollUntil(int epfd, epoll_event* events, int max, int64_t timeout_ns, const sigset_t* mask) {
   static const EpollPwait realEpoll = real<EpollPwait>("epoll_pwait");
+  if (runStarting()) {
+    bool started = false;
+    const int r = whileStarting(
+        timeout_ns,
+        [&](timespec s) { return realEpoll(epfd, events, max, static_cast<int>((s.tv_nsec + 999'999) / 1'000'000), mask); },
+        &started);
+    if (r != 0 || !started) return r;
+  }
   Deadline d(timeout_ns);
   const int efd = d.arm();
   if (efd < 0) return realEpoll(epfd, events, max, 0, mask);

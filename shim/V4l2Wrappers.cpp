@@ -18,6 +18,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "shim/Export.hpp"
 #include "shim/Real.hpp"
 #include "shim/V4l2Device.hpp"
 
@@ -86,7 +87,7 @@ bool device(int fd) { return v4::anyOpen() && v4::isDevice(fd); }
 
 extern "C" {
 
-int open(const char* path, int flags, ...) {
+SIMSWIFT_SHIM_EXPORT int open(const char* path, int flags, ...) {
   va_list ap;
   va_start(ap, flags);
   const mode_t mode = modeOf(flags, ap);
@@ -94,7 +95,7 @@ int open(const char* path, int flags, ...) {
   return openPath("open", path, flags, mode);
 }
 
-int open64(const char* path, int flags, ...) {
+SIMSWIFT_SHIM_EXPORT int open64(const char* path, int flags, ...) {
   va_list ap;
   va_start(ap, flags);
   const mode_t mode = modeOf(flags, ap);
@@ -102,10 +103,10 @@ int open64(const char* path, int flags, ...) {
   return openPath("open64", path, flags, mode);
 }
 
-int __open_2(const char* path, int flags) { return openPath("open", path, flags, 0); }
-int __open64_2(const char* path, int flags) { return openPath("open64", path, flags, 0); }
+SIMSWIFT_SHIM_EXPORT int __open_2(const char* path, int flags) { return openPath("open", path, flags, 0); }
+SIMSWIFT_SHIM_EXPORT int __open64_2(const char* path, int flags) { return openPath("open64", path, flags, 0); }
 
-int openat(int dirfd, const char* path, int flags, ...) {
+SIMSWIFT_SHIM_EXPORT int openat(int dirfd, const char* path, int flags, ...) {
   va_list ap;
   va_start(ap, flags);
   const mode_t mode = modeOf(flags, ap);
@@ -113,7 +114,7 @@ int openat(int dirfd, const char* path, int flags, ...) {
   return openAt("openat", dirfd, path, flags, mode);
 }
 
-int openat64(int dirfd, const char* path, int flags, ...) {
+SIMSWIFT_SHIM_EXPORT int openat64(int dirfd, const char* path, int flags, ...) {
   va_list ap;
   va_start(ap, flags);
   const mode_t mode = modeOf(flags, ap);
@@ -123,16 +124,16 @@ int openat64(int dirfd, const char* path, int flags, ...) {
   return fd != -2 ? fd : next(dirfd, path, flags, mode);
 }
 
-int __openat_2(int dirfd, const char* path, int flags) { return openAt("openat", dirfd, path, flags, 0); }
-int __openat64_2(int dirfd, const char* path, int flags) { return openat64(dirfd, path, flags); }
+SIMSWIFT_SHIM_EXPORT int __openat_2(int dirfd, const char* path, int flags) { return openAt("openat", dirfd, path, flags, 0); }
+SIMSWIFT_SHIM_EXPORT int __openat64_2(int dirfd, const char* path, int flags) { return openat64(dirfd, path, flags); }
 
-int close(int fd) {
+SIMSWIFT_SHIM_EXPORT int close(int fd) {
   static auto next = real<int (*)(int)>("close");
   if (device(fd)) v4::closing(fd);
   return next(fd);
 }
 
-int ioctl(int fd, unsigned long request, ...) noexcept {
+SIMSWIFT_SHIM_EXPORT int ioctl(int fd, unsigned long request, ...) noexcept {
   va_list ap;
   va_start(ap, request);
   void* arg = va_arg(ap, void*);
@@ -145,13 +146,13 @@ int ioctl(int fd, unsigned long request, ...) noexcept {
   return next(fd, request, arg);
 }
 
-void* mmap(void* addr, size_t length, int prot, int flags, int fd, off_t offset) noexcept {
+SIMSWIFT_SHIM_EXPORT void* mmap(void* addr, size_t length, int prot, int flags, int fd, off_t offset) noexcept {
   if (fd >= 0 && !(flags & MAP_ANONYMOUS) && device(fd)) return v4::mmap(addr, length, prot, flags, fd, offset);
   static auto next = real<void* (*)(void*, size_t, int, int, int, off_t)>("mmap");
   return next(addr, length, prot, flags, fd, offset);
 }
 
-void* mmap64(void* addr, size_t length, int prot, int flags, int fd, off64_t offset) noexcept {
+SIMSWIFT_SHIM_EXPORT void* mmap64(void* addr, size_t length, int prot, int flags, int fd, off64_t offset) noexcept {
   if (fd >= 0 && !(flags & MAP_ANONYMOUS) && device(fd)) return v4::mmap(addr, length, prot, flags, fd, offset);
   static auto next = real<void* (*)(void*, size_t, int, int, int, off64_t)>("mmap64");
   return next(addr, length, prot, flags, fd, offset);
@@ -159,7 +160,7 @@ void* mmap64(void* addr, size_t length, int prot, int flags, int fd, off64_t off
 
 // A NAO camera has no read() I/O (QUERYCAP gives no V4L2_CAP_READWRITE):
 // EINVAL, as the kernel answers read on such a device.
-ssize_t read(int fd, void* buf, size_t count) {
+SIMSWIFT_SHIM_EXPORT ssize_t read(int fd, void* buf, size_t count) {
   if (device(fd)) {
     errno = EINVAL;
     return -1;
@@ -168,7 +169,7 @@ ssize_t read(int fd, void* buf, size_t count) {
   return next(fd, buf, count);
 }
 
-int fstat(int fd, struct stat* out) noexcept {
+SIMSWIFT_SHIM_EXPORT int fstat(int fd, struct stat* out) noexcept {
   if (device(fd)) {
     v4::stat(fd, out);
     return 0;
@@ -177,7 +178,7 @@ int fstat(int fd, struct stat* out) noexcept {
   return next(fd, out);
 }
 
-int fstat64(int fd, struct stat64* out) noexcept {
+SIMSWIFT_SHIM_EXPORT int fstat64(int fd, struct stat64* out) noexcept {
   if (device(fd)) {
     fillStat64(fd, out);
     return 0;
@@ -186,7 +187,7 @@ int fstat64(int fd, struct stat64* out) noexcept {
   return next(fd, out);
 }
 
-int fstatat(int dirfd, const char* path, struct stat* out, int flags) noexcept {
+SIMSWIFT_SHIM_EXPORT int fstatat(int dirfd, const char* path, struct stat* out, int flags) noexcept {
   if ((flags & AT_EMPTY_PATH) && path[0] == '\0' && device(dirfd)) {
     v4::stat(dirfd, out);
     return 0;
@@ -196,7 +197,7 @@ int fstatat(int dirfd, const char* path, struct stat* out, int flags) noexcept {
   return next(dirfd, path, out, flags);
 }
 
-int fstatat64(int dirfd, const char* path, struct stat64* out, int flags) noexcept {
+SIMSWIFT_SHIM_EXPORT int fstatat64(int dirfd, const char* path, struct stat64* out, int flags) noexcept {
   if ((flags & AT_EMPTY_PATH) && path[0] == '\0' && device(dirfd)) {
     fillStat64(dirfd, out);
     return 0;
@@ -206,22 +207,22 @@ int fstatat64(int dirfd, const char* path, struct stat64* out, int flags) noexce
   return next(dirfd, path, out, flags);
 }
 
-int stat(const char* path, struct stat* out) noexcept {
+SIMSWIFT_SHIM_EXPORT int stat(const char* path, struct stat* out) noexcept {
   if (v4::statPath(path, out)) return 0;
   static auto next = real<int (*)(const char*, struct stat*)>("stat");
   return next(path, out);
 }
-int stat64(const char* path, struct stat64* out) noexcept {
+SIMSWIFT_SHIM_EXPORT int stat64(const char* path, struct stat64* out) noexcept {
   if (statPath64(path, out)) return 0;
   static auto next = real<int (*)(const char*, struct stat64*)>("stat64");
   return next(path, out);
 }
-int lstat(const char* path, struct stat* out) noexcept {
+SIMSWIFT_SHIM_EXPORT int lstat(const char* path, struct stat* out) noexcept {
   if (v4::statPath(path, out)) return 0;
   static auto next = real<int (*)(const char*, struct stat*)>("lstat");
   return next(path, out);
 }
-int lstat64(const char* path, struct stat64* out) noexcept {
+SIMSWIFT_SHIM_EXPORT int lstat64(const char* path, struct stat64* out) noexcept {
   if (statPath64(path, out)) return 0;
   static auto next = real<int (*)(const char*, struct stat64*)>("lstat64");
   return next(path, out);
@@ -229,28 +230,28 @@ int lstat64(const char* path, struct stat64* out) noexcept {
 
 // Binaries built against glibc before 2.33 call these (version 1: the
 // kernel's struct stat, which is glibc's on x86_64 and arm64).
-int __fxstat(int ver, int fd, struct stat* out) {
+SIMSWIFT_SHIM_EXPORT int __fxstat(int ver, int fd, struct stat* out) {
   (void)ver;
   return fstat(fd, out);
 }
-int __fxstat64(int ver, int fd, struct stat64* out) {
+SIMSWIFT_SHIM_EXPORT int __fxstat64(int ver, int fd, struct stat64* out) {
   (void)ver;
   return fstat64(fd, out);
 }
 
-int __xstat(int ver, const char* path, struct stat* out) {
+SIMSWIFT_SHIM_EXPORT int __xstat(int ver, const char* path, struct stat* out) {
   (void)ver;
   return stat(path, out);
 }
-int __xstat64(int ver, const char* path, struct stat64* out) {
+SIMSWIFT_SHIM_EXPORT int __xstat64(int ver, const char* path, struct stat64* out) {
   (void)ver;
   return stat64(path, out);
 }
-int __lxstat(int ver, const char* path, struct stat* out) {
+SIMSWIFT_SHIM_EXPORT int __lxstat(int ver, const char* path, struct stat* out) {
   (void)ver;
   return lstat(path, out);
 }
-int __lxstat64(int ver, const char* path, struct stat64* out) {
+SIMSWIFT_SHIM_EXPORT int __lxstat64(int ver, const char* path, struct stat64* out) {
   (void)ver;
   return lstat64(path, out);
 }
