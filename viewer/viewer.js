@@ -288,7 +288,8 @@
     getJson(topicUrl('/api/at', topic, { t: S.t }))
       .then((m) => { S[slot] = m.data ? m : null; S[slot + 'Key'] = key; })
       .catch((e) => fail(e.message))
-      .finally(() => { S[slot + 'Loading'] = false; });
+      // Drawn again once it is done: the cursor may have moved while it loaded.
+      .finally(() => { S[slot + 'Loading'] = false; S.dirty = true; });
   }
 
   // ---------------------------------------------------------------- drawing
@@ -414,7 +415,8 @@
     if (S.ready && S.playing && lastFrame !== null) {
       // At most 100 ms of wall clock per frame: a browser that draws seldom
       // (a hidden tab, a loaded machine) plays slower rather than leaping.
-      S.t = Math.min(S.t1, S.t + Math.min(now - lastFrame, 100) * 1e6 * S.speed);
+      // Whole ns: the cursor names a time to the server (/api/at?t=), which takes integers.
+      S.t = Math.min(S.t1, Math.round(S.t + Math.min(now - lastFrame, 100) * 1e6 * S.speed));
       if (S.t >= S.t1) setPlaying(false);
     }
     lastFrame = now;
@@ -480,6 +482,7 @@
   }
   function setPlaying(on) {
     S.playing = on;
+    S.dirty = true;  // paused: what playing fetched only now and then (belief, image) is fetched for the cursor
     if (on && S.t >= S.t1) S.t = S.t0;
     $('play').innerHTML = on ? '&#x2016;' : '&#x25B6;';
   }
