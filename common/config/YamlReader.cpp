@@ -237,7 +237,7 @@ void YamlReader::checkMap() const {
   // nothing (YAML's "? [never]: ..." or "~: ...") has none, and yaml-cpp
   // would throw its own unplaced "bad conversion" where a reader asked.
   for (auto it = node_.begin(); it != node_.end(); ++it) {
-    const YAML::Node& k = it->first;
+    const YAML::Node k = it->first;  // a copy (a handle): `it->first` is a member of a temporary
     if (k.IsScalar()) continue;
     std::string got = "~";
     if (k.IsSequence() || k.IsMap()) {
@@ -414,7 +414,7 @@ void YamlReader::finish() const {
   checkMap();
   if (!node_.IsMap()) return;
   for (auto it = node_.begin(); it != node_.end(); ++it) {
-    const std::string& k = it->first.Scalar();  // checkMap: every key is a scalar
+    const std::string k = it->first.Scalar();  // checkMap: every key is a scalar
     if (std::find(known_.begin(), known_.end(), k) != known_.end()) continue;
     std::string expected, suggestion;
     for (const auto& e : known_) {
