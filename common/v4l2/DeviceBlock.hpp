@@ -1,5 +1,5 @@
 // A robot's two cameras as V4L2 devices: what the simulator (sim/bridge/
-// V4l2Devices) and the shim preloaded into a launched program (shim/V4l2.cpp)
+// V4l2Devices) and the shim preloaded into a launched program (shim/V4l2Device.cpp)
 // share. An unchanged program opens /dev/video-top (its V4L2 calls are
 // answered by the shim, docs/porting.md section 3); the frames, and what the
 // program asks of them, cross here:

@@ -1,6 +1,6 @@
 // A robot's two cameras served as V4L2 devices to its launched program: the
 // simulator's side of common/v4l2/DeviceBlock.hpp (the shim in the program,
-// shim/V4l2.cpp, answers the program's calls). It owns the shared block and
+// shim/V4l2Device.cpp, answers the program's calls). It owns the shared block and
 // its FIFOs (made here, removed when it goes); each 30 Hz camera frame the
 // Runner asks what the program wants (requests()), renders the cameras it
 // streams into image(c), publishes them and waits until they were taken
