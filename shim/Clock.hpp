@@ -42,6 +42,9 @@ enum class WaitEnd { Reached, Interrupted, RunOver };
 // While the program has not answered its first packet (Starting), a wait
 // ends at once: time starts with the run (docs/shim.md).
 WaitEnd waitUntil(int64_t deadline_run_ns);
+// A sleep until `deadline_run_ns` (shim/Sleeps.cpp): 0, or EINTR with `rem`
+// (if given) the time left; the libc wrappers and the trapped syscalls share it.
+int sleepUntil(int64_t deadline_run_ns, timespec* rem);
 constexpr int64_t kRunOverNapNs = 10'000'000;
 void runOverNap();
 // The generation word (for waits that also watch other things: Waits.cpp).

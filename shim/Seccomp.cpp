@@ -48,22 +48,8 @@ bool underSeccomp() {
   return filtered;
 }
 
-long answerSleep(int64_t deadline, timespec* rem) {
-  switch (waitUntil(deadline)) {
-    case WaitEnd::Reached:
-      return 0;
-    case WaitEnd::RunOver:
-      runOverNap();
-      return 0;
-    case WaitEnd::Interrupted:
-      if (rem) {
-        const int64_t left = deadline - runNs();
-        *rem = toTimespec(left > 0 ? left : 0);
-      }
-      return -EINTR;
-  }
-  return 0;
-}
+// The kernel's convention: -errno.
+long answerSleep(int64_t deadline, timespec* rem) { return -sleepUntil(deadline, rem); }
 
 // The trapped call's result, as the kernel's (-errno on failure).
 long answer(long nr, greg_t* r) {

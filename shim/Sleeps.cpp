@@ -13,11 +13,7 @@
 
 using namespace simswift::shim;
 
-namespace {
-
-bool validRequest(const timespec* req) {
-  return req != nullptr && req->tv_nsec >= 0 && req->tv_nsec < kNsPerS && req->tv_sec >= 0;
-}
+namespace simswift::shim {
 
 // 0, or the error number (clock_nanosleep's convention); `rem` for an
 // interrupted relative sleep.
@@ -36,6 +32,14 @@ int sleepUntil(int64_t deadline, timespec* rem) {
       return EINTR;
   }
   return 0;
+}
+
+}  // namespace simswift::shim
+
+namespace {
+
+bool validRequest(const timespec* req) {
+  return req != nullptr && req->tv_nsec >= 0 && req->tv_nsec < kNsPerS && req->tv_sec >= 0;
 }
 
 }  // namespace
