@@ -12,7 +12,6 @@ pkgs=(build-essential cmake pkg-config git
       libboost-math-dev   # the report's statistics (app/experiment/Statistics.cpp)
       libmsgpack-dev      # the LoLA protocol (sim/lola): msgpack-c
       libcli11-dev        # the programs' command lines (app/cli): CLI11, header-only
-      nodejs npm          # tests/record: the MCAP project's reader (@mcap/core from npm) reads a recording
       libjs-three         # three.js r111 for `simswift view`'s page (served from /usr/share/javascript/three)
       chromium chromium-driver python3-selenium   # the viewer's browser test (tests/view/browser_test.py)
       libxml2-utils       # xmllint: the JUnit XML of `simswift test` checked against its schema (tests/scenario_tests)
@@ -21,6 +20,12 @@ missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# tests/record: the MCAP project's reader (@mcap/core from npm) reads a recording.
+# Node.js and npm are asked for by command, not by package: a machine with
+# NodeSource's nodejs (which carries npm) cannot also install Debian's npm
+# ("held broken packages"), and needs neither.
+command -v node >/dev/null || missing+=(nodejs)
+command -v npm >/dev/null || missing+=(npm)
 [ ${#missing[@]} -eq 0 ] && exit 0
 echo "simswift: installing ${missing[*]}" >&2
 SUDO=""
