@@ -19,6 +19,8 @@ namespace fs = std::filesystem;
 
 namespace {
 constexpr const char* kShimFile = "libsimswift-shim.so";
+// Beside it: the SIGSYS handler from load time (shim/early/Early.cpp).
+constexpr const char* kEarlyFile = "libsimswift-shim-early.so";
 }
 
 std::string shimLibraryPath() {
@@ -40,8 +42,14 @@ std::vector<std::pair<std::string, std::string>> shimEnvironment(const std::stri
     throw std::runtime_error("robot " + robot + ": " + kShimFile +
                              " (the simulated clock, docs/shim.md) was not found beside simswift, one folder up or "
                              "in its lib folder; build the simswift_shim target or set SIMSWIFT_SHIM_LIBRARY");
+  const std::string early = (fs::path(shim).parent_path() / kEarlyFile).string();
+  if (access(early.c_str(), R_OK) != 0)
+    throw std::runtime_error("robot " + robot + ": " + kEarlyFile + " is not beside " + shim +
+                             " (docs/shim.md: a program exec'd under the clock filter needs it); build the "
+                             "simswift_shim_early target");
   std::vector<std::pair<std::string, std::string>> env;
   env.emplace_back("LD_PRELOAD", preload_before.empty() ? shim : shim + ":" + preload_before);
+  env.emplace_back("LD_AUDIT", early);
   env.emplace_back(common::clock::kPageEnv, s.clock_page);
   if (!s.v4l2_block.empty()) env.emplace_back(common::v4l2::kBlockVariable, s.v4l2_block);
   return env;

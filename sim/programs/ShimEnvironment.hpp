@@ -23,9 +23,10 @@ std::string shimLibraryPath();
 
 // The variables to add to the program's environment: LD_PRELOAD with the
 // shim first (before `preload_before`, what the program would otherwise get:
-// the launch's own LD_PRELOAD or simswift's), SIMSWIFT_CLOCK and, with cameras,
-// SIMSWIFT_V4L2. Throws
-// std::runtime_error naming `robot` if the shim is not found.
+// the launch's own LD_PRELOAD or simswift's), LD_AUDIT with the early
+// SIGSYS handler (shim/early/Early.cpp), SIMSWIFT_CLOCK and, with cameras,
+// SIMSWIFT_V4L2. Throws std::runtime_error naming `robot` if either library
+// is not found.
 std::vector<std::pair<std::string, std::string>> shimEnvironment(const std::string& robot, const ShimSettings& s,
                                                                  const std::string& preload_before);
 

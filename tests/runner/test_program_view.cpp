@@ -71,13 +71,16 @@ int processesNamed(const std::string& marker) {
 TEST(ProgramView, KillNineOfSimswiftEndsAWrapperScriptsGrandchild) {
   REQUIRE_NAMESPACES();
   const std::string d = tempDir("kill");
-  // A sleep no other process has: 5000 s plus this test's pid in ms.
-  const std::string marker = "5000." + std::to_string(getpid() % 1000);
+  // Two processes that wait on nothing timed (a sleep would end at once
+  // before the first packet: docs/shim.md): each blocks opening a FIFO
+  // nobody writes. Their command line carries a marker no other process
+  // has; the wrapper's own command line spells it through $m, so it does not.
+  const std::string marker = "kill-test-" + std::to_string(getpid());
   {
     std::ofstream y(d + "/wrapper.yaml");
     y << "duration: 600\nattach_timeout: 60\nprogram_logs: " << d << "/logs\nrobots:\n"
-      << "  - {team: 72, player: 1, x: -1, y: 0, program: {command: [sh, -c, 'sleep " << marker
-      << " & sleep " << marker << "; wait']}}\n";
+      << "  - {team: 72, player: 1, x: -1, y: 0, program: {command: [sh, -c, 'm=kill-test; mkfifo /tmp/w; cat /tmp/w $m-"
+      << getpid() << " & cat /tmp/w $m-" << getpid() << "; wait']}}\n";
   }
   const std::string simswift = kBin + "/simswift";
   const pid_t sim = fork();
@@ -90,7 +93,7 @@ TEST(ProgramView, KillNineOfSimswiftEndsAWrapperScriptsGrandchild) {
   bool started = false;
   for (int i = 0; i < 1000 && !started; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    started = processesNamed(marker) == 2;  // the background sleep and the foreground one
+    started = processesNamed(marker) == 2;  // the background cat and the foreground one
   }
   if (!started) kill(sim, SIGKILL), waitpid(sim, nullptr, 0);
   ASSERT_TRUE(started) << readFile(d + "/run.log");

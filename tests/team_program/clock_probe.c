@@ -199,7 +199,19 @@ static int readAll(int fd, unsigned char* d, size_t n) {
   return 1;
 }
 
+/* A runtime's start-up (a sanitizer's, ld.so's .preinit_array: before any
+ * library's constructor) reading the clock with the raw syscall. Printed by
+ * main as "preinit raw clock_gettime rc=R". */
+static long preinit_rc = -1;
+static void readClockAtPreinit(int argc, char** argv, char** envp) {
+  (void)argc, (void)argv, (void)envp;
+  struct timespec t;
+  preinit_rc = syscall(SYS_clock_gettime, CLOCK_MONOTONIC, &t);
+}
+__attribute__((section(".preinit_array"), used)) static void (*const preinit)(int, char**, char**) = readClockAtPreinit;
+
 int main(int argc, char** argv) {
+  printf("preinit raw clock_gettime rc=%ld\n", preinit_rc);
   if (argc != 4) {
     fprintf(stderr, "usage: clock-probe SOCKET CYCLES KINDS\n");
     return 2;

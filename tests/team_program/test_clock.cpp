@@ -125,6 +125,25 @@ TEST(ClockV6, AStaticBinaryIsRefused) {
 }
 #endif
 
+// The seccomp filter stays over exec, a signal handler does not: a program
+// exec'd by a launched wrapper script runs under its parent's filter, and
+// a raw clock call before the shim's constructor (the probe's
+// .preinit_array, where ASan reads the clock) found no handler: SIGSYS
+// killed it (seen with the ASan build of simswift-agent under `sh -c`). The
+// early handler (LD_AUDIT, shim/early/Early.cpp) answers it from the
+// machine's clock; from its constructor on the program reads the run's
+// time as when launched directly: the same digest and state hash.
+TEST(ClockV6, AProgramExecdByAWrapperSurvivesARawClockCallBeforeTheShimLoads) {
+  const int ticks = 40;
+  const ProbeRun direct = runProbe(84, ticks, "nanosleep");
+  const ProbeRun wrapped = runProbe(84, ticks, "nanosleep", kProbe, "sh, -c, 'exec \"$0\" \"$@\"', ");
+  EXPECT_EQ(linesOf(wrapped.log, "preinit raw clock_gettime rc=0").size(), 1u) << joined(wrapped.log);
+  const std::vector<std::string> digest = linesOf(direct.log, "digest ");
+  ASSERT_EQ(digest.size(), 1u) << joined(direct.log);
+  EXPECT_EQ(linesOf(wrapped.log, "digest "), digest) << joined(wrapped.log);
+  EXPECT_EQ(wrapped.hash, direct.hash);
+}
+
 // gdb (issue 44 item 5): the program under gdb, launched as the robot's
 // command, sees the same simulated time as without it (the same digest of
 // every reading and wait), while gdb itself keeps the wall clock (the shim
