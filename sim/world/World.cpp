@@ -224,6 +224,21 @@ void World::applyImpulse(int robot, const Eigen::Vector3d& impulse) {
 }
 
 void World::step() {
+  stepPhysics(tick_);
+  ++tick_;
+  checkBlowUps();
+}
+
+void World::settle(int ticks) {
+  // Seeds below every counted tick's (integrate: tick * 16 + substep), so
+  // no settling substep shares a seed with a tick of the run.
+  for (int k = 0; k < ticks; ++k) {
+    stepPhysics(-1 - k);
+    checkBlowUps();
+  }
+}
+
+void World::stepPhysics(int64_t seed_tick) {
   const int n = substeps();
   const double dt = tickSeconds() / n;
   contacts_.clear();
@@ -232,13 +247,11 @@ void World::step() {
     if (sub == 0) applyPendingPushes(dt);
     for (auto& r : robots_) r->applyServos(dt);
     impl_->collide(world_, space_, field_, config_, dt);
-    integrate(sub, dt);
+    integrate(seed_tick, sub, dt);
     impl_->gatherContacts(1.0 / n, contacts_);
     if (config_.joint_projection_sweeps > 0) projectJoints();
     dJointGroupEmpty(impl_->contact_group);
   }
-  ++tick_;
-  checkBlowUps();
 }
 
 void World::applyPendingPushes(double dt) {
@@ -251,7 +264,7 @@ void World::applyPendingPushes(double dt) {
   }
 }
 
-void World::integrate(int substep, double dt) {
+void World::integrate(int64_t seed_tick, int substep, double dt) {
   // QuickStep shuffles its constraint rows with ODE's one process-wide
   // random generator; reseeding it from the tick makes every world's
   // result a function of its own state, whatever other worlds did. Worlds
@@ -260,7 +273,7 @@ void World::integrate(int substep, double dt) {
   // not depend on how many run beside it (tests/world/test_physics_hash.cpp).
   static std::mutex ode_random;
   std::lock_guard<std::mutex> lock(ode_random);
-  dRandSetSeed(static_cast<unsigned long>(tick_) * 16u + static_cast<unsigned long>(substep));
+  dRandSetSeed(static_cast<unsigned long>(seed_tick) * 16u + static_cast<unsigned long>(substep));
   if (config_.solver == WorldConfig::Solver::Exact) {
     dWorldStep(world_, dt);
   } else {

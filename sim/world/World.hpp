@@ -163,6 +163,12 @@ class World {
   // before ODE can reach a state it aborts on: the robot (or ball) is reset
   // to where it was last placed and an event is recorded; the run goes on.
   void step();
+  // Steps the physics `ticks` ticks without counting them (tick() and
+  // time() stay): the robots, their servos holding what they were last
+  // commanded, come to rest where they were placed before anyone reads
+  // them (Runner::start; issue 45: the first packet showed a robot still
+  // sinking into its contacts). Deterministic: its own ODE seeds.
+  void settle(int ticks);
   int64_t tick() const { return tick_; }
   double time() const { return tick_ * tickSeconds(); }  // s
   int64_t tickUs() const { return config_.tick_us; }    // us per tick (WorldConfig::tick_us)
@@ -192,7 +198,8 @@ class World {
   // Stages of step() (World.cpp gives the order).
   void checkBlowUps();
   void applyPendingPushes(double dt);
-  void integrate(int substep, double dt);
+  void stepPhysics(int64_t seed_tick);  // one tick's substeps; ODE seeded from seed_tick
+  void integrate(int64_t seed_tick, int substep, double dt);
   void projectJoints();
   void checkPlacement(const char* what, double x, double y, double theta) const;
   struct Impl;
