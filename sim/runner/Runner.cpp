@@ -150,6 +150,33 @@ void Runner::buildHosts() {
       r.v4l2 = std::make_unique<bridge::V4l2Devices>(r.tag, unset ? defaultCameraDevices(r.spec.body) : r.spec.v4l2.path);
     }
   }
+  settleRobots();
+}
+
+// The robots come to rest in their start postures before their programs
+// first read them (issue 45: a V6 program's first packet read accelerometer
+// z -2.98 m/s^2 and an FSR sum of 2.42 kg, a robot still sinking into its
+// contacts, settled by the third). Each is held in its start posture at
+// stiffness 1, whatever its body gives before any command (a V6 boots limp:
+// settling with that let it sag out of its posture), for kSettleTicks ticks
+// of physics, untimed (the clock and the tick count start after them), and
+// through the run's first tick (applyCommands), so its first reading is of
+// that posture at rest. The sensors start afresh from the settled state
+// (their velocity and rotation differences would otherwise span the
+// settling).
+void Runner::settleRobots() {
+  for (size_t i = 0; i < robots_.size(); ++i) holdStartPosture(static_cast<int>(i));
+  world_->settle(kSettleTicks);
+  const sensors::SensorConfig sc = sensorConfig();
+  for (size_t i = 0; i < robots_.size(); ++i)
+    robots_[i]->sensors = std::make_unique<sensors::SensorSuite>(*world_, static_cast<int>(i), sc);
+}
+
+void Runner::holdStartPosture(int i) {
+  const an::JointArray angles = an::postureAngles(robots_[i]->spec.posture);
+  std::array<float, al::kNumJoints> stiff;
+  stiff.fill(1.f);
+  nao_->command(world_->robot(i), angles, stiff);
 }
 
 // Team network and GameController; the robots see the game state at t = 0.
@@ -257,6 +284,11 @@ void Runner::watchdogFail(int i, const char* thread) const {
 void Runner::applyCommands() {
   for (size_t i = 0; i < robots_.size(); ++i) {
     Robot& r = *robots_[i];
+    if (r.placed) {
+      holdStartPosture(static_cast<int>(i));
+      r.sensors->setSonarMode(r.latched.sonar);
+      continue;
+    }
     std::array<float, al::kNumJoints> angles, stiff;
     for (int j = 0; j < al::kNumJoints; ++j) {
       angles[j] = r.latched.joints.angles[j];
@@ -330,7 +362,10 @@ void Runner::awaitMotion() {
 }
 
 void Runner::latchActuators() {
-  for (auto& r : robots_) r->latched = r->body->readActuators();
+  for (auto& r : robots_) {
+    r->latched = r->body->readActuators();
+    r->placed = false;
+  }
 }
 
 void Runner::updateFalls() {

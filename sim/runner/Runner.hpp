@@ -226,6 +226,10 @@ class Runner {
     common::libagent::ActuatorCommand latched;
     bool perception = false;
     bool attached = false;  // has answered its first tick
+    // Until its body's first command is latched (tick 1, stage 8), the robot
+    // is held in its start posture (Runner::settleRobots): the hand that
+    // placed it lets go once its program has read it.
+    bool placed = true;
     FallDetector fall;  // torso-height fall bookkeeping (statistics only)
     double last_robot_contact_s = -1e9;  // s (world time) this robot last touched another robot
     size_t next_push = 0;  // next of spec.pushes to apply
@@ -236,6 +240,13 @@ class Runner {
   // Build stages (start(), in this order).
   void buildWorld();        // model, field, World, ball
   void buildHosts();        // per robot: World body, SensorSuite, body side (Bodies.hpp)
+  void settleRobots();      // the robots at rest in their start postures before their programs first read them
+  void holdStartPosture(int i);  // robot i's servos commanded to its start posture, stiffness 1
+  // Ticks of physics the robots settle for before the run's first tick: a
+  // placed robot sinks into its contacts for about two ticks (issue 45);
+  // after them it still sways a little (first reading's accelerometer z
+  // within about 0.6 m/s^2 of gravity, tests/nao_v6).
+  static constexpr int kSettleTicks = 50;
   void attachPrograms();    // per robot: its program driver (sim/programs), from the scenario
   void buildTeamAndGame();  // TeamNetwork, GameController (and its UDP sender), the t = 0 game state
   void buildRobotLan();     // the launched programs' own networks (their wlan0s)

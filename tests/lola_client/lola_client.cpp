@@ -17,6 +17,7 @@
 // does; "split" writes the answer in three pieces 1 ms apart. SOCKET "-" is
 // LoLA's own /tmp/robocup. Prints one line per packet:
 //   packet N Position[10]=... FSR[0]=... Status[0]=... Accelerometer[2]=... FSRsum=... Gyroscope[2]=...
+//            Accelerometer[0]=... Accelerometer[1]=... Position[9]=... Position[11]=...
 // Exit 0 after CYCLES answered packets (CYCLES 0: until the server closes
 // the socket, after at least one), 1 on any check failing, 2 on bad use.
 #include <sys/socket.h>
@@ -206,9 +207,10 @@ int main(int argc, char** argv) {
     float fsr_sum = 0;
     for (float f : values["FSR"]) fsr_sum += f;
     std::printf("packet %d Position[10]=%.6g FSR[0]=%.6g Status[0]=%.0f Accelerometer[2]=%.6g FSRsum=%.6g "
-                "Gyroscope[2]=%.6g\n",
+                "Gyroscope[2]=%.6g Accelerometer[0]=%.6g Accelerometer[1]=%.6g Position[9]=%.6g Position[11]=%.6g\n",
                 cycle, values["Position"][10], values["FSR"][0], values["Status"][0], values["Accelerometer"][2],
-                fsr_sum, values["Gyroscope"][2]);
+                fsr_sum, values["Gyroscope"][2], values["Accelerometer"][0], values["Accelerometer"][1],
+                values["Position"][9], values["Position"][11]);
     std::fflush(stdout);
 
     // The answer.
