@@ -254,13 +254,15 @@ TEST(V4l2Cameras, SameFramesRunAfterRunAndWithUserptrBuffers) {
 // A V5 robot (libagent): the same probe streams /dev/video0 and /dev/video1
 // (the V5's names) at 30 Hz of simulated time on 10 ms ticks, MMAP and
 // USERPTR buffers giving the same frames, and sees the ball where the V5's
-// top camera projects it.
+// top camera projects it. The run ends 30 ms after the last frame (0.17 s):
+// the V5's body still settles from its start (ending at 0.4 s, the
+// projection had moved 3.7 px from the frame's ball).
 TEST(V4l2Cameras, AV5RobotStreamsVideo0AndVideo1) {
   constexpr int kFrames = 6;
   std::string digest[2];
   for (int k = 0; k < 2; ++k) {
     const int team = 76 + k;
-    const Scenario sc = probeScenario(team, kFrames, k == 0 ? "mmap" : "userptr", 0.4, true);
+    const Scenario sc = probeScenario(team, kFrames, k == 0 ? "mmap" : "userptr", 0.2, true);
     Runner r(sc);
     r.run(quiet());
     ProbeLog log = readLog(sc.program_logs + "/t" + std::to_string(team) + "p1.log");
