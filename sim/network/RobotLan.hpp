@@ -21,7 +21,9 @@
 // kGameControllerAddress:3838 to 10.0.255.255:3838. The packet of t = 0,
 // sent when the run starts, before the programs have attached (and bound
 // their sockets), is held and written at the first tick's stage 11, so every
-// robot gets it, in every run alike.
+// robot gets it, in every run alike: the lan goes live at its first
+// readFrames, which the Runner makes from the first tick on, never at start
+// (Runner::teamAndGame).
 //
 // Determinism: what a program sends is read at one stage of the tick, so a
 // program that sends from its lock-step cycle (before answering LoLA or
