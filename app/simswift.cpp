@@ -493,7 +493,7 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   }
   simswift::programs::Environment env;
   try {
-    env = simswift::programs::shimLaunchEnvironment(tag.empty() ? clock : tag, command[0], {clock}, {});
+    env = simswift::programs::shimLaunchEnvironment(tag.empty() ? clock : tag, command[0], {clock, ""}, {});
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "simswift attach: %s\n", e.what());
     return 1;
