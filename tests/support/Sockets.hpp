@@ -1,5 +1,5 @@
-// The tests' client sockets (LoLA's Unix socket, the viewer's loopback
-// HTTP): connect, bind, read and write whole. Not for the facts-only
+// The tests' sockets (LoLA's Unix socket, the viewer's loopback HTTP, the
+// GameController's UDP): connect, bind, read and write whole, listen. Not for the facts-only
 // clients (lola_client, net_client, libagent_client, the probes), which
 // include no project header, as a team's program would not.
 #pragma once
@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace simswift::testing {
 
@@ -88,6 +89,44 @@ inline bool writeAll(int fd, const std::string& bytes) {
     put += static_cast<std::size_t>(n);
   }
   return true;
+}
+
+// A UDP socket on 127.0.0.1 at a port the kernel picks (parallel ctest runs
+// never collide), read without blocking.
+struct UdpListener {
+  int fd = -1;
+  int port = 0;
+  UdpListener() {
+    fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::bind(fd, reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0) return;
+    socklen_t len = sizeof a;
+    ::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
+    port = ntohs(a.sin_port);
+  }
+  ~UdpListener() { ::close(fd); }
+  UdpListener(const UdpListener&) = delete;
+  UdpListener& operator=(const UdpListener&) = delete;
+  // Every datagram waiting, as bytes.
+  std::vector<std::vector<unsigned char>> drain() const {
+    std::vector<std::vector<unsigned char>> out;
+    unsigned char buf[2048];
+    for (ssize_t n; (n = ::recv(fd, buf, sizeof buf, MSG_DONTWAIT)) >= 0;) out.emplace_back(buf, buf + n);
+    return out;
+  }
+};
+
+// One datagram to 127.0.0.1:`port`, from `fd` (-1: a socket of its own).
+inline void sendUdp(int port, const void* bytes, std::size_t size, int fd = -1) {
+  const int from = fd >= 0 ? fd : ::socket(AF_INET, SOCK_DGRAM, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  a.sin_port = htons(static_cast<uint16_t>(port));
+  ::sendto(from, bytes, size, 0, reinterpret_cast<const sockaddr*>(&a), sizeof a);
+  if (fd < 0) ::close(from);
 }
 
 }  // namespace simswift::testing
