@@ -170,7 +170,8 @@ TEST(GameControlVersions, ARunSendsTheScenariosVersion) {
   Runner r(Scenario::parse(yaml, "v14.yaml"));
   r.start();
   uint8_t ret[32] = {'R', 'G', 'r', 't', 4, 1, 19, 0};
-  for (int i = 0; i < 2; ++i) simswift::testing::sendUdp(r.gameControllerUdp()->returnPort(), ret, sizeof ret, listener.fd);
+  const int return_port = r.gameControllerUdp()->returnPort();
+  for (int i = 0; i < 2; ++i) simswift::testing::sendUdp(return_port, ret, sizeof ret, listener.fd);
   simswift::runner::RunOptions o;
   o.progress = false;
   r.run(o);
