@@ -74,8 +74,10 @@ class RobotLan {
 
   // Stage 11 (above): reads every wlan0 into `net` and `game_return`.
   void readFrames(int64_t t_us, TeamNetwork& net, const std::function<void(const uint8_t*, size_t)>& game_return);
-  // A team message the network delivers (Channel::Lan), into its receiver's wlan0.
-  void deliver(const Delivery& d);
+  // A team message the network delivers (Channel::Lan), into its receiver's
+  // wlan0; false if not written (no network of its own, a unicast to
+  // another robot, the write failed).
+  bool deliver(const Delivery& d);
   // The GameController's packet, into every wlan0.
   void sendGameData(const std::vector<uint8_t>& payload);
 
@@ -87,7 +89,7 @@ class RobotLan {
     uint32_t address;
   };
   const Robot* byEndpoint(int endpoint) const;
-  void write(const Robot& r, const UdpDatagram& d);
+  bool write(const Robot& r, const UdpDatagram& d);
 
   std::vector<Robot> robots_;
   bool live_ = false;                          // readFrames has run once: the programs are attached

@@ -481,7 +481,7 @@ void Runner::teamAndGame(int64_t t_us) {
     lan_->readFrames(t_us, *network_, [this](const uint8_t* b, size_t n) {
       if (gc_udp_) gc_udp_->countReturn(b, n);
     });
-    network_->exchange(t_us, links_, [this](const network::Delivery& d) { lan_->deliver(d); });
+    network_->exchange(t_us, links_, [this](const network::Delivery& d) { return lan_->deliver(d); });
   } else {
     network_->exchange(t_us, links_);
   }
