@@ -41,7 +41,6 @@
 #include "sim/lola/LolaServer.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
-#include "sim/programs/ProgramBinary.hpp"
 #include "sim/programs/ProgramProcess.hpp"
 #include "sim/programs/ShimEnvironment.hpp"
 #include "sim/runner/Bodies.hpp"
@@ -492,15 +491,9 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
   }
-  const std::string exe = simswift::programs::findExecutable(command[0]);
-  if (const std::string why = exe.empty() ? "" : simswift::programs::shimRefusal(exe); !why.empty()) {
-    std::fprintf(stderr, "simswift attach: '%s' is %s\n", command[0].c_str(), why.c_str());
-    return 1;
-  }
-  std::vector<std::pair<std::string, std::string>> env;
+  simswift::programs::Environment env;
   try {
-    const char* preload = std::getenv("LD_PRELOAD");
-    env = simswift::programs::shimEnvironment(tag.empty() ? clock : tag, {clock}, preload ? preload : "");
+    env = simswift::programs::shimLaunchEnvironment(tag.empty() ? clock : tag, command[0], {clock, ""}, {});
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "simswift attach: %s\n", e.what());
     return 1;

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <list>
 #include <stdexcept>
 #include <thread>
 
@@ -151,9 +152,29 @@ void HttpServer::serve(const Handler& handler) {
   sigemptyset(&sa.sa_mask);
   ::sigaction(SIGINT, &sa, nullptr);
   ::sigaction(SIGTERM, &sa, nullptr);
-  while (!g_stop) {
+  // Each connection's thread sets `done`; the loop joins it and only then
+  // closes its fd (so a shutdown below never reaches a reused fd number).
+  struct Connection {
+    int fd;
+    std::atomic<bool> done{false};
+    std::thread thread;
+  };
+  std::list<Connection> open;
+  const auto reap = [&open] {
+    for (auto it = open.begin(); it != open.end();) {
+      if (!it->done) {
+        ++it;
+        continue;
+      }
+      it->thread.join();
+      ::close(it->fd);
+      it = open.erase(it);
+    }
+  };
+  while (!g_stop && !stop_) {
+    reap();
     pollfd p{listen_fd_, POLLIN, 0};
-    if (::poll(&p, 1, 200) <= 0) continue;  // 200 ms: how soon a signal is noticed
+    if (::poll(&p, 1, 200) <= 0) continue;  // 200 ms: how soon a signal or stop() is noticed
     const int fd = ::accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
     if (fd < 0) continue;
     timeval tv{kClientTimeoutS, 0};
@@ -161,19 +182,25 @@ void HttpServer::serve(const Handler& handler) {
     ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);
     // A thread per connection: a browser keeps idle connections open
     // (preconnects), which must not hold up the requests on the others.
-    if (active_ >= kMaxConnections) {
+    if (open.size() >= static_cast<std::size_t>(kMaxConnections)) {
       ::close(fd);  // more than a page asks for at once: dropped, the browser retries
       continue;
     }
-    ++active_;
-    std::thread([this, fd, &handler] {
-      answer(fd, handler);
-      ::close(fd);
-      --active_;
-    }).detach();
+    Connection& c = open.emplace_back();
+    c.fd = fd;
+    c.thread = std::thread([this, &c, &handler] {
+      answer(c.fd, handler);
+      c.done = true;
+    });
   }
-  // Let the answers under way finish (each is bounded by the client timeout).
-  for (int i = 0; active_ > 0 && i < 10 * (kClientTimeoutS + 1); ++i) ::usleep(100000);
+  // A client still to send its request is cut off (its recv ends); answers
+  // under way finish (each send bounded by the client timeout). All joined:
+  // no thread outlives serve(), its handler or this server.
+  for (Connection& c : open) ::shutdown(c.fd, SHUT_RD);
+  for (Connection& c : open) {
+    c.thread.join();
+    ::close(c.fd);
+  }
 }
 
 void HttpServer::answer(int fd, const Handler& handler) {

@@ -1,7 +1,8 @@
 // A small HTTP/1.1 server on the loopback interface for `simswift view`
 // (docs/viewer.md): GET and HEAD only, one request per connection
 // (Connection: close), each connection on a thread of its own (at most
-// 32 at once; the handler must be safe to call from several threads). Requests are parsed by
+// 32 at once; the handler must be safe to call from several threads),
+// owned by serve(), which joins them all before it returns. Requests are parsed by
 // parseRequest (a pure function, tested alone): a bad request line, an
 // unknown method, a path that is not absolute, an invalid or NUL %-escape,
 // or a head over kMaxHead bytes is refused with its status. The handler
@@ -55,14 +56,18 @@ class HttpServer {
   HttpServer& operator=(const HttpServer&) = delete;
 
   int port() const { return port_; }
-  // Serves until SIGINT or SIGTERM (installed here); returns then.
+  // Serves until SIGINT or SIGTERM (installed here) or stop(); returns
+  // once every connection's thread has ended (an answer under way is
+  // finished, a client that has not sent its request is cut off).
   void serve(const Handler& handler);
+  // Ends serve() (from any thread, e.g. a test's).
+  void stop() { stop_ = true; }
 
  private:
   void answer(int fd, const Handler& handler);
   int listen_fd_ = -1;
   int port_ = 0;
-  std::atomic<int> active_{0};  // connections being answered
+  std::atomic<bool> stop_{false};
 };
 
 }  // namespace simswift::view

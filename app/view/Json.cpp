@@ -1,7 +1,6 @@
 #include "app/view/Json.hpp"
 
 #include <cctype>
-#include <cstdio>
 
 namespace simswift::view::json {
 
@@ -131,26 +130,5 @@ class Validator {
 }  // namespace
 
 std::size_t invalidAt(std::string_view text) { return Validator(text).run(); }
-
-std::string quote(std::string_view s) {
-  std::string out;
-  out.reserve(s.size() + 2);
-  out += '"';
-  for (const char ch : s) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += ch;
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += ch;
-    }
-  }
-  out += '"';
-  return out;
-}
 
 }  // namespace simswift::view::json

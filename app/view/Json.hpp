@@ -1,7 +1,7 @@
 // The little JSON the viewer's server needs (docs/viewer.md): a validator
 // for the recording's message payloads (they are passed to the page as they
-// are, so each is checked once when the file is opened) and the writing of
-// strings and numbers into its answers. No parser: the page reads the JSON.
+// are, so each is checked once when the file is opened). Its answers quote
+// strings with common/json. No parser: the page reads the JSON.
 #pragma once
 
 #include <cstddef>
@@ -13,9 +13,5 @@ namespace simswift::view::json {
 // npos if `text` is one JSON value (RFC 8259; surrounding white space
 // allowed, nesting at most 128 deep), else the offset of the first error.
 std::size_t invalidAt(std::string_view text);
-
-// `s` as a JSON string, quotes included (bytes of 0x80 and up are copied:
-// the payloads are UTF-8).
-std::string quote(std::string_view s);
 
 }  // namespace simswift::view::json

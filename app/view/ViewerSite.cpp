@@ -5,8 +5,11 @@
 #include <sstream>
 
 #include "app/view/Json.hpp"
+#include "common/json/JsonString.hpp"
 
 namespace simswift::view {
+
+using common::json::quote;  // JSON strings (common/json)
 
 namespace {
 
@@ -103,19 +106,19 @@ HttpResponse ViewerSite::file(const std::string& path, const std::string& type) 
 }
 
 HttpResponse ViewerSite::info() const {
-  std::string o = "{\"file\":" + json::quote(file_.name());
+  std::string o = "{\"file\":" + quote(file_.name());
   o += ",\"bytes\":" + std::to_string(file_.bytes().size());
-  o += ",\"profile\":" + json::quote(file_.profile()) + ",\"library\":" + json::quote(file_.library());
+  o += ",\"profile\":" + quote(file_.profile()) + ",\"library\":" + quote(file_.library());
   o += ",\"start_ns\":" + std::to_string(file_.startTime()) + ",\"end_ns\":" + std::to_string(file_.endTime());
   o += ",\"messages\":" + std::to_string(file_.messageCount());
   o += ",\"metadata\":{";
   bool first = true;
   for (const auto& [name, map] : file_.metadata()) {
-    o += (first ? "" : ",") + json::quote(name) + ":{";
+    o += (first ? "" : ",") + quote(name) + ":{";
     first = false;
     bool first_kv = true;
     for (const auto& [k, v] : map) {
-      o += (first_kv ? "" : ",") + json::quote(k) + ":" + json::quote(v);
+      o += (first_kv ? "" : ",") + quote(k) + ":" + quote(v);
       first_kv = false;
     }
     o += "}";
@@ -125,9 +128,9 @@ HttpResponse ViewerSite::info() const {
   for (const auto& [id, ch] : file_.channels()) {
     const auto& list = file_.messages().at(id);
     const auto schema = file_.schemas().find(ch.schema_id);
-    o += std::string(first ? "" : ",") + "{\"topic\":" + json::quote(ch.topic) +
-         ",\"encoding\":" + json::quote(ch.message_encoding) +
-         ",\"schema\":" + json::quote(schema == file_.schemas().end() ? "" : schema->second.name) +
+    o += std::string(first ? "" : ",") + "{\"topic\":" + quote(ch.topic) +
+         ",\"encoding\":" + quote(ch.message_encoding) +
+         ",\"schema\":" + quote(schema == file_.schemas().end() ? "" : schema->second.name) +
          ",\"count\":" + std::to_string(list.size());
     if (!list.empty())
       o += ",\"first_ns\":" + std::to_string(list.front().log_time) +
@@ -188,7 +191,7 @@ HttpResponse ViewerSite::messages(const HttpRequest& r) const {
   const auto end = std::upper_bound(begin, list.end(), to, later);
   const std::size_t n = static_cast<std::size_t>(end - begin);
   const std::size_t shown = std::min<std::size_t>(n, max);
-  std::string o = "{\"topic\":" + json::quote(ch->topic) + ",\"total\":" + std::to_string(n) + ",\"messages\":[";
+  std::string o = "{\"topic\":" + quote(ch->topic) + ",\"total\":" + std::to_string(n) + ",\"messages\":[";
   for (std::size_t k = 0; k < shown; ++k) {
     // Evenly thinned; the first and (if more than one) the last always kept.
     const std::size_t i = shown < 2 ? 0 : k * (n - 1) / (shown - 1);

@@ -4,10 +4,44 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
 namespace simswift::bridge {
+
+namespace {
+
+// /proc/<pid>/stat's parent pid (its fourth field, after the name in
+// parentheses, which may hold spaces), or 0.
+int parentOf(int pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string stat;
+  std::getline(in, stat);
+  const size_t close = stat.rfind(')');
+  if (close == std::string::npos) return 0;
+  char state = 0;
+  int ppid = 0;
+  return std::sscanf(stat.c_str() + close + 1, " %c %d", &state, &ppid) == 2 ? ppid : 0;
+}
+
+std::string exeOf(int pid) {
+  char buf[4096];
+  const std::string link = "/proc/" + std::to_string(pid) + "/exe";
+  const ssize_t n = readlink(link.c_str(), buf, sizeof buf);
+  return n > 0 ? std::string(buf, static_cast<size_t>(n)) : std::string();
+}
+
+}  // namespace
+
+bool launchedBySelf(int pid) {
+  const int self = getpid();
+  const std::string own_exe = exeOf(self);
+  // Up the parents (a bounded walk: pids are reused, a chain is not long).
+  for (int p = pid, steps = 0; p > 1 && steps < 64; p = parentOf(p), ++steps)
+    if (parentOf(p) == self && !own_exe.empty() && exeOf(p) == own_exe) return true;
+  return false;
+}
 
 std::vector<AttachedProcess> processesMapping(const std::string& shm_name) {
   std::vector<AttachedProcess> found;
@@ -17,7 +51,7 @@ std::vector<AttachedProcess> processesMapping(const std::string& shm_name) {
   while (dirent* e = readdir(d)) {
     if (!std::isdigit(static_cast<unsigned char>(e->d_name[0]))) continue;
     const int pid = std::atoi(e->d_name);
-    if (pid == getpid()) continue;
+    if (pid == getpid() || launchedBySelf(pid)) continue;
     std::ifstream maps(std::string("/proc/") + e->d_name + "/maps");
     std::string line;
     bool maps_it = false;

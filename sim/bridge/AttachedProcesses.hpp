@@ -13,7 +13,16 @@ struct AttachedProcess {
   std::string name;  // /proc/<pid>/comm
 };
 
-// Processes other than this one that map /dev/shm<shm_name> ("/libagent-memory210").
+// Processes that map /dev/shm<shm_name> ("/libagent-memory210"), other
+// than this one and those it launched itself (launchedBySelf), which
+// simswift stops at the end of the run, so nobody needs to.
 std::vector<AttachedProcess> processesMapping(const std::string& shm_name);
+
+// Whether `pid` is, or descends from, a child of this process that runs this
+// process's own executable (forked, never exec'd): the init of a launched
+// program (sim/programs/ProgramProcess.cpp, PID 1 of the program's PID
+// namespace, which keeps simswift's mappings of every robot's block), its
+// program and everything that program started.
+bool launchedBySelf(int pid);
 
 }  // namespace simswift::bridge

@@ -30,9 +30,11 @@ const RobotLan::Robot* RobotLan::byEndpoint(int endpoint) const {
   return nullptr;
 }
 
-void RobotLan::write(const Robot& r, const UdpDatagram& d) {
+bool RobotLan::write(const Robot& r, const UdpDatagram& d) {
   const std::vector<uint8_t> f = buildUdpFrame(d, ip_id_++);
-  if (::write(r.fd, f.data(), f.size()) != static_cast<ssize_t>(f.size())) ++stats_.write_errors;
+  if (::write(r.fd, f.data(), f.size()) == static_cast<ssize_t>(f.size())) return true;
+  ++stats_.write_errors;
+  return false;
 }
 
 void RobotLan::readFrames(int64_t t_us, TeamNetwork& net,
@@ -93,21 +95,22 @@ void RobotLan::readFrames(int64_t t_us, TeamNetwork& net,
   }
 }
 
-void RobotLan::deliver(const Delivery& d) {
+bool RobotLan::deliver(const Delivery& d) {
   const Robot* to = byEndpoint(d.to);
   const Robot* from = byEndpoint(d.from);
-  if (!to || !from || d.bytes.size() < kMetaBytes) return;  // its program has no network of its own
+  if (!to || !from || d.bytes.size() < kMetaBytes) return false;  // its program has no network of its own
   UdpDatagram u;
   u.dst_ip = (static_cast<uint32_t>(d.bytes[0]) << 24) | (static_cast<uint32_t>(d.bytes[1]) << 16) |
              (static_cast<uint32_t>(d.bytes[2]) << 8) | d.bytes[3];
   // A unicast reaches only the robot with that address.
-  if (u.dst_ip != kSplBroadcast && u.dst_ip != kLimitedBroadcast && u.dst_ip != to->address) return;
+  if (u.dst_ip != kSplBroadcast && u.dst_ip != kLimitedBroadcast && u.dst_ip != to->address) return false;
   u.src_ip = from->address;
   u.src_port = static_cast<uint16_t>((d.bytes[4] << 8) | d.bytes[5]);
   u.dst_port = static_cast<uint16_t>((d.bytes[6] << 8) | d.bytes[7]);
   u.payload.assign(d.bytes.begin() + kMetaBytes, d.bytes.end());
-  write(*to, u);
+  if (!write(*to, u)) return false;
   ++stats_.team_written;
+  return true;
 }
 
 void RobotLan::sendGameData(const std::vector<uint8_t>& payload) {

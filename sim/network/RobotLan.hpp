@@ -21,7 +21,9 @@
 // kGameControllerAddress:3838 to 10.0.255.255:3838. The packet of t = 0,
 // sent when the run starts, before the programs have attached (and bound
 // their sockets), is held and written at the first tick's stage 11, so every
-// robot gets it, in every run alike.
+// robot gets it, in every run alike: the lan goes live at its first
+// readFrames, which the Runner makes from the first tick on, never at start
+// (Runner::teamAndGame).
 //
 // Determinism: what a program sends is read at one stage of the tick, so a
 // program that sends from its lock-step cycle (before answering LoLA or
@@ -72,8 +74,10 @@ class RobotLan {
 
   // Stage 11 (above): reads every wlan0 into `net` and `game_return`.
   void readFrames(int64_t t_us, TeamNetwork& net, const std::function<void(const uint8_t*, size_t)>& game_return);
-  // A team message the network delivers (Channel::Lan), into its receiver's wlan0.
-  void deliver(const Delivery& d);
+  // A team message the network delivers (Channel::Lan), into its receiver's
+  // wlan0; false if not written (no network of its own, a unicast to
+  // another robot, the write failed).
+  bool deliver(const Delivery& d);
   // The GameController's packet, into every wlan0.
   void sendGameData(const std::vector<uint8_t>& payload);
 
@@ -85,7 +89,7 @@ class RobotLan {
     uint32_t address;
   };
   const Robot* byEndpoint(int endpoint) const;
-  void write(const Robot& r, const UdpDatagram& d);
+  bool write(const Robot& r, const UdpDatagram& d);
 
   std::vector<Robot> robots_;
   bool live_ = false;                          // readFrames has run once: the programs are attached

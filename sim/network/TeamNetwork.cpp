@@ -79,7 +79,7 @@ std::vector<Delivery> TeamNetwork::deliver(int64_t t_us) {
 }
 
 void TeamNetwork::exchange(int64_t t_us, const std::vector<al::TeamLink*>& links,
-                           const std::function<void(const Delivery&)>& lan) {
+                           const std::function<bool(const Delivery&)>& lan) {
   al::TeamPacket p;
   if (!last_sent_.empty() && last_sent_.back().sent_us != t_us) last_sent_.clear();  // none sent this tick
   last_delivered_.clear();
@@ -91,8 +91,10 @@ void TeamNetwork::exchange(int64_t t_us, const std::vector<al::TeamLink*>& links
   }
   for (Delivery& d : deliver(t_us)) {
     if (d.channel == Channel::Lan) {
-      if (lan) lan(d);
-      last_delivered_.push_back(std::move(d));
+      if (lan && lan(d))
+        last_delivered_.push_back(std::move(d));
+      else
+        ++stats_.lan_refused;
       continue;
     }
     al::TeamLink* link = d.to < static_cast<int>(links.size()) ? links[d.to] : nullptr;

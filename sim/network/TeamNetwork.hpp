@@ -51,6 +51,7 @@ struct TeamNetworkStats {
   int64_t lost = 0;          // (packet, teammate) pairs dropped by the loss draw
   int64_t delivered = 0;     // (packet, teammate) pairs handed over
   int64_t inbox_overflow = 0;// delivered but the receiver's inbox was full
+  int64_t lan_refused = 0;   // Lan deliveries the receiver's network did not take
   int64_t team_sent[2] = {0, 0};
   int64_t team_over_budget[2] = {0, 0};  // of over_budget, per team
 };
@@ -71,13 +72,15 @@ class TeamNetwork {
   // The runner's once-per-tick call: drains every link's outbox (endpoint
   // order, FIFO) as sent at t_us, then writes the packets due by t_us into
   // the receivers' inboxes. links[i] belongs to endpoint i (null: none).
-  // Deliveries of Channel::Lan go to `lan` (none: dropped) instead.
+  // Deliveries of Channel::Lan go to `lan` instead, which says whether the
+  // receiver's network took it (none: all dropped).
   void exchange(int64_t t_us, const std::vector<common::libagent::TeamLink*>& links,
-                const std::function<void(const Delivery&)>& lan = nullptr);
+                const std::function<bool(const Delivery&)>& lan = nullptr);
 
   // The last exchange's traffic, for observers (the recorder): the packets
   // the robots sent (to = -1, whether or not the budget let them through)
-  // and those handed to a receiver's inbox, in exchange order.
+  // and those a receiver's inbox or network took, in exchange order (a
+  // packet lost, over the budget, refused or overflowing is not delivered).
   const std::vector<Delivery>& lastSent() const { return last_sent_; }
   const std::vector<Delivery>& lastDelivered() const { return last_delivered_; }
 

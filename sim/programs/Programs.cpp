@@ -14,7 +14,6 @@
 #include "sim/programs/Errors.hpp"
 #include "sim/programs/ExternalProgram.hpp"
 #include "sim/programs/MountNamespace.hpp"
-#include "sim/programs/ProgramBinary.hpp"
 #include "sim/programs/ShimEnvironment.hpp"
 
 namespace simswift::programs {
@@ -243,19 +242,7 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const ProgramRun& run, con
   std::unique_ptr<ClockPage> clock = clockPage(run, e);
   std::unique_ptr<ProgramProcess> process;
   try {
-    // The shim (docs/shim.md): refused for a binary it cannot reach, never
-    // run on the wall clock.
-    const std::string exe = findExecutable(argv[0]);
-    if (const std::string why = exe.empty() ? "" : shimRefusal(exe); !why.empty())
-      throw std::runtime_error("robot " + slot.tag + ": its program '" + argv[0] + "' is " + why);
-    std::string preload;
-    for (const auto& [k, v] : env)
-      if (k == "LD_PRELOAD") preload = v;
-    if (const char* p = std::getenv("LD_PRELOAD"); p && preload.empty()) preload = p;
-    for (auto& kv : shimEnvironment(slot.tag, {clock->name(), e.v4l2_block}, preload)) {
-      env.erase(std::remove_if(env.begin(), env.end(), [&](const auto& x) { return x.first == kv.first; }), env.end());
-      env.push_back(std::move(kv));
-    }
+    env = shimLaunchEnvironment(slot.tag, argv[0], {clock->name(), e.v4l2_block}, std::move(env));
     ProgramView view = programView(e, logs, robocup, argv, cwd, env, config);
     process = std::make_unique<ProgramProcess>(slot.tag, argv, cwd, env, (logs / (slot.tag + ".log")).string(),
                                                e.launch.stop_grace_s, std::move(view));

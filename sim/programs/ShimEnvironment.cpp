@@ -2,12 +2,14 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 
 #include "common/clock/ClockPage.hpp"
 #include "common/v4l2/DeviceBlock.hpp"
+#include "sim/programs/ProgramBinary.hpp"
 
 #ifndef SIMSWIFT_INSTALL_LIBDIR
 #define SIMSWIFT_INSTALL_LIBDIR "lib"
@@ -35,8 +37,11 @@ std::string shimLibraryPath() {
   return "";
 }
 
-std::vector<std::pair<std::string, std::string>> shimEnvironment(const std::string& robot, const ShimSettings& s,
-                                                                 const std::string& preload_before) {
+Environment shimLaunchEnvironment(const std::string& robot, const std::string& command, const ShimSettings& s,
+                                  Environment env) {
+  const std::string exe = findExecutable(command);
+  if (const std::string why = exe.empty() ? "" : shimRefusal(exe); !why.empty())
+    throw std::runtime_error("robot " + robot + ": its program '" + command + "' is " + why);
   const std::string shim = shimLibraryPath();
   if (shim.empty())
     throw std::runtime_error("robot " + robot + ": " + kShimFile +
@@ -47,11 +52,19 @@ std::vector<std::pair<std::string, std::string>> shimEnvironment(const std::stri
     throw std::runtime_error("robot " + robot + ": " + kEarlyFile + " is not beside " + shim +
                              " (docs/shim.md: a program exec'd under the clock filter needs it); build the "
                              "simswift_shim_early target");
-  std::vector<std::pair<std::string, std::string>> env;
-  env.emplace_back("LD_PRELOAD", preload_before.empty() ? shim : shim + ":" + preload_before);
-  env.emplace_back("LD_AUDIT", early);
-  env.emplace_back(common::clock::kPageEnv, s.clock_page);
-  if (!s.v4l2_block.empty()) env.emplace_back(common::v4l2::kBlockVariable, s.v4l2_block);
+  std::string preload;
+  for (const auto& [k, v] : env)
+    if (k == "LD_PRELOAD") preload = v;
+  if (const char* p = std::getenv("LD_PRELOAD"); p && preload.empty()) preload = p;
+  Environment shim_env;
+  shim_env.emplace_back("LD_PRELOAD", preload.empty() ? shim : shim + ":" + preload);
+  shim_env.emplace_back("LD_AUDIT", early);
+  shim_env.emplace_back(common::clock::kPageEnv, s.clock_page);
+  if (!s.v4l2_block.empty()) shim_env.emplace_back(common::v4l2::kBlockVariable, s.v4l2_block);
+  for (auto& kv : shim_env) {
+    env.erase(std::remove_if(env.begin(), env.end(), [&](const auto& x) { return x.first == kv.first; }), env.end());
+    env.push_back(std::move(kv));
+  }
   return env;
 }
 

@@ -21,13 +21,16 @@ struct ShimSettings {
 // found.
 std::string shimLibraryPath();
 
-// The variables to add to the program's environment: LD_PRELOAD with the
-// shim first (before `preload_before`, what the program would otherwise get:
-// the launch's own LD_PRELOAD or simswift's), LD_AUDIT with the early
-// SIGSYS handler (shim/early/Early.cpp), SIMSWIFT_CLOCK and, with cameras,
-// SIMSWIFT_V4L2. Throws std::runtime_error naming `robot` if either library
-// is not found.
-std::vector<std::pair<std::string, std::string>> shimEnvironment(const std::string& robot, const ShimSettings& s,
-                                                                 const std::string& preload_before);
+// The environment a program is started with against a run, launched or
+// `simswift attach`ed: `env` (its own variables) with the shim's set over
+// them: LD_PRELOAD with the shim first (before env's own LD_PRELOAD, else
+// simswift's), LD_AUDIT with the early SIGSYS handler
+// (shim/early/Early.cpp), SIMSWIFT_CLOCK and, with cameras, SIMSWIFT_V4L2.
+// Throws std::runtime_error naming `robot` if `command` (argv[0]) cannot
+// take the shim (ProgramBinary.hpp: never run on the wall clock) or either
+// library is not found.
+using Environment = std::vector<std::pair<std::string, std::string>>;
+Environment shimLaunchEnvironment(const std::string& robot, const std::string& command, const ShimSettings& s,
+                                  Environment env);
 
 }  // namespace simswift::programs

@@ -12,6 +12,8 @@
 #include <string>
 #include <string_view>
 
+#include "common/json/JsonString.hpp"
+
 namespace simswift::record {
 
 class Json {
@@ -74,7 +76,7 @@ class Json {
     if (!first_) s_ += ',';
     first_ = false;
   }
-  void quoted(std::string_view v);
+  void quoted(std::string_view v) { common::json::appendQuoted(s_, v); }
   std::string s_;
   bool first_ = true;
 };

@@ -505,12 +505,18 @@ void Runner::buildRobotLan() {
 }
 
 void Runner::teamAndGame(int64_t t_us) {
-  if (lan_ && !lan_->empty()) {
+  // The robots' own networks from the first tick on: at start (t = 0, from
+  // buildTeamAndGame) their programs may not have bound their ports yet, so
+  // the GameController's first packet waits in the lan (RobotLan::pending_)
+  // until the first tick's answers. Read here at start, the lan went live at
+  // once and wrote it then: a program launched last (the opponent of
+  // tests/nao_v6/test_robot_network.cpp) had not bound 3838 and missed it.
+  if (lan_ && !lan_->empty() && world_->tick() > 0) {
     // Read before the exchange: a message read now is sent at t_us.
     lan_->readFrames(t_us, *network_, [this](const uint8_t* b, size_t n) {
       if (gc_udp_) gc_udp_->countReturn(b, n);
     });
-    network_->exchange(t_us, links_, [this](const network::Delivery& d) { lan_->deliver(d); });
+    network_->exchange(t_us, links_, [this](const network::Delivery& d) { return lan_->deliver(d); });
   } else {
     network_->exchange(t_us, links_);
   }

@@ -1,18 +1,19 @@
 // `simswift run` with game: {udp: on}, as a user runs it: a bad value exits
 // 2 naming file, line and field; a good run sends the GameController packets
 // a plain UDP listener hears, and says so in its summary.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
+
+#include "tests/support/Sockets.hpp"
 
 namespace {
 
@@ -53,27 +54,18 @@ TEST(CliGameUdp, BadValueExitsTwoNamingFileLineAndField) {
 }
 
 TEST(CliGameUdp, RunSendsPacketsAListenerHears) {
-  const int fd = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ASSERT_EQ(bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
-  socklen_t len = sizeof a;
-  getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
+  const simswift::testing::UdpListener listener;
+  ASSERT_GT(listener.port, 0);
   const std::string s = write("udp.yaml", kOne + "game: {udp: on, return_port: 0, port: " +
-                                              std::to_string(ntohs(a.sin_port)) + "}\n");
+                                              std::to_string(listener.port) + "}\n");
   const Result r = run(s);
   EXPECT_EQ(r.code, 0) << r.out;
   // t = 0, 0.5 and 1 s of simulated time.
   EXPECT_NE(r.out.find("| gc udp 3 sent |"), std::string::npos) << r.out;
-  int heard = 0;
-  unsigned char buf[1024];
-  ssize_t n;
-  while ((n = recv(fd, buf, sizeof buf, MSG_DONTWAIT)) >= 0) {
-    EXPECT_EQ(n, 588);
-    EXPECT_EQ(std::string(reinterpret_cast<char*>(buf), 4), "RGme");
-    ++heard;
+  const std::vector<std::vector<unsigned char>> heard = listener.drain();
+  for (const auto& p : heard) {
+    EXPECT_EQ(p.size(), 588u);
+    EXPECT_EQ(std::string(p.begin(), p.begin() + std::min<size_t>(4, p.size())), "RGme");
   }
-  EXPECT_EQ(heard, 3);
-  close(fd);
+  EXPECT_EQ(heard.size(), 3u);
 }

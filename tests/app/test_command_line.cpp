@@ -5,8 +5,6 @@
 // seed reader's decimal rule (CLI11 alone reads 010 as octal 8).
 #include <gtest/gtest.h>
 
-#include <sys/socket.h>
-#include <sys/un.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -18,6 +16,7 @@
 #include "common/lock/PidLock.hpp"
 #include "sim/programs/ClockPage.hpp"
 #include "tests/support/Shell.hpp"
+#include "tests/support/Sockets.hpp"
 
 namespace {
 
@@ -174,12 +173,8 @@ TEST(CommandLine, AttachPassesEverythingAfterTheDashesThrough) {
   const fs::path dir = fs::temp_directory_path() / ("simswift_cmdline_" + std::to_string(getpid()));
   fs::create_directories(dir);
   const std::string socket_path = (dir / "robocup").string();
-  const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  const int fd = simswift::testing::bindUnix(socket_path);
   ASSERT_GE(fd, 0);
-  sockaddr_un addr{};
-  addr.sun_family = AF_UNIX;
-  socket_path.copy(addr.sun_path, sizeof addr.sun_path - 1);
-  ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
   // Served, as a run serves it: the run's lock beside the socket (attach
   // waits for a served socket, sim/lola/LolaServer.hpp).
   common::lock::PidLock served(socket_path + ".lock");

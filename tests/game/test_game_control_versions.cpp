@@ -3,9 +3,6 @@
 // header of that season puts them (sim/game/GameControlVersions.hpp cites
 // the commits), a run's packets at the chosen version, the era's return
 // packets counted, and an unknown version refused with file, line and field.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -17,6 +14,7 @@
 #include "sim/game/GameControlVersions.hpp"
 #include "sim/runner/Runner.hpp"
 #include "tests/support/ConfigErrors.hpp"
+#include "tests/support/Sockets.hpp"
 
 using simswift::runner::Runner;
 using simswift::runner::Scenario;
@@ -165,31 +163,19 @@ TEST(GameControlVersions, ReturnPacketsOfEachEra) {
 // A run with version 14: a listener gets 62-byte packets every 500 ms of
 // simulated time; a 2022 robot's return packets are counted.
 TEST(GameControlVersions, ARunSendsTheScenariosVersion) {
-  const int listener = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ASSERT_EQ(bind(listener, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
-  socklen_t len = sizeof a;
-  getsockname(listener, reinterpret_cast<sockaddr*>(&a), &len);
+  const simswift::testing::UdpListener listener;
+  ASSERT_GT(listener.port, 0);
   const std::string yaml = "duration: 1.2\nrobots:\n  - {team: 19, player: 1}\ngame:\n  udp: on\n  version: 14\n  port: " +
-                           std::to_string(ntohs(a.sin_port)) + "\n  return_port: 0\n  message_budget: 900\n";
+                           std::to_string(listener.port) + "\n  return_port: 0\n  message_budget: 900\n";
   Runner r(Scenario::parse(yaml, "v14.yaml"));
   r.start();
   uint8_t ret[32] = {'R', 'G', 'r', 't', 4, 1, 19, 0};
-  sockaddr_in to{};
-  to.sin_family = AF_INET;
-  to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  to.sin_port = htons(static_cast<uint16_t>(r.gameControllerUdp()->returnPort()));
-  for (int i = 0; i < 2; ++i) sendto(listener, ret, sizeof ret, 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
+  const int return_port = r.gameControllerUdp()->returnPort();
+  for (int i = 0; i < 2; ++i) simswift::testing::sendUdp(return_port, ret, sizeof ret, listener.fd);
   simswift::runner::RunOptions o;
   o.progress = false;
   r.run(o);
-  std::vector<std::vector<uint8_t>> got;
-  uint8_t buf[2048];
-  ssize_t n;
-  while ((n = recv(listener, buf, sizeof buf, MSG_DONTWAIT)) >= 0) got.emplace_back(buf, buf + n);
-  close(listener);
+  const std::vector<std::vector<unsigned char>> got = listener.drain();
   ASSERT_EQ(got.size(), 3u);  // t = 0, 0.5, 1.0 s
   for (const auto& p : got) {
     ASSERT_EQ(p.size(), 62u);

@@ -3,9 +3,6 @@
 // packets of a run and sees the timeline's states and a penalty at 2 Hz of
 // simulated time, return packets counted, the state hash untouched, and bad
 // configuration refused with file, line and field.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -18,6 +15,7 @@
 #include "sim/game/GameControllerUdp.hpp"
 #include "sim/runner/Runner.hpp"
 #include "tests/support/ConfigErrors.hpp"
+#include "tests/support/Sockets.hpp"
 
 using simswift::ConfigError;
 using simswift::runner::Runner;
@@ -27,42 +25,8 @@ namespace al = common::libagent;
 namespace spl = simswift::game::spl;
 
 namespace {
-// A UDP socket on 127.0.0.1 at a port the kernel picks (parallel ctest runs
-// never collide), read without blocking.
-struct Listener {
-  int fd = -1;
-  int port = 0;
-  Listener() {
-    fd = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK, 0);
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    a.sin_port = 0;
-    bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a);
-    socklen_t len = sizeof a;
-    getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
-    port = ntohs(a.sin_port);
-  }
-  ~Listener() { close(fd); }
-  // Every datagram waiting, as bytes.
-  std::vector<std::vector<unsigned char>> drain() const {
-    std::vector<std::vector<unsigned char>> out;
-    unsigned char buf[2048];
-    ssize_t n;
-    while ((n = recv(fd, buf, sizeof buf, MSG_DONTWAIT)) >= 0) out.emplace_back(buf, buf + n);
-    return out;
-  }
-};
-
-void sendTo(int port, const void* bytes, size_t size) {
-  const int fd = socket(AF_INET, SOCK_DGRAM, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  a.sin_port = htons(static_cast<uint16_t>(port));
-  sendto(fd, bytes, size, 0, reinterpret_cast<sockaddr*>(&a), sizeof a);
-  close(fd);
-}
+using Listener = simswift::testing::UdpListener;
+using simswift::testing::sendUdp;
 
 std::string errorOf(const std::string& yaml) {
   return simswift::testing::configError([&] { Scenario::parse(yaml, "s.yaml"); });
@@ -207,9 +171,9 @@ TEST(GameControllerUdp, ReturnPacketsCountedPerRobot) {
   ASSERT_GT(port, 0);
   const spl::ReturnData alive = spl::makeReturn(19, 2, spl::ReturnMessage::Alive);
   const spl::ReturnData pen = spl::makeReturn(5, 1, spl::ReturnMessage::ManualPenalise);
-  for (int i = 0; i < 3; ++i) sendTo(port, &alive, sizeof alive);
-  sendTo(port, &pen, sizeof pen);
-  sendTo(port, "RGrt", 4);  // too short
+  for (int i = 0; i < 3; ++i) sendUdp(port, &alive, sizeof alive);
+  sendUdp(port, &pen, sizeof pen);
+  sendUdp(port, "RGrt", 4);  // too short
   r.tick();
   const auto c = r.gameControllerUdp()->returns();
   ASSERT_EQ(c.size(), 2u);

@@ -6,7 +6,6 @@
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
-#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,6 +15,7 @@
 #include <thread>
 
 #include "sim/lola/LolaServer.hpp"
+#include "tests/support/Sockets.hpp"
 
 using namespace simswift::lola;
 using namespace std::chrono_literals;
@@ -27,33 +27,14 @@ std::string socketPath(const char* name) {
   return "/tmp/simswift-lola-test-" + std::to_string(::getpid()) + "-" + name;
 }
 
-// A client socket, connected (or -1).
-int connectTo(const std::string& path) {
-  const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
-  sockaddr_un a{};
-  a.sun_family = AF_UNIX;
-  std::strncpy(a.sun_path, path.c_str(), sizeof(a.sun_path) - 1);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof(a)) != 0) {
-    ::close(fd);
-    return -1;
-  }
-  return fd;
-}
+using simswift::testing::connectUnix;
 
 // Reads one whole packet; false at end of stream.
 bool readPacket(int fd, PacketBytes& out) {
-  std::size_t got = 0;
-  while (got < out.size()) {
-    const ssize_t n = ::read(fd, out.data() + got, out.size() - got);
-    if (n <= 0) return false;
-    got += static_cast<std::size_t>(n);
-  }
-  return true;
+  return simswift::testing::readFully(fd, out.data(), out.size()) == out.size();
 }
 
-void writeAll(int fd, const std::string& bytes) {
-  ASSERT_EQ(::write(fd, bytes.data(), bytes.size()), static_cast<ssize_t>(bytes.size()));
-}
+void writeAll(int fd, const std::string& bytes) { ASSERT_TRUE(simswift::testing::writeAll(fd, bytes)); }
 
 ActuatorCommand joints(float position, float stiffness) {
   ActuatorCommand c;
@@ -77,7 +58,7 @@ TEST(LolaServer, WaitsForAClientThenExchangesOneCycle) {
   EXPECT_EQ(server.exchange(encodeSensorPacket({}), 20ms).status, Status::NoClient);
 
   std::thread client([&] {
-    const int fd = connectTo(server.path());
+    const int fd = connectUnix(server.path());
     ASSERT_GE(fd, 0);
     PacketBytes p;
     ASSERT_TRUE(readPacket(fd, p));
@@ -97,7 +78,7 @@ TEST(LolaServer, WaitsForAClientThenExchangesOneCycle) {
 TEST(LolaServer, AnAnswerSplitAcrossWritesIsOneAnswer) {
   LolaServer server(socketPath("split"));
   std::thread client([&] {
-    const int fd = connectTo(server.path());
+    const int fd = connectUnix(server.path());
     ASSERT_GE(fd, 0);
     for (int cycle = 0; cycle < 3; ++cycle) {
       PacketBytes p;
@@ -120,7 +101,7 @@ TEST(LolaServer, AnAnswerSplitAcrossWritesIsOneAnswer) {
 
 TEST(LolaServer, AClientThatDoesNotAnswerTimesOut) {
   LolaServer server(socketPath("timeout"));
-  const int fd = connectTo(server.path());
+  const int fd = connectUnix(server.path());
   ASSERT_GE(fd, 0);
   const auto start = std::chrono::steady_clock::now();
   const Exchange e = server.exchange(encodeSensorPacket({}), 50ms);
@@ -151,7 +132,7 @@ TEST(LolaServer, ALiveServersSocketIsRefusedNotTakenOver) {
   } catch (const ServerError& e) {
     EXPECT_NE(std::string(e.what()).find("another server is listening there"), std::string::npos) << e.what();
   }
-  const int fd = connectTo(first.path());  // the first still serves
+  const int fd = connectUnix(first.path());  // the first still serves
   EXPECT_GE(fd, 0);
   if (fd >= 0) ::close(fd);
 }
@@ -164,7 +145,7 @@ TEST(LolaServer, ALiveServersSocketIsRefusedNotTakenOver) {
 TEST(LolaServer, CleanAndASecondServerLeaveTheLiveClientConnected) {
   const std::string name = "clean-" + std::to_string(::getpid());
   LolaServer server(socketPath(name.c_str()));
-  const int fd = connectTo(server.path());
+  const int fd = connectUnix(server.path());
   ASSERT_GE(fd, 0);
   PacketBytes p;
   const auto cycle = [&](const char* after) {
@@ -196,9 +177,9 @@ TEST(LolaServer, CleanAndASecondServerLeaveTheLiveClientConnected) {
 // up (a probe of another tool, a client that gave up) is closed unseen.
 TEST(LolaServer, AConnectionThatHasHungUpNeverReplacesTheClient) {
   LolaServer server(socketPath("hungup"));
-  const int fd = connectTo(server.path());
+  const int fd = connectUnix(server.path());
   ASSERT_TRUE(server.acceptPending());
-  const int probe = connectTo(server.path());
+  const int probe = connectUnix(server.path());
   ASSERT_GE(probe, 0);
   ::close(probe);
   writeAll(fd, encodeActuatorMap(joints(0.6f, 1.f)));
@@ -265,7 +246,7 @@ TEST(LolaServer, TheSharedSocketFolderTakesSocketsOfEveryUser) {
 
 TEST(LolaServer, GarbageClosesTheConnectionAndTheClientMayReconnect) {
   LolaServer server(socketPath("garbage"));
-  int fd = connectTo(server.path());
+  int fd = connectUnix(server.path());
   ASSERT_GE(fd, 0);
   writeAll(fd, std::string("\xc1\xc1\xc1", 3));
   const Exchange e = server.exchange(encodeSensorPacket({}), 1000ms);
@@ -277,7 +258,7 @@ TEST(LolaServer, GarbageClosesTheConnectionAndTheClientMayReconnect) {
   EXPECT_FALSE(readPacket(fd, p));  // then the server closed the connection
   ::close(fd);
 
-  fd = connectTo(server.path());
+  fd = connectUnix(server.path());
   ASSERT_GE(fd, 0);
   writeAll(fd, encodeActuatorMap(joints(0.4f, 1.f)));
   const Exchange again = server.exchange(encodeSensorPacket({}), 1000ms);
@@ -289,7 +270,7 @@ TEST(LolaServer, GarbageClosesTheConnectionAndTheClientMayReconnect) {
 
 TEST(LolaServer, DisconnectThenReconnect) {
   LolaServer server(socketPath("reconnect"));
-  int fd = connectTo(server.path());
+  int fd = connectUnix(server.path());
   ASSERT_GE(fd, 0);
   ASSERT_TRUE(server.acceptPending());  // accepted live (one that hung up before would never be the client)
   // A half-sent map, then the client goes: the half map is forgotten.
@@ -301,14 +282,14 @@ TEST(LolaServer, DisconnectThenReconnect) {
   EXPECT_FALSE(server.connected());
   EXPECT_EQ(server.exchange(encodeSensorPacket({}), 20ms).status, Status::NoClient);
 
-  fd = connectTo(server.path());
+  fd = connectUnix(server.path());
   ASSERT_GE(fd, 0);
   writeAll(fd, bytes.substr(40));  // the old map's rest is garbage on a new connection
   const Exchange bad = server.exchange(encodeSensorPacket({}), 1000ms);
   EXPECT_EQ(bad.status, Status::ProtocolError);
   ::close(fd);
 
-  fd = connectTo(server.path());
+  fd = connectUnix(server.path());
   ASSERT_GE(fd, 0);
   writeAll(fd, bytes);
   const Exchange back = server.exchange(encodeSensorPacket({}), 1000ms);
@@ -319,9 +300,9 @@ TEST(LolaServer, DisconnectThenReconnect) {
 
 TEST(LolaServer, TheNewestConnectionWins) {
   LolaServer server(socketPath("newest"));
-  const int old_fd = connectTo(server.path());
+  const int old_fd = connectUnix(server.path());
   ASSERT_TRUE(server.acceptPending());
-  const int new_fd = connectTo(server.path());
+  const int new_fd = connectUnix(server.path());
   writeAll(new_fd, encodeActuatorMap(joints(0.6f, 1.f)));
   const Exchange e = server.exchange(encodeSensorPacket({}), 1000ms);
   ASSERT_EQ(e.status, Status::Answered);
@@ -335,7 +316,7 @@ TEST(LolaServer, TheNewestConnectionWins) {
 
 TEST(LolaServer, AClientThatStopsReadingIsClosed) {
   LolaServer server(socketPath("stall"));
-  const int fd = connectTo(server.path());
+  const int fd = connectUnix(server.path());
   ASSERT_GE(fd, 0);
   // The client never reads: the server's send buffer fills (94 packets with
   // Linux's default 208 KiB, measured), then the client is closed.
@@ -371,14 +352,11 @@ TEST(LolaServer, RefusesAPathThatIsNotASocketAndRemovesItsSocket) {
     EXPECT_TRUE(S_ISSOCK(st.st_mode));
   }
   {  // a stale socket (bound by an earlier run, nobody listening) is replaced
-    const int stale = ::socket(AF_UNIX, SOCK_STREAM, 0);
-    sockaddr_un address{};
-    address.sun_family = AF_UNIX;
-    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
-    ASSERT_EQ(::bind(stale, reinterpret_cast<const sockaddr*>(&address), sizeof(address)), 0);
+    const int stale = simswift::testing::bindUnix(path);
+    ASSERT_GE(stale, 0);
     ::close(stale);
     LolaServer again(path);
-    const int fd = connectTo(path);
+    const int fd = connectUnix(path);
     EXPECT_GE(fd, 0);
     if (fd >= 0) ::close(fd);
   }

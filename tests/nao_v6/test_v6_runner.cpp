@@ -7,7 +7,6 @@
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
-#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -38,6 +37,7 @@
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/vision/VisionOracle.hpp"
+#include "tests/support/Sockets.hpp"
 #include "tests/support/ConfigErrors.hpp"
 
 namespace al = common::libagent;
@@ -317,20 +317,9 @@ TEST(V6Run, DisconnectGarbageAndReconnect) {
   std::thread clients([&] {
     EXPECT_EQ(exitCode(spawnClient(socket, 20, "hold", logs + "/first.log")), 0);
     // Garbage: bytes that are no msgpack map, after reading one packet.
-    const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
-    sockaddr_un a{};
-    a.sun_family = AF_UNIX;
-    std::snprintf(a.sun_path, sizeof a.sun_path, "%s", socket.c_str());
-    for (int i = 0; i < 500 && ::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0; ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const int fd = simswift::testing::connectUnix(socket, 500);
     char packet[896];
-    size_t got = 0;
-    while (got < sizeof packet) {
-      const ssize_t n = ::read(fd, packet + got, sizeof packet - got);
-      if (n <= 0) break;
-      got += static_cast<size_t>(n);
-    }
-    EXPECT_EQ(got, 896u);
+    EXPECT_EQ(simswift::testing::readFully(fd, packet, sizeof packet), 896u);
     const char garbage[] = {'\xc1', '\xc1', '\xc1', '\xc1'};  // 0xc1: never used in msgpack
     EXPECT_EQ(::write(fd, garbage, sizeof garbage), 4);
     char b;
@@ -477,12 +466,9 @@ TEST(V6Run, AttachWaitsForTheLiveSocketOfARunThatStartsLater) {
   for (const bool dead_socket : {false, true}) {
     SCOPED_TRACE(dead_socket ? "a dead socket at the path" : "no socket yet");
     if (dead_socket) {  // what a killed run leaves: a socket file nobody serves
-      const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
-      sockaddr_un a{};
-      a.sun_family = AF_UNIX;
-      std::snprintf(a.sun_path, sizeof a.sun_path, "%s", socket.c_str());
-      ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
-      ::close(fd);
+      const int fd = simswift::testing::bindUnix(socket);
+    ASSERT_GE(fd, 0);
+    ::close(fd);
     }
     const std::string log = logs + "/attach-early.log";
     const pid_t pid = ::fork();
@@ -535,12 +521,7 @@ TEST(V6Run, TwoUnchangedProgramsEachOpenTheirOwnRobocup) {
   struct stat st{};
   ASSERT_EQ(::lstat("/tmp/robocup", &st), 0);
   EXPECT_TRUE(S_ISSOCK(st.st_mode));
-  const int probe = ::socket(AF_UNIX, SOCK_STREAM, 0);
-  sockaddr_un a{};
-  a.sun_family = AF_UNIX;
-  std::snprintf(a.sun_path, sizeof a.sun_path, "/tmp/robocup");
-  EXPECT_NE(::connect(probe, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
-  ::close(probe);
+  EXPECT_EQ(simswift::testing::connectUnix("/tmp/robocup"), -1);
 }
 
 // Where the machine gives no mount namespace (as SIMSWIFT_MOUNT_NAMESPACE=off

@@ -178,3 +178,20 @@ TEST(TeamNetwork, AnOutboxHeadFarPastItsTailDrainsOneRingPerExchange) {
   EXPECT_LE(h.net.stats().sent, static_cast<int64_t>(al::kOutboxSlots));
   EXPECT_EQ(h.links[0]->outbox.head.load() - h.links[0]->outbox.tail.load(), (1u << 30) - al::kOutboxSlots);
 }
+
+// The recording's deliveries (lastDelivered) are what a receiver took: a
+// Lan packet its receiver's network refused (no network of its own, a
+// unicast to another robot), or with no network at all, is not delivered.
+TEST(TeamNetwork, ALanPacketIsDeliveredOnlyIfTheReceiversNetworkTookIt) {
+  Harness h({}, 1, {{0, 1}, {0, 2}, {0, 3}});
+  const uint8_t bytes[] = {1, 2, 3};
+  h.net.send(0, bytes, sizeof bytes, 10000, Channel::Lan);
+  h.net.exchange(10000, h.ptrs, [](const Delivery& d) { return d.to == 1; });  // robot 2 refuses
+  ASSERT_EQ(h.net.lastDelivered().size(), 1u);
+  EXPECT_EQ(h.net.lastDelivered()[0].to, 1);
+  EXPECT_EQ(h.net.stats().lan_refused, 1);
+  h.net.send(0, bytes, sizeof bytes, 20000, Channel::Lan);
+  h.net.exchange(20000, h.ptrs);  // no robot has a network of its own
+  EXPECT_TRUE(h.net.lastDelivered().empty());
+  EXPECT_EQ(h.net.lastSent().size(), 1u);  // sent all the same
+}

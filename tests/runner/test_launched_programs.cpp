@@ -355,6 +355,28 @@ TEST(LaunchedPrograms, AProgramThatDiesBeforeWritingEndsTheRunNamingRobotAndSign
   }
 }
 
+// The end of a run: a launched libagent program is simswift's to stop, so
+// nothing of it is named as "still attached ... stop it before the next
+// run" (that message is for a program the user started). Before, the run
+// named the init of the program's PID namespace (a fork of simswift that
+// keeps simswift's mappings of the block) and the program itself, which
+// Programs::shutdown stops a moment later. The program still runs at the
+// end (its --ticks outlast the run), as with an unchanged program.
+TEST(LaunchedPrograms, AtTheEndNothingLaunchedIsNamedAsStillAttached) {
+  const std::string d = tempDir("attached");
+  const std::string text = "duration: 0.3\nprogram_logs: " + d + "\nrobots:\n"
+                           "  - {team: 84, player: 3, program: {command: [" + kBin +
+                           "/libagent2017-client, --team, \"{team}\", --player, \"{player}\", --ticks, 100000, "
+                           "--hold]}}\n";
+  testing::internal::CaptureStderr();
+  {
+    Runner r(Scenario::parse(text, d + "/s.yaml"));
+    r.run(quiet());
+  }
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(err.find("still attached"), std::string::npos) << err;
+}
+
 TEST(LaunchedPrograms, BadProgramValuesNameFileLineAndKey) {
   auto refused = [](const std::string& robot, const std::string& what) {
     try {

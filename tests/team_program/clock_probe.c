@@ -1,16 +1,20 @@
-/* A team program's clock and timed waits, as a V6 team would write them,
- * from public Linux facts only (clock_gettime(2), nanosleep(2),
+/* A team program's clock and timed waits, as a V6 or V5 team would write
+ * them, from public Linux facts only (clock_gettime(2), nanosleep(2),
  * pthread_cond_timedwait(3), sem_timedwait(3), poll(2), select(2),
- * epoll_wait(2), timerfd_create(2), proc(5)) and LoLA's (a Unix socket,
- * 896-byte msgpack packets every 12 ms; facts.md section 9): no simswift
- * header. It holds nothing of simswift's; under simswift its clocks should
- * read the run's simulated time.
+ * epoll_wait(2), timerfd_create(2), proc(5)), LoLA's (a Unix socket,
+ * 896-byte msgpack packets every 12 ms; facts.md section 9) and libagent's
+ * (the public rUNSWift 2017 release's 3284-byte block in POSIX shared
+ * memory and its semaphore, a cycle every 10 ms; docs/libagent.md): no
+ * simswift header. It holds nothing of simswift's; under simswift its
+ * clocks should read the run's simulated time.
  *
  *   clock-probe SOCKET CYCLES KINDS
  *
- * The main thread answers every LoLA packet (Stiffness 0, limp) and reads
- * every clock after each packet; it checks each advanced exactly one cycle
- * (12 ms) since the last packet. A second thread waits in each of KINDS
+ * SOCKET is LoLA's socket (a V6), or a libagent block's name,
+ * /libagent-memory<N> (a V5: its semaphore is /libagent-semaphore<N>).
+ * The main thread answers every LoLA packet or libagent cycle (stiffness 0,
+ * limp) and reads every clock after each; it checks each advanced exactly
+ * one cycle (12 ms LoLA, 10 ms libagent) since the last. A second thread waits in each of KINDS
  * (comma-separated, below) for 30 ms (sleep: 1 s) from a packet's time; the
  * main thread answers no packet while that thread is between reading its
  * start time and blocking (proc(5)'s task state), and none after the wait's
@@ -40,9 +44,18 @@
 #include <time.h>
 #include <unistd.h>
 
-#define CYCLE_NS 12000000LL /* LoLA: one packet every 12 ms */
-#define WAIT_NS 30000000LL  /* 2.5 cycles: the wait ends on the third */
+#include <fcntl.h>
+#include <sys/mman.h>
+
+static int64_t cycle_ns = 12000000LL; /* LoLA: one packet every 12 ms; libagent: 10 ms */
+#define WAIT_NS 30000000LL  /* 2.5 LoLA cycles (3 libagent cycles): the wait ends on the third */
 #define PACKET 896
+
+/* The rUNSWift 2017 libagent block's offsets (x86-64, its AgentData):
+ * the four indices, the command slots (JointValues, 400 bytes each),
+ * stiffen[3] (an enum each) and `standing`. */
+enum { LA_SENSORS_READ = 0, LA_SENSORS_LATEST = 1, LA_ACTUATORS_LATEST = 2, LA_ACTUATORS_READ = 3,
+       LA_JOINTS = 1892, LA_JOINT_VALUES = 400, LA_STIFFEN = 3164, LA_STANDING = 3281, LA_SIZE = 3284 };
 
 static uint64_t digest = 1469598103934665603ULL;
 static void mix(int64_t v) {
@@ -99,7 +112,7 @@ static char taskState(pid_t tid) {
 }
 
 static int64_t roundUpCycle(int64_t start, int64_t wait) {
-  return start + (wait + CYCLE_NS - 1) / CYCLE_NS * CYCLE_NS;
+  return start + (wait + cycle_ns - 1) / cycle_ns * cycle_ns;
 }
 
 /* One wait of `kind`: sets w_start (before), w_end (after) and w_want. */
@@ -220,12 +233,32 @@ int main(int argc, char** argv) {
   snprintf(kinds, sizeof kinds, "%s", argv[3]);
   int nkinds = kinds[0] ? 1 : 0;
   for (const char* p = kinds; *p; ++p) nkinds += *p == ',';
-  struct sockaddr_un a = {AF_UNIX, {0}};
-  snprintf(a.sun_path, sizeof a.sun_path, "%s", strcmp(argv[1], "-") ? argv[1] : "/tmp/robocup");
-  int fd = socket(AF_UNIX, SOCK_STREAM, 0);
-  if (connect(fd, (struct sockaddr*)&a, sizeof a) != 0) {
-    perror("clock-probe: connect");
-    return 1;
+  /* A V5: libagent's block and semaphore (opened with O_CREAT, as the 2017
+   * release's clients do: either side may come first). */
+  volatile unsigned char* block = NULL;
+  sem_t* cycle_sem = NULL;
+  int fd = -1;
+  if (!strncmp(argv[1], "/libagent-memory", 16)) {
+    cycle_ns = 10000000LL;
+    char sem_name[128];
+    snprintf(sem_name, sizeof sem_name, "/libagent-semaphore%s", argv[1] + 16);
+    int m_fd = shm_open(argv[1], O_CREAT | O_RDWR, 0600);
+    void* p = m_fd < 0 ? MAP_FAILED : mmap(NULL, LA_SIZE, PROT_READ | PROT_WRITE, MAP_SHARED, m_fd, 0);
+    if (m_fd >= 0) close(m_fd);
+    cycle_sem = sem_open(sem_name, O_CREAT, 0600, 0);
+    if (p == MAP_FAILED || cycle_sem == SEM_FAILED) {
+      perror("clock-probe: libagent");
+      return 1;
+    }
+    block = (volatile unsigned char*)p;
+  } else {
+    struct sockaddr_un a = {AF_UNIX, {0}};
+    snprintf(a.sun_path, sizeof a.sun_path, "%s", strcmp(argv[1], "-") ? argv[1] : "/tmp/robocup");
+    fd = socket(AF_UNIX, SOCK_STREAM, 0);
+    if (connect(fd, (struct sockaddr*)&a, sizeof a) != 0) {
+      perror("clock-probe: connect");
+      return 1;
+    }
   }
   pthread_t th;
   pthread_create(&th, NULL, waiter, NULL);
@@ -242,7 +275,14 @@ int main(int argc, char** argv) {
   int done = 0, started = 0;
   unsigned char packet[PACKET];
   for (int cycle = 0; cycle < cycles; ++cycle) {
-    if (!readAll(fd, packet, PACKET)) {
+    if (block) {
+      while (sem_wait(cycle_sem) != 0)
+        if (errno != EINTR) {
+          perror("clock-probe: sem_wait");
+          return 1;
+        }
+      block[LA_SENSORS_READ] = block[LA_SENSORS_LATEST];
+    } else if (!readAll(fd, packet, PACKET)) {
       fprintf(stderr, "clock-probe: the socket closed at packet %d\n", cycle);
       return 1;
     }
@@ -259,7 +299,7 @@ int main(int argc, char** argv) {
         v = ((int64_t)tv.tv_sec * 1000000 + tv.tv_usec) * 1000; /* us -> ns */
       }
       mix(v);
-      if (cycle > 0 && v - last[c] != CYCLE_NS) ++bad[c];
+      if (cycle > 0 && v - last[c] != cycle_ns) ++bad[c];
       last[c] = v;
     }
     mix((int64_t)time(NULL));
@@ -292,7 +332,15 @@ int main(int argc, char** argv) {
       waitFor(CALLING);
       while (taskState(waiter_tid) != 'S') sched_yield(); /* blocked in its wait */
     }
-    if (write(fd, answer, sizeof answer) != (ssize_t)sizeof answer) {
+    if (block) { /* the Effector's slot loop: a zero command (stiffness 0) */
+      int i = 0;
+      while (i != block[LA_ACTUATORS_LATEST] && i != block[LA_ACTUATORS_READ]) ++i;
+      for (int b = 0; b < LA_JOINT_VALUES; ++b) block[LA_JOINTS + i * LA_JOINT_VALUES + b] = 0;
+      for (int b = 0; b < 4; ++b) block[LA_STIFFEN + i * 4 + b] = 0;
+      if (block[LA_STANDING]) block[LA_STANDING] = 0;
+      __atomic_thread_fence(__ATOMIC_SEQ_CST);
+      block[LA_ACTUATORS_LATEST] = (unsigned char)i;
+    } else if (write(fd, answer, sizeof answer) != (ssize_t)sizeof answer) {
       fprintf(stderr, "clock-probe: write failed at packet %d\n", cycle);
       return 1;
     }

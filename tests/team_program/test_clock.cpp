@@ -40,16 +40,21 @@ std::string logsFolder(int team) {
   return "/tmp/simswift-test-clock-" + std::to_string(::getpid()) + "-" + std::to_string(team);
 }
 
-// The probe launched as robot t<team>p1 on its own socket for `ticks` LoLA
-// cycles (12 ms), waiting in `kinds`; `before`: YAML list items put before
-// it in the command (a debugger).
+enum class Body { V6, V5 };
+
+// The probe launched as robot t<team>p1 for `ticks` cycles, waiting in
+// `kinds`: a V6 on its own LoLA socket (12 ms), or a V5 on libagent's block
+// (10 ms, the 2017 release's names: `{memory}`); `before`: YAML list items
+// put before it in the command (a debugger).
 ProbeRun runProbe(int team, int ticks, const std::string& kinds, const std::string& exe = kProbe,
-                  const std::string& before = "") {
+                  const std::string& before = "", Body body = Body::V6) {
   const std::string socket = "/tmp/simswift-test-clock-" + std::to_string(::getpid()) + "-" + std::to_string(team) + ".sock";
   std::ostringstream y;
-  y << "duration: " << ticks * 0.012 << "\nseed: 5\nattach_timeout: 20\nrobots:\n"
-    << "  - {team: " << team << ", player: 1, x: -1.0, y: 0.5, lola: {socket: " << socket
-    << "}, program: {command: [" << before << "\"" << exe << "\", \"{socket}\", \"" << ticks << "\", \"" << kinds << "\"]}}\n";
+  y << "duration: " << ticks * (body == Body::V6 ? 0.012 : 0.010) << "\nseed: 5\nattach_timeout: 20\nrobots:\n"
+    << "  - {team: " << team << ", player: 1, x: -1.0, y: 0.5, "
+    << (body == Body::V6 ? "lola: {socket: " + socket + "}, " : std::string("libagent: {release: 2017}, "))
+    << "program: {command: [" << before << "\"" << exe << "\", \"" << (body == Body::V6 ? "{socket}" : "{memory}")
+    << "\", \"" << ticks << "\", \"" << kinds << "\"]}}\n";
   Scenario sc = Scenario::parse(y.str(), std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/v6_test.yaml");
   sc.program_logs = logsFolder(team);
   ProbeRun out;
@@ -104,6 +109,38 @@ TEST(ClockV6, ClocksStepOneCycleAndWaitsEndOnTime) {
 #if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
     EXPECT_GT(run.stats.real_time_factor, 1.0);
 #endif
+  }
+  EXPECT_EQ(runs[0].hash, runs[1].hash);
+  EXPECT_EQ(linesOf(runs[0].log, "digest "), linesOf(runs[1].log, "digest "));
+}
+
+// The same probe launched as a V5 robot (libagent's block and semaphore,
+// the 2017 release): every clock advances exactly 10 ms per libagent cycle,
+// every timed wait ends at the first cycle at or after its time, and two
+// runs give the same state hash and digest. Before, only the V6 (LoLA) body
+// was checked (the probe spoke LoLA only).
+TEST(ClockV5, ClocksStepOneCycleAndWaitsEndOnTime) {
+  const int ticks = 250;  // 2.5 s: the 1 s sleep (100 cycles) and 20 waits of 3 cycles, with hand-overs
+  ProbeRun runs[2] = {runProbe(85, ticks, kWaits, kProbe, "", Body::V5),
+                      runProbe(85, ticks, kWaits, kProbe, "", Body::V5)};
+  for (const ProbeRun& run : runs) {
+    const std::string log = joined(run.log);
+    EXPECT_EQ(run.stats.ticks, ticks);
+    const std::vector<std::string> clocks = linesOf(run.log, "clock ");
+    EXPECT_EQ(clocks.size(), 8u) << log;
+    for (const std::string& l : clocks) {
+      EXPECT_NE(l.find(" steps=" + std::to_string(ticks - 1) + " "), std::string::npos) << l;
+      EXPECT_NE(l.find(" bad=0"), std::string::npos) << l;
+    }
+    const std::vector<std::string> waits = linesOf(run.log, "wait ");
+    EXPECT_EQ(waits.size(), kNumWaits) << log;
+    for (const std::string& l : waits) EXPECT_NE(l.find(" ok"), std::string::npos) << l;
+    // A 30 ms wait from a cycle's time ends exactly 3 cycles (30 ms) later.
+    for (const std::string& l : linesOf(run.log, "wait nanosleep ")) {
+      const long long start = std::stoll(l.substr(l.find("start=") + 6)), end = std::stoll(l.substr(l.find("end=") + 4));
+      EXPECT_EQ(end - start, 30000000LL) << l;
+    }
+    EXPECT_EQ(linesOf(run.log, "digest ").size(), 1u) << log;
   }
   EXPECT_EQ(runs[0].hash, runs[1].hash);
   EXPECT_EQ(linesOf(runs[0].log, "digest "), linesOf(runs[1].log, "digest "));

@@ -35,18 +35,26 @@ namespace {
 
 const std::string kProbe = std::string(SIMSWIFT_BINARY_DIR) + "/camera-probe";
 const std::string kClient = std::string(SIMSWIFT_BINARY_DIR) + "/lola-client";
+const std::string kV5Client = std::string(SIMSWIFT_BINARY_DIR) + "/libagent2017-client";
 constexpr double kBallX = 2.0, kBallY = 0.15;  // m, field frame; the robot at the origin facing +x
 
 // A V6 robot whose launched program is the probe (`frames` frames, `memory`
 // buffers) with the LoLA client holding its stand; its own team number per
 // test (named objects), its log under /tmp.
-Scenario probeScenario(int team, int frames, const std::string& memory, double duration) {
+// With `v5`: a V5 robot (libagent, 10 ms) whose cameras are /dev/video0
+// (top) and /dev/video1 (bottom), the 2017 libagent client holding its pose.
+Scenario probeScenario(int team, int frames, const std::string& memory, double duration, bool v5 = false) {
   std::ostringstream y;
   y << "duration: " << duration << "\nseed: 5\nattach_timeout: 20\nball: {x: " << kBallX << ", y: " << kBallY
-    << "}\nrobots:\n  - {team: " << team << ", player: 1, x: 0, y: 0, lola: {socket: /tmp/simswift-test-v4l2-"
-    << ::getpid() << "-" << team << "}, program: {command: [\"" << kProbe
-    << "\", /dev/video-top, /dev/video-bottom, \"" << frames << "\", " << memory << ", \"" << kClient
-    << "\", \"{socket}\", \"0\", hold]}}\n";
+    << "}\nrobots:\n  - {team: " << team << ", player: 1, x: 0, y: 0, ";
+  if (v5)
+    y << "libagent: {release: 2017}, program: {command: [\"" << kProbe << "\", /dev/video0, /dev/video1, \"" << frames
+      << "\", " << memory << ", \"" << kV5Client << "\", --team, \"{team}\", --player, \"{player}\", --ticks, 100000, "
+      << "--hold]}}\n";
+  else
+    y << "lola: {socket: /tmp/simswift-test-v4l2-" << ::getpid() << "-" << team << "}, program: {command: [\"" << kProbe
+      << "\", /dev/video-top, /dev/video-bottom, \"" << frames << "\", " << memory << ", \"" << kClient
+      << "\", \"{socket}\", \"0\", hold]}}\n";
   Scenario sc = Scenario::parse(y.str(), std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/v4l2_test.yaml");
   sc.program_logs = "/tmp/simswift-test-v4l2-logs-" + std::to_string(::getpid());
   return sc;
@@ -241,6 +249,53 @@ TEST(V4l2Cameras, SameFramesRunAfterRunAndWithUserptrBuffers) {
   EXPECT_FALSE(digest[0].empty());
   EXPECT_EQ(digest[0], digest[1]);
   EXPECT_EQ(digest[0], digest[2]);
+}
+
+// A V5 robot (libagent): the same probe streams /dev/video0 and /dev/video1
+// (the V5's names) at 30 Hz of simulated time on 10 ms ticks, MMAP and
+// USERPTR buffers giving the same frames, and sees the ball where the V5's
+// top camera projects it. The run ends 30 ms after the last frame (0.17 s):
+// the V5's body still settles from its start (ending at 0.4 s, the
+// projection had moved 3.7 px from the frame's ball).
+TEST(V4l2Cameras, AV5RobotStreamsVideo0AndVideo1) {
+  constexpr int kFrames = 6;
+  std::string digest[2];
+  for (int k = 0; k < 2; ++k) {
+    const int team = 76 + k;
+    const Scenario sc = probeScenario(team, kFrames, k == 0 ? "mmap" : "userptr", 0.2, true);
+    Runner r(sc);
+    r.run(quiet());
+    ProbeLog log = readLog(sc.program_logs + "/t" + std::to_string(team) + "p1.log");
+    ASSERT_EQ(log.frames.size(), 2u * kFrames) << log.facts["error"];
+    EXPECT_NE(log.facts["open"].find("/dev/video0 chardev=1 driver=uvcvideo"), std::string::npos) << log.facts["open"];
+    EXPECT_NE(log.facts["open"].find("/dev/video1 chardev=1"), std::string::npos) << log.facts["open"];
+    std::map<std::string, std::vector<long long>> times;
+    for (const auto& f : log.frames) times[f.at("cam")].push_back(std::stoll(f.at("t_us")));
+    for (const auto& [cam, t] : times) {
+      ASSERT_EQ(t.size(), static_cast<size_t>(kFrames)) << cam;
+      // Frame k at the first 10 ms tick at or after k/30 s: gaps of 30 or 40 ms.
+      for (size_t i = 1; i < t.size(); ++i) EXPECT_TRUE(t[i] - t[i - 1] == 30000 || t[i] - t[i - 1] == 40000) << cam;
+      EXPECT_EQ(t.front() % 10000, 0) << "a frame's time is its tick's";
+    }
+    EXPECT_EQ(times["/dev/video0"], times["/dev/video1"]);
+    digest[k] = log.digest;
+    if (k == 0) {
+      const simswift::World& w = r.world();
+      const simswift::RobotBody& body = w.robot(0);
+      const auto camera = simswift::camera::CameraModel::naoCamera(
+          body.linkPose(simswift::camera::RobotCameras::headLink(body.model())), simswift::camera::kTop, 640, 480,
+          common::nao::kV5CameraLens);
+      const auto px = camera.project(w.ballPosition());
+      ASSERT_TRUE(px.has_value());
+      const auto& last = log.frames[log.frames.size() - 2].at("cam") == "/dev/video0" ? log.frames[log.frames.size() - 2]
+                                                                                       : log.frames.back();
+      ASSERT_GT(std::stol(last.at("ball_n")), 50) << "the ball is seen";
+      EXPECT_NEAR(std::stod(last.at("ball_x")), px->x(), 3.0);
+      EXPECT_NEAR(std::stod(last.at("ball_y")), px->y(), 3.0);
+    }
+  }
+  EXPECT_FALSE(digest[0].empty());
+  EXPECT_EQ(digest[0], digest[1]);
 }
 
 #endif

@@ -3,17 +3,67 @@
 // path leads out of its folder), the recording's messages by time.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <chrono>
 #include <filesystem>
 #include <fstream>
-
-#include <unistd.h>
+#include <memory>
+#include <thread>
 
 #include "app/view/HttpServer.hpp"
 #include "app/view/Mcap.hpp"
 #include "app/view/ViewerSite.hpp"
+#include "tests/support/Sockets.hpp"
 
 namespace simswift::view {
 namespace {
+
+// This process's threads (/proc/self/task).
+int threadCount() {
+  int n = 0;
+  for (const auto& e : std::filesystem::directory_iterator("/proc/self/task")) n += e.exists() ? 1 : 0;
+  return n;
+}
+
+// The thread count once it is down to `n`, waiting up to 1 s (a joined
+// thread may stay listed a moment while the kernel ends it).
+int threadCountDownTo(int n) {
+  for (int i = 0; i < 100 && threadCount() > n; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  return threadCount();
+}
+
+// The server owns its connections' threads: stopped with a client that
+// never sends its request, serve() returns at once (not after the 5 s
+// client timeout) and leaves no thread running that could reach the
+// handler or the server once they are gone (ASan in CI).
+TEST(HttpServerRun, StopsWithAConnectionOpenAndLeavesNoThreadRunning) {
+  const int before = threadCount();
+  {
+    auto server = std::make_unique<HttpServer>(0);
+    const HttpServer::Handler echo = [](const HttpRequest& r) { return HttpResponse{200, "text/plain", r.path}; };
+    std::thread serving([&] { server->serve(echo); });
+    const int idle = simswift::testing::connectLoopback(server->port());
+    ASSERT_GE(idle, 0);
+    // A whole request answered: the idle connection, accepted first, has its thread.
+    const int fd = simswift::testing::connectLoopback(server->port());
+    ASSERT_TRUE(simswift::testing::writeAll(fd, "GET /x HTTP/1.1\r\n\r\n"));
+    const std::string answer = simswift::testing::readToEnd(fd);
+    ::close(fd);
+    EXPECT_EQ(answer.rfind("HTTP/1.1 200", 0), 0u) << answer;
+    EXPECT_GT(threadCount(), before + 1);  // serving and the idle connection's thread
+    const auto t0 = std::chrono::steady_clock::now();
+    server->stop();
+    serving.join();
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(2));
+    EXPECT_EQ(threadCountDownTo(before), before);
+    server.reset();
+    char c;
+    EXPECT_EQ(::recv(idle, &c, 1, 0), 0);  // the server closed it
+    ::close(idle);
+  }
+  EXPECT_EQ(threadCountDownTo(before), before);
+}
 
 TEST(HttpRequest, ParsesPathAndQuery) {
   const ParsedRequest p = parseRequest("GET /api/at?topic=%2Frobot0%2Fjoints&t=15&x+y=a+b HTTP/1.1\r\nHost: h\r\n\r\n");

@@ -4,10 +4,7 @@
 // socket (no client normalising the path) cannot leave the viewer's folder.
 #include <gtest/gtest.h>
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
 #include <signal.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,6 +14,7 @@
 #include <string>
 
 #include "tests/support/Shell.hpp"
+#include "tests/support/Sockets.hpp"
 #include "tests/view/McapBytes.hpp"
 
 namespace simswift::view {
@@ -60,17 +58,10 @@ TEST_F(ViewCommand, ABadRecordingOrOptionExitsTwoNamingWhere) {
 
 // One raw request to 127.0.0.1:port; the whole answer.
 std::string request(int port, const std::string& raw) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_port = htons(static_cast<uint16_t>(port));
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  std::string out;
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0) {
-    ::send(fd, raw.data(), raw.size(), MSG_NOSIGNAL);
-    char buf[4096];
-    for (ssize_t n; (n = ::recv(fd, buf, sizeof buf, 0)) > 0;) out.append(buf, static_cast<size_t>(n));
-  }
+  const int fd = simswift::testing::connectLoopback(port);
+  if (fd < 0) return "";
+  simswift::testing::writeAll(fd, raw);
+  const std::string out = simswift::testing::readToEnd(fd);
   ::close(fd);
   return out;
 }
@@ -109,12 +100,8 @@ TEST_F(ViewCommand, ServesTheRecordingOnLoopbackAndNothingElseOfTheDisk) {
   EXPECT_EQ(request(port, "DELETE / HTTP/1.1\r\n\r\n").find("HTTP/1.1 405"), 0u);
   EXPECT_EQ(request(port, "\r\n\r\n").find("HTTP/1.1 400"), 0u);
   // A client that connects and sends nothing does not hold up the others.
-  const int idle = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_port = htons(static_cast<uint16_t>(port));
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ASSERT_EQ(::connect(idle, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
+  const int idle = simswift::testing::connectLoopback(port);
+  ASSERT_GE(idle, 0);
   EXPECT_EQ(request(port, "GET /api/info HTTP/1.1\r\n\r\n").find("HTTP/1.1 200"), 0u);
   ::close(idle);
 
