@@ -101,5 +101,12 @@ stamp "ASan+UBSan suite"
 cmake -S . -B build-tsan -DSIMSWIFT_SANITIZE=thread "${san_cmake[@]}" >/dev/null
 cmake --build build-tsan -j"$jobs" --target test_agent test_runner test_bridge simswift-agent
 stamp "TSan build"
-(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 --output-junit "$run_tmp/tsan.xml" -L 'agent|runner|bridge' -E "$heavy")
+# Not the tests that launch a program built in this folder: a TSan-built
+# program cannot take the preload library (libtsan must be the first
+# library; with libsimswift-shim.so ahead of it TSan's start faults, and
+# with LD_AUDIT's early library it finds no static TLS left, docs/shim.md),
+# so these launches fail before the program runs. The Release and ASan+UBSan
+# suites run them; TSan runs the same robot program builtin.
+tsan_launch='LaunchedPrograms\.(ACrashEnds|SimswiftAgentGives|AtTheEndNothing)|ProgramView\.TwoPrograms'
+(cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 --output-junit "$run_tmp/tsan.xml" -L 'agent|runner|bridge' -E "$heavy|$tsan_launch")
 stamp "TSan suite"

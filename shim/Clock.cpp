@@ -138,18 +138,22 @@ void runOverNap() {
   sysClock(SYS_nanosleep, reinterpret_cast<long>(&t), 0);
 }
 
+void startingWait() {
+  if (!g_starting_reported.exchange(true))
+    std::fprintf(stderr, "simswift shim: %s waits for time before answering its first packet: simulated time "
+                         "starts with the run, so waits before it end at once (docs/shim.md)\n", programName());
+  // A short real nap: a program that retries its timed wait in a loop
+  // (libagent's liveness check) must not spin a core until the run starts.
+  runOverNap();
+}
+
 WaitEnd waitUntil(int64_t deadline_run_ns) {
   for (;;) {
     const uint32_t g = generation();
     if (runNs() >= deadline_run_ns) return WaitEnd::Reached;
     if (runOver()) return WaitEnd::RunOver;
     if (runStarting()) {
-      if (!g_starting_reported.exchange(true))
-        std::fprintf(stderr, "simswift shim: %s waits for time before answering its first packet: simulated time "
-                             "starts with the run, so waits before it end at once (docs/shim.md)\n", programName());
-      // A short real nap first: a program that retries its timed wait in a
-      // loop (libagent's liveness check) must not spin a core until then.
-      runOverNap();
+      startingWait();
       return WaitEnd::Reached;
     }
     if (!waitGeneration(g)) return WaitEnd::Interrupted;

@@ -42,6 +42,13 @@ enum class WaitEnd { Reached, Interrupted, RunOver };
 // While the program has not answered its first packet (Starting), a wait
 // ends at once: time starts with the run (docs/shim.md).
 WaitEnd waitUntil(int64_t deadline_run_ns);
+// A timed wait that finds the run Starting ends as timed out: this says so
+// (once per process) and naps kRunOverNapNs of wall clock, and never blocks
+// in simulated time. Not waitUntil: the run may start during the call, and a
+// wait in simulated time then would not see what the caller waits on (a
+// semaphore posted for the next tick: the run would wait for a thread that
+// waits for the run; seen as "motion thread did not answer ... (tick 2)").
+void startingWait();
 // A sleep until `deadline_run_ns` (shim/Sleeps.cpp): 0, or EINTR with `rem`
 // (if given) the time left; the libc wrappers and the trapped syscalls share it.
 int sleepUntil(int64_t deadline_run_ns, timespec* rem);

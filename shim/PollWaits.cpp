@@ -75,7 +75,7 @@ class Deadline {
   int arm() {
     if (runNs() >= deadline_) return -1;
     if (runStarting()) {
-      (void)waitUntil(deadline_);  // says once that time has not started
+      startingWait();
       return -1;
     }
     if (runOver()) {

@@ -55,7 +55,7 @@ int condWaitUntil(pthread_cond_t* c, pthread_mutex_t* m, clockid_t clk, const ti
   const int64_t deadline = toNs(*abstime) - offset;
   if (runNs() >= deadline) return ETIMEDOUT;
   if (runStarting()) {
-    (void)waitUntil(deadline);  // says once that time has not started; ends at once
+    startingWait();  // the mutex stays held, as a timed-out wait returns it
     return ETIMEDOUT;
   }
   if (runOver()) {
@@ -112,7 +112,7 @@ int semWaitUntil(sem_t* sem, clockid_t clk, const timespec* abstime) {
   };
   if (runNs() >= deadline) return timedOut();
   if (runStarting()) {
-    (void)waitUntil(deadline);
+    startingWait();
     return timedOut();
   }
   if (runOver()) {

@@ -45,7 +45,14 @@ bool ExternalProgram::attach() {
 
 bool ExternalProgram::await(Step step, double timeout_s) {
   bridge::BodySide& host = *slot_.host;
-  if (step != Step::Motion || !host.programGone()) return ProgramDriver::await(step, timeout_s);
+  if (step != Step::Motion) return ProgramDriver::await(step, timeout_s);
+  // Gone before the wait, or during it (a program that read this cycle's
+  // packet and then ended, or whose exit came after the packet was sent):
+  // waited for as for its first attach. Connected and silent: the watchdog's.
+  if (!host.programGone()) {
+    if (ProgramDriver::await(step, timeout_s)) return true;
+    if (!host.programGone()) return false;
+  }
   std::fprintf(stderr, "robot %s: its program disconnected; waiting up to %g s (attach_timeout) for it to connect "
                "again on %s\n", slot_.tag.c_str(), attach_timeout_s_, host.endpoint().c_str());
   if (!host.waitAnswer(attach_timeout_s_)) {

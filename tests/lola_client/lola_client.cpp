@@ -8,7 +8,7 @@
 // offsets cached from the first), and answers each with Position and
 // Stiffness.
 //
-//   lola-client SOCKET CYCLES [one-map | two-maps | split | limp | hold]
+//   lola-client SOCKET CYCLES [one-map | two-maps | split | limp | hold] [then-leave]
 //
 // Answers (LoLA joint order): Position[i] = 0.01 * i + 0.001 * cycle rad,
 // Stiffness[i] = 0.5 ("limp": Stiffness only, 0; "hold": the first packet's
@@ -20,6 +20,8 @@
 //            Accelerometer[0]=... Accelerometer[1]=... Position[9]=... Position[11]=...
 // Exit 0 after CYCLES answered packets (CYCLES 0: until the server closes
 // the socket, after at least one), 1 on any check failing, 2 on bad use.
+// "then-leave": after CYCLES answers, read the next packet and close without
+// answering it, as a program killed in the middle of a cycle.
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <unistd.h>
@@ -125,7 +127,7 @@ float floatAt(const unsigned char* p) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: lola-client SOCKET CYCLES [one-map|two-maps|split|limp|hold]\n");
+    std::fprintf(stderr, "usage: lola-client SOCKET CYCLES [one-map|two-maps|split|limp|hold] [then-leave]\n");
     return 2;
   }
   const std::string path = std::string(argv[1]) == "-" ? "/tmp/robocup" : argv[1];
@@ -135,6 +137,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "lola-client: unknown mode %s\n", mode.c_str());
     return 2;
   }
+  // Any other argument is ignored: a test's marker to find the process by.
+  const bool then_leave = argc > 4 && std::string(argv[4]) == "then-leave";
 
   const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
   sockaddr_un address{};
@@ -245,6 +249,10 @@ int main(int argc, char** argv) {
       msgpack::pack(second, sonar);
       writeAll(fd, second.data(), second.size());
     }
+  }
+  if (then_leave) {
+    unsigned char packet[kPacketBytes];
+    if (!readAll(fd, packet, kPacketBytes)) fail("the server closed the socket before the packet to leave");
   }
   ::close(fd);
   return 0;

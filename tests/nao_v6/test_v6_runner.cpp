@@ -431,28 +431,43 @@ TEST(V6Run, TheFirstReadingShowsARobotAtRestOnBothBodies) {
 // A hand-started program that restarts (a rebuild, a new gdb session) is
 // waited for as long as for its first attach, not the watchdog (issue 45:
 // the run ended 5 s after the disconnect, although docs/lola.md says it
-// waits). The watchdog here is 0.3 s; the program is away 1.5 s.
+// waits). The watchdog here is 0.3 s; the program is away 1.5 s. Both
+// ways a program goes: after its answer (between cycles), and after it has
+// read a cycle's packet, while the run already waits for that answer
+// ("then-leave"; before, that wait was the watchdog's: "motion thread did
+// not answer within 0.3 s", seen in CI when the client's exit was late).
 TEST(V6Run, AProgramThatRestartsIsWaitedForAsLongAsTheFirstAttach) {
-  const std::string socket = socketPath("restart");
-  const std::string logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid());
-  Scenario sc = v6Scenario(socket, "external", 0.6, 74);  // 50 ticks
-  sc.program_logs = logs;
-  sc.watchdog_s = 0.3;
-  Runner r(sc);
-  std::thread clients([&] {
-    EXPECT_EQ(exitCode(spawnClient(socket, 20, "hold", logs + "/restart1.log")), 0);
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // wall clock: the restart's pause
-    EXPECT_EQ(exitCode(spawnClient(socket, 0, "hold", logs + "/restart2.log")), 0);
-  });
-  simswift::runner::RunStats s;
-  try {
-    s = r.run(quiet());
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << e.what();
+  for (const bool mid_cycle : {false, true}) {
+    SCOPED_TRACE(mid_cycle ? "left after reading a packet" : "left after an answer");
+    const std::string socket = socketPath(mid_cycle ? "restart-mid" : "restart");
+    const std::string logs = "/tmp/simswift-test-v6-logs-" + std::to_string(::getpid());
+    Scenario sc = v6Scenario(socket, "external", 0.6, 74);  // 50 ticks
+    sc.program_logs = logs;
+    sc.watchdog_s = 0.3;
+    auto r = std::make_unique<Runner>(sc);
+    std::thread clients([&] {
+      const pid_t first = ::fork();
+      if (first == 0) {
+        ::execl(kClient.c_str(), kClient.c_str(), socket.c_str(), "20", "hold", mid_cycle ? "then-leave" : nullptr,
+                nullptr);
+        ::_exit(127);
+      }
+      EXPECT_EQ(exitCode(first), 0);
+      std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // wall clock: the restart's pause
+      EXPECT_EQ(exitCode(spawnClient(socket, 0, "hold", logs + "/restart2.log")), 0);
+    });
+    simswift::runner::RunStats s;
+    try {
+      s = r->run(quiet());
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << e.what();
+    }
+    const int answers = dynamic_cast<LolaBody&>(r->body(0)).answers();
+    r.reset();  // closes the socket: a client still connected (a failed run) ends
+    clients.join();
+    EXPECT_EQ(s.ticks, 50);
+    EXPECT_EQ(answers, 50);
   }
-  clients.join();
-  EXPECT_EQ(s.ticks, 50);
-  EXPECT_EQ(dynamic_cast<LolaBody&>(r.body(0)).answers(), 50);
 }
 
 // `simswift attach` started before the run serves its robot's socket, with
