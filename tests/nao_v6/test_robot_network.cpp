@@ -146,7 +146,9 @@ TEST(RobotNetwork, TeammatesHearEveryGameControllerPacketAndEachOtherWithTheScen
   // The opponent's messages (sent to team 47's port) never arrive.
   for (const char* tag : {"t47p1", "t47p2"})
     for (const auto& w : lines(a.logs + "/" + tag + ".log"))
-      if (w[0] == "team") EXPECT_NE(w[2], "10.0.46.1") << tag << " heard the opponent";
+      if (w[0] == "team") {
+        EXPECT_NE(w[2], "10.0.46.1") << tag << " heard the opponent";
+      }
   // Run again: the same hash and the same of everything each program saw.
   const NetRun b = runTeam("b", 0);
   EXPECT_EQ(a.hash, b.hash);

@@ -893,8 +893,14 @@ TEST(MotionPhysics, V6StandsUprightAfterGettingUp) {
   std::printf("[motion] V6 up after a push, seeds 721-730: AngleY at the hand-over mean %.3f, lowest %.3f rad; "
               "%d falls, %d / 10 up at 12 s\n",
               mean, lowest, falls, up);
-  EXPECT_GT(mean, -0.05);    // rad: 4 ms steps -0.021 (seeds 101-140); 6 ms -0.071
-  EXPECT_GT(lowest, -0.15);  // rad: 4 ms steps down to -0.06; 6 ms to -0.29
+  // rad. 4 ms physics steps, robots settled before the first tick (seeds
+  // 731-770, not these): per-seed mean -0.043, sd 0.022 (the mean of 10
+  // seeds: sd 0.007), lowest -0.100; before the settling -0.042, sd 0.019,
+  // lowest -0.083 (the same distribution). 6 ms steps (seeds 101-140): mean
+  // -0.071, lowest -0.29. The limits lie between, 2 sd of a 10-seed mean
+  // from each side; these seeds' lowest is -0.152 with the settling.
+  EXPECT_GT(mean, -0.057);
+  EXPECT_GT(lowest, -0.2);
   EXPECT_EQ(falls, 10);      // the push only
   EXPECT_EQ(up, 10);
 }
