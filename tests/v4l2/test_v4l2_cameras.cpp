@@ -318,7 +318,7 @@ TEST(V4l2Cameras, AProgramStartedByHandWithAttachStreamsBothCameras) {
     Runner r(launched_sc);
     r.run(quiet());
   }
-  const ProbeLog launched = readLog(launched_sc.program_logs + "/t78p1.log");
+  ProbeLog launched = readLog(launched_sc.program_logs + "/t78p1.log");
   ASSERT_EQ(launched.frames.size(), 2u * kFrames) << launched.facts["error"];
 
   constexpr int kTeam = 79;
