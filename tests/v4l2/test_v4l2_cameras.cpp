@@ -186,6 +186,34 @@ TEST(V4l2Devices, ProgramFieldsAreChecked) {
   ::munmap(p, sizeof(common::v4l2::DeviceBlock));
 }
 
+// An external robot's block, named by the robot: served while its
+// simulator lives; a killed simulator's (a child that ends without its
+// destructor) is not, and `simswift clean`'s removeStale takes only that
+// one, with its FIFOs.
+TEST(V4l2Devices, AKilledRunsBlockIsNotServedAndCleanRemovesIt) {
+  namespace cv = common::v4l2;
+  const std::string live_name = cv::blockName("t98p1"), dead_name = cv::blockName("t98p2");
+  simswift::bridge::V4l2Devices live("t98p1", {"/dev/video-top", "/dev/video-bottom"}, live_name);
+  EXPECT_EQ(live.blockName(), "/simswift-v4l2-t98p1");
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    new simswift::bridge::V4l2Devices("t98p2", {"/dev/video-top", "/dev/video-bottom"}, dead_name);
+    ::_exit(0);  // killed: no destructor, no exit handlers
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_TRUE(simswift::bridge::V4l2Devices::served(live_name));
+  EXPECT_FALSE(simswift::bridge::V4l2Devices::served(dead_name));
+  EXPECT_EQ(::access(cv::fifoPath(dead_name, "taken").c_str(), F_OK), 0) << "the killed run's FIFOs are left";
+  EXPECT_TRUE(simswift::bridge::V4l2Devices::removeStale("t98p1").empty()) << "a served block stays";
+  EXPECT_EQ(simswift::bridge::V4l2Devices::removeStale("t98p2"), std::vector<std::string>{dead_name});
+  for (const char* which : {"top", "bottom", "taken"})
+    EXPECT_NE(::access(cv::fifoPath(dead_name, which).c_str(), F_OK), 0) << which;
+  EXPECT_NE(::access(("/dev/shm" + dead_name).c_str(), F_OK), 0);
+  EXPECT_TRUE(simswift::bridge::V4l2Devices::served(live_name));
+}
+
 #ifdef SIMSWIFT_HAVE_CAMERAS
 
 // MMAP buffers: every answer a team's code checks, 30 Hz of simulated time
