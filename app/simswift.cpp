@@ -9,6 +9,7 @@
 // (the message names the option) or bad input file (scenario, model, field:
 // the message names file and line); experiment and test: also 130 interrupted.
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <thread>
 #include <cerrno>
@@ -33,11 +34,13 @@
 
 #include "app/cli/CommandLine.hpp"
 #include "common/clock/ClockPage.hpp"
+#include "common/v4l2/DeviceBlock.hpp"
 #include "common/libagent/SharedNames.hpp"
 #include "app/experiment/BehaviourHooks.hpp"
 #include "app/experiment/Command.hpp"
 #include "app/scenario_tests/TestCommand.hpp"
 #include "app/view/ViewCommand.hpp"
+#include "sim/bridge/V4l2Devices.hpp"
 #include "sim/lola/LolaServer.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/programs/Programs.hpp"
@@ -334,9 +337,9 @@ class CleanCommand {
   explicit CleanCommand(CLI::App& parent) {
     cmd_ = parent.add_subcommand("clean", "remove objects a killed run left in /dev/shm");
     cmd_->footer(
-        "Removes the shared memory and LoLA sockets killed runs left (every robot's, or one\n"
-        "robot's under every libagent release's names); a running simswift's are left alone\n"
-        "and its pid named. Exit codes: 0 done, 2 bad command line.");
+        "Removes the shared memory, camera device blocks and LoLA sockets killed runs left\n"
+        "(every robot's, or one robot's under every libagent release's names); a running\n"
+        "simswift's are left alone and its pid named. Exit codes: 0 done, 2 bad command line.");
     robot_.declare(*cmd_, "of the robot to clean up (default: every robot)");
   }
   CleanCommand(const CleanCommand&) = delete;
@@ -376,6 +379,10 @@ int CleanCommand::run() const {
     const auto sockets = simswift::lola::removeStaleSockets({simswift::lola::kSharedSocketFolder}, tag);
     std::printf("removed %zu LoLA socket(s) of %s left by killed runs\n", sockets.size(), tag.c_str());
   }
+  // Camera device blocks (sim/bridge/V4l2Devices.hpp) no running simswift serves.
+  const std::vector<std::string> blocks =
+      sb::V4l2Devices::removeStale(robot_.team ? common::libagent::robotTag(*robot_.team, *robot_.player) : "");
+  std::printf("removed %zu camera device block(s) left by killed runs\n", blocks.size());
   return 0;
 }
 
@@ -396,8 +403,10 @@ class AttachCommand {
         "robot included), so a program that reconnects, as real clients do, finds it.\n"
         "Everything after -- is the command's, passed on as it is. COMMAND reads the robot's\n"
         "simulated time through libsimswift-shim.so (LD_PRELOAD; docs/shim.md), as a launched\n"
-        "program does; a static binary is refused. COMMAND may be gdb running the program:\n"
-        "gdb keeps the wall clock.\n"
+        "program does; a static binary is refused. When the run serves the robot's cameras\n"
+        "(scenario key v4l2:, on by default in a build with cameras), COMMAND streams them\n"
+        "as a launched program does: /dev/video-top and /dev/video-bottom (or the scenario's\n"
+        "paths), in lock-step. COMMAND may be gdb running the program: gdb keeps the wall clock.\n"
         "\n"
         "Exit codes: COMMAND's (128 + N killed by signal N); 1 no run served the socket in time\n"
         "or COMMAND cannot start; 2 bad command line.");
@@ -449,6 +458,27 @@ bool follow(const std::string& socket) {
   ::umount2("/tmp/robocup", MNT_DETACH);
   return ::mount(socket.c_str(), "/tmp/robocup", nullptr, MS_BIND, nullptr) == 0;
 }
+
+// The flags of the clock page `name` (common::clock::kFlag*), 0 if it
+// cannot be read or is not set up.
+uint32_t pageFlags(const std::string& name) {
+  namespace cc = common::clock;
+  const int fd = shm_open(name.c_str(), O_RDONLY | O_CLOEXEC, 0);
+  if (fd < 0) return 0;
+  struct stat st {};
+  uint32_t flags = 0;
+  if (fstat(fd, &st) == 0 && static_cast<size_t>(st.st_size) >= sizeof(cc::ClockLayout)) {
+    void* p = mmap(nullptr, sizeof(cc::ClockLayout), PROT_READ, MAP_SHARED, fd, 0);
+    if (p != MAP_FAILED) {
+      const auto* page = static_cast<const cc::ClockLayout*>(p);
+      std::atomic_thread_fence(std::memory_order_acquire);
+      if (page->magic == cc::kMagic && page->version == cc::kVersion) flags = page->flags;
+      munmap(p, sizeof(cc::ClockLayout));
+    }
+  }
+  close(fd);
+  return flags;
+}
 }  // namespace attach
 
 int AttachCommand::run(const std::vector<std::string>& command) const {
@@ -491,9 +521,34 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
   }
+  // The robot's cameras, when the run serves them (its clock page says so):
+  // the block named by the robot, made before the page; waited for in what
+  // is left of --wait all the same (its FIFOs held by the run).
+  std::string v4l2_block;
+  if (attach::pageFlags(clock) & common::clock::kFlagV4l2ByRobot) {
+    if (tag.empty()) {
+      std::fprintf(stderr,
+                   "simswift attach: the run serves this robot's cameras, but its name cannot be told from --socket "
+                   "%s: the command gets no cameras (give --team and --player)\n",
+                   socket.c_str());
+    } else {
+      v4l2_block = common::v4l2::blockName(tag);
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s_);
+      while (!simswift::bridge::V4l2Devices::served(v4l2_block)) {
+        if (std::chrono::steady_clock::now() >= deadline) {
+          std::fprintf(stderr,
+                       "simswift attach: robot %s: the run serves its cameras, but their block %s was not there "
+                       "within %g s\n",
+                       tag.c_str(), v4l2_block.c_str(), wait_s_);
+          return 1;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+    }
+  }
   simswift::programs::Environment env;
   try {
-    env = simswift::programs::shimLaunchEnvironment(tag.empty() ? clock : tag, command[0], {clock, ""}, {});
+    env = simswift::programs::shimLaunchEnvironment(tag.empty() ? clock : tag, command[0], {clock, v4l2_block}, {});
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "simswift attach: %s\n", e.what());
     return 1;

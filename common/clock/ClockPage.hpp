@@ -36,6 +36,12 @@ constexpr int64_t kDefaultRealtimeEpochNs = 1'752'537'600'000'000'000;
 // TAI is REALTIME + 37 s (the leap seconds since 1972, IERS Bulletin C).
 constexpr int64_t kTaiOffsetNs = 37'000'000'000;
 
+// flags: the run serves this robot's cameras as V4L2 devices in the block
+// named by the robot (common/v4l2/DeviceBlock.hpp blockName): set for an
+// external robot's page, so `simswift attach` knows to hand the block to its
+// program (and to wait for it), and knows when there is none to wait for.
+constexpr uint32_t kFlagV4l2ByRobot = 1u;
+
 enum class RunState : uint32_t {
   Starting = 0,  // the program has not answered its first packet yet
   Running = 1,   // time moves with the run's ticks
@@ -47,7 +53,7 @@ struct ClockLayout {
   uint32_t magic;
   uint32_t version;
   uint32_t size;             // sizeof(ClockLayout)
-  uint32_t reserved;
+  uint32_t flags;            // kFlag* bits: what else the run serves this robot (attach reads it)
   int64_t tick_ns;           // the body's cycle: 10 ms (libagent), 12 ms (LoLA)
   int64_t realtime_epoch_ns; // REALTIME at the run's t = 0, ns since 1970
   // Written every tick.

@@ -44,6 +44,15 @@ constexpr int64_t kMaxImageBytes =
 // The program's environment: the block's shared-memory name ("/simswift-v4l2-p123-t19p1").
 constexpr const char* kBlockVariable = "SIMSWIFT_V4L2";
 
+// The block of an external robot's cameras (`program: external`): named by
+// its robot only ("/simswift-v4l2-t19p1"), as its clock page is, so that a
+// program started by hand (`simswift attach`, or with SIMSWIFT_V4L2 set by
+// hand) finds it without knowing the run's pid. One run serves a robot at a
+// time (its body's lock), and a run takes a killed run's block over. A
+// launched program's block keeps the run's pid in its name
+// ("/simswift-v4l2-p<pid>-<tag>"): it is handed over in the environment.
+inline std::string blockName(const std::string& robot_tag) { return "/simswift-v4l2-" + robot_tag; }
+
 // The image sizes the cameras give (px): the NAO's camera modes up to the
 // images block's largest (VIDIOC_S_FMT snaps a request to the largest of
 // these that fits in it, as a driver adjusts; VIDIOC_ENUM_FRAMESIZES lists them).

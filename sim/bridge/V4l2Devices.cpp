@@ -1,5 +1,6 @@
 #include "sim/bridge/V4l2Devices.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/mman.h>
@@ -12,6 +13,7 @@
 #include <new>
 
 #include "sim/bridge/BodyHost.hpp"  // BridgeError
+#include "sim/bridge/Cleanup.hpp"
 
 namespace simswift::bridge {
 
@@ -20,6 +22,10 @@ namespace cv = common::v4l2;
 namespace {
 
 std::string sysError(const std::string& what) { return what + ": " + std::strerror(errno); }
+
+// The FIFO's name as a shared-memory name ("/simswift-v4l2-...-top"), for
+// cleanup's registry (shm_unlink removes any file in /dev/shm).
+std::string fifoShmName(const std::string& block, const char* which) { return block + "-" + which; }
 
 // A FIFO at `path`, made afresh (a killed run's is replaced), 0600.
 void makeFifo(const std::string& path) {
@@ -42,8 +48,9 @@ void drain(int fd) {
 
 }  // namespace
 
-V4l2Devices::V4l2Devices(const std::string& tag, const std::array<std::string, cv::kNumCameras>& device)
-    : tag_(tag), name_("/simswift-v4l2-p" + std::to_string(::getpid()) + "-" + tag) {
+V4l2Devices::V4l2Devices(const std::string& tag, const std::array<std::string, cv::kNumCameras>& device,
+                         const std::string& name)
+    : tag_(tag), name_(!name.empty() ? name : "/simswift-v4l2-p" + std::to_string(::getpid()) + "-" + tag) {
   for (const std::string& d : device)
     if (d.empty() || d.size() >= static_cast<size_t>(cv::kMaxDevicePath))
       throw BridgeError("robot " + tag_ + ": camera device path '" + d + "' must have 1.." +
@@ -66,6 +73,11 @@ V4l2Devices::V4l2Devices(const std::string& tag, const std::array<std::string, c
   }
   // A fresh object reads as zero; the header and each channel's fields set,
   // the magic last (a shim that sees it sees a set-up block).
+  // The block and its FIFOs (files in /dev/shm: shm_unlink removes them too)
+  // go however the run ends.
+  cleanup::registerShm(name_);
+  for (const char* which : {cv::cameraFifo(0), cv::cameraFifo(1), cv::kTakenFifo})
+    cleanup::registerShm(fifoShmName(name_, which));
   block_ = static_cast<cv::DeviceBlock*>(p);
   block_->version = cv::kBlockVersion;
   for (int c = 0; c < cv::kNumCameras; ++c) {
@@ -96,13 +108,73 @@ void V4l2Devices::release() {
   for (int& fd : ready_)
     if (fd >= 0) ::close(fd), fd = -1;
   if (taken_ >= 0) ::close(taken_), taken_ = -1;
-  for (const char* which : {cv::cameraFifo(0), cv::cameraFifo(1), cv::kTakenFifo})
+  for (const char* which : {cv::cameraFifo(0), cv::cameraFifo(1), cv::kTakenFifo}) {
     ::unlink(cv::fifoPath(name_, which).c_str());
+    cleanup::unregister(fifoShmName(name_, which));
+  }
   if (block_) {
     ::munmap(block_, sizeof(cv::DeviceBlock));
     block_ = nullptr;
-    ::shm_unlink(name_.c_str());
   }
+  ::shm_unlink(name_.c_str());
+  cleanup::unregister(name_);
+}
+
+void V4l2Devices::remove(const std::string& name) {
+  for (const char* which : {cv::cameraFifo(0), cv::cameraFifo(1), cv::kTakenFifo})
+    ::unlink(cv::fifoPath(name, which).c_str());
+  ::shm_unlink(name.c_str());
+}
+
+bool V4l2Devices::served(const std::string& name) {
+  const int fd = ::shm_open(name.c_str(), O_RDONLY | O_CLOEXEC, 0);
+  if (fd < 0) return false;
+  struct stat st {};
+  bool set_up = false;
+  if (::fstat(fd, &st) == 0 && static_cast<size_t>(st.st_size) >= sizeof(cv::DeviceBlock)) {
+    void* p = ::mmap(nullptr, sizeof(cv::DeviceBlock), PROT_READ, MAP_SHARED, fd, 0);
+    if (p != MAP_FAILED) {
+      const auto* b = static_cast<const cv::DeviceBlock*>(p);
+      set_up = b->magic.load(std::memory_order_acquire) == cv::kBlockMagic && b->version == cv::kBlockVersion;
+      ::munmap(p, sizeof(cv::DeviceBlock));
+    }
+  }
+  ::close(fd);
+  if (!set_up) return false;
+  // A write end opened without blocking fails (ENXIO) when no process has
+  // the FIFO open for reading: the simulator's read-write end is gone. The
+  // simulator keeps a writer too, so closing this one hangs nobody up.
+  const int w = ::open(cv::fifoPath(name, cv::cameraFifo(0)).c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+  if (w < 0) return false;
+  ::close(w);
+  return true;
+}
+
+std::vector<std::string> V4l2Devices::removeStale(const std::string& tag) {
+  std::vector<std::string> removed;
+  DIR* d = ::opendir("/dev/shm");
+  if (!d) return removed;
+  std::vector<std::string> blocks;
+  const std::string prefix = "simswift-v4l2-";
+  while (dirent* e = ::readdir(d)) {
+    const std::string file = e->d_name;
+    if (file.compare(0, prefix.size(), prefix) != 0) continue;
+    // A block, not one of its FIFOs; one robot's: "...-<tag>" (a launched
+    // program's "simswift-v4l2-p<pid>-<tag>" or an external robot's).
+    struct stat st {};
+    if (::stat(("/dev/shm/" + file).c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    if (!tag.empty() && (file.size() < tag.size() + 1 || file.compare(file.size() - tag.size() - 1, std::string::npos,
+                                                                     "-" + tag) != 0))
+      continue;
+    blocks.push_back("/" + file);
+  }
+  ::closedir(d);
+  for (const std::string& b : blocks) {
+    if (served(b)) continue;
+    remove(b);
+    removed.push_back(b);
+  }
+  return removed;
 }
 
 void V4l2Devices::corrupt(int c, const std::string& what) const {

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "common/libagent/CameraImages.hpp"
 #include "common/v4l2/DeviceBlock.hpp"
@@ -18,10 +19,14 @@ namespace simswift::bridge {
 
 class V4l2Devices {
  public:
-  // Robot `tag`'s devices at the paths `device` (top, bottom), in a block
-  // of this process ("/simswift-v4l2-p<pid>-<tag>"). Throws BridgeError if
-  // the block or a FIFO cannot be made.
-  V4l2Devices(const std::string& tag, const std::array<std::string, common::v4l2::kNumCameras>& device);
+  // Robot `tag`'s devices at the paths `device` (top, bottom), in the block
+  // `name`: "" for one of this process ("/simswift-v4l2-p<pid>-<tag>", a
+  // launched program's), or the robot's own (common::v4l2::blockName, an
+  // external robot's: a killed run's is taken over). Throws BridgeError
+  // naming the robot if the block or a FIFO cannot be made. Registered with
+  // cleanup (Cleanup.hpp): an interrupted run leaves none of it.
+  V4l2Devices(const std::string& tag, const std::array<std::string, common::v4l2::kNumCameras>& device,
+              const std::string& name = "");
   ~V4l2Devices();
   V4l2Devices(const V4l2Devices&) = delete;
   V4l2Devices& operator=(const V4l2Devices&) = delete;
@@ -53,6 +58,19 @@ class V4l2Devices {
   int64_t framesPublished(int c) const { return posted_[c]; }
   // The run has ended: a program waiting in DQBUF is woken (ENODEV).
   void shutdown();
+
+  // The block `name` and its FIFOs unlinked, if there (a killed run's, taken
+  // over by a run of its robot that serves it no cameras).
+  static void remove(const std::string& name);
+  // The block `name` is served by a running simulator: set up (its magic)
+  // and its top camera's FIFO held open by a simulator (it holds it open
+  // read-write while it lives; a killed one's has no reader). No side
+  // effect on the run or its program.
+  static bool served(const std::string& name);
+  // `simswift clean`: every V4L2 block in /dev/shm (or those of robot
+  // `tag`, if given) that no running simulator serves, removed with its
+  // FIFOs. Returns the names removed.
+  static std::vector<std::string> removeStale(const std::string& tag = "");
 
  private:
   void release();  // closes, unlinks and unmaps what was made (the destructor; a failed constructor)

@@ -16,7 +16,8 @@ namespace simswift::programs {
 
 namespace cc = common::clock;
 
-ClockPage::ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_ns) : name_(std::move(name)) {
+ClockPage::ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_ns, uint32_t flags)
+    : name_(std::move(name)) {
   shm_unlink(name_.c_str());  // a killed run's page: this run's robot takes its name over
   const int fd = shm_open(name_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   if (fd < 0) throw std::runtime_error("clock page " + name_ + ": shm_open: " + std::strerror(errno));
@@ -37,6 +38,7 @@ ClockPage::ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_n
   page_->tick_ns = tick_ns;
   page_->realtime_epoch_ns = realtime_epoch_ns;
   page_->size = sizeof(cc::ClockLayout);
+  page_->flags = flags;
   page_->version = cc::kVersion;
   page_->now_ns.store(0, std::memory_order_relaxed);
   page_->state.store(static_cast<uint32_t>(cc::RunState::Starting), std::memory_order_relaxed);

@@ -14,8 +14,9 @@ namespace simswift::programs {
 class ClockPage {
  public:
   // Creates (replacing one a killed run left) the object `name`, mode 0600,
-  // at t = 0 in state Starting. Throws std::runtime_error naming it.
-  ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_ns);
+  // at t = 0 in state Starting, with `flags` (common::clock::kFlag*). Throws
+  // std::runtime_error naming it.
+  ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_ns, uint32_t flags = 0);
   ~ClockPage();  // wakes waiters (Ended), unmaps, unlinks
   ClockPage(const ClockPage&) = delete;
   ClockPage& operator=(const ClockPage&) = delete;

@@ -160,7 +160,12 @@ Programs::LolaView Programs::lolaView(const ProgramEntry& e) {
 // robot (`simswift attach` finds it so), at the bodies' cycle.
 std::unique_ptr<ClockPage> Programs::clockPage(const ProgramRun& run, const ProgramEntry& e) {
   try {
-    return std::make_unique<ClockPage>(common::clock::pageName(e.slot.tag), run.tick_us * 1000, run.clock_epoch_ns);
+    // An external robot's cameras are in the block named by the robot: its
+    // page says so, for `simswift attach` (a launched program is handed its
+    // block in its environment).
+    const bool by_robot = !e.v4l2_block.empty() && !e.launch.launched();
+    return std::make_unique<ClockPage>(common::clock::pageName(e.slot.tag), run.tick_us * 1000, run.clock_epoch_ns,
+                                       by_robot ? common::clock::kFlagV4l2ByRobot : 0u);
   } catch (const std::runtime_error& err) {
     throw ProgramError("robot " + e.slot.tag + ": " + err.what(), e.slot.tag + ": program could not be started");
   }

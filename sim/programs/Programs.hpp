@@ -36,7 +36,7 @@ struct ProgramEntry {
   RobotSlot slot;
   ProgramKind kind = ProgramKind::Builtin;
   LaunchSpec launch;                 // external: launched when it has a command
-  std::string v4l2_block;            // launched: its cameras' V4L2 device block ("" = none; sim/bridge/V4l2Devices)
+  std::string v4l2_block;            // launched or external: its cameras' V4L2 device block ("" = none; sim/bridge/V4l2Devices)
   agent::program::RobotSetup setup;  // its identity given (robotSetup)
 };
 

@@ -144,10 +144,18 @@ void Runner::buildHosts() {
     if (external && free_running_) r.body->setSync(SyncMode::FreeRunning);
     r.latched = r.body->readActuators();  // what the body gets before any command (limp or stiff start)
     r.ext = r.body->extension();  // game state + team link, beside the block
+    // An external robot's block is named by the robot (a program started by
+    // hand finds it: `simswift attach`); a killed run's is taken over, also
+    // when this run serves it none (attach must not hand that one on).
+    const bool hand_started = external && !r.spec.launch.launched();
+    const std::string block = hand_started ? common::v4l2::blockName(r.tag) : std::string();
     if (servesV4l2(r.spec)) {
       // A robot set up in code (an experiment's) has no paths: its body's.
       const bool unset = r.spec.v4l2.path[0].empty() && r.spec.v4l2.path[1].empty();
-      r.v4l2 = std::make_unique<bridge::V4l2Devices>(r.tag, unset ? defaultCameraDevices(r.spec.body) : r.spec.v4l2.path);
+      r.v4l2 = std::make_unique<bridge::V4l2Devices>(
+          r.tag, unset ? defaultCameraDevices(r.spec.body) : r.spec.v4l2.path, block);
+    } else if (hand_started) {
+      bridge::V4l2Devices::remove(block);
     }
   }
   settleRobots();
@@ -412,7 +420,9 @@ void Runner::cameraFrame(int64_t t_us) {
 
 bool Runner::servesV4l2(const RobotSpec& spec) const {
   using Mode = RobotSpec::CameraDevices::Mode;
-  if (spec.v4l2.mode == Mode::Off || !spec.launch.launched()) return false;
+  // A launched program's, and an external one's (started by hand: the
+  // block named by its robot); a builtin program reads its images in process.
+  if (spec.v4l2.mode == Mode::Off || spec.program != RobotSpec::Program::External) return false;
   if (spec.v4l2.mode == Mode::Default) return camerasAvailable();
   if (!camerasAvailable())
     throw RunnerError("robot " + al::robotTag(spec.team, spec.player) + " (scenario " + scenario_.source + ":" +

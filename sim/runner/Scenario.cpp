@@ -762,8 +762,9 @@ void readCameraDevices(const YamlReader& r, RobotSpec& rs) {
   RobotSpec::CameraDevices& d = rs.v4l2;
   d.path = defaultCameraDevices(rs.body);
   if (!r.has("v4l2")) return;
-  if (!rs.launch.launched())
-    r.fail("v4l2", "the cameras as V4L2 devices are for a launched program (program: {command: [...]})");
+  if (rs.program != RobotSpec::Program::External)
+    r.fail("v4l2", "the cameras as V4L2 devices are for a program of its own (program: {command: [...]} or "
+                   "external)");
   if (!r.node()["v4l2"].IsMap()) {
     d.mode = r.choice("v4l2", "on", {"on", "off"}) == "on" ? RobotSpec::CameraDevices::Mode::On
                                                           : RobotSpec::CameraDevices::Mode::Off;

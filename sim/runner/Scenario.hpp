@@ -93,11 +93,12 @@ struct RobotSpec {
   struct ButtonPress { double t_s = 0, duration_s = 0.1; sensors::Button button = sensors::Button::Chest; };
   std::vector<ButtonPress> buttons;
   bool buttonHeld(sensors::Button b, double t_s) const;  // any press of b covers t_s
-  // The robot's cameras as V4L2 devices for its launched program
-  // (docs/porting.md section 3; sim/bridge/V4l2Devices.hpp):
+  // The robot's cameras as V4L2 devices for its launched program, or its
+  // external one started by hand (`simswift attach`; docs/porting.md
+  // section 3; sim/bridge/V4l2Devices.hpp):
   //   v4l2: {top: /dev/video-top, bottom: /dev/video-bottom}   the paths it opens
   //   v4l2: on | off
-  // Absent: on for a launched program in a build with cameras (at the
+  // Absent: on for a launched or external program in a build with cameras (at the
   // body's names: a V6's /dev/video-top and /dev/video-bottom, a V5's
   // /dev/video0 (top) and /dev/video1 (bottom)), else off.
   struct CameraDevices {

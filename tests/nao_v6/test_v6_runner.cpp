@@ -786,6 +786,13 @@ TEST(V6Run, KillNineLeavesNothingCleanDoesNotRemove) {
   EXPECT_NE(out.find("removed 1 LoLA socket(s) of t88p2"), std::string::npos) << out;
   EXPECT_NE(::access("/tmp/simswift-lola/t88p1", F_OK), 0);
   EXPECT_NE(::access("/tmp/simswift-lola/t88p2", F_OK), 0);
+  // The launched programs' camera device blocks (a build with cameras makes
+  // them) and their FIFOs go too.
+  for (const char* robot : {"t88p1", "t88p2"})
+    for (const char* part : {"", "-top", "-bottom", "-taken"}) {
+      const std::string f = "/dev/shm/simswift-v4l2-p" + std::to_string(sim) + "-" + robot + part;
+      EXPECT_NE(::access(f.c_str(), F_OK), 0) << f << " is left";
+    }
   std::system(("rm -rf " + dir).c_str());
 }
 

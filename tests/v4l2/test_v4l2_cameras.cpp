@@ -7,10 +7,13 @@
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <sys/mman.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -111,8 +114,12 @@ TEST(V4l2Scenario, DevicePathsPerBodyAndChecked) {
   EXPECT_EQ(set.robots[0].v4l2.path[1], "/dev/video1");
   using simswift::testing::configError;
   EXPECT_EQ(configError([] { Scenario::parse("robots:\n  - {team: 19, player: 1, v4l2: on}\n", "b.yaml"); }),
-            "b.yaml:2: robots[0].v4l2: the cameras as V4L2 devices are for a launched program (program: {command: "
-            "[...]})");
+            "b.yaml:2: robots[0].v4l2: the cameras as V4L2 devices are for a program of its own (program: {command: "
+            "[...]} or external)");
+  // An external robot's (a program started by hand) are allowed.
+  const Scenario ext = Scenario::parse("robots:\n  - {team: 19, player: 1, lola: {}, program: external, v4l2: off}\n",
+                                       "e.yaml");
+  EXPECT_EQ(ext.robots[0].v4l2.mode, RobotSpec::CameraDevices::Mode::Off);
   EXPECT_EQ(configError([&] {
               Scenario::parse("robots:\n  - {team: 19, player: 1, " + launched + ",\n     v4l2: {top: video0}}\n",
                               "c.yaml");
@@ -177,6 +184,34 @@ TEST(V4l2Devices, ProgramFieldsAreChecked) {
   block->camera[0].frames_taken = 1;
   EXPECT_TRUE(d.waitTaken(0.01));
   ::munmap(p, sizeof(common::v4l2::DeviceBlock));
+}
+
+// An external robot's block, named by the robot: served while its
+// simulator lives; a killed simulator's (a child that ends without its
+// destructor) is not, and `simswift clean`'s removeStale takes only that
+// one, with its FIFOs.
+TEST(V4l2Devices, AKilledRunsBlockIsNotServedAndCleanRemovesIt) {
+  namespace cv = common::v4l2;
+  const std::string live_name = cv::blockName("t98p1"), dead_name = cv::blockName("t98p2");
+  simswift::bridge::V4l2Devices live("t98p1", {"/dev/video-top", "/dev/video-bottom"}, live_name);
+  EXPECT_EQ(live.blockName(), "/simswift-v4l2-t98p1");
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    new simswift::bridge::V4l2Devices("t98p2", {"/dev/video-top", "/dev/video-bottom"}, dead_name);
+    ::_exit(0);  // killed: no destructor, no exit handlers
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_TRUE(simswift::bridge::V4l2Devices::served(live_name));
+  EXPECT_FALSE(simswift::bridge::V4l2Devices::served(dead_name));
+  EXPECT_EQ(::access(cv::fifoPath(dead_name, "taken").c_str(), F_OK), 0) << "the killed run's FIFOs are left";
+  EXPECT_TRUE(simswift::bridge::V4l2Devices::removeStale("t98p1").empty()) << "a served block stays";
+  EXPECT_EQ(simswift::bridge::V4l2Devices::removeStale("t98p2"), std::vector<std::string>{dead_name});
+  for (const char* which : {"top", "bottom", "taken"})
+    EXPECT_NE(::access(cv::fifoPath(dead_name, which).c_str(), F_OK), 0) << which;
+  EXPECT_NE(::access(("/dev/shm" + dead_name).c_str(), F_OK), 0);
+  EXPECT_TRUE(simswift::bridge::V4l2Devices::served(live_name));
 }
 
 #ifdef SIMSWIFT_HAVE_CAMERAS
@@ -296,6 +331,90 @@ TEST(V4l2Cameras, AV5RobotStreamsVideo0AndVideo1) {
   }
   EXPECT_FALSE(digest[0].empty());
   EXPECT_EQ(digest[0], digest[1]);
+}
+
+// A program started by hand (issue 44): a V6 robot whose program is
+// external, the probe started with `simswift attach --team T --player 1`
+// (the LoLA client it starts opens /tmp/robocup, attach's), streams both
+// cameras as the launched probe does: the same frames at the same
+// simulated times (the digest of every frame's bytes and time), 30 Hz of
+// simulated time on the ticks. Before, attach handed it no cameras.
+TEST(V4l2Cameras, AProgramStartedByHandWithAttachStreamsBothCameras) {
+  constexpr int kFrames = 5;
+  const Scenario launched_sc = probeScenario(78, kFrames, "mmap", 0.4);
+  {
+    Runner r(launched_sc);
+    r.run(quiet());
+  }
+  ProbeLog launched = readLog(launched_sc.program_logs + "/t78p1.log");
+  ASSERT_EQ(launched.frames.size(), 2u * kFrames) << launched.facts["error"];
+
+  constexpr int kTeam = 79;
+  std::ostringstream y;
+  y << "duration: 0.4\nseed: 5\nattach_timeout: 20\nball: {x: " << kBallX << ", y: " << kBallY
+    << "}\nrobots:\n  - {team: " << kTeam << ", player: 1, x: 0, y: 0, lola: {}, program: external}\n";
+  Scenario sc = Scenario::parse(y.str(), std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/v4l2_test.yaml");
+  sc.program_logs = "/tmp/simswift-test-v4l2-logs-" + std::to_string(::getpid());
+  const std::string log_path = sc.program_logs + "/attached-t79p1.log";
+  ::mkdir(sc.program_logs.c_str(), 0755);
+  pid_t pid = -1;
+  {
+    Runner r(sc);
+    r.start();  // the socket, the camera block and the clock page exist from here
+    pid = ::fork();
+    if (pid == 0) {
+      const int fd = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
+      std::vector<std::string> args = {std::string(SIMSWIFT_BINARY_DIR) + "/simswift",
+                                       "attach",
+                                       "--team",
+                                       std::to_string(kTeam),
+                                       "--player",
+                                       "1",
+                                       "--",
+                                       kProbe,
+                                       "/dev/video-top",
+                                       "/dev/video-bottom",
+                                       std::to_string(kFrames),
+                                       "mmap",
+                                       kClient,
+                                       "/tmp/robocup",
+                                       "0",
+                                       "hold"};
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    r.run(quiet());
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ProbeLog log = readLog(log_path);
+  std::ifstream whole(log_path);
+  const std::string text((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text;
+  ASSERT_EQ(log.frames.size(), 2u * kFrames) << text;
+  EXPECT_NE(log.facts["open"].find("/dev/video-top chardev=1 driver=uvcvideo"), std::string::npos) << text;
+  EXPECT_NE(log.facts["open"].find("/dev/video-bottom chardev=1"), std::string::npos) << text;
+  std::map<std::string, std::vector<long long>> times;
+  for (const auto& f : log.frames) {
+    EXPECT_EQ(f.at("mono"), "1");
+    times[f.at("cam")].push_back(std::stoll(f.at("t_us")));
+  }
+  for (const auto& [cam, t] : times) {
+    ASSERT_EQ(t.size(), static_cast<size_t>(kFrames)) << cam;
+    // Frame k at the first 12 ms tick at or after k/30 s: gaps of 24 or 36 ms.
+    for (size_t k = 1; k < t.size(); ++k) EXPECT_TRUE(t[k] - t[k - 1] == 24000 || t[k] - t[k - 1] == 36000) << cam;
+    EXPECT_EQ(t.front() % 12000, 0) << "a frame's time is its tick's";
+  }
+  EXPECT_EQ(times["/dev/video-top"], times["/dev/video-bottom"]);
+  EXPECT_FALSE(log.digest.empty());
+  EXPECT_EQ(log.digest, launched.digest) << "the launched probe's frames";
+  // The run's block goes with it.
+  EXPECT_FALSE(simswift::bridge::V4l2Devices::served(common::v4l2::blockName("t79p1")));
+  EXPECT_NE(::access(("/dev/shm" + common::v4l2::blockName("t79p1")).c_str(), F_OK), 0);
 }
 
 #endif
