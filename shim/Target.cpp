@@ -19,7 +19,11 @@ const char* readName() {
   if (n <= 0) return "?";
   path[n] = '\0';
   const char* slash = std::strrchr(path, '/');
-  std::strncpy(g_name, slash ? slash + 1 : path, sizeof g_name - 1);
+  // A file name is at most NAME_MAX (255) bytes: it fits with its NUL.
+  const char* base = slash ? slash + 1 : path;
+  const size_t len = strnlen(base, sizeof g_name - 1);
+  std::memcpy(g_name, base, len);
+  g_name[len] = '\0';
   return g_name;
 }
 

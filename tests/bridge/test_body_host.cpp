@@ -293,7 +293,9 @@ TEST(BodyHost, ContactLostSitsDownAsLibagentAndStaysLimpUntilStiffened) {
       for (int q = 0; q < al::kNumJoints; ++q) EXPECT_NEAR(j.angles[q], middle[q], 1e-5);
       EXPECT_EQ(j.stiffnesses[al::Joints::LKneePitch], LB::kSitMiddleStiffness);
     }
-    if (c == LB::kSitMiddleCycles + 1) EXPECT_EQ(j.stiffnesses[al::Joints::LKneePitch], LB::kSitDownStiffness);
+    if (c == LB::kSitMiddleCycles + 1) {
+      EXPECT_EQ(j.stiffnesses[al::Joints::LKneePitch], LB::kSitDownStiffness);
+    }
     if (c == LB::kSitMiddleCycles + LB::kSitDownCycles) {
       for (int q = 0; q < al::kNumJoints; ++q) EXPECT_NEAR(j.angles[q], sit[q], 1e-5);
       EXPECT_EQ(j.stiffnesses[al::Joints::LKneePitch], LB::kSitDownStiffness);

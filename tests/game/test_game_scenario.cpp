@@ -186,5 +186,7 @@ TEST(GameScenario, SameSeedSameDeliveriesInARun) {
   EXPECT_NE(a, c);
   // 15 packets per sender, 40 % lost: each pair hears about 9.
   for (int64_t n : a)
-    if (n >= 0) EXPECT_NEAR(n, 9, 5);
+    if (n >= 0) {
+      EXPECT_NEAR(n, 9, 5);
+    }
 }

@@ -350,7 +350,9 @@ TEST(VisionOracleScene, BallHiddenBehindARobotIsNotSeen) {
   world.placeRobot(blocker, 0.0, 1.2, M_PI, stand());
   EXPECT_EQ(ofType(o.observe(world, 0, 0), al::ObservationType::Ball).size(), 1u);
   for (const SeenObject& s : o.observe(world, 0, 0)) {
-    if (s.obs.type != al::ObservationType::Robot) EXPECT_EQ(s.obs.colour, -1);
+    if (s.obs.type != al::ObservationType::Robot) {
+      EXPECT_EQ(s.obs.colour, -1);
+    }
   }
   // Lying on its back 1 m ahead: still seen, flagged fallen.
   Eigen::Isometry3d lying = Eigen::Isometry3d::Identity();

@@ -170,7 +170,9 @@ TEST(WorldStepLength, EveryTickStepsAtMostFiveMilliseconds) {
   for (int64_t tick : {1000, 4999, 5000, 5001, 7000, 12000, 16000, 100000}) {
     const int n = steps(tick);
     EXPECT_LE(tick, n * 5000) << tick << " us in " << n << " steps";        // each within 5 ms
-    if (n > 1) EXPECT_GT(tick, (n - 1) * 5000) << tick << " us in " << n;  // and the fewest
+    if (n > 1) {
+      EXPECT_GT(tick, (n - 1) * 5000) << tick << " us in " << n;  // and the fewest
+    }
   }
   // A count given (a scenario's physics: {substeps}) is taken as it is.
   EXPECT_EQ(steps(12000, 2), 2);
