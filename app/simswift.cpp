@@ -459,6 +459,18 @@ bool follow(const std::string& socket) {
   return ::mount(socket.c_str(), "/tmp/robocup", nullptr, MS_BIND, nullptr) == 0;
 }
 
+// Polls ready() every 20 ms until it holds (true) or `deadline` has passed
+// (false). Wall clock: only how long attach waits for a run, never what the
+// run does.
+template <class Ready, class Deadline>
+bool waitFor(Ready ready, Deadline deadline) {
+  while (!ready()) {
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return true;
+}
+
 // The flags of the clock page `name` (common::clock::kFlag*), 0 if it
 // cannot be read or is not set up.
 uint32_t pageFlags(const std::string& name) {
@@ -507,18 +519,16 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
     if (fd >= 0) close(fd);
     return fd >= 0;
   };
-  if (!simswift::lola::socketServed(socket) || !clockPageThere()) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s_);
+  const auto served = [&] { return simswift::lola::socketServed(socket) && clockPageThere(); };
+  if (!served()) {
     std::fprintf(stderr, "simswift attach: waiting up to %g s for a run to serve %s\n", wait_s_, socket.c_str());
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s_);
-    while (!simswift::lola::socketServed(socket) || !clockPageThere()) {
-      if (std::chrono::steady_clock::now() >= deadline) {
-        std::fprintf(stderr,
-                     "simswift attach: no run served %s with its clock page %s within %g s (start the run with "
-                     "this robot, or give --wait more time)\n",
-                     socket.c_str(), clock.c_str(), wait_s_);
-        return 1;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (!attach::waitFor(served, deadline)) {
+      std::fprintf(stderr,
+                   "simswift attach: no run served %s with its clock page %s within %g s (start the run with "
+                   "this robot, or give --wait more time)\n",
+                   socket.c_str(), clock.c_str(), wait_s_);
+      return 1;
     }
   }
   // The robot's cameras, when the run serves them (its clock page says so):
@@ -533,16 +543,12 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
                    socket.c_str());
     } else {
       v4l2_block = common::v4l2::blockName(tag);
-      const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s_);
-      while (!simswift::bridge::V4l2Devices::served(v4l2_block)) {
-        if (std::chrono::steady_clock::now() >= deadline) {
-          std::fprintf(stderr,
-                       "simswift attach: robot %s: the run serves its cameras, but their block %s was not there "
-                       "within %g s\n",
-                       tag.c_str(), v4l2_block.c_str(), wait_s_);
-          return 1;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      if (!attach::waitFor([&] { return simswift::bridge::V4l2Devices::served(v4l2_block); }, deadline)) {
+        std::fprintf(stderr,
+                     "simswift attach: robot %s: the run serves its cameras, but their block %s was not there "
+                     "within %g s\n",
+                     tag.c_str(), v4l2_block.c_str(), wait_s_);
+        return 1;
       }
     }
   }

@@ -5,7 +5,11 @@
 #  - CCACHE_BASEDIR = the source root: absolute paths under it are hashed
 #    relative to the build folder, so build/ and build-package/ (same depth,
 #    same flags: `cmake --preset library` changes no compile flag) share
-#    objects, and so do two clones of the project.
+#    objects, and so do two clones of the project at the same path (a fresh
+#    clone where the last one was). A clone at another path
+#    misses every test unit: their command lines name the source and build
+#    folders (SIMSWIFT_SOURCE_DIR, SIMSWIFT_BINARY_DIR: cmake/SimswiftTargets.cmake),
+#    which the base directory does not rewrite (docs/testing.md, "Cost").
 #  - The cache itself is where ccache keeps it by default, the user's cache
 #    directory (~/.cache/ccache; CCACHE_DIR or ccache.conf's cache_dir if set):
 #    it outlives `git clean -fdx` and a fresh clone, which a folder of the

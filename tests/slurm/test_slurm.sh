@@ -137,7 +137,17 @@ for _ in $(seq 100); do [ -S "$T/munge.socket" ] && break; sleep 0.1; done
 node_line=$(slurmd -C | head -n 1)
 node=$(printf '%s\n' "$node_line" | sed 's/^NodeName=\([^ ]*\).*/\1/')
 cpus=$(printf '%s\n' "$node_line" | sed 's/.* CPUs=\([0-9]*\).*/\1/')
-port=$((20000 + $$ % 20000))
+# Two ports of our own, below the kernel's ephemeral range (its first port,
+# 32768 by default): one inside it can be held by any outgoing connection
+# of the tests running beside this one (slurmctld then fails with "Address
+# already in use", seen once), and one a listener already has is skipped.
+ephemeral=$(cut -f1 /proc/sys/net/ipv4/ip_local_port_range 2>/dev/null || echo 32768)
+[ "$ephemeral" -gt 21000 ] 2>/dev/null || ephemeral=32768
+listening=$(ss -Htln 2>/dev/null | awk '{n = split($4, a, ":"); print a[n]}' || true)
+port=$((20000 + $$ % (ephemeral - 20002)))
+while grep -qx -e "$port" -e "$((port + 1))" <<<"$listening"; do
+  port=$((20000 + (port - 20000 + 2) % (ephemeral - 20002)))
+done
 mkdir -p "$T/state" "$T/spool"
 cat >"$T/slurm.conf" <<EOF
 ClusterName=simswift-test
