@@ -471,20 +471,23 @@ bool waitFor(Ready ready, Deadline deadline) {
   return true;
 }
 
-// The flags of the clock page `name` (common::clock::kFlag*), 0 if it
-// cannot be read or is not set up.
-uint32_t pageFlags(const std::string& name) {
+// The clock page `name` once its run has set it up (its magic, written
+// last): its flags (common::clock::kFlag*; 0 from a page of another
+// version), or nothing while it is not there or not yet set up.
+std::optional<uint32_t> pageFlags(const std::string& name) {
   namespace cc = common::clock;
   const int fd = shm_open(name.c_str(), O_RDONLY | O_CLOEXEC, 0);
-  if (fd < 0) return 0;
+  if (fd < 0) return std::nullopt;
   struct stat st {};
-  uint32_t flags = 0;
+  std::optional<uint32_t> flags;
   if (fstat(fd, &st) == 0 && static_cast<size_t>(st.st_size) >= sizeof(cc::ClockLayout)) {
     void* p = mmap(nullptr, sizeof(cc::ClockLayout), PROT_READ, MAP_SHARED, fd, 0);
     if (p != MAP_FAILED) {
-      const auto* page = static_cast<const cc::ClockLayout*>(p);
-      std::atomic_thread_fence(std::memory_order_acquire);
-      if (page->magic == cc::kMagic && page->version == cc::kVersion) flags = page->flags;
+      const auto* page = static_cast<const volatile cc::ClockLayout*>(p);
+      if (page->magic == cc::kMagic) {
+        std::atomic_thread_fence(std::memory_order_acquire);  // the magic seen: the header is
+        flags = page->version == cc::kVersion ? page->flags : 0u;
+      }
       munmap(p, sizeof(cc::ClockLayout));
     }
   }
@@ -512,15 +515,14 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
                                       ": give --clock NAME (the run's /simswift-clock-t<T>p<P>)");
   // The socket of a run that serves it, never one a run left or one not
   // made yet, and the run's clock page (made after the socket, with the
-  // robot's program): waited for (bounded), as a real client retries its
-  // connect. Wall clock: only how long to wait, never what the run does.
-  const auto clockPageThere = [&] {
-    const int fd = shm_open(clock.c_str(), O_RDONLY, 0);
-    if (fd >= 0) close(fd);
-    return fd >= 0;
-  };
+  // robot's program) set up, its flags read: waited for (bounded), as a real
+  // client retries its connect. Wall clock: only how long to wait, never
+  // what the run does.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s_);
-  const auto served = [&] { return simswift::lola::socketServed(socket) && clockPageThere(); };
+  std::optional<uint32_t> page_flags;
+  const auto served = [&] {
+    return simswift::lola::socketServed(socket) && (page_flags = attach::pageFlags(clock)).has_value();
+  };
   if (!served()) {
     std::fprintf(stderr, "simswift attach: waiting up to %g s for a run to serve %s\n", wait_s_, socket.c_str());
     if (!attach::waitFor(served, deadline)) {
@@ -535,7 +537,7 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   // the block named by the robot, made before the page; waited for in what
   // is left of --wait all the same (its FIFOs held by the run).
   std::string v4l2_block;
-  if (attach::pageFlags(clock) & common::clock::kFlagV4l2ByRobot) {
+  if (*page_flags & common::clock::kFlagV4l2ByRobot) {
     if (tag.empty()) {
       std::fprintf(stderr,
                    "simswift attach: the run serves this robot's cameras, but its name cannot be told from --socket "
