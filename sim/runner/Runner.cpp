@@ -117,14 +117,14 @@ sensors::SensorConfig Runner::sensorConfig() const {
   return sc;
 }
 
-// Each robot's body in the world, its SensorSuite and its body side
-// (Bodies.hpp: libagent in-process for a builtin program, in named shared
-// memory for an external one; LoLA on its socket), in scenario order.
+// Each robot's body in the world and its body side (Bodies.hpp: libagent
+// in-process for a builtin program, in named shared memory for an external
+// one; LoLA on its socket), in scenario order; then its SensorSuite, once it
+// has settled (settleRobots).
 void Runner::buildHosts() {
   // Every robot is attached through its body side: the model must be a NAO
   // whose 25 joint slots it can drive (ModelError "file:line: missing joint ..." if not).
   nao_ = std::make_unique<NaoBinding>(*model_);
-  const sensors::SensorConfig sc = sensorConfig();
   robots_.resize(scenario_.robots.size());
   for (auto& r : robots_) r = std::make_unique<Robot>();
   // Objects a killed run left: this run's robots take theirs over (a
@@ -135,9 +135,7 @@ void Runner::buildHosts() {
     Robot& r = *robots_[i];
     r.spec = scenario_.robots[i];
     r.tag = al::robotTag(r.spec.team, r.spec.player);
-    const int index = world_->addRobot(model_, r.spec.x, r.spec.y, r.spec.theta,
-                                       modelPosture(an::postureAngles(r.spec.posture)));
-    r.sensors = std::make_unique<sensors::SensorSuite>(*world_, index, sc);
+    world_->addRobot(model_, r.spec.x, r.spec.y, r.spec.theta, modelPosture(an::postureAngles(r.spec.posture)));
     const bool external = r.spec.program == RobotSpec::Program::External;
     r.body = makeBody(r.spec, {external, scenario_.camera.renderRobots()});
     r.images = r.body->images();
@@ -169,9 +167,8 @@ void Runner::buildHosts() {
 // settling with that let it sag out of its posture), for kSettleTicks ticks
 // of physics, untimed (the clock and the tick count start after them), and
 // through the run's first tick (applyCommands), so its first reading is of
-// that posture at rest. The sensors start afresh from the settled state
-// (their velocity and rotation differences would otherwise span the
-// settling).
+// that posture at rest. The sensors are made from the settled state (their
+// velocity and rotation differences would otherwise span the settling).
 void Runner::settleRobots() {
   for (size_t i = 0; i < robots_.size(); ++i) holdStartPosture(static_cast<int>(i));
   world_->settle(kSettleTicks);
