@@ -43,6 +43,7 @@
 #include "sim/bridge/V4l2Devices.hpp"
 #include "sim/lola/LolaServer.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
+#include "sim/programs/JoinView.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/programs/ProgramProcess.hpp"
 #include "sim/programs/ShimEnvironment.hpp"
@@ -387,28 +388,35 @@ int CleanCommand::run() const {
 }
 
 // simswift attach (--team T --player P | --socket PATH) -- COMMAND...: runs
-// COMMAND (execvp) in a mount namespace of its own where /tmp/robocup is the
-// LoLA robot's socket of a run that has started (docs/lola.md). main() hands
-// over what follows the first `--` untouched; the parser never sees it.
+// COMMAND (execvp) for an external robot of a run that has started: in the
+// robot's view the run holds (sim/programs/JoinView.hpp), or, where the
+// machine gives none, in a mount namespace of its own where /tmp/robocup is
+// the V6 robot's socket (docs/lola.md). main() hands over what follows the
+// first `--` untouched; the parser never sees it.
 class AttachCommand {
  public:
   explicit AttachCommand(CLI::App& parent) {
-    cmd_ = parent.add_subcommand("attach", "run an unchanged V6 (LoLA) program by hand");
+    cmd_ = parent.add_subcommand("attach", "run an unchanged robot program by hand, in its robot's view");
     cmd_->footer(
         "simswift attach (--team T --player P | --socket PATH) -- COMMAND...\n"
-        "Runs COMMAND, an unchanged V6 (LoLA) program, by hand: its /tmp/robocup is that\n"
-        "robot's socket (default /tmp/simswift-lola/t<T>p<P>), in a mount namespace of its own.\n"
-        "It waits (up to --wait s) for a run to serve that socket, and while COMMAND runs its\n"
-        "/tmp/robocup follows the robot's socket of the run serving it (a new run of the same\n"
-        "robot included), so a program that reconnects, as real clients do, finds it.\n"
+        "Runs COMMAND, an unchanged robot program (or gdb running it), by hand for a robot\n"
+        "whose program is external. It waits (up to --wait s) for a run to serve that robot\n"
+        "(its clock page; a V6's socket too, default /tmp/simswift-lola/t<T>p<P>).\n"
+        "Where the machine gives namespaces, the run holds the view a launched program gets\n"
+        "and COMMAND runs in it: its own processes, the robot's /tmp with /tmp/robocup its\n"
+        "socket, /home/nao and files, wlan0 at 10.0.<T>.<P> with the GameController's packets\n"
+        "and the team's network (docs/porting.md section 10); it ends with the run, as a\n"
+        "launched program does. Elsewhere a V6's /tmp/robocup is the robot's socket, in a\n"
+        "mount namespace of its own, following a new run of the same robot.\n"
         "Everything after -- is the command's, passed on as it is. COMMAND reads the robot's\n"
         "simulated time through libsimswift-shim.so (LD_PRELOAD; docs/shim.md), as a launched\n"
         "program does; a static binary is refused. When the run serves the robot's cameras\n"
         "(scenario key v4l2:, on by default in a build with cameras), COMMAND streams them\n"
-        "as a launched program does: /dev/video-top and /dev/video-bottom (or the scenario's\n"
-        "paths), in lock-step. COMMAND may be gdb running the program: gdb keeps the wall clock.\n"
+        "as a launched program does (/dev/video-top and /dev/video-bottom on a V6,\n"
+        "/dev/video0 and /dev/video1 on a V5, or the scenario's paths), in lock-step.\n"
+        "COMMAND may be gdb running the program: gdb keeps the wall clock.\n"
         "\n"
-        "Exit codes: COMMAND's (128 + N killed by signal N); 1 no run served the socket in time\n"
+        "Exit codes: COMMAND's (128 + N killed by signal N); 1 no run served the robot in time\n"
         "or COMMAND cannot start; 2 bad command line.");
     robot_.declare(*cmd_, "of the robot");
     CLI::Option* socket = cmd_->add_option("--socket", socket_, "the robot's LoLA socket (instead of --team, --player)")
@@ -471,29 +479,6 @@ bool waitFor(Ready ready, Deadline deadline) {
   return true;
 }
 
-// The clock page `name` once its run has set it up (its magic, written
-// last): its flags (common::clock::kFlag*; 0 from a page of another
-// version), or nothing while it is not there or not yet set up.
-std::optional<uint32_t> pageFlags(const std::string& name) {
-  namespace cc = common::clock;
-  const int fd = shm_open(name.c_str(), O_RDONLY | O_CLOEXEC, 0);
-  if (fd < 0) return std::nullopt;
-  struct stat st {};
-  std::optional<uint32_t> flags;
-  if (fstat(fd, &st) == 0 && static_cast<size_t>(st.st_size) >= sizeof(cc::ClockLayout)) {
-    void* p = mmap(nullptr, sizeof(cc::ClockLayout), PROT_READ, MAP_SHARED, fd, 0);
-    if (p != MAP_FAILED) {
-      const auto* page = static_cast<const volatile cc::ClockLayout*>(p);
-      if (page->magic == cc::kMagic) {
-        std::atomic_thread_fence(std::memory_order_acquire);  // the magic seen: the header is
-        flags = page->version == cc::kVersion ? page->flags : 0u;
-      }
-      munmap(p, sizeof(cc::ClockLayout));
-    }
-  }
-  close(fd);
-  return flags;
-}
 }  // namespace attach
 
 int AttachCommand::run(const std::vector<std::string>& command) const {
@@ -513,31 +498,36 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   if (clock.empty())
     return cli::usageError(*cmd_, "the robot's clock page cannot be told from --socket " + socket +
                                       ": give --clock NAME (the run's /simswift-clock-t<T>p<P>)");
-  // The socket of a run that serves it, never one a run left or one not
-  // made yet, and the run's clock page (made after the socket, with the
-  // robot's program) set up, its flags read: waited for (bounded), as a real
-  // client retries its connect. Wall clock: only how long to wait, never
-  // what the run does.
+  // The run's clock page set up by a live run (its flags, its view), and for
+  // a V6 (the page says so, or --socket) the socket of a run that serves it,
+  // never one a run left or one not made yet: waited for (bounded), as a
+  // real client retries its connect. Wall clock: only how long to wait,
+  // never what the run does.
+  namespace cc = common::clock;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s_);
-  std::optional<uint32_t> page_flags;
+  std::optional<simswift::programs::RunPage> page;
+  const auto isLola = [&] { return !socket_.empty() || (page && (page->flags & cc::kFlagLola)); };
   const auto served = [&] {
-    return simswift::lola::socketServed(socket) && (page_flags = attach::pageFlags(clock)).has_value();
+    page = simswift::programs::readRunPage(clock);
+    return page && (!isLola() || simswift::lola::socketServed(socket));
   };
+  const std::string robot = socket_.empty() ? "robot " + tag : socket;
   if (!served()) {
-    std::fprintf(stderr, "simswift attach: waiting up to %g s for a run to serve %s\n", wait_s_, socket.c_str());
+    std::fprintf(stderr, "simswift attach: waiting up to %g s for a run to serve %s\n", wait_s_, robot.c_str());
     if (!attach::waitFor(served, deadline)) {
       std::fprintf(stderr,
-                   "simswift attach: no run served %s with its clock page %s within %g s (start the run with "
+                   "simswift attach: no run served %s (its clock page %s%s) within %g s (start the run with "
                    "this robot, or give --wait more time)\n",
-                   socket.c_str(), clock.c_str(), wait_s_);
+                   robot.c_str(), clock.c_str(), isLola() ? (", socket " + socket).c_str() : "", wait_s_);
       return 1;
     }
   }
+  const bool lola = isLola();
   // The robot's cameras, when the run serves them (its clock page says so):
   // the block named by the robot, made before the page; waited for in what
   // is left of --wait all the same (its FIFOs held by the run).
   std::string v4l2_block;
-  if (*page_flags & common::clock::kFlagV4l2ByRobot) {
+  if (page->flags & cc::kFlagV4l2ByRobot) {
     if (tag.empty()) {
       std::fprintf(stderr,
                    "simswift attach: the run serves this robot's cameras, but its name cannot be told from --socket "
@@ -561,10 +551,37 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
     std::fprintf(stderr, "simswift attach: %s\n", e.what());
     return 1;
   }
-  const std::string error = simswift::programs::ProgramProcess::enterPrivateRobocup(socket);
-  if (!error.empty()) {
-    std::fprintf(stderr, "simswift attach: %s\n", error.c_str());
-    return 1;
+  // The robot's view, when the run holds one (its page says so: an external
+  // robot on a machine with namespaces): the command runs in it, as a
+  // launched program would (sim/programs/JoinView.hpp). Else a V6's
+  // /tmp/robocup alone, in a mount namespace of this process's own.
+  const bool in_view = (page->flags & cc::kFlagView) != 0;
+  std::vector<simswift::programs::MountOp> mounts;
+  std::error_code cwd_error;
+  const std::string cwd = std::filesystem::current_path(cwd_error).string();
+  if (in_view) {
+    env.emplace_back("SIMSWIFT_PID_NAMESPACE_OF_PROGRAM", "1");  // simswift's own client (Liveness.cpp)
+    std::vector<std::string> named(command.begin(), command.end());
+    named.push_back(cwd);
+    for (char** e = environ; *e; ++e) named.emplace_back(*e);
+    for (const auto& [k, v] : env) named.push_back(v);
+    try {
+      mounts = simswift::programs::joinedMounts(page->view_folder, lola ? socket : "", named);
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "simswift attach: robot %s's view: %s\n", tag.c_str(), e.what());
+      return 1;
+    }
+    const std::string error = simswift::programs::enterViewNamespaces(page->view_pid);
+    if (!error.empty()) {
+      std::fprintf(stderr, "simswift attach: %s\n", error.c_str());
+      return 1;
+    }
+  } else if (lola) {
+    const std::string error = simswift::programs::ProgramProcess::enterPrivateRobocup(socket);
+    if (!error.empty()) {
+      std::fprintf(stderr, "simswift attach: %s\n", error.c_str());
+      return 1;
+    }
   }
   for (const auto& [k, v] : env) setenv(k.c_str(), v.c_str(), 1);
   std::vector<char*> argv;
@@ -583,7 +600,22 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
   }
   if (child == 0) {
     prctl(PR_SET_PDEATHSIG, SIGTERM);  // attach killed: the command is told to end
-    if (getppid() != parent) _exit(127);
+    // In the view's PID namespace this process's parent has no pid (0); an
+    // orphan's is the view's init (1) or the machine's.
+    if (getppid() != (in_view ? 0 : parent)) _exit(127);
+    if (in_view) {
+      const char* what = "";
+      if (const int e = simswift::programs::enterJoinedMounts(mounts, &what)) {
+        std::fprintf(stderr, "simswift attach: cannot give the command robot %s's view: %s: %s\n", tag.c_str(), what,
+                     std::strerror(e));
+        _exit(127);
+      }
+      if (chdir(cwd.c_str()) != 0) {
+        std::fprintf(stderr, "simswift attach: the folder %s is not in robot %s's view: %s\n", cwd.c_str(),
+                     tag.c_str(), std::strerror(errno));
+        _exit(127);
+      }
+    }
     execvp(argv[0], argv.data());
     const int e = errno;
     ssize_t w = write(report[1], &e, sizeof e);
@@ -611,7 +643,7 @@ int AttachCommand::run(const std::vector<std::string>& command) const {
       kill(child, attach::g_forward);
       attach::g_forward = 0;
     }
-    if (!failed && attach::follow(socket))
+    if (!failed && lola && !in_view && attach::follow(socket))
       std::fprintf(stderr, "simswift attach: a new run serves %s: /tmp/robocup follows it\n", socket.c_str());
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }

@@ -24,7 +24,7 @@ constexpr const char* kPageEnv = "SIMSWIFT_CLOCK";
 constexpr const char* kInertEnv = "SIMSWIFT_SHIM_INERT";
 
 constexpr uint32_t kMagic = 0x4b4c4353;  // "SCLK" little-endian
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;  // 2: the run's pid and the robot's view (attach)
 
 // Where the program's clocks start. MONOTONIC and BOOTTIME read
 // kMonotonicStartNs + the run's time, as if the robot had booted a minute
@@ -41,6 +41,14 @@ constexpr int64_t kTaiOffsetNs = 37'000'000'000;
 // external robot's page, so `simswift attach` knows to hand the block to its
 // program (and to wait for it), and knows when there is none to wait for.
 constexpr uint32_t kFlagV4l2ByRobot = 1u;
+// The robot's body is LoLA's socket (a V6); without it, libagent's block (a
+// V5): `simswift attach --team T --player P` waits for the socket only then.
+constexpr uint32_t kFlagLola = 2u;
+// The run holds a view for the robot (sim/programs/ProgramView.hpp, as a
+// launched program's: PID and network namespaces, /tmp, files): `view_pid`
+// is the pid of the init holding its namespaces, `view_folder` the run's
+// folder of it; `simswift attach` starts its command in it.
+constexpr uint32_t kFlagView = 4u;
 
 enum class RunState : uint32_t {
   Starting = 0,  // the program has not answered its first packet yet
@@ -60,6 +68,10 @@ struct ClockLayout {
   std::atomic<int64_t> now_ns;        // the run's simulated time: tick k * tick_ns
   std::atomic<uint32_t> generation;   // futex word: +1 after every write of now_ns or state
   std::atomic<uint32_t> state;        // RunState
+  // Written once before the program starts (version 2).
+  int32_t run_pid;           // simswift's pid (attach: is the run alive)
+  int32_t view_pid;          // with kFlagView: the view's init (in simswift's PID namespace)
+  char view_folder[512];     // with kFlagView: the run's folder of the view, NUL-terminated
 };
 static_assert(std::atomic<int64_t>::is_always_lock_free, "the page is shared between processes");
 static_assert(std::atomic<uint32_t>::is_always_lock_free, "the page is shared between processes");

@@ -16,8 +16,12 @@ namespace simswift::programs {
 
 namespace cc = common::clock;
 
-ClockPage::ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_ns, uint32_t flags)
+ClockPage::ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_ns, uint32_t flags, const View& view)
     : name_(std::move(name)) {
+  if (view.pid > 0 && view.folder.size() >= sizeof(cc::ClockLayout::view_folder))
+    throw std::runtime_error("clock page " + name_ + ": the robot's view folder " + view.folder + " is longer than " +
+                             std::to_string(sizeof(cc::ClockLayout::view_folder) - 1) +
+                             " bytes (give program_logs a shorter path)");
   shm_unlink(name_.c_str());  // a killed run's page: this run's robot takes its name over
   const int fd = shm_open(name_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   if (fd < 0) throw std::runtime_error("clock page " + name_ + ": shm_open: " + std::strerror(errno));
@@ -38,7 +42,12 @@ ClockPage::ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_n
   page_->tick_ns = tick_ns;
   page_->realtime_epoch_ns = realtime_epoch_ns;
   page_->size = sizeof(cc::ClockLayout);
-  page_->flags = flags;
+  page_->flags = flags | (view.pid > 0 ? cc::kFlagView : 0u);
+  page_->run_pid = static_cast<int32_t>(getpid());
+  if (view.pid > 0) {
+    page_->view_pid = view.pid;
+    std::memcpy(page_->view_folder, view.folder.c_str(), view.folder.size() + 1);
+  }
   page_->version = cc::kVersion;
   page_->now_ns.store(0, std::memory_order_relaxed);
   page_->state.store(static_cast<uint32_t>(cc::RunState::Starting), std::memory_order_relaxed);

@@ -11,12 +11,20 @@
 
 namespace simswift::programs {
 
+// The robot's view the run holds (kFlagView), for `simswift attach`.
+struct PageView {
+  int pid = 0;         // its init's pid; 0 = none
+  std::string folder;  // the run's folder of it (absolute, < 512 bytes)
+};
+
 class ClockPage {
  public:
+  using View = PageView;
   // Creates (replacing one a killed run left) the object `name`, mode 0600,
-  // at t = 0 in state Starting, with `flags` (common::clock::kFlag*). Throws
-  // std::runtime_error naming it.
-  ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_ns, uint32_t flags = 0);
+  // at t = 0 in state Starting, with `flags` (common::clock::kFlag*; with a
+  // view, kFlagView too) and this process's pid. Throws std::runtime_error
+  // naming it.
+  ClockPage(std::string name, int64_t tick_ns, int64_t realtime_epoch_ns, uint32_t flags = 0, const View& view = {});
   ~ClockPage();  // wakes waiters (Ended), unmaps, unlinks
   ClockPage(const ClockPage&) = delete;
   ClockPage& operator=(const ClockPage&) = delete;

@@ -20,8 +20,12 @@ std::string seconds(double s) {
 
 }  // namespace
 
-ExternalProgram::ExternalProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ClockPage> clock)
-    : ProgramDriver(std::move(slot)), attach_timeout_s_(attach_timeout_s), clock_(std::move(clock)) {}
+ExternalProgram::ExternalProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ClockPage> clock,
+                                 std::unique_ptr<ProgramProcess> view)
+    : ProgramDriver(std::move(slot)),
+      attach_timeout_s_(attach_timeout_s),
+      clock_(std::move(clock)),
+      view_(std::move(view)) {}
 
 bool ExternalProgram::attach() {
   bridge::BodySide& host = *slot_.host;

@@ -16,15 +16,24 @@ namespace simswift::programs {
 class ExternalProgram : public ProgramDriver {
  public:
   // attach_timeout_s: wall-clock s to wait for the first answer; `clock`:
-  // the robot's clock page (the program's simulated time, docs/shim.md).
-  ExternalProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ClockPage> clock);
+  // the robot's clock page (the program's simulated time, docs/shim.md);
+  // `view`: the robot's view held for `simswift attach` (ProgramProcess
+  // without a command; its pid and folder are in the page), or null.
+  ExternalProgram(RobotSlot slot, double attach_timeout_s, std::unique_ptr<ClockPage> clock,
+                  std::unique_ptr<ProgramProcess> view = nullptr);
   // Waits for the first answer; on a terminal, says after 0.5 s what to
   // start. Then the clock page says Running.
   bool attach() override;
   void publishTime(int64_t tick) override { clock_->publish(tick); }
   // The run is over: the clock page says Ended (the program's waits for
-  // time end, so it can see its shutdown: docs/shim.md).
-  void stop() override { clock_->setState(common::clock::RunState::Ended); }
+  // time end, so it can see its shutdown: docs/shim.md); a view ends with
+  // what runs in it, as a launched program does (SIGTERM, stop_grace, SIGKILL).
+  void stop() override {
+    clock_->setState(common::clock::RunState::Ended);
+    if (view_) view_->stop();
+  }
+  // The view's wlan0 (RobotNetwork.hpp), if it has one.
+  int takeNetwork() override { return view_ ? view_->takeNetwork() : -1; }
   // A program that has gone (BodySide::programGone: a V6 program restarted
   // by hand, a new gdb session) is waited for as long as the first attach,
   // saying so on stderr; RunnerError if none comes back in time.
@@ -33,6 +42,7 @@ class ExternalProgram : public ProgramDriver {
  protected:
   double attach_timeout_s_;
   std::unique_ptr<ClockPage> clock_;
+  std::unique_ptr<ProgramProcess> view_;
 };
 
 class LaunchedProgram final : public ExternalProgram {

@@ -74,6 +74,7 @@ struct InitPlan {
   const std::vector<MountOp>* mounts;
   uint32_t net_address;  // 0: no network of its own
   int net_sock;          // where wlan0's descriptor goes
+  int hold_patience_ms;  // a held view (argv null): holdView
 };
 
 // A mount that failed is reported as -(kViewStepBase + index << 12 + errno);
@@ -126,6 +127,44 @@ void closeAllBut(int* keep, int n) {
   reportAndExit(p.report, errno);
 }
 
+// A view held for programs started by hand (`simswift attach`, argv
+// null): the init starts nothing; it reaps what ends in its PID namespace
+// and, told to end (stop(), once the run is over: the robot's socket
+// closed, its clock Ended), gives what runs in it `patience_ms` to end by
+// itself (a program that ends when its body goes, gdb with it; gdb 13 told
+// SIGTERM while its program exits faults), then passes SIGTERM to every
+// process in it, and ends when none is left (or at stop()'s SIGKILL); its
+// end ends the rest.
+volatile sig_atomic_t g_hold_end = 0;
+
+void endHold(int) { g_hold_end = 1; }
+
+[[noreturn]] void holdView(const InitPlan& p) {
+  struct sigaction sa {};
+  sa.sa_handler = endHold;
+  sigemptyset(&sa.sa_mask);
+  for (int sig : {SIGTERM, SIGINT, SIGHUP}) sigaction(sig, &sa, nullptr);
+  close(p.report);  // set up: the parent reads the pipe's end
+  int waited_ms = 0;  // since told to end
+  bool told = false;
+  for (;;) {
+    while (waitpid(-1, nullptr, WNOHANG) > 0) {
+    }
+    if (g_hold_end) {
+      // In a PID namespace -1 is every process in it but this init.
+      if (kill(-1, 0) != 0 && errno == ESRCH) _exit(0);
+      if (!told && waited_ms >= p.hold_patience_ms) {
+        kill(-1, SIGTERM);
+        told = true;
+      }
+      waited_ms += 10;
+    }
+    // Wall clock: only how often the init looks; simswift gone ends it.
+    pollfd pf{p.life, POLLIN, 0};
+    if (poll(&pf, 1, g_hold_end ? 10 : 200) > 0 && (pf.revents & (POLLHUP | POLLERR))) _exit(0);
+  }
+}
+
 [[noreturn]] void runInit(const InitPlan& p, bool new_user) {
   setpgid(0, 0);                     // its own group: stop() reaches the program and its children
   prctl(PR_SET_PDEATHSIG, SIGKILL);  // simswift killed: the init, and with it the namespace, goes too
@@ -152,6 +191,7 @@ void closeAllBut(int* keep, int n) {
     size_t i = 0;
     if (const int e = applyView(*p.mounts, &i)) reportAndExit(p.report, -(kViewStepBase + (static_cast<int>(i) << 12) + (e & 0xfff)));
   }
+  if (!p.argv) holdView(p);
   struct sigaction sa {};
   sa.sa_handler = forward;
   sigemptyset(&sa.sa_mask);
@@ -240,7 +280,8 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
                                const std::vector<std::pair<std::string, std::string>>& env, std::string log_path,
                                double stop_grace_s, const ProgramView& view)
     : robot_(std::move(robot)), log_path_(std::move(log_path)), stop_grace_s_(stop_grace_s) {
-  if (argv.empty()) throw std::runtime_error("robot " + robot_ + ": program: empty command");
+  if (argv.empty() && !view.isolate) throw std::runtime_error("robot " + robot_ + ": program: empty command");
+  const std::string what = argv.empty() ? std::string("view (held for simswift attach)") : "program '" + argv[0] + "'";
   std::error_code ec;
   if (fs::path(log_path_).has_parent_path()) fs::create_directories(fs::path(log_path_).parent_path(), ec);
   // Everything the init and the program need, built before the clone (no
@@ -291,9 +332,10 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
     close(log), close(report[0]), close(report[1]), close(status[0]), close(status[1]), close(life[0]), close(life[1]);
     throw std::runtime_error(std::string("socketpair: ") + std::strerror(e));
   }
-  const InitPlan plan{args.data(), envp.data(), cwd.empty() ? nullptr : cwd.c_str(), log, report[1], status[1],
+  const InitPlan plan{argv.empty() ? nullptr : args.data(), envp.data(), cwd.empty() ? nullptr : cwd.c_str(), log, report[1], status[1],
                       life[0], life[1], view.isolate, &maps, &mounts,
-                      view.isolate ? view.network_address : 0, net[1]};
+                      view.isolate ? view.network_address : 0, net[1],
+                      static_cast<int>(stop_grace_s * 1000 / 2)};  // half the grace: the rest is SIGTERM's
   pid_ = cloneInit(plan);
   const int clone_errno = errno;
   if (net[1] >= 0) close(net[1]);
@@ -325,20 +367,20 @@ ProgramProcess::ProgramProcess(std::string robot, const std::vector<std::string>
     reaped_ = true;
     if (net_fd_ >= 0) close(net_fd_), net_fd_ = -1;
     if (err < 0 && -err >= kNetStepBase && -err < kViewStepBase)
-      throw std::runtime_error("robot " + robot_ + ": cannot give its program '" + argv[0] +
-                               "' a network of its own (wlan0 in a network namespace): " +
+      throw std::runtime_error("robot " + robot_ + ": cannot give its " + what +
+                               " a network of its own (wlan0 in a network namespace): " +
                                std::strerror(-err - kNetStepBase));
     if (err < 0 && -err >= kViewStepBase) {
       const size_t i = static_cast<size_t>(-err - kViewStepBase) >> 12;
       const int e = (-err - kViewStepBase) & 0xfff;
-      throw std::runtime_error("robot " + robot_ + ": cannot give its program '" + argv[0] + "' " +
+      throw std::runtime_error("robot " + robot_ + ": cannot give its " + what + " " +
                                (i < mounts.size() ? mounts[i].what : std::string("its view")) + ": mount: " +
                                std::strerror(e));
     }
     if (err < 0)
-      throw std::runtime_error("robot " + robot_ + ": cannot give its program '" + argv[0] +
-                               "' its own /tmp (mount namespace): " + std::strerror(-err));
-    throw std::runtime_error("robot " + robot_ + ": cannot start its program '" + argv[0] + "'" +
+      throw std::runtime_error("robot " + robot_ + ": cannot give its " + what +
+                               " its own /tmp (mount namespace): " + std::strerror(-err));
+    throw std::runtime_error("robot " + robot_ + ": cannot start its " + what +
                              (cwd.empty() ? "" : " in " + cwd) + ": " + std::strerror(err));
   }
 }

@@ -120,14 +120,19 @@ std::vector<std::string> pathsUnderTmp(const std::vector<std::string>& texts) {
   return out;
 }
 
-std::vector<MountOp> planView(const ProgramView& view) {
+std::vector<MountOp> planView(const ProgramView& view, bool prepare) {
   std::vector<MountOp> ops;
   if (!view.isolate) return ops;
   const fs::path root = view.folder;
   if (root.string().find_first_of(":,") != std::string::npos)
     throw std::runtime_error("the program's view folder " + root.string() + " must not contain ':' or ','");
   std::error_code ec;
-  fs::remove_all(root, ec);
+  if (prepare) fs::remove_all(root, ec);
+  // What a joining program finds made stays as the run made it.
+  const auto missing = [prepare](const fs::path& p) {
+    struct stat st {};
+    return prepare || lstat(p.c_str(), &st) != 0;
+  };
   const fs::path tmp = root / "tmp", home = root / "home";
   makeFolder(tmp);
   makeFolder(home);
@@ -174,7 +179,7 @@ std::vector<MountOp> planView(const ProgramView& view) {
       auto [it, fresh] = layers.try_emplace(folder.string(), root / "layers" / std::to_string(layers.size()));
       at = it->second / fs::path(path).lexically_relative(folder);
     }
-    stage(e, at);
+    if (missing(at)) stage(e, at);
     if (!e.from.empty()) {
       // Into a staging folder (under /tmp or /home/nao): before those are
       // bound; elsewhere: after the overlay made its path.
@@ -220,7 +225,7 @@ std::vector<MountOp> planView(const ProgramView& view) {
 
   // /tmp last: what it covers (the socket, the launch's folders) is bound in first.
   if (!view.robocup_socket.empty()) {
-    std::ofstream((tmp / "robocup").string()).put('\0');  // the mount point (a file)
+    if (missing(tmp / "robocup")) std::ofstream((tmp / "robocup").string()).put('\0');  // the mount point (a file)
     MountOp op = bind(view.robocup_socket, (tmp / "robocup").string(), "/tmp/robocup");
     op.flags = MS_BIND;
     ops.push_back(op);
@@ -236,7 +241,7 @@ std::vector<MountOp> planView(const ProgramView& view) {
     if (S_ISDIR(cs.st_mode)) {
       makeFolder(at);
     } else if (S_ISREG(cs.st_mode)) {
-      std::ofstream(at.string()).put('\0');
+      if (missing(at)) std::ofstream(at.string()).put('\0');
     } else {
       continue;
     }

@@ -78,7 +78,10 @@ struct MountOp {
 
 // Builds the folders and files of `view` and the mounts that make it.
 // Throws std::runtime_error naming the path that could not be made.
-std::vector<MountOp> planView(const ProgramView& view);
+// `prepare` false: the folder is one a run prepared for the same view (a
+// program joining it: JoinView.hpp): nothing in it is removed or rewritten,
+// only what is missing made (its /tmp is the robot's, shared).
+std::vector<MountOp> planView(const ProgramView& view, bool prepare = true);
 
 // In the forked init, already in its own mount namespace: makes the mounts.
 // 0, or the errno of the first required mount that failed (*failed = its index).

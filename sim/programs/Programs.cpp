@@ -86,7 +86,7 @@ void Programs::build(const ProgramRun& run, const std::vector<ProgramEntry>& rob
     } else if (e.launch.launched()) {
       r.driver = makeLaunched(run, e);
     } else {
-      r.driver = std::make_unique<ExternalProgram>(e.slot, run.attach_timeout_s, clockPage(run, e));
+      r.driver = makeExternal(run, e);
     }
   }
 }
@@ -158,14 +158,17 @@ Programs::LolaView Programs::lolaView(const ProgramEntry& e) {
 
 // A robot program's clock page (common/clock/ClockPage.hpp), named by its
 // robot (`simswift attach` finds it so), at the bodies' cycle.
-std::unique_ptr<ClockPage> Programs::clockPage(const ProgramRun& run, const ProgramEntry& e) {
+std::unique_ptr<ClockPage> Programs::clockPage(const ProgramRun& run, const ProgramEntry& e,
+                                               const ClockPage::View& view) {
   try {
     // An external robot's cameras are in the block named by the robot: its
     // page says so, for `simswift attach` (a launched program is handed its
-    // block in its environment).
+    // block in its environment), and so does its body.
     const bool by_robot = !e.v4l2_block.empty() && !e.launch.launched();
+    const bool lola = e.slot.host->interface() == bridge::BodyInterface::Lola;
+    const uint32_t flags = (by_robot ? common::clock::kFlagV4l2ByRobot : 0u) | (lola ? common::clock::kFlagLola : 0u);
     return std::make_unique<ClockPage>(common::clock::pageName(e.slot.tag), run.tick_us * 1000, run.clock_epoch_ns,
-                                       by_robot ? common::clock::kFlagV4l2ByRobot : 0u);
+                                       flags, view);
   } catch (const std::runtime_error& err) {
     throw ProgramError("robot " + e.slot.tag + ": " + err.what(), e.slot.tag + ": program could not be started");
   }
@@ -257,6 +260,37 @@ std::unique_ptr<ProgramDriver> Programs::makeLaunched(const ProgramRun& run, con
     throw ProgramError(err.what(), slot.tag + ": program could not be started");
   }
   return std::make_unique<LaunchedProgram>(slot, run.attach_timeout_s, std::move(clock), std::move(process));
+}
+
+// A robot whose program is started by hand. Where the machine gives
+// namespaces, the run holds the view a launched program would get (its PID
+// and network namespaces, /tmp, /home/nao, the default files: programView)
+// in an init that starts nothing (ProgramProcess), named in the robot's
+// clock page, so `simswift attach` starts its command in it
+// (JoinView.hpp); a program started otherwise meets the machine as before
+// (and the GameController's loopback packets: Runner::buildRobotLan).
+std::unique_ptr<ProgramDriver> Programs::makeExternal(const ProgramRun& run, const ProgramEntry& e) {
+  const RobotSlot& slot = e.slot;
+  std::unique_ptr<ProgramProcess> view;
+  ClockPage::View page_view;
+  if (mountNamespaceSupport().available) {
+    const std::filesystem::path logs(run.program_logs);
+    std::error_code ec;
+    std::filesystem::create_directories(logs, ec);
+    if (ec) throw RunnerError("program_logs: cannot create " + logs.string() + ": " + ec.message());
+    try {
+      ProgramView v = programView(e, logs, "", {}, run.base_dir.empty() ? "." : run.base_dir, {}, logs.string());
+      view = std::make_unique<ProgramProcess>(slot.tag, std::vector<std::string>{}, "",
+                                              std::vector<std::pair<std::string, std::string>>{},
+                                              (logs / (slot.tag + ".view.log")).string(), e.launch.stop_grace_s, v);
+      page_view = {view->pid(), v.folder};
+    } catch (const ProgramError&) {
+      throw;
+    } catch (const std::runtime_error& err) {
+      throw ProgramError(err.what(), slot.tag + ": its view could not be made");
+    }
+  }
+  return std::make_unique<ExternalProgram>(slot, run.attach_timeout_s, clockPage(run, e, page_view), std::move(view));
 }
 
 ap::RobotProgram* Programs::program(int i) const {

@@ -122,7 +122,9 @@ class Programs {
   Robot& overrideSlot(int robot, const char* what);
   std::unique_ptr<ProgramDriver> makeBuiltin(const ProgramEntry& e, Robot& r);
   std::unique_ptr<ProgramDriver> makeLaunched(const ProgramRun& run, const ProgramEntry& e);
-  static std::unique_ptr<ClockPage> clockPage(const ProgramRun& run, const ProgramEntry& e);
+  std::unique_ptr<ProgramDriver> makeExternal(const ProgramRun& run, const ProgramEntry& e);
+  static std::unique_ptr<ClockPage> clockPage(const ProgramRun& run, const ProgramEntry& e,
+                                              const ClockPage::View& view = {});
   // How a launched LoLA program sees its socket: `robocup` to bind onto
   // /tmp/robocup in its own mount namespace (empty: none needed), or the
   // socket's real path as {socket} where the machine gives no namespace.

@@ -4,6 +4,8 @@
 // SO_REUSEADDR, team messages broadcast on 10000 + team): two V6 robots of
 // team 47 and an opponent of team 46 that sends to team 47's port.
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -48,10 +50,40 @@ struct NetRun {
   int64_t gc_sent = 0;
   std::string logs;
   std::map<std::string, std::string> seen;  // tag -> its program's output
+  std::vector<int> attach_exit;              // each `simswift attach`'s exit status
 };
 
+// How t47p2's program is started: launched by the run, or by hand with
+// `simswift attach` (directly or under gdb) on an external robot.
+enum class Start { Launched, Attach, AttachUnderGdb };
+
+// `simswift attach --team 47 --player 2 -- <command>`, its output in `log`;
+// its exit status.
+pid_t startAttach(const std::vector<std::string>& command, const std::string& log) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
+    std::vector<std::string> args = {std::string(SIMSWIFT_BINARY_DIR) + "/simswift", "attach", "--team", "47",
+                                     "--player", "2", "--"};
+    args.insert(args.end(), command.begin(), command.end());
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+int waitExit(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
 // 2.4 s: GameController packets at 0, 0.5, ... 2.0 s; loss 0.
-NetRun runTeam(const std::string& name, double delay_ms) {
+NetRun runTeam(const std::string& name, double delay_ms, Start start = Start::Launched) {
   NetRun out;
   out.logs = "/tmp/simswift-test-net-" + std::to_string(getpid()) + "-" + name;
   std::filesystem::remove_all(out.logs);
@@ -65,11 +97,36 @@ NetRun runTeam(const std::string& name, double delay_ms) {
                           "{team: 46, player: 1, x: 1, y: 0, lola: {}, program: {command: [\""};
   const char* args[] = {"\", \"{team}\", \"{player}\"]}}", "\", \"{team}\", \"{player}\"]}}",
                         "\", \"{team}\", \"{player}\", \"47\"]}}"};  // the opponent sends to team 47's port
-  for (int i = 0; i < 3; ++i) y << "  - " << robots[i] << kNetClient << args[i] << "\n";
+  for (int i = 0; i < 3; ++i) {
+    if (i == 1 && start != Start::Launched)
+      y << "  - {team: 47, player: 2, x: -1, y: -1, lola: {}, program: external}\n";
+    else
+      y << "  - " << robots[i] << kNetClient << args[i] << "\n";
+  }
   Runner r(Scenario::parse(y.str(), out.logs + ".yaml"));
   simswift::runner::RunOptions o;
   o.progress = false;
-  out.hash = r.run(o).hash;
+  if (start == Start::Launched) {
+    out.hash = r.run(o).hash;
+  } else {
+    r.start();  // the robot's view and clock page exist from here
+    if (start == Start::Attach) {
+      // First a shell in the view, what a program checks of its robot (it
+      // is the first process there after the view's init: pid 2).
+      const pid_t sh = startAttach({"/bin/sh", "-c",
+                                    "echo pid $$; cat /sys/class/hwmon/hwmon1/temp2_input; "
+                                    "test -S /tmp/robocup && echo robocup; test -d /home/nao && echo home; "
+                                    "grep -o wlan0 /proc/net/dev; touch /tmp/mark"},
+                                   out.logs + "/t47p2.sh.log");
+      out.attach_exit.push_back(waitExit(sh));
+    }
+    std::vector<std::string> command = {kNetClient, "47", "2"};
+    if (start == Start::AttachUnderGdb)
+      command.insert(command.begin(), {"/usr/bin/gdb", "-batch", "-nx", "-ex", "run", "--args"});
+    const pid_t program = startAttach(command, out.logs + "/t47p2.log");
+    out.hash = r.run(o).hash;
+    out.attach_exit.push_back(waitExit(program));
+  }
   out.gc_sent = r.gameControllerUdp()->sent();
   for (const char* tag : {"t47p1", "t47p2", "t46p1"}) out.seen[tag] = readFile(out.logs + "/" + tag + ".log");
   return out;
@@ -159,4 +216,44 @@ TEST(RobotNetwork, TeammatesHearEveryGameControllerPacketAndEachOtherWithTheScen
   ASSERT_FALSE(d12.delays.empty());
   for (int d : d12.delays) EXPECT_EQ(d, base + 3);
   for (const NetRun* r : {&a, &b, &c}) std::filesystem::remove_all(r->logs);
+}
+
+// The program of an external robot started by hand with `simswift attach`
+// (issue 44's view for attach, and item 5: under gdb too) meets what the
+// launched one meets: its address, every GameController packet, its
+// teammate's messages and only those, the same as the launched run to the
+// line (the same hash); in its robot's PID namespace, with its files,
+// /tmp/robocup and /home/nao, and a /tmp that is the run's folder of the view.
+TEST(RobotNetwork, AProgramStartedWithAttachMeetsWhatTheLaunchedOneMeets) {
+  if (!simswift::programs::mountNamespaceSupport().available || !simswift::programs::robotNetworkSupport().available) {
+    GTEST_SKIP() << "this machine gives a program no network of its own: "
+                 << simswift::programs::robotNetworkSupport().why << simswift::programs::mountNamespaceSupport().why;
+  }
+  // The program's own lines (gdb adds its own around them).
+  const auto said = [](const NetRun& r, const std::string& tag) {
+    std::string out;
+    for (const auto& w : lines(r.logs + "/" + tag + ".log")) {
+      if (w[0] != "addr" && w[0] != "gc" && w[0] != "team" && w[0] != "sent" && w[0] != "fail") continue;
+      for (const std::string& x : w) out += x + " ";
+      out += "\n";
+    }
+    return out;
+  };
+  const NetRun launched = runTeam("launched", 0);
+  const NetRun attached = runTeam("attached", 0, Start::Attach);
+  EXPECT_EQ(attached.attach_exit, (std::vector<int>{0, 0})) << readFile(attached.logs + "/t47p2.sh.log")
+                                                            << readFile(attached.logs + "/t47p2.log");
+  EXPECT_EQ(readFile(attached.logs + "/t47p2.sh.log"), "pid 2\n50000\nrobocup\nhome\nwlan0\n");
+  EXPECT_TRUE(std::filesystem::exists(attached.logs + "/t47p2.view/tmp/mark"));
+  for (const char* tag : {"t47p1", "t47p2", "t46p1"}) {
+    EXPECT_FALSE(said(launched, tag).empty()) << tag;
+    EXPECT_EQ(said(attached, tag), said(launched, tag)) << tag << ": " << attached.seen.at(tag);
+  }
+  EXPECT_EQ(attached.hash, launched.hash);
+  if (::access("/usr/bin/gdb", X_OK) != 0) GTEST_SKIP() << "no /usr/bin/gdb";
+  const NetRun gdb = runTeam("gdb", 0, Start::AttachUnderGdb);
+  EXPECT_EQ(gdb.attach_exit, std::vector<int>{0}) << gdb.seen.at("t47p2");
+  EXPECT_EQ(said(gdb, "t47p2"), said(launched, "t47p2")) << gdb.seen.at("t47p2");
+  EXPECT_EQ(gdb.hash, launched.hash);
+  for (const NetRun* r : {&launched, &attached, &gdb}) std::filesystem::remove_all(r->logs);
 }

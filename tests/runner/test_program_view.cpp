@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "sim/programs/MountNamespace.hpp"
 #include "sim/programs/ProgramView.hpp"
@@ -165,4 +166,62 @@ TEST(ProgramView, BadFileEntriesAreRefusedWithFileAndLine) {
   EXPECT_NE(parse("{/etc/x: [1]}").find("expected the file's content"), std::string::npos);
   EXPECT_NE(parse("{/opt/a: {from: /}, /opt/a/b: x}").find("is inside /opt/a"), std::string::npos);
   EXPECT_NE(parse("{/tmp/robocup: x}").find("the robot's LoLA socket"), std::string::npos);
+}
+
+// A V5 robot (libagent's block) whose program is external: `simswift
+// attach --team T --player P` needs no socket (the robot's clock page says
+// its body) and starts its command in the view the run holds for the robot,
+// as a launched program's: its PID namespace, files and /tmp; the libagent
+// client started so holds the robot as the launched one does (the same hash).
+TEST(ProgramView, AttachStartsAV5ProgramInItsRobotsView) {
+  REQUIRE_NAMESPACES();
+  const std::string d = tempDir("v5attach");
+  const std::string client = kBin + "/libagent2017-client";
+  const auto scenario = [&](const std::string& program) {
+    std::ostringstream y;
+    y << "duration: 0.5\nseed: 3\nattach_timeout: 20\nprogram_logs: " << d << "/logs\nrobots:\n"
+      << "  - {team: 72, player: 1, x: -1, y: 1, libagent: {release: 2017}, program: " << program << "}\n";
+    return Scenario::parse(y.str(), d + "/v5.yaml");
+  };
+  RunOptions o;
+  o.progress = false;
+  uint64_t launched = 0;
+  {
+    Runner r(scenario("{command: [" + client + ", --team, '{team}', --player, '{player}', --ticks, 50, --stand]}"));
+    launched = r.run(o).hash;
+  }
+  const auto attach = [&](const std::vector<std::string>& command, const std::string& log) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+      const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (fd >= 0) dup2(fd, 1), dup2(fd, 2);
+      std::vector<std::string> args = {kBin + "/simswift", "attach", "--team", "72", "--player", "1", "--"};
+      args.insert(args.end(), command.begin(), command.end());
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(argv[0], argv.data());
+      _exit(127);
+    }
+    return pid;
+  };
+  const auto exitOf = [](pid_t pid) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  };
+  Runner r(scenario("external"));
+  r.start();
+  EXPECT_EQ(exitOf(attach({"/bin/sh", "-c",
+                           "echo pid $$; cat /sys/class/hwmon/hwmon1/temp3_input; test -e /tmp/robocup || "
+                           "echo no robocup; echo hi > /home/nao/written"},
+                          d + "/sh.log")),
+            0)
+      << readFile(d + "/sh.log");
+  EXPECT_EQ(readFile(d + "/sh.log"), "pid 2\n50000\nno robocup\n");
+  EXPECT_EQ(readFile(d + "/logs/t72p1.view/home/written"), "hi\n");
+  const pid_t program = attach({client, "--team", "72", "--player", "1", "--ticks", "50", "--stand"}, d + "/client.log");
+  EXPECT_EQ(r.run(o).hash, launched);
+  EXPECT_EQ(exitOf(program), 0) << readFile(d + "/client.log");
+  fs::remove_all(d);
 }
