@@ -1,5 +1,7 @@
 #include "shim/V4l2Device.hpp"
 
+#include "common/clock/ClockPage.hpp"
+
 #include <fcntl.h>
 #include <linux/usb/video.h>
 #include <linux/uvcvideo.h>
@@ -329,8 +331,11 @@ int takeFrame(State& s, Camera& c, int fd, v4l2_buffer* b) {
   buf.queued = false;
   buf.bytesused = static_cast<uint32_t>(bytes);
   buf.sequence = c.sequence++;
-  // The frame's own simulated time, as the program's CLOCK_MONOTONIC reads it.
-  const int64_t t_us = ch.sim_time_us;
+  // The frame's own simulated time, as the program's CLOCK_MONOTONIC reads
+  // it (the clock page's base: kMonotonicStartNs + the run's time), as a
+  // UVC driver stamps its buffers (TIMESTAMP_MONOTONIC): NaoTH compares the
+  // two and warns when they differ.
+  const int64_t t_us = common::clock::kMonotonicStartNs / 1000 + ch.sim_time_us;
   buf.timestamp.tv_sec = static_cast<time_t>(t_us / 1000000);
   buf.timestamp.tv_usec = static_cast<suseconds_t>(t_us % 1000000);
   c.taken = posted;

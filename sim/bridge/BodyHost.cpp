@@ -351,8 +351,9 @@ void BodyHost::shutdown() {
 }
 
 std::string BodyHost::attachHint() const {
-  return "start its libagent robot program (or `simswift-agent --team " + std::to_string(team_) + " --player " +
-         std::to_string(player_) + (options_.bare_names ? " --bare" : "") + "`)";
+  const std::string robot = "--team " + std::to_string(team_) + " --player " + std::to_string(player_);
+  return "start its libagent robot program, in the robot's view with its clock and cameras: `simswift attach " +
+         robot + " -- PROGRAM` (or `simswift-agent " + robot + (options_.bare_names ? " --bare" : "") + "`)";
 }
 
 // The release's N is the memory name's digits (none for the bare names).

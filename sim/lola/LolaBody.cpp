@@ -80,7 +80,8 @@ std::string LolaBody::attachHint() const {
   return "start its LoLA program so that it connects to " + server_.path() + " (the reference program: " +
          "`simswift-agent --team " + std::to_string(objects_->team()) + " --player " +
          std::to_string(objects_->player()) + " --lola " + server_.path() +
-         "`; one that opens /tmp/robocup: `simswift attach --socket " + server_.path() + " -- PROGRAM`)";
+         "`; one that opens /tmp/robocup, in the robot's view: `simswift attach --team " +
+         std::to_string(objects_->team()) + " --player " + std::to_string(objects_->player()) + " -- PROGRAM`)";
 }
 
 // A launched program has a mount namespace of its own in which /tmp/robocup

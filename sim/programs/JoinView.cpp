@@ -64,24 +64,27 @@ std::string enterViewNamespaces(int view_pid) {
     for (Space& s : spaces)
       if (s.fd >= 0) close(s.fd), s.fd = -1;
   };
-  // All opened first: /proc is the machine's until the first setns.
-  for (Space& s : spaces) {
+  // All opened and compared first: /proc is the machine's until the first
+  // setns. One the view shares with the caller is not entered (a user
+  // namespace when simswift is root, the network where the machine gives
+  // the robot none of its own): a process may not re-enter its own user
+  // namespace, nor (unprivileged) the machine's network.
+  bool same[3] = {};
+  for (size_t i = 0; i < 3; ++i) {
+    Space& s = spaces[i];
     s.fd = open((base + s.name).c_str(), O_RDONLY | O_CLOEXEC);
     if (s.fd < 0) {
       const std::string why = base + s.name + ": " + std::strerror(errno);
       closeAll();
       return "cannot open the robot's view (" + why + "; the run has ended, or is another user's)";
     }
+    struct stat theirs {}, ours {};
+    same[i] = fstat(s.fd, &theirs) == 0 && stat(("/proc/self/ns/" + std::string(s.name)).c_str(), &ours) == 0 &&
+              theirs.st_ino == ours.st_ino && theirs.st_dev == ours.st_dev;
   }
-  for (Space& s : spaces) {
-    if (s.type == CLONE_NEWUSER) {
-      // The run made none (simswift as root): its view is in ours, and a
-      // process may not enter its own user namespace.
-      struct stat theirs {}, ours {};
-      if (fstat(s.fd, &theirs) == 0 && stat("/proc/self/ns/user", &ours) == 0 && theirs.st_ino == ours.st_ino &&
-          theirs.st_dev == ours.st_dev)
-        continue;
-    }
+  for (size_t i = 0; i < 3; ++i) {
+    Space& s = spaces[i];
+    if (same[i]) continue;
     if (setns(s.fd, s.type) != 0) {
       const std::string why = std::string("setns(") + s.name + " namespace of the robot's view): " + std::strerror(errno);
       closeAll();

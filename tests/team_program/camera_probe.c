@@ -10,7 +10,7 @@
  *   control brightness=10 exposure_auto=1 uvc=...      (values set and read back)
  *   unknown_ioctl errno=25                               (a request no NAO driver knows)
  *   nonblock_empty errno=11                              (DQBUF before any frame)
- *   frame mem=mmap cam=top seq=0 t_us=... bytes=... ball_x=... ball_y=... ball_n=...
+ *   frame mem=mmap cam=top seq=0 t_us=... age_us=... bytes=... ball_x=... ball_y=... ball_n=...
  *   ...
  *   done frames=N digest=HEX                             (FNV-1a of every frame and time)
  *
@@ -32,6 +32,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <sys/ioctl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
@@ -197,13 +198,19 @@ static void take(struct camera* c, unsigned memory, const char* mem_name) {
       die("DQBUF userptr", c->name);
     }
     const long long t_us = (long long)b.timestamp.tv_sec * 1000000 + b.timestamp.tv_usec;
+    /* The buffer's age on the program's own CLOCK_MONOTONIC (the base a UVC
+       driver stamps TIMESTAMP_MONOTONIC buffers in). */
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    const long long age_us = (long long)now.tv_sec * 1000000 + now.tv_nsec / 1000 - t_us;
     double x, y;
     long n;
     findBall(data, c->width, c->height, &x, &y, &n);
     hash(data, b.bytesused);
     hash(&t_us, sizeof t_us);
-    printf("frame mem=%s cam=%s seq=%u t_us=%lld bytes=%u mono=%d ball_x=%.2f ball_y=%.2f ball_n=%ld\n", mem_name,
-           c->name, b.sequence, t_us, b.bytesused, (b.flags & V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC) ? 1 : 0, x, y, n);
+    printf("frame mem=%s cam=%s seq=%u t_us=%lld age_us=%lld bytes=%u mono=%d ball_x=%.2f ball_y=%.2f ball_n=%ld\n",
+           mem_name, c->name, b.sequence, t_us, age_us, b.bytesused,
+           (b.flags & V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC) ? 1 : 0, x, y, n);
     const char* dump = getenv("CAMERA_PROBE_DUMP"); /* the last frame's bytes, to look at */
     if (dump) {
       char path[512];

@@ -239,6 +239,14 @@ TEST(V4l2Cameras, ProbeStreamsBothCamerasAndSeesTheBall) {
     EXPECT_EQ(std::stoll(f.at("seq")), static_cast<long long>(times[cam].size()));
     times[cam].push_back(std::stoll(f.at("t_us")));
     EXPECT_EQ(f.at("mono"), "1");
+    // On the program's own (simulated) CLOCK_MONOTONIC, as a UVC driver
+    // stamps buffers: never from the future; read just after DQBUF, which
+    // lets the run go on, at most the gap to the next frame old (36 ms at
+    // 12 ms ticks): the run cannot pass the next frame's tick before the
+    // program takes that frame. (Before this was the clock's base, the
+    // buffers were 60 s older than the program's clock.)
+    EXPECT_GE(std::stoll(f.at("age_us")), 0) << cam;
+    EXPECT_LE(std::stoll(f.at("age_us")), 36000) << cam;
     EXPECT_EQ(f.at("bytes"), cam == "/dev/video-top" ? "614400" : "153600");
   }
   // Frame k is taken at the first 12 ms tick at or after k/30 s: the gaps
