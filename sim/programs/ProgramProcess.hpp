@@ -65,7 +65,7 @@ class ProgramProcess {
   // cannot be started (not found, not executable: the exec error; the
   // namespace or a mount refused: why). `argv` empty with `view.isolate`:
   // the init holds the view and starts nothing (an external robot's, for
-  // `simswift attach`: attach/JoinView.hpp); stop() then sends SIGTERM to
+  // `simswift attach`: JoinView.hpp); stop() then sends SIGTERM to
   // every process in it and ends it when none is left (SIGKILL after the grace).
   ProgramProcess(std::string robot, const std::vector<std::string>& argv, const std::string& cwd,
                  const std::vector<std::pair<std::string, std::string>>& env, std::string log_path,
