@@ -107,6 +107,6 @@ stamp "TSan build"
 # with LD_AUDIT's early library it finds no static TLS left, docs/shim.md),
 # so these launches fail before the program runs. The Release and ASan+UBSan
 # suites run them; TSan runs the same robot program builtin.
-tsan_launch='LaunchedPrograms\.(ACrashEnds|SimswiftAgentGives|AtTheEndNothing)|ProgramView\.TwoPrograms'
+tsan_launch='LaunchedPrograms\.(ACrashEnds|SimswiftAgentGives|AtTheEndNothing)|ProgramView\.(TwoPrograms|AttachStartsAV5Program)'
 (cd build-tsan && ctest --output-on-failure -j"$jobs" --timeout 900 --output-junit "$run_tmp/tsan.xml" -L 'agent|runner|bridge' -E "$heavy|$tsan_launch")
 stamp "TSan suite"
