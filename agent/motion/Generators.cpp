@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/libagent/Inertial.hpp"
+#include "common/nao/NaoFacts.hpp"
 #include "agent/motion/JointLimits.hpp"
 #include "agent/motion/Kinematics.hpp"
 #include "agent/motion/Walk2014Generator.hpp"
@@ -15,7 +16,7 @@ namespace S = common::libagent::Sensors;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using common::nao::kPi;  // common/nao/NaoFacts.hpp: one definition, also in a unity build
 
 double ease(double f) {
   f = std::max(0.0, std::min(1.0, f));

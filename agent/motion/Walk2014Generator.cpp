@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/libagent/Inertial.hpp"
+#include "common/nao/NaoFacts.hpp"
 #include "agent/motion/Kinematics.hpp"
 
 namespace agent::motion {
@@ -13,7 +14,7 @@ namespace S = common::libagent::Sensors;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using common::nao::kPi;  // common/nao/NaoFacts.hpp: one definition, also in a unity build
 
 double clampAbs(double v, double lim) { return std::max(-lim, std::min(lim, v)); }
 double towards(double cur, double target, double step) {

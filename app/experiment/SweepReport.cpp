@@ -9,7 +9,7 @@ namespace simswift::experiment {
 
 namespace {
 
-std::string interval(const stats::Interval& i, int decimals, double scale = 1.0) {
+std::string intervalText(const stats::Interval& i, int decimals, double scale = 1.0) {
   return "[" + fixed(i.lo * scale, decimals) + ", " + fixed(i.hi * scale, decimals) + "]";
 }
 
@@ -108,11 +108,11 @@ std::string sweepSection(const Experiment& e, const std::vector<CellRow>& rows) 
     const std::vector<int> choice = sweepChoice(e.sweep, r.cell);
     for (size_t k = 0; k < e.sweep.size(); ++k) s << " " << e.sweep[k].values[choice[k]].label << " |";
     s << " `" << e.setups[r.setup].name << "` | " << r.found << "/" << r.tests << " | ";
-    if (r.tests) s << fixed(100.0 * r.found / r.tests, 0) << " % " << interval(r.rate, 0, 100.0) << " %";
+    if (r.tests) s << fixed(100.0 * r.found / r.tests, 0) << " % " << intervalText(r.rate, 0, 100.0) << " %";
     else s << "-";
     s << " | ";
     if (r.times.empty()) s << "- |\n";
-    else s << fixed(r.mean_s, 2) << " " << interval(r.mean_ci, 2) << " |\n";
+    else s << fixed(r.mean_s, 2) << " " << intervalText(r.mean_ci, 2) << " |\n";
   }
   s << "\nFigures (find rate and mean find time against each swept value, with the intervals above; one line per "
        "setup and combination of the other swept values):";

@@ -21,7 +21,7 @@ namespace cv = common::v4l2;
 
 namespace {
 
-std::string sysError(const std::string& what) { return what + ": " + std::strerror(errno); }
+std::string errnoMessage(const std::string& what) { return what + ": " + std::strerror(errno); }
 
 // The FIFO's name as a shared-memory name ("/simswift-v4l2-...-top"), for
 // cleanup's registry (shm_unlink removes any file in /dev/shm).
@@ -30,12 +30,12 @@ std::string fifoShmName(const std::string& block, const char* which) { return bl
 // A FIFO at `path`, made afresh (a killed run's is replaced), 0600.
 void makeFifo(const std::string& path) {
   ::unlink(path.c_str());
-  if (::mkfifo(path.c_str(), 0600) != 0) throw BridgeError(sysError("mkfifo " + path));
+  if (::mkfifo(path.c_str(), 0600) != 0) throw BridgeError(errnoMessage("mkfifo " + path));
 }
 
 int openFifo(const std::string& path, int flags) {
   const int fd = ::open(path.c_str(), flags | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) throw BridgeError(sysError("open " + path));
+  if (fd < 0) throw BridgeError(errnoMessage("open " + path));
   return fd;
 }
 
@@ -57,9 +57,9 @@ V4l2Devices::V4l2Devices(const std::string& tag, const std::array<std::string, c
                         std::to_string(cv::kMaxDevicePath - 1) + " characters");
   ::shm_unlink(name_.c_str());
   const int fd = ::shm_open(name_.c_str(), O_CREAT | O_EXCL | O_RDWR | O_CLOEXEC, 0600);
-  if (fd < 0) throw BridgeError(sysError("robot " + tag_ + ": shm_open " + name_));
+  if (fd < 0) throw BridgeError(errnoMessage("robot " + tag_ + ": shm_open " + name_));
   if (::ftruncate(fd, sizeof(cv::DeviceBlock)) != 0) {
-    const std::string e = sysError("robot " + tag_ + ": ftruncate " + name_);
+    const std::string e = errnoMessage("robot " + tag_ + ": ftruncate " + name_);
     ::close(fd);
     ::shm_unlink(name_.c_str());
     throw BridgeError(e);
@@ -67,7 +67,7 @@ V4l2Devices::V4l2Devices(const std::string& tag, const std::array<std::string, c
   void* p = ::mmap(nullptr, sizeof(cv::DeviceBlock), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
   ::close(fd);
   if (p == MAP_FAILED) {
-    const std::string e = sysError("robot " + tag_ + ": mmap " + name_);
+    const std::string e = errnoMessage("robot " + tag_ + ": mmap " + name_);
     ::shm_unlink(name_.c_str());
     throw BridgeError(e);
   }

@@ -17,7 +17,7 @@ namespace simswift {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& source, int line, const std::string& what) {
+[[noreturn]] void failPrePass(const std::string& source, int line, const std::string& what) {
   throw ModelError(source, line, what);
 }
 
@@ -134,7 +134,7 @@ void checkNumbers(const TiXmlElement* e, const std::string& source, const std::s
       ++n;
     }
     if (!ok || n != na.count)
-      fail(source, e->Row(),
+      failPrePass(source, e->Row(),
            owner + "<" + std::string(na.element) + " " + na.attribute + "=\"" + std::string(v).substr(0, 80) + "\">: expected " +
                std::to_string(na.count) + (na.count == 1 ? " finite number" : " finite numbers"));
   }
@@ -164,23 +164,23 @@ void collectChildren(const TiXmlElement* e, const std::string& prefix, std::map<
 
 UrdfLines::UrdfLines(const std::string& xml, const std::string& source) {
   if (xml.size() > UrdfLimits::kMaxBytes)
-    fail(source, 1, "URDF is " + std::to_string(xml.size()) + " bytes, more than the " +
+    failPrePass(source, 1, "URDF is " + std::to_string(xml.size()) + " bytes, more than the " +
                         std::to_string(UrdfLimits::kMaxBytes >> 20) + " MB limit");
   if (const size_t nul = xml.find('\0'); nul != std::string::npos) {
     // Found once: the line count is one pass up to it (linear in the size).
     const int row = 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
-    fail(source, row, "URDF contains a NUL byte (not a text file?)");
+    failPrePass(source, row, "URDF contains a NUL byte (not a text file?)");
   }
-  if (const Excess e = scanLimits(xml); !e.what.empty()) fail(source, e.line, e.what);
+  if (const Excess e = scanLimits(xml); !e.what.empty()) failPrePass(source, e.line, e.what);
 
   TiXmlDocument doc;
   doc.Parse(xml.c_str(), nullptr, TIXML_ENCODING_UTF8);
   if (doc.Error()) {
-    fail(source, doc.ErrorRow() > 0 ? doc.ErrorRow() : 1,
+    failPrePass(source, doc.ErrorRow() > 0 ? doc.ErrorRow() : 1,
          std::string("URDF parse failed: XML syntax error: ") + (doc.ErrorDesc() ? doc.ErrorDesc() : "?"));
   }
   const TiXmlElement* robot = doc.FirstChildElement("robot");
-  if (!robot) fail(source, 1, "no <robot> element");
+  if (!robot) failPrePass(source, 1, "no <robot> element");
   robot_line_ = robot->Row();
   checkNumbers(robot, source, "", 1);
   for (const TiXmlElement* e = robot->FirstChildElement(); e; e = e->NextSiblingElement()) {

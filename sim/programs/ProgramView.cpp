@@ -64,7 +64,7 @@ void stage(const FileEntry& e, const fs::path& at) {
     throw std::runtime_error(e.where + ": chmod " + at.string() + ": " + std::strerror(errno));
 }
 
-MountOp bind(const std::string& source, const std::string& target, const std::string& what, bool optional = false) {
+MountOp bindMount(const std::string& source, const std::string& target, const std::string& what, bool optional = false) {
   MountOp op;
   op.source = source;
   op.target = target;
@@ -184,9 +184,9 @@ std::vector<MountOp> planView(const ProgramView& view, bool prepare) {
       // Into a staging folder (under /tmp or /home/nao): before those are
       // bound; elsewhere: after the overlay made its path.
       if (under(path, "/tmp") || under(path, "/home/nao"))
-        inner_binds.push_back(bind(e.from, at.string(), "files: " + path, optional));
+        inner_binds.push_back(bindMount(e.from, at.string(), "files: " + path, optional));
       else
-        binds.push_back(bind(e.from, path, "files: " + path, optional));
+        binds.push_back(bindMount(e.from, path, "files: " + path, optional));
     }
   }
   // /home/nao must exist to be bound on: an (empty) folder in the overlay
@@ -221,12 +221,12 @@ std::vector<MountOp> planView(const ProgramView& view, bool prepare) {
   }
   for (MountOp& b : binds) ops.push_back(std::move(b));
   for (MountOp& b : inner_binds) ops.push_back(std::move(b));
-  ops.push_back(bind(home_source, "/home/nao", "/home/nao", !home_possible));
+  ops.push_back(bindMount(home_source, "/home/nao", "/home/nao", !home_possible));
 
   // /tmp last: what it covers (the socket, the launch's folders) is bound in first.
   if (!view.robocup_socket.empty()) {
     if (missing(tmp / "robocup")) std::ofstream((tmp / "robocup").string()).put('\0');  // the mount point (a file)
-    MountOp op = bind(view.robocup_socket, (tmp / "robocup").string(), "/tmp/robocup");
+    MountOp op = bindMount(view.robocup_socket, (tmp / "robocup").string(), "/tmp/robocup");
     op.flags = MS_BIND;
     ops.push_back(op);
   }
@@ -246,9 +246,9 @@ std::vector<MountOp> planView(const ProgramView& view, bool prepare) {
       continue;
     }
     carried.push_back(first);
-    ops.push_back(bind(first, at.string(), "the machine's " + first));
+    ops.push_back(bindMount(first, at.string(), "the machine's " + first));
   }
-  ops.push_back(bind(tmp.string(), "/tmp", "a /tmp of its own"));
+  ops.push_back(bindMount(tmp.string(), "/tmp", "a /tmp of its own"));
   return ops;
 }
 

@@ -21,7 +21,7 @@
 
 namespace {
 
-const std::string kBin = SIMSWIFT_BINARY_DIR;
+const std::string kBuildDir = SIMSWIFT_BINARY_DIR;
 constexpr double kPi = 3.14159265358979323846;
 
 simswift::WalkSample at(double t, double x, double y, double theta, int falls = 0) {
@@ -221,7 +221,7 @@ TEST(WalkTest, TraceHasOneRowPerTickWithWhatTheGaitSawAndDid) {
     j.angles[simswift::api::HeadYaw] = 0.25f + 0.001f * static_cast<float>(seen.size());  // marker, rad
     seen.push_back(s);
   });
-  const std::string csv = kBin + "/walk_kit_trace.csv", png = kBin + "/walk_kit_trace.png";
+  const std::string csv = kBuildDir + "/walk_kit_trace.csv", png = kBuildDir + "/walk_kit_trace.png";
   std::remove(png.c_str());
   t.trace(csv);
   t.command({100, 0, 0});
@@ -269,11 +269,11 @@ TEST(WalkTest, ErrorsSayWhat) {
   EXPECT_THROW(simswift::WalkTest(std::move(sim), 3, simswift::api::referenceGait()), std::out_of_range);
   simswift::WalkTest t(1, simswift::api::referenceGait());
   EXPECT_THROW(t.trace("/nonexistent-folder/trace.csv"), std::runtime_error);
-  const std::string not_trace = kBin + "/walk_kit_not_a_trace.csv";
+  const std::string not_trace = kBuildDir + "/walk_kit_not_a_trace.csv";
   std::ofstream(not_trace) << "a,b\n1,2\n";
   std::string message;
-  EXPECT_FALSE(simswift::api::plotTrace(not_trace, kBin + "/walk_kit_not.png", &message));
+  EXPECT_FALSE(simswift::api::plotTrace(not_trace, kBuildDir + "/walk_kit_not.png", &message));
   EXPECT_NE(message.find("no column 't'"), std::string::npos) << message;
-  EXPECT_FALSE(simswift::api::plotTrace(kBin + "/no-such-trace.csv", kBin + "/x.png", &message));
+  EXPECT_FALSE(simswift::api::plotTrace(kBuildDir + "/no-such-trace.csv", kBuildDir + "/x.png", &message));
   EXPECT_NE(message.find("cannot read"), std::string::npos) << message;
 }

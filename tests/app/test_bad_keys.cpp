@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 using simswift::testing::shell;
 using simswift::testing::writeText;
 
-std::string write(const std::string& name, const std::string& text) {
+std::string writeInput(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / ("simswift_bad_keys_" + std::to_string(getpid()));
   fs::create_directories(dir);
   writeText((dir / name).string(), text);
@@ -40,30 +40,30 @@ const std::string kRobot = "  - {team: 19, player: 2, x: -1.0, y: 0.0, theta: 0.
 }  // namespace
 
 TEST(BadKeys, ScenarioFieldAndRobotConfigExitTwoAtTheKey) {
-  std::string s = write("robot.yaml", "duration: 0.1\nrobots:\n  - {team: 19, ? [player]: 2, x: -1.0}\n");
+  std::string s = writeInput("robot.yaml", "duration: 0.1\nrobots:\n  - {team: 19, ? [player]: 2, x: -1.0}\n");
   expectBadKey("simswift run " + s + " --quiet", s + ":3: robots[0]");
-  s = write("env.yaml", "duration: 0.1\nrobots:\n  - {team: 19, player: 2, x: -1.0, y: 0.0,\n"
+  s = writeInput("env.yaml", "duration: 0.1\nrobots:\n  - {team: 19, player: 2, x: -1.0, y: 0.0,\n"
                         "     program: {command: [/bin/true], env: {A: b, ? {c: d}: e}}}\n");
   expectBadKey("simswift run " + s + " --quiet", s + ":4: robots[0].program.env");
-  s = write("actions.yaml", "duration: 0.1\nrobots:\n  - team: 19\n    player: 2\n"
+  s = writeInput("actions.yaml", "duration: 0.1\nrobots:\n  - team: 19\n    player: 2\n"
                             "    actions: [{t: 0, ? ~ : stand}]\n");
   expectBadKey("simswift run " + s + " --quiet", s + ":5: robots[0].actions[0]");
-  const std::string f = write("field_key.yaml", "field:\n  goal: {? [post_height]: 0.5}\n");
-  s = write("with_field.yaml", "field: field_key.yaml\nduration: 0.1\nrobots:\n" + kRobot);
+  const std::string f = writeInput("field_key.yaml", "field:\n  goal: {? [post_height]: 0.5}\n");
+  s = writeInput("with_field.yaml", "field: field_key.yaml\nduration: 0.1\nrobots:\n" + kRobot);
   expectBadKey("simswift run " + s + " --quiet", f + ":2: field.goal");
   // The robot program's own config file: read before it attaches anywhere.
-  const std::string c = write("setup.yaml", "team: 19\nplayer: 2\nstart: {x: 0, y: 0, ? [theta]: 1}\n");
+  const std::string c = writeInput("setup.yaml", "team: 19\nplayer: 2\nstart: {x: 0, y: 0, ? [theta]: 1}\n");
   expectBadKey("simswift-agent --config " + c, c + ":3: start");
 }
 
 TEST(BadKeys, TestFileExitsTwoAtTheKey) {
   // The issue's file: a list as a pass: operator.
-  const std::string t = write("t.yaml",
+  const std::string t = writeInput("t.yaml",
                               "name: t\nseed: 3\ntests:\n  - name: walk\n"
                               "    scenario: {robots: [{team: 19, player: 2, x: -1.0, y: 0.0}]}\n"
                               "    pass: {? [never]: {fallen: any}}\n");
   expectBadKey("simswift test " + t + " --check", t + ":6: tests[0].pass");
-  const std::string u = write("u.yaml",
+  const std::string u = writeInput("u.yaml",
                               "name: t\nseed: 3\ntests:\n  - name: walk\n"
                               "    scenario: {robots: [{team: 19, player: 2, x: -1.0, y: 0.0}]}\n"
                               "    pass: {never: {? {fallen: any}: 1}}\n");
@@ -78,12 +78,12 @@ TEST(BadKeys, ExperimentExitsTwoAtTheKey) {
            "setups:\n  - name: a\n    behaviour: findball2017\n" + setup +                      // 8-10 (11: a setup config)
            "    robots:\n      - {team: 19, player: 2, x: -1.0, y: 0.0, theta: 0.0" + robot + "}\n" + tail;
   };
-  std::string e = write("e1.yaml", experiment("? [y]: 0.0", "", "", ""));
+  std::string e = writeInput("e1.yaml", experiment("? [y]: 0.0", "", "", ""));
   expectBadKey("simswift experiment " + e + " --check", e + ":7: balls[0]");
-  e = write("e2.yaml", experiment("y: 0.0", "    config: {? [search]: 1}\n", "", ""));
+  e = writeInput("e2.yaml", experiment("y: 0.0", "    config: {? [search]: 1}\n", "", ""));
   expectBadKey("simswift experiment " + e + " --check", e + ":11: setups[0].config");
-  e = write("e3.yaml", experiment("y: 0.0", "", ", config: {? [search]: 1}", ""));
+  e = writeInput("e3.yaml", experiment("y: 0.0", "", ", config: {? [search]: 1}", ""));
   expectBadKey("simswift experiment " + e + " --check", e + ":12: setups[0].robots[0].config");
-  e = write("e4.yaml", experiment("y: 0.0", "", "", "sweep: {? [team_comms]: [0, 1]}\n"));
+  e = writeInput("e4.yaml", experiment("y: 0.0", "", "", "sweep: {? [team_comms]: [0, 1]}\n"));
   expectBadKey("simswift experiment " + e + " --check", e + ":13: sweep");
 }

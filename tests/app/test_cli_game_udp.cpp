@@ -19,15 +19,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
+struct ScenarioRun {
   int code = -1;
   std::string out;  // stdout and stderr
 };
 
-Result run(const std::string& scenario) {
+ScenarioRun runScenario(const std::string& scenario) {
   const std::string cmd = std::string(SIMSWIFT_BINARY_DIR) + "/simswift run " + scenario + " 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
-  Result r;
+  ScenarioRun r;
   char buf[512];
   while (fgets(buf, sizeof buf, p)) r.out += buf;
   const int st = pclose(p);
@@ -35,7 +35,7 @@ Result run(const std::string& scenario) {
   return r;
 }
 
-std::string write(const std::string& name, const std::string& text) {
+std::string writeScenario(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / ("simswift_cli_udp_" + std::to_string(getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / name) << text;
@@ -47,8 +47,8 @@ const std::string kOne = "duration: 1\nnoise: off\nrobots:\n  - {team: 19, playe
 }  // namespace
 
 TEST(CliGameUdp, BadValueExitsTwoNamingFileLineAndField) {
-  const std::string s = write("bad_udp.yaml", kOne + "game: {udp: on, return_port: 3838}\n");
-  const Result r = run(s);
+  const std::string s = writeScenario("bad_udp.yaml", kOne + "game: {udp: on, return_port: 3838}\n");
+  const ScenarioRun r = runScenario(s);
   EXPECT_EQ(r.code, 2) << r.out;
   EXPECT_NE(r.out.find(s + ":5: game.return_port: must differ from port"), std::string::npos) << r.out;
 }
@@ -56,9 +56,9 @@ TEST(CliGameUdp, BadValueExitsTwoNamingFileLineAndField) {
 TEST(CliGameUdp, RunSendsPacketsAListenerHears) {
   const simswift::testing::UdpListener listener;
   ASSERT_GT(listener.port, 0);
-  const std::string s = write("udp.yaml", kOne + "game: {udp: on, return_port: 0, port: " +
+  const std::string s = writeScenario("udp.yaml", kOne + "game: {udp: on, return_port: 0, port: " +
                                               std::to_string(listener.port) + "}\n");
-  const Result r = run(s);
+  const ScenarioRun r = runScenario(s);
   EXPECT_EQ(r.code, 0) << r.out;
   // t = 0, 0.5 and 1 s of simulated time.
   EXPECT_NE(r.out.find("| gc udp 3 sent |"), std::string::npos) << r.out;

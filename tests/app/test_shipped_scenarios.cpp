@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using Result = simswift::testing::ShellResult;
+using simswift::testing::ShellResult;
 using simswift::testing::shell;
 
 std::string slurp(const fs::path& p) {
@@ -55,17 +55,17 @@ TEST(ShippedScenarios, EveryFileIsAcceptedAndBuiltinOnesRun) {
     SCOPED_TRACE(f.filename().string());
     const std::string text = slurp(f);
     if (isExperiment(text)) {
-      const Result r = shell(kBin + " experiment " + f.string() + " --check");
+      const ShellResult r = shell(kBin + " experiment " + f.string() + " --check");
       EXPECT_EQ(r.code, 0) << r.output;
       continue;
     }
-    const Result c = shell(kBin + " run " + f.string() + " --check");
+    const ShellResult c = shell(kBin + " run " + f.string() + " --check");
     EXPECT_EQ(c.code, 0) << c.output;
     EXPECT_NE(c.output.find(": ok ("), std::string::npos) << c.output;
     if (text.find("external") != std::string::npos) continue;  // its program runs elsewhere
     // Rendering needs a build with cameras (the sanitizer builds have none).
     if (text.find("\ncamera:") != std::string::npos && !simswift::runner::Runner::camerasAvailable()) continue;
-    const Result r = shell(kBin + " run " + f.string() + " --duration 0.2 --quiet");
+    const ShellResult r = shell(kBin + " run " + f.string() + " --duration 0.2 --quiet");
     EXPECT_EQ(r.code, 0) << r.output;
     EXPECT_NE(r.output.find("hash "), std::string::npos) << r.output;
   }
@@ -83,7 +83,7 @@ TEST(ShippedScenarios, EveryTestFileIsAccepted) {
   for (const fs::path& f : files) {
     SCOPED_TRACE(f.string());
     for (const char* form : {"", " --short"}) {
-      const Result r = shell(kBin + " test " + f.string() + " --check" + form);
+      const ShellResult r = shell(kBin + " test " + f.string() + " --check" + form);
       EXPECT_EQ(r.code, 0) << r.output;
       EXPECT_NE(r.output.find("valid"), std::string::npos) << r.output;
     }
@@ -96,7 +96,7 @@ TEST(ShippedScenarios, CheckRefusesABadFileWithExitTwo) {
     std::ofstream out(bad);
     out << "duration: 1\nball: nowhere\nrobots:\n  - {team: 19, player: 1, x: 0, y: 0, theta: 0}\n";
   }
-  const Result r = shell(kBin + " run " + bad.string() + " --check");
+  const ShellResult r = shell(kBin + " run " + bad.string() + " --check");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find(":2"), std::string::npos) << r.output;  // file:line
   EXPECT_NE(r.output.find("ball"), std::string::npos) << r.output;

@@ -19,6 +19,7 @@
 
 #include "app/experiment/Batch.hpp"
 #include "app/experiment/BehaviourHooks.hpp"
+#include "tests/support/ConfigErrors.hpp"
 
 namespace exptest {
 
@@ -108,6 +109,11 @@ inline std::vector<pid_t> stillAliveAfter(const std::vector<pid_t>& pids, double
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   } while (std::chrono::steady_clock::now() < deadline);
   return alive;
+}
+
+// The ConfigError's message for `text` as an experiment file, or "" if it loads.
+inline std::string experimentError(const std::string& text) {
+  return simswift::testing::configError([&] { simswift::experiment::Experiment::parse(text, "bad.yaml"); });
 }
 
 inline std::string simswiftBinary() { return std::string(SIMSWIFT_BINARY_DIR) + "/simswift"; }

@@ -41,13 +41,10 @@ std::string replaced(std::string s, const std::string& from, const std::string& 
   return s;
 }
 
-// The ConfigError's message for `text`, or "" if it loads.
-std::string errorOf(const std::string& text) {
-  return simswift::testing::configError([&] { Experiment::parse(text, "bad.yaml"); });
-}
+using exptest::experimentError;
 
 void expectError(const std::string& text, const std::string& where, const std::string& what) {
-  const std::string msg = errorOf(text);
+  const std::string msg = experimentError(text);
   EXPECT_NE(msg.find(where), std::string::npos) << "message: " << msg << "\nexpected: " << where;
   EXPECT_NE(msg.find(what), std::string::npos) << "message: " << msg << "\nexpected: " << what;
 }
@@ -104,7 +101,7 @@ TEST(ExperimentFile, MissingFields) {
 // robot, and an optional one.
 TEST(ExperimentFile, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
   auto expectExactly = [](const std::string& text, const std::string& want) {
-    const std::string msg = errorOf(text);
+    const std::string msg = experimentError(text);
     EXPECT_EQ(msg, want) << text;
   };
   expectExactly(replaced(kGood, "trials_per_position: 1", "trials_per_positon: 1"),
@@ -121,7 +118,7 @@ TEST(ExperimentFile, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
                                                          "      - {team: 19, player: 3");
   expectExactly(no_actions, "bad.yaml:12: unknown key 'acitons' in setups[0].robots[0] (did you mean actions? a "
                             "required key, missing)");
-  const std::string msg = errorOf(replaced(kGood, "found: {distance: 0.3}", "found: {distnace: 0.3}"));
+  const std::string msg = experimentError(replaced(kGood, "found: {distance: 0.3}", "found: {distnace: 0.3}"));
   EXPECT_EQ(msg.rfind("bad.yaml:5: unknown key 'distnace' in found (did you mean distance?); expected one of ", 0),
             0u) << msg;
   // Short keys get no guess (x / y are both keys): still "missing".
@@ -146,7 +143,7 @@ TEST(ExperimentFile, FoundRuleNeedsBallDetections) {
   expectError(off, "bad.yaml:5: found.sees", "needs the robots' ball detections");
   expectError(replaced(off, "distance: 0.3, sees: true", "distance: 0.3"), "bad.yaml:6: vision",
               "needs the robots' ball detections");
-  EXPECT_EQ(errorOf(replaced(off, "sees: true", "sees: false")), "");
+  EXPECT_EQ(experimentError(replaced(off, "sees: true", "sees: false")), "");
 }
 
 TEST(ExperimentFile, StartPenalisedRange) {

@@ -25,9 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string errorOf(const std::string& text) {
-  return simswift::testing::configError([&] { Experiment::parse(text, "bad.yaml"); });
-}
+using exptest::experimentError;
 
 // tinyExperiment(1) has 15 lines; `setups` more setups like its walker
 // follow (one line each), then the sweep with `values` delay values.
@@ -46,7 +44,7 @@ std::string manySetups(int setups, int values) {
 
 TEST(InputLimits, ASweepReadingTooManyNodesIsRefusedAtItsKey) {
   // 1,000 values, each checked on a file of ~680 nodes: over the budget.
-  const std::string msg = errorOf(manySetups(20, 1000));
+  const std::string msg = experimentError(manySetups(20, 1000));
   EXPECT_EQ(msg.rfind("bad.yaml:36: sweep: 1000 checks (each value) of a file of ", 0), 0u) << msg;
   EXPECT_NE(msg.find("is more than " + std::to_string(kMaxSweepNodes) + " nodes to read"), std::string::npos) << msg;
 
@@ -62,7 +60,7 @@ TEST(InputLimits, MoreThanSixteenSweepPathsAreRefusedAtTheSeventeenth) {
   // A cell sets every path: 3,000 one-value paths took 65 s.
   std::string text = exptest::tinyExperiment(1) + "sweep:\n";  // line 16
   for (int k = 0; k < 17; ++k) text += "  setups.walker.config.k" + std::to_string(k) + ": [1]\n";
-  const std::string msg = errorOf(text);
+  const std::string msg = experimentError(text);
   EXPECT_EQ(msg.rfind("bad.yaml:33: sweep: more than 16 paths", 0), 0u) << msg;
   // Sixteen are read (each path checked alone, then the one cell).
   text.erase(text.rfind("  setups.walker.config.k16"));
@@ -115,7 +113,7 @@ TEST(InputLimits, OversizeAndBinaryExperimentFilesAreRefusedWithTheirLine) {
 
   std::string text = exptest::tinyExperiment(1);
   text.insert(text.find("balls:"), std::string("# \0\n", 4));  // line 7
-  msg = errorOf(text);
+  msg = experimentError(text);
   EXPECT_EQ(msg.rfind("bad.yaml:7: ", 0), 0u) << msg;
   EXPECT_NE(msg.find("NUL byte"), std::string::npos) << msg;
 
@@ -138,7 +136,7 @@ TEST(InputLimits, TrialCountsBeyondAnIntAreRefusedAtTheirKey) {
         << "actions: [{t: 0, action: stand}]}]}\n";
     return s.str();
   };
-  const std::string msg = errorOf(file(10000));
+  const std::string msg = experimentError(file(10000));
   EXPECT_EQ(msg, "bad.yaml:4: trials_per_position: 250 setups x 1000 positions x 10000 = 2500000000 trials is more "
                  "than 1000000") << msg;
   const Experiment e = Experiment::parse(file(4), "ok.yaml");
@@ -182,11 +180,11 @@ TEST(InputLimits, TheExperimentSeedTakesAll64BitsAndNothingElse) {
   EXPECT_EQ(Experiment::parse(withSeed("18446744073709551615"), "ok.yaml").seed, 18446744073709551615ull);
   EXPECT_EQ(Experiment::parse(withSeed("9007199254740993"), "ok.yaml").seed, 9007199254740993ull);  // 2^53 + 1
   for (const char* bad : {"1.5", "-1", "18446744073709551616", "1e3"}) {
-    const std::string err = errorOf(withSeed(bad));
+    const std::string err = experimentError(withSeed(bad));
     EXPECT_NE(err.find("bad.yaml:2: seed: must be a whole number in [0, 18446744073709551615]"), std::string::npos)
         << bad << ": " << err;
   }
   std::string none = exptest::tinyExperiment(1);
   none.erase(none.find("seed: 11\n"), 9);
-  EXPECT_NE(errorOf(none).find("seed: missing required key"), std::string::npos) << errorOf(none);
+  EXPECT_NE(experimentError(none).find("seed: missing required key"), std::string::npos) << experimentError(none);
 }

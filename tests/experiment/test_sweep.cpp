@@ -65,7 +65,7 @@ void expectSame(const std::string& a, const std::string& b, const std::vector<st
   }
 }
 
-std::string errorOf(const std::string& text) {
+std::string behaviourCheckedError(const std::string& text) {
   try {
     const Experiment e = Experiment::parse(text, "bad.yaml");
     checkBehaviours(e, behaviourHooks());
@@ -75,8 +75,8 @@ std::string errorOf(const std::string& text) {
   return "";
 }
 
-void expectError(const std::string& text, const std::string& where, const std::string& what) {
-  const std::string msg = errorOf(text);
+void expectErrorStartingWith(const std::string& text, const std::string& where, const std::string& what) {
+  const std::string msg = behaviourCheckedError(text);
   EXPECT_EQ(msg.rfind(where, 0), 0u) << "message: " << msg << "\nexpected to start with: " << where;
   EXPECT_NE(msg.find(what), std::string::npos) << "message: " << msg << "\nexpected: " << what;
 }
@@ -212,8 +212,8 @@ TEST(Sweep, BaseSettingsAndSweptSettingsReachTheTrialScenario) {
     EXPECT_EQ(sc.game.initial_state, common::libagent::GameStateValue::Initial);
     ASSERT_EQ(sc.game.timeline.size(), 1u);
   }
-  expectError(kTiny + "game: {state: ready}\n", "bad.yaml:16: game.state", "set by each trial");
-  expectError(kTiny + "team_comms: {loss: 2}\n", "bad.yaml:16: team_comms.loss", "must be in [0, 1]");
+  expectErrorStartingWith(kTiny + "game: {state: ready}\n", "bad.yaml:16: game.state", "set by each trial");
+  expectErrorStartingWith(kTiny + "team_comms: {loss: 2}\n", "bad.yaml:16: team_comms.loss", "must be in [0, 1]");
 }
 
 // Behaviour overrides by setup name: validated by the behaviour's own
@@ -237,46 +237,46 @@ TEST(Sweep, BehaviourOverridesBySetupAndRobot) {
   // A bad override value is refused by the behaviour's reader, at its line.
   const std::string bad = text.substr(0, text.rfind("  setups.b")) +
                           "  setups.1.config.search.spin_at_point:\n    - on\n    - sometimes\n";
-  expectError(bad, "bad.yaml:18: sweep.setups.1.config.search.spin_at_point[1] = sometimes", "spin_at_point");
-  expectError(text.substr(0, text.rfind("  setups.b")) + "  setups.a.config.search.spin_fast: [on]\n",
+  expectErrorStartingWith(bad, "bad.yaml:18: sweep.setups.1.config.search.spin_at_point[1] = sometimes", "spin_at_point");
+  expectErrorStartingWith(text.substr(0, text.rfind("  setups.b")) + "  setups.a.config.search.spin_fast: [on]\n",
               "bad.yaml:16: sweep.setups.a.config.search.spin_fast[0] = on", "unknown key 'spin_fast'");
 }
 
 // Bad sweeps: each error names the file, the line and the key.
 TEST(Sweep, BadSweepsAreRefusedAtTheirLine) {
-  expectError(kTiny + "sweep:\n  speed.max: [1, 2]\n", "bad.yaml:17: sweep.speed.max", "unknown path");
-  expectError(kTiny + "sweep:\n  team_comms.lossy: [0.1]\n", "bad.yaml:17: sweep.team_comms.lossy[0] = 0.1",
+  expectErrorStartingWith(kTiny + "sweep:\n  speed.max: [1, 2]\n", "bad.yaml:17: sweep.speed.max", "unknown path");
+  expectErrorStartingWith(kTiny + "sweep:\n  team_comms.lossy: [0.1]\n", "bad.yaml:17: sweep.team_comms.lossy[0] = 0.1",
               "unknown key 'lossy' in team_comms");
-  expectError(kTiny + "sweep:\n  team_comms.loss:\n    - 0\n    - 2\n", "bad.yaml:19: sweep.team_comms.loss[1] = 2",
+  expectErrorStartingWith(kTiny + "sweep:\n  team_comms.loss:\n    - 0\n    - 2\n", "bad.yaml:19: sweep.team_comms.loss[1] = 2",
               "team_comms.loss: must be in [0, 1]");
-  expectError(kTiny + "sweep:\n  vision.ball.max_distance_mm: [1500, far]\n",
+  expectErrorStartingWith(kTiny + "sweep:\n  vision.ball.max_distance_mm: [1500, far]\n",
               "bad.yaml:17: sweep.vision.ball.max_distance_mm[1] = far", "max_distance_mm");
-  expectError(kTiny + "sweep:\n  physics.solver: [quick, 3]\n", "bad.yaml:17: sweep.physics.solver[1] = 3",
+  expectErrorStartingWith(kTiny + "sweep:\n  physics.solver: [quick, 3]\n", "bad.yaml:17: sweep.physics.solver[1] = 3",
               "expected one of");
-  expectError(kTiny + "sweep:\n  team_comms.loss: []\n", "bad.yaml:17: sweep.team_comms.loss", "an empty list");
-  expectError(kTiny + "sweep:\n  team_comms.loss: 0.1\n", "bad.yaml:17: sweep.team_comms.loss", "must be a list");
-  expectError(kTiny + "sweep:\n  team_comms.loss: [0.1, 0.1]\n", "bad.yaml:17: sweep.team_comms.loss",
+  expectErrorStartingWith(kTiny + "sweep:\n  team_comms.loss: []\n", "bad.yaml:17: sweep.team_comms.loss", "an empty list");
+  expectErrorStartingWith(kTiny + "sweep:\n  team_comms.loss: 0.1\n", "bad.yaml:17: sweep.team_comms.loss", "must be a list");
+  expectErrorStartingWith(kTiny + "sweep:\n  team_comms.loss: [0.1, 0.1]\n", "bad.yaml:17: sweep.team_comms.loss",
               "appears twice");
-  expectError(kTiny + "sweep: []\n", "bad.yaml:16: sweep", "must be a map");
-  expectError(kTiny + "sweep:\n  setups.nope.config.grid.rows: [2]\n", "bad.yaml:17: sweep.setups.nope.config.grid.rows",
+  expectErrorStartingWith(kTiny + "sweep: []\n", "bad.yaml:16: sweep", "must be a map");
+  expectErrorStartingWith(kTiny + "sweep:\n  setups.nope.config.grid.rows: [2]\n", "bad.yaml:17: sweep.setups.nope.config.grid.rows",
               "no setup 'nope' (setups: walker");
-  expectError(kTiny + "sweep:\n  setups.walker.robots.1.config.x: [2]\n",
+  expectErrorStartingWith(kTiny + "sweep:\n  setups.walker.robots.1.config.x: [2]\n",
               "bad.yaml:17: sweep.setups.walker.robots.1.config.x", "no robot '1'");
-  expectError(kTiny + "sweep:\n  setups.walker.x: [2]\n", "bad.yaml:17: sweep.setups.walker.x", "behaviour overrides");
-  expectError(kTiny + "noise: on\nsweep:\n  noise.gyro: [on, off]\n", "bad.yaml:18: sweep.noise.gyro",
+  expectErrorStartingWith(kTiny + "sweep:\n  setups.walker.x: [2]\n", "bad.yaml:17: sweep.setups.walker.x", "behaviour overrides");
+  expectErrorStartingWith(kTiny + "noise: on\nsweep:\n  noise.gyro: [on, off]\n", "bad.yaml:18: sweep.noise.gyro",
               "'noise' is 'on' in the experiment, not a map");
-  expectError(kTiny + "sweep:\n  team_comms..loss: [0]\n", "bad.yaml:17: sweep.team_comms..loss", "dotted path");
-  expectError(kTiny + "sweep:\n  vision.ball: [{}]\n  vision.ball.p_near: [1]\n", "bad.yaml:18: sweep.vision.ball.p_near",
+  expectErrorStartingWith(kTiny + "sweep:\n  team_comms..loss: [0]\n", "bad.yaml:17: sweep.team_comms..loss", "dotted path");
+  expectErrorStartingWith(kTiny + "sweep:\n  vision.ball: [{}]\n  vision.ball.p_near: [1]\n", "bad.yaml:18: sweep.vision.ball.p_near",
               "overlaps sweep path vision.ball");
-  expectError(kTiny + "sweep:\n  found.sees: [on]\n", "bad.yaml:17: sweep.found.sees", "unknown path");
+  expectErrorStartingWith(kTiny + "sweep:\n  found.sees: [on]\n", "bad.yaml:17: sweep.found.sees", "unknown path");
   // 2 x 10000 trials per cell x 60 cells: more than 10^6 trials.
   std::string sixty = "[0";
   for (int i = 1; i < 60; ++i) sixty += ", " + std::to_string(i);
-  expectError(exptest::tinyExperiment(10000) + "sweep:\n  team_comms.delay_ms: " + sixty + "]\n", "bad.yaml:16: sweep",
+  expectErrorStartingWith(exptest::tinyExperiment(10000) + "sweep:\n  team_comms.delay_ms: " + sixty + "]\n", "bad.yaml:16: sweep",
               "60 cells x 20000 trials = 1200000 trials is more than 1000000");
   // 11 x 11 x 11 = 1331 cells.
   const std::string eleven = "[0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1]";
-  expectError(kTiny + "sweep:\n  team_comms.loss: " + eleven + "\n  vision.ball.p_near: " + eleven +
+  expectErrorStartingWith(kTiny + "sweep:\n  team_comms.loss: " + eleven + "\n  vision.ball.p_near: " + eleven +
                   "\n  vision.ball.p_at_max: " + eleven + "\n",
               "bad.yaml:16: sweep", "more than 1000 cells (11 x 11 x 11");
 }
@@ -288,7 +288,7 @@ TEST(Sweep, ACellWhoseValuesClashIsNamed) {
                            "sweep:\n"
                            "  vision.ball.min_distance_mm: [0, 3000]\n"
                            "  vision.ball.max_distance_mm: [2500, 5000]\n";
-  const std::string msg = errorOf(text);
+  const std::string msg = behaviourCheckedError(text);
   EXPECT_EQ(msg.rfind("bad.yaml:17: sweep: cell 2 (vision.ball.min_distance_mm=3000, vision.ball.max_distance_mm=2500): ", 0),
             0u)
       << msg;

@@ -19,7 +19,7 @@ namespace ac = agent::comms;
 namespace al = common::libagent;
 
 namespace {
-std::string errorOf(const std::string& yaml) {
+std::string scenarioError(const std::string& yaml) {
   return simswift::testing::configError([&] { Scenario::parse(yaml, "s.yaml"); });
 }
 const char* kRobots = "robots:\n  - {team: 0, player: 2}\n  - {team: 0, player: 3, x: 1}\n";
@@ -60,20 +60,20 @@ TEST(GameScenario, BlocksParse) {
 
 TEST(GameScenario, ErrorsNameFileLineAndField) {
   const std::string r = kRobots;
-  EXPECT_NE(errorOf(r + "team_comms: {loss: 1.5}\n").find("s.yaml:4: team_comms.loss: must be"), std::string::npos)
-      << errorOf(r + "team_comms: {loss: 1.5}\n");
-  EXPECT_NE(errorOf(r + "team_comms: {delay: 10}\n").find("s.yaml:4: unknown key 'delay' in team_comms"), std::string::npos);
-  EXPECT_NE(errorOf(r + "team_comms: {budget: -3}\n").find("team_comms.budget"), std::string::npos);
-  const std::string bad_robot = errorOf(r + "game:\n  penalties: [{t: 1, robot: 2}]\n");
+  EXPECT_NE(scenarioError(r + "team_comms: {loss: 1.5}\n").find("s.yaml:4: team_comms.loss: must be"), std::string::npos)
+      << scenarioError(r + "team_comms: {loss: 1.5}\n");
+  EXPECT_NE(scenarioError(r + "team_comms: {delay: 10}\n").find("s.yaml:4: unknown key 'delay' in team_comms"), std::string::npos);
+  EXPECT_NE(scenarioError(r + "team_comms: {budget: -3}\n").find("team_comms.budget"), std::string::npos);
+  const std::string bad_robot = scenarioError(r + "game:\n  penalties: [{t: 1, robot: 2}]\n");
   EXPECT_NE(bad_robot.find("s.yaml:5: game.penalties[0].robot: no robot 2"), std::string::npos) << bad_robot;
-  const std::string bad_state = errorOf(r + "game:\n  timeline: [{t: 1, state: halftime}]\n");
+  const std::string bad_state = scenarioError(r + "game:\n  timeline: [{t: 1, state: halftime}]\n");
   EXPECT_NE(bad_state.find("game.timeline[0].state: expected one of initial"), std::string::npos) << bad_state;
-  EXPECT_NE(errorOf(r + "game:\n  timeline: [{t: 2, state: set}, {t: 1, state: playing}]\n")
+  EXPECT_NE(scenarioError(r + "game:\n  timeline: [{t: 2, state: set}, {t: 1, state: playing}]\n")
                 .find("game.timeline[1].t: timeline entries must be in time order"),
             std::string::npos);
-  EXPECT_NE(errorOf(r + "game:\n  penalties: [{t: 1, robot: 0, penalty: biting}]\n").find("game.penalties[0].penalty"),
+  EXPECT_NE(scenarioError(r + "game:\n  penalties: [{t: 1, robot: 0, penalty: biting}]\n").find("game.penalties[0].penalty"),
             std::string::npos);
-  EXPECT_NE(errorOf(r + "game:\n  timeline: [{t: 1}]\n").find("needs a state"), std::string::npos);
+  EXPECT_NE(scenarioError(r + "game:\n  timeline: [{t: 1}]\n").find("needs a state"), std::string::npos);
 }
 
 namespace {

@@ -17,29 +17,29 @@ namespace J = common::libagent::Joints;
 using simswift::RobotModel;
 
 namespace {
-const RobotModel& model() {
+const RobotModel& urdfModel() {
   static const RobotModel m = RobotModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf");
   return m;
 }
 // Joint origin (mm) in the parent link frame.
 Eigen::Vector3d originMm(const std::string& joint) {
-  const int j = model().jointIndex(joint);
+  const int j = urdfModel().jointIndex(joint);
   EXPECT_GE(j, 0) << joint;
-  return model().joints()[j].origin.xyz * 1000.0;
+  return urdfModel().joints()[j].origin.xyz * 1000.0;
 }
 const simswift::ShapeSpec& firstCollision(const std::string& link) {
-  const int l = model().linkIndex(link);
+  const int l = urdfModel().linkIndex(link);
   EXPECT_GE(l, 0) << link;
-  return model().links()[l].collisions.at(0);
+  return urdfModel().links()[l].collisions.at(0);
 }
 }  // namespace
 
 TEST(NaoFacts, JointLimitsAndSpeedsMatchTheUrdf) {
   const auto& lim = nao::jointLimits();
   for (int i = 0; i < common::libagent::kNumJoints; ++i) {
-    const int j = simswift::NaoBinding(model()).joint(i);
+    const int j = simswift::NaoBinding(urdfModel()).joint(i);
     ASSERT_GE(j, 0) << "libagent joint " << i;
-    const auto& spec = model().joints()[j];
+    const auto& spec = urdfModel().joints()[j];
     // The URDF keeps 6 digits of the published degrees-derived radians.
     EXPECT_NEAR(lim[i].lower, spec.lower, 2e-5) << spec.name;
     EXPECT_NEAR(lim[i].upper, spec.upper, 2e-5) << spec.name;

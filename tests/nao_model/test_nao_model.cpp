@@ -11,20 +11,15 @@
 #include "sim/nao_model/Motors.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/nao_model/RobotModel.hpp"
+#include "tests/support/NaoV5Model.hpp"
 
 using simswift::ModelError;
 using simswift::RobotModel;
 
 namespace {
 
-const std::string kUrdfPath = std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf";
-
-std::string readUrdf() {
-  std::ifstream in(kUrdfPath);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using simswift::testing::kNaoV5UrdfPath;
+using simswift::testing::readNaoV5Urdf;
 
 // Returns the text of the first <tag name="name"> ... </tag> element.
 std::pair<size_t, size_t> element(const std::string& xml, const std::string& tag, const std::string& name) {
@@ -52,7 +47,7 @@ double deg(double d) { return d * M_PI / 180.0; }
 }  // namespace
 
 TEST(RobotModel, LoadsTheNaoV5) {
-  const RobotModel m = RobotModel::loadUrdf(kUrdfPath);
+  const RobotModel m = RobotModel::loadUrdf(kNaoV5UrdfPath);
   EXPECT_EQ(m.joints().size(), 26u);
   EXPECT_EQ(m.links().size(), 27u);  // 26 joint children + torso
   EXPECT_EQ(m.links()[m.rootLink()].name, "torso");
@@ -77,7 +72,7 @@ TEST(RobotModel, LoadsTheNaoV5) {
 }
 
 TEST(RobotModel, PublishedNumbers) {
-  const RobotModel m = RobotModel::loadUrdf(kUrdfPath);
+  const RobotModel m = RobotModel::loadUrdf(kNaoV5UrdfPath);
   auto joint = [&](const char* n) -> const simswift::JointSpec& { return m.joints()[m.jointIndex(n)]; };
   auto link = [&](const char* n) -> const simswift::LinkSpec& { return m.links()[m.linkIndex(n)]; };
   EXPECT_NEAR(joint("HeadYaw").origin.xyz.z(), 0.1265, 1e-9);
@@ -113,7 +108,7 @@ TEST(RobotModel, MissingFileNamesThePath) {
 }
 
 TEST(RobotModel, LinkWithoutMassIsRejected) {
-  std::string xml = readUrdf();
+  std::string xml = readNaoV5Urdf();
   auto [b, e] = element(xml, "link", "LThigh");
   const size_t m = xml.find("<mass", b);
   ASSERT_LT(m, e);
@@ -124,7 +119,7 @@ TEST(RobotModel, LinkWithoutMassIsRejected) {
 }
 
 TEST(RobotModel, LinkWithoutMassElementIsRejected) {
-  std::string xml = readUrdf();
+  std::string xml = readNaoV5Urdf();
   auto [b, e] = element(xml, "link", "Head");
   const size_t m = xml.find("<mass", b);
   ASSERT_LT(m, e);
@@ -135,7 +130,7 @@ TEST(RobotModel, LinkWithoutMassElementIsRejected) {
 }
 
 TEST(RobotModel, LinkWithoutInertialIsRejected) {
-  std::string xml = readUrdf();
+  std::string xml = readNaoV5Urdf();
   auto [b, e] = element(xml, "link", "RTibia");
   const size_t ib = xml.find("<inertial>", b);
   const size_t ie = xml.find("</inertial>", ib) + 11;
@@ -148,7 +143,7 @@ TEST(RobotModel, LinkWithoutInertialIsRejected) {
 }
 
 TEST(RobotModel, JointWithoutLimitsIsRejected) {
-  std::string xml = readUrdf();
+  std::string xml = readNaoV5Urdf();
   auto [b, e] = element(xml, "joint", "LKneePitch");
   const size_t l = xml.find("<limit", b);
   ASSERT_LT(l, e);
@@ -159,7 +154,7 @@ TEST(RobotModel, JointWithoutLimitsIsRejected) {
 }
 
 TEST(RobotModel, InvertedLimitsAreRejected) {
-  std::string xml = readUrdf();
+  std::string xml = readNaoV5Urdf();
   auto [b, e] = element(xml, "joint", "HeadPitch");
   const size_t l = xml.find("lower=\"", b);
   ASSERT_LT(l, e);
@@ -170,7 +165,7 @@ TEST(RobotModel, InvertedLimitsAreRejected) {
 }
 
 TEST(RobotModel, NonHingeJointIsRejected) {
-  std::string xml = readUrdf();
+  std::string xml = readNaoV5Urdf();
   auto [b, e] = element(xml, "joint", "RElbowYaw");
   const size_t t = xml.find("type=\"revolute\"", b);
   ASSERT_LT(t, e);
@@ -181,7 +176,7 @@ TEST(RobotModel, NonHingeJointIsRejected) {
 }
 
 TEST(RobotModel, MissingLibagentJointIsRejected) {
-  std::string xml = readUrdf();
+  std::string xml = readNaoV5Urdf();
   const std::string from = "<joint name=\"LHipYawPitch\"";
   const size_t p = xml.find(from);
   ASSERT_NE(p, std::string::npos);
@@ -192,7 +187,7 @@ TEST(RobotModel, MissingLibagentJointIsRejected) {
 }
 
 TEST(RobotModel, MalformedXmlIsRejected) {
-  const std::string xml = readUrdf();
+  const std::string xml = readNaoV5Urdf();
   const std::string err = errorOf(xml.substr(0, xml.size() / 2));
   EXPECT_NE(err.find("bad.urdf"), std::string::npos) << err;
   EXPECT_NE(err.find("parse"), std::string::npos) << err;
@@ -210,7 +205,7 @@ TEST(RobotModel, PoseIsometry) {
 // The URDF's speed and effort limits are the motor table's joint-side
 // no-load speed and stall torque (sim/nao_model/Motors.hpp, Aldebaran's NAO V5 (H25) documentation).
 TEST(RobotModel, UrdfLimitsAgreeWithTheMotorTable) {
-  const simswift::RobotModel m = simswift::RobotModel::loadUrdf(kUrdfPath);
+  const simswift::RobotModel m = simswift::RobotModel::loadUrdf(kNaoV5UrdfPath);
   int with_motor = 0;
   for (const auto& j : m.joints()) {
     const auto motor = simswift::naoJointMotor(j.name);

@@ -13,6 +13,7 @@
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/nao_model/RobotBody.hpp"
 #include "sim/world/World.hpp"
+#include "tests/support/NaoV5Model.hpp"
 
 using simswift::GeomTag;
 using simswift::NaoBinding;
@@ -26,12 +27,8 @@ constexpr double kDt = simswift::kTickSeconds;  // s, one World::step (a tick)
 const double kSubstep = simswift::kTickSeconds / simswift::WorldConfig{}.substepsPerTick();
 const double kDeg = M_PI / 180.0;
 
-std::shared_ptr<const RobotModel> naoModel() {
-  static const auto m = std::make_shared<const RobotModel>(
-      RobotModel::loadUrdf(std::string(SIMSWIFT_SOURCE_DIR) + "/models/nao_v5.urdf"));
-  return m;
-}
-const RobotModel& model() { return *naoModel(); }
+using simswift::testing::naoV5Model;
+const RobotModel& model() { return *naoV5Model(); }
 const NaoBinding& nao() {
   static const NaoBinding b(model());
   return b;
@@ -44,7 +41,7 @@ class Sim {
  public:
   explicit Sim(bool fix_torso = false) : world_(simswift::FieldConfig::spl2017()) {
     world_.removeBall();  // the robot stands on the centre spot
-    world_.addRobot(naoModel(), 0, 0, 0, std::vector<double>(model().joints().size(), 0.0));
+    world_.addRobot(naoV5Model(), 0, 0, 0, std::vector<double>(model().joints().size(), 0.0));
     if (fix_torso) {
       Eigen::Isometry3d torso = robot().linkPose(model().rootLink());
       torso.translation().z() += 0.3;  // hanging in the air

@@ -19,7 +19,9 @@
 #include "sim/programs/ProgramSpec.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/runner/RunnerTestUtil.hpp"
 #include "tests/support/ConfigErrors.hpp"
+#include "tests/support/Shell.hpp"
 
 namespace ap = agent::program;
 namespace fs = std::filesystem;
@@ -33,26 +35,15 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-const std::string kBin = SIMSWIFT_BINARY_DIR;
+using runnertest::kBin;
+using runnertest::quiet;
+using simswift::testing::readText;
 
-std::string tempDir(const std::string& tag) {
+std::string launchTempDir(const std::string& tag) {
   const fs::path d = fs::temp_directory_path() / ("simswift_launch_" + tag + "_" + std::to_string(getpid()));
   fs::remove_all(d);
   fs::create_directories(d);
   return d.string();
-}
-
-RunOptions quiet() {
-  RunOptions o;
-  o.progress = false;
-  return o;
-}
-
-std::string readFile(const std::string& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // Two findball2017 robots of an unusual team (no other test's names), 3 s.
@@ -85,7 +76,7 @@ TEST(ProgramProcess, PlaceholdersAreFilledAndAnUnknownOneIsNamed) {
 }
 
 TEST(ProgramProcess, AProgramThatCannotStartIsRefusedWithTheExecError) {
-  const std::string d = tempDir("exec");
+  const std::string d = launchTempDir("exec");
   try {
     ProgramProcess p("t1p1", {d + "/no-such-program"}, d, {}, d + "/t1p1.log", 1);
     FAIL() << "started";
@@ -96,7 +87,7 @@ TEST(ProgramProcess, AProgramThatCannotStartIsRefusedWithTheExecError) {
 }
 
 TEST(ProgramProcess, EndedSaysHowAndStopEscalatesToSigkill) {
-  const std::string d = tempDir("ended");
+  const std::string d = launchTempDir("ended");
   ProgramProcess a("t1p1", {"sh", "-c", "echo one; echo two >&2; exit 3"}, d, {{"X", "1"}}, d + "/a.log", 1);
   const auto t0 = Clock::now();
   while (!a.ended() && Clock::now() - t0 < std::chrono::seconds(10)) usleep(1000);
@@ -108,13 +99,13 @@ TEST(ProgramProcess, EndedSaysHowAndStopEscalatesToSigkill) {
   ProgramProcess b("t1p2", {"sh", "-c", "trap '' TERM; echo $X; while :; do sleep 0.01; done"}, d, {{"X", "seen"}},
                    d + "/b.log", 0.2);
   const auto t1 = Clock::now();
-  while (readFile(d + "/b.log").find("seen") == std::string::npos && !b.ended() &&
+  while (readText(d + "/b.log").find("seen") == std::string::npos && !b.ended() &&
          Clock::now() - t1 < std::chrono::seconds(30))
     usleep(1000);
-  ASSERT_NE(readFile(d + "/b.log").find("seen"), std::string::npos) << "the program did not start within 30 s";
+  ASSERT_NE(readText(d + "/b.log").find("seen"), std::string::npos) << "the program did not start within 30 s";
   b.stop();
   EXPECT_EQ(b.ended().value_or(""), "killed by signal 9 (Killed)");
-  EXPECT_NE(readFile(d + "/b.log").find("seen"), std::string::npos);  // env reached it
+  EXPECT_NE(readText(d + "/b.log").find("seen"), std::string::npos);  // env reached it
 }
 
 // The crash report's log lines (issue 37: an empty log threw
@@ -123,7 +114,7 @@ TEST(ProgramProcess, EndedSaysHowAndStopEscalatesToSigkill) {
 // huge line (10 MB, no newline) gives its end, at most kTailLineChars (240)
 // characters of it after "...".
 TEST(ProgramProcess, TheLogsLastLinesForAnEmptyLogNoFinalNewlineAndOneHugeLine) {
-  const std::string d = tempDir("tail");
+  const std::string d = launchTempDir("tail");
   std::ofstream(d + "/empty.log");
   EXPECT_EQ(ProgramProcess::tail(d + "/empty.log", 8), "");
   EXPECT_EQ(ProgramProcess::tail(d + "/missing.log", 8), "");
@@ -152,7 +143,7 @@ TEST(ProgramProcess, TheLogsLastLinesForAnEmptyLogNoFinalNewlineAndOneHugeLine) 
 // ended the run with "basic_string::substr: __pos (which is 1) > this->size()
 // (which is 0)"; its report names the robot, the signal and the log.
 TEST(ProgramProcess, AProgramThatDiesBeforeWritingIsReportedWithItsSignal) {
-  const std::string d = tempDir("silent");
+  const std::string d = launchTempDir("silent");
   ProgramProcess p("t1p1", {"sh", "-c", "kill -SEGV $$"}, d, {}, d + "/silent.log", 1);
   const auto t0 = Clock::now();
   while (!p.ended() && Clock::now() - t0 < std::chrono::seconds(10)) usleep(1000);
@@ -172,7 +163,7 @@ TEST(RobotSetup, TheConfigFileReadsBackToTheSameSetup) {
   s.behaviour = agent::behaviour::behaviourFromText("findball2016", "{search: {spin_at_point: off}}", "t",
                                                     &s.behaviour_yaml);
   s.posture = ap::Posture::Crouch;
-  const std::string d = tempDir("setup");
+  const std::string d = launchTempDir("setup");
   std::ofstream(d + "/r.yaml") << ap::robotSetupYaml(s);
   const ap::RobotSetup r = ap::readRobotSetup(d + "/r.yaml");
   EXPECT_EQ(r.team, 19);
@@ -228,7 +219,7 @@ TEST(RobotSetup, ALaunchedRobotsConfigRoundTripsItsPoseExactly) {
       "pose.yaml");
   const simswift::runner::RobotSpec& r = sc.robots[0];
   const ap::RobotSetup s = simswift::programs::robotSetup(r.setup, simswift::runner::programIdentity(sc, 0));
-  const std::string d = tempDir("pose");
+  const std::string d = launchTempDir("pose");
   std::ofstream(d + "/r.yaml") << ap::robotSetupYaml(s);  // what Programs::makeLaunched writes
   const ap::RobotSetup back = ap::readRobotSetup(d + "/r.yaml");
   ASSERT_TRUE(back.start);
@@ -246,7 +237,7 @@ TEST(RobotSetup, ALaunchedRobotsConfigRoundTripsItsPoseExactly) {
 }
 
 TEST(RobotSetup, BadConfigNamesFileLineAndKey) {
-  const std::string d = tempDir("badsetup");
+  const std::string d = launchTempDir("badsetup");
   std::ofstream(d + "/bad.yaml") << "team: 19\nplayer: 2\nseed: -4\n";
   try {
     ap::readRobotSetup(d + "/bad.yaml");
@@ -266,7 +257,7 @@ TEST(RobotSetup, BadConfigNamesFileLineAndKey) {
 // required one (a script step's angle: it was "missing" at the step's
 // line) and an optional one of the behaviour's settings.
 TEST(RobotSetup, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
-  const std::string d = tempDir("misspelt");
+  const std::string d = launchTempDir("misspelt");
   auto errorOf = [&d](const std::string& text) {
     std::ofstream(d + "/c.yaml") << text;
     return simswift::testing::configError([&] { ap::readRobotSetup(d + "/c.yaml"); });
@@ -283,7 +274,7 @@ TEST(RobotSetup, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
 }
 
 TEST(LaunchedPrograms, SimswiftAgentGivesTheBuiltinProgramsHash) {
-  const std::string d = tempDir("hash");
+  const std::string d = launchTempDir("hash");
   uint64_t builtin = 0, launched = 0;
   {
     Runner r(Scenario::parse(twoSearchers("", d + "/logs_b"), d + "/b.yaml"));
@@ -299,15 +290,15 @@ TEST(LaunchedPrograms, SimswiftAgentGivesTheBuiltinProgramsHash) {
     EXPECT_EQ(r.programs().logs()[0], "t83p2: " + d + "/logs_l/t83p2.log");
   }
   EXPECT_EQ(builtin, launched);
-  EXPECT_NE(readFile(d + "/logs_l/t83p3.robot.yaml").find("distributed: off"), std::string::npos);
-  EXPECT_NE(readFile(d + "/logs_l/t83p2.log").find("attached to /libagent-memory915"), std::string::npos);
+  EXPECT_NE(readText(d + "/logs_l/t83p3.robot.yaml").find("distributed: off"), std::string::npos);
+  EXPECT_NE(readText(d + "/logs_l/t83p2.log").find("attached to /libagent-memory915"), std::string::npos);
 }
 
 // A program that segfaults at 2 s of simulated time ends the run within a
 // slice of the runner's wait (50 ms; asserted < 3 s to allow a loaded
 // machine), naming the robot, the signal and the log's last lines.
 TEST(LaunchedPrograms, ACrashEndsTheRunAtOnceNamingSignalAndLog) {
-  const std::string d = tempDir("crash");
+  const std::string d = launchTempDir("crash");
   const std::string text = "duration: 10\nprogram_logs: " + d + "\nrobots:\n"
                            "  - {team: 84, player: 1, program: {command: [" + kBin +
                            "/libagent2017-client, --team, \"{team}\", --player, \"{player}\", --ticks, 1000, "
@@ -340,7 +331,7 @@ TEST(LaunchedPrograms, ACrashEndsTheRunAtOnceNamingSignalAndLog) {
 // The same through a run, as the issue reproduced it: the run ends with a
 // ProgramError naming the robot and the signal.
 TEST(LaunchedPrograms, AProgramThatDiesBeforeWritingEndsTheRunNamingRobotAndSignal) {
-  const std::string d = tempDir("silent_run");
+  const std::string d = launchTempDir("silent_run");
   Runner r(Scenario::parse("duration: 10\nprogram_logs: " + d + "\nrobots:\n"
                            "  - {team: 84, player: 2, program: {command: [sh, -c, \"kill -SEGV $$\"]}}\n",
                            d + "/s.yaml"));
@@ -363,7 +354,7 @@ TEST(LaunchedPrograms, AProgramThatDiesBeforeWritingEndsTheRunNamingRobotAndSign
 // Programs::shutdown stops a moment later. The program still runs at the
 // end (its --ticks outlast the run), as with an unchanged program.
 TEST(LaunchedPrograms, AtTheEndNothingLaunchedIsNamedAsStillAttached) {
-  const std::string d = tempDir("attached");
+  const std::string d = launchTempDir("attached");
   const std::string text = "duration: 0.3\nprogram_logs: " + d + "\nrobots:\n"
                            "  - {team: 84, player: 3, program: {command: [" + kBin +
                            "/libagent2017-client, --team, \"{team}\", --player, \"{player}\", --ticks, 100000, "

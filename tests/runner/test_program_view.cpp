@@ -19,7 +19,9 @@
 #include "sim/programs/MountNamespace.hpp"
 #include "sim/programs/ProgramView.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/runner/RunnerTestUtil.hpp"
 #include "tests/support/ConfigErrors.hpp"
+#include "tests/support/Shell.hpp"
 
 namespace fs = std::filesystem;
 using simswift::runner::RunOptions;
@@ -28,20 +30,14 @@ using simswift::runner::Scenario;
 
 namespace {
 
-const std::string kBin = SIMSWIFT_BINARY_DIR;
+using runnertest::kBin;
+using simswift::testing::readText;
 
-std::string tempDir(const std::string& tag) {
+std::string viewTempDir(const std::string& tag) {
   const fs::path d = fs::temp_directory_path() / ("simswift_view_" + tag + "_" + std::to_string(getpid()));
   fs::remove_all(d);
   fs::create_directories(d);
   return d.string();
-}
-
-std::string readFile(const std::string& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // The pids of processes whose command line holds `marker`.
@@ -71,7 +67,7 @@ int processesNamed(const std::string& marker) {
 // direct child had PR_SET_PDEATHSIG and the grandchild ran on.
 TEST(ProgramView, KillNineOfSimswiftEndsAWrapperScriptsGrandchild) {
   REQUIRE_NAMESPACES();
-  const std::string d = tempDir("kill");
+  const std::string d = viewTempDir("kill");
   // Two processes that wait on nothing timed (a sleep would end at once
   // before the first packet: docs/shim.md): each blocks opening a FIFO
   // nobody writes. Their command line carries a marker no other process
@@ -97,7 +93,7 @@ TEST(ProgramView, KillNineOfSimswiftEndsAWrapperScriptsGrandchild) {
     started = processesNamed(marker) == 2;  // the background cat and the foreground one
   }
   if (!started) kill(sim, SIGKILL), waitpid(sim, nullptr, 0);
-  ASSERT_TRUE(started) << readFile(d + "/run.log");
+  ASSERT_TRUE(started) << readText(d + "/run.log");
   kill(sim, SIGKILL);
   int status = 0;
   ASSERT_EQ(waitpid(sim, &status, 0), sim);
@@ -114,7 +110,7 @@ TEST(ProgramView, KillNineOfSimswiftEndsAWrapperScriptsGrandchild) {
 // folder mapped in); the machine's /tmp stays untouched.
 TEST(ProgramView, TwoProgramsTakeTheSameLockFileAndSeeTheRobotsFiles) {
   REQUIRE_NAMESPACES();
-  const std::string d = tempDir("tmp");
+  const std::string d = viewTempDir("tmp");
   const std::string lock = "/tmp/simswift-view-test-" + std::to_string(getpid()) + ".pid";
   fs::create_directories(d + "/config");
   std::ofstream(d + "/config/naoth.cfg") << "[team]\nnumber=71\n";
@@ -141,11 +137,11 @@ TEST(ProgramView, TwoProgramsTakeTheSameLockFileAndSeeTheRobotsFiles) {
   RunOptions o;
   o.progress = false;
   Runner r(Scenario::loadFile(d + "/two.yaml"));
-  EXPECT_NO_THROW(r.run(o)) << readFile(d + "/logs/t71p1.log") << readFile(d + "/logs/t71p2.log");
+  EXPECT_NO_THROW(r.run(o)) << readText(d + "/logs/t71p1.log") << readText(d + "/logs/t71p2.log");
   EXPECT_NE(access(lock.c_str(), F_OK), 0) << "a program wrote into the machine's /tmp";
   // Each program's /tmp and /home/nao are folders of the run.
-  EXPECT_EQ(readFile(d + "/logs/t71p1.view/tmp/" + fs::path(lock).filename().string()), "2\n");
-  EXPECT_EQ(readFile(d + "/logs/t71p2.view/home/written"), "hi\n");
+  EXPECT_EQ(readText(d + "/logs/t71p1.view/tmp/" + fs::path(lock).filename().string()), "2\n");
+  EXPECT_EQ(readText(d + "/logs/t71p2.view/home/written"), "hi\n");
   fs::remove_all(d);
 }
 
@@ -175,7 +171,7 @@ TEST(ProgramView, BadFileEntriesAreRefusedWithFileAndLine) {
 // client started so holds the robot as the launched one does (the same hash).
 TEST(ProgramView, AttachStartsAV5ProgramInItsRobotsView) {
   REQUIRE_NAMESPACES();
-  const std::string d = tempDir("v5attach");
+  const std::string d = viewTempDir("v5attach");
   const std::string client = kBin + "/libagent2017-client";
   const auto scenario = [&](const std::string& program) {
     std::ostringstream y;
@@ -217,11 +213,11 @@ TEST(ProgramView, AttachStartsAV5ProgramInItsRobotsView) {
                            "echo no robocup; echo hi > /home/nao/written"},
                           d + "/sh.log")),
             0)
-      << readFile(d + "/sh.log");
-  EXPECT_EQ(readFile(d + "/sh.log"), "pid 2\n50000\nno robocup\n");
-  EXPECT_EQ(readFile(d + "/logs/t72p1.view/home/written"), "hi\n");
+      << readText(d + "/sh.log");
+  EXPECT_EQ(readText(d + "/sh.log"), "pid 2\n50000\nno robocup\n");
+  EXPECT_EQ(readText(d + "/logs/t72p1.view/home/written"), "hi\n");
   const pid_t program = attach({client, "--team", "72", "--player", "1", "--ticks", "50", "--stand"}, d + "/client.log");
   EXPECT_EQ(r.run(o).hash, launched);
-  EXPECT_EQ(exitOf(program), 0) << readFile(d + "/client.log");
+  EXPECT_EQ(exitOf(program), 0) << readText(d + "/client.log");
   fs::remove_all(d);
 }

@@ -13,6 +13,7 @@
 
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/runner/RunnerTestUtil.hpp"
 
 namespace al = common::libagent;
 namespace ap = agent::program;
@@ -30,11 +31,7 @@ Scenario oneRobot(double duration, const std::string& extra = "") {
                          "test.yaml");
 }
 
-RunOptions quiet() {
-  RunOptions o;
-  o.progress = false;
-  return o;
-}
+using runnertest::quiet;
 
 double modelJoint(Runner& r, int robot, const char* name) {
   const simswift::RobotBody& body = r.world().robot(robot);

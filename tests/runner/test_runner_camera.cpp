@@ -13,6 +13,7 @@
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
 #include "sim/world/ConfigError.hpp"
+#include "tests/runner/RunnerTestUtil.hpp"
 
 namespace {
 
@@ -65,11 +66,7 @@ struct ImageProbe : agent::framework::PerceptionStep {
   }
 };
 
-RunOptions quiet() {
-  RunOptions o;
-  o.progress = false;
-  return o;
-}
+using runnertest::quiet;
 
 Scenario twoRobots(double duration) {
   Scenario sc = Scenario::parse(

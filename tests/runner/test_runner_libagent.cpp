@@ -26,6 +26,7 @@
 #include "common/libagent/SimExtension.hpp"
 #include "sim/programs/Programs.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/runner/RunnerTestUtil.hpp"
 
 namespace al = common::libagent;
 namespace ap = agent::program;
@@ -38,13 +39,8 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-const std::string kBin = SIMSWIFT_BINARY_DIR;
-
-RunOptions quiet() {
-  RunOptions o;
-  o.progress = false;
-  return o;
-}
+using runnertest::kBin;
+using runnertest::quiet;
 
 // Starts `args` (argv[0] = path); stdout / stderr to files if given.
 pid_t spawn(const std::vector<std::string>& args, const std::string& out = "", const std::string& err = "") {

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "sim/runner/Scenario.hpp"
+#include "tests/runner/RunnerTestUtil.hpp"
 #include "tests/support/ConfigErrors.hpp"
 
 using simswift::ConfigError;
@@ -15,15 +16,15 @@ using simswift::runner::Scenario;
 
 namespace {
 
-const char* kOneRobot = "robots:\n  - {team: 0, player: 1, x: -1, y: 0}\n";
+using runnertest::kOneRobot;
 
-std::string errorOf(const std::string& yaml) {
+std::string fieldCheckedError(const std::string& yaml) {
   return simswift::testing::configError(
       [&] { Scenario::parse(yaml, "s.yaml").checkAgainstField(FieldConfig::spl2017()); });
 }
 
 void expectRefused(const std::string& yaml, const std::string& prefix) {
-  const std::string err = errorOf(yaml);
+  const std::string err = fieldCheckedError(yaml);
   EXPECT_EQ(err.rfind(prefix, 0), 0u) << yaml << "\n -> " << err;
 }
 
@@ -34,14 +35,14 @@ TEST(ScenarioHardening, OverlappingRobotsAreRefused) {
                 "s.yaml:3: robots[1]: overlaps robots[0]");
   expectRefused("robots:\n  - {team: 0, player: 1, x: 1, y: 1}\n  - {team: 1, player: 1, x: 1.2, y: 1}\n",
                 "s.yaml:3: robots[1]: overlaps robots[0]");
-  EXPECT_EQ(errorOf("robots:\n  - {team: 0, player: 1, x: 1, y: 1}\n  - {team: 1, player: 1, x: 1.4, y: 1}\n"), "");
+  EXPECT_EQ(fieldCheckedError("robots:\n  - {team: 0, player: 1, x: 1, y: 1}\n  - {team: 1, player: 1, x: 1.4, y: 1}\n"), "");
 }
 
 TEST(ScenarioHardening, OffCarpetAndInsidePostAreRefused) {
   expectRefused("robots:\n  - {team: 0, player: 1, x: 5.3, y: 0}\n", "s.yaml:2: robots[0] at (5.3");
   expectRefused("robots:\n  - {team: 0, player: 1, x: 49, y: 0}\n", "s.yaml:2: robots[0]");
   expectRefused("robots:\n  - {team: 0, player: 1, x: 4.5, y: -0.8}\n", "s.yaml:2: robots[0]");
-  EXPECT_NE(errorOf("robots:\n  - {team: 0, player: 1, x: 4.5, y: -0.8}\n").find("goal post"), std::string::npos);
+  EXPECT_NE(fieldCheckedError("robots:\n  - {team: 0, player: 1, x: 4.5, y: -0.8}\n").find("goal post"), std::string::npos);
   expectRefused(std::string("ball: {x: -4.5, y: 0.8}\n") + kOneRobot, "s.yaml:1: ball");
   expectRefused(std::string("ball: {x: 0, y: 3.8}\n") + kOneRobot, "s.yaml:1: ball");
   expectRefused("robots:\n  - {team: 0, player: 1, x: 1e308, y: 0}\n", "s.yaml:2: robots[0].x:");
@@ -60,7 +61,7 @@ TEST(ScenarioHardening, ThetaSpeedsAndPushesInRange) {
 TEST(ScenarioHardening, DurationsMustRunAtLeastOneTickAndEnd) {
   for (const char* d : {"0.001", ".inf", "9e16", "1e12", "0", "-1", ".nan"})
     expectRefused(std::string("duration: ") + d + "\n" + kOneRobot, "s.yaml:1: duration:");
-  EXPECT_EQ(errorOf(std::string("duration: 0.01\n") + kOneRobot), "");
+  EXPECT_EQ(fieldCheckedError(std::string("duration: 0.01\n") + kOneRobot), "");
 }
 
 // The seed is read as text by the one seed reader (common/config/Seed.hpp):
@@ -130,12 +131,12 @@ TEST(ScenarioHardening, OversizeAndBinaryFilesAreRefusedWithTheirLine) {
 // 34 item 5): a robot's required team (it was "missing" at the robot's first
 // line), a required key of a timed action, and an optional key.
 TEST(ScenarioHardening, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
-  EXPECT_EQ(errorOf("robots:\n  - player: 1\n    taem: 0\n"),
+  EXPECT_EQ(fieldCheckedError("robots:\n  - player: 1\n    taem: 0\n"),
             "s.yaml:3: unknown key 'taem' in robots[0] (did you mean team? a required key, missing)");
-  EXPECT_EQ(errorOf("robots:\n  - team: 0\n    player: 1\n    actions:\n      - {time: 1, action: stand}\n"
+  EXPECT_EQ(fieldCheckedError("robots:\n  - team: 0\n    player: 1\n    actions:\n      - {time: 1, action: stand}\n"
                     "      - {t: 2, action: stand}\n"),
             "s.yaml:5: robots[0].actions[0].t: missing required key");  // 1 letter: no guess
-  const std::string opt = errorOf("duraton: 5\nrobots:\n  - {team: 0, player: 1}\n");
+  const std::string opt = fieldCheckedError("duraton: 5\nrobots:\n  - {team: 0, player: 1}\n");
   EXPECT_EQ(opt.rfind("s.yaml:1: unknown key 'duraton' in <document> (did you mean duration?); expected one of ", 0), 0u)
       << opt;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sim/runner/Scenario.hpp"
+#include "tests/runner/RunnerTestUtil.hpp"
 #include "sim/world/World.hpp"
 
 using simswift::ConfigError;
@@ -16,7 +17,7 @@ using simswift::runner::Scenario;
 
 namespace {
 
-const std::string kOneRobot = "robots:\n  - {team: 0, player: 1, x: -1, y: 0}\n";
+using runnertest::kOneRobot;
 
 // The physics block on line 2 (each key on its own line below it).
 Scenario withPhysics(const std::string& keys) {

@@ -12,7 +12,7 @@ namespace {
 
 using namespace simswift::scenario_tests;
 
-const std::string kSource = std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/tests/t.yaml";
+const std::string kTestFilePath = std::string(SIMSWIFT_SOURCE_DIR) + "/scenarios/tests/t.yaml";
 
 std::string file(const std::string& tests, const std::string& head = "name: t\nseed: 3\n") {
   return head + "tests:\n" + tests;
@@ -31,15 +31,15 @@ const std::string kOne =
     "    fuzz: {robots: {x: 0.2, y: [0.0, 0.3], theta: 0.1}, ball: {x: 0.1, y: 0.1}}\n"
     "    pass: {never: {fallen: any}}\n";
 
-std::string errorOf(const std::string& text) {
-  return simswift::testing::configError([&] { TestFile::parse(text, kSource); });
+std::string testFileError(const std::string& text) {
+  return simswift::testing::configError([&] { TestFile::parse(text, kTestFilePath); });
 }
 
 TEST(TestFile, ReadsATestAndItsDefaults) {
   const TestFile f = TestFile::parse(file(kOne + "  - name: second\n    scenario: {robots: [{team: 19, player: 3}]}\n"
                                                  "    pass: {eventually: {time: {at_least: 1}}}\n",
                                           "name: t\nseed: 3\ndefaults: {seeds: 7, required: 0.5, time_limit: 9}\n"),
-                                     kSource);
+                                     kTestFilePath);
   ASSERT_EQ(f.tests.size(), 2u);
   EXPECT_EQ(f.tests[0].seeds, 5);
   EXPECT_EQ(f.tests[0].short_seeds, 2);
@@ -57,35 +57,35 @@ TEST(TestFile, ReadsATestAndItsDefaults) {
 }
 
 TEST(TestFile, ErrorsNameTheLineAndKey) {
-  EXPECT_NE(errorOf(file(kOne + kOne)).find("t.yaml:15: tests[1].name: a second test named walk"), std::string::npos)
-      << errorOf(file(kOne + kOne));
+  EXPECT_NE(testFileError(file(kOne + kOne)).find("t.yaml:15: tests[1].name: a second test named walk"), std::string::npos)
+      << testFileError(file(kOne + kOne));
   std::string typo = kOne;
   typo.replace(typo.find("seeds: 5"), 8, "sedes: 5");
-  const std::string e = errorOf(file(typo));
+  const std::string e = testFileError(file(typo));
   EXPECT_NE(e.find("t.yaml:5"), std::string::npos) << e;
   EXPECT_NE(e.find("did you mean seeds"), std::string::npos) << e;
   std::string bad_robot = kOne;
   bad_robot.replace(bad_robot.find("player: 2"), 9, "player: 9");
-  EXPECT_NE(errorOf(file(bad_robot)).find("tests[0].scenario.robots[0].player"), std::string::npos)
-      << errorOf(file(bad_robot));
-  EXPECT_NE(errorOf(file("  - name: x\n    pass: {never: {fallen: 0}}\n")).find("tests[0]"), std::string::npos);
-  EXPECT_NE(errorOf("name: t\ntests: []\n").find("needs at least one test"), std::string::npos);
+  EXPECT_NE(testFileError(file(bad_robot)).find("tests[0].scenario.robots[0].player"), std::string::npos)
+      << testFileError(file(bad_robot));
+  EXPECT_NE(testFileError(file("  - name: x\n    pass: {never: {fallen: 0}}\n")).find("tests[0]"), std::string::npos);
+  EXPECT_NE(testFileError("name: t\ntests: []\n").find("needs at least one test"), std::string::npos);
   std::string required = kOne;
   required.replace(required.find("required: 0.3"), 13, "required: 1.5");
-  EXPECT_NE(errorOf(file(required)).find("t.yaml:8: tests[0].required"), std::string::npos) << errorOf(file(required));
+  EXPECT_NE(testFileError(file(required)).find("t.yaml:8: tests[0].required"), std::string::npos) << testFileError(file(required));
 }
 
 TEST(TestFile, ARequiredRateItsSeedsCannotConfirmIsRefused) {
   // 2 short seeds: 2/2 passes give a lower bound of 0.342.
   std::string t = kOne;
   t.replace(t.find("required: 0.3"), 13, "required: 0.5");
-  const std::string e = errorOf(file(t));
+  const std::string e = testFileError(file(t));
   EXPECT_NE(e.find("t.yaml:8: tests[0].required: with 2 seeds even 2/2 passes give a 95 % lower bound of 0.342"),
             std::string::npos)
       << e;
   EXPECT_NE(e.find("use at least 4 seeds in short:"), std::string::npos) << e;  // 4/4: 0.51
   t.replace(t.find("required: 0.5"), 13, "required: 1.0");
-  EXPECT_NE(errorOf(file(t)).find("a rate of 1 can never be confirmed"), std::string::npos);
+  EXPECT_NE(testFileError(file(t)).find("a rate of 1 can never be confirmed"), std::string::npos);
 }
 
 // The advice names the least seed count the check accepts (issue 45, item
@@ -99,23 +99,23 @@ TEST(TestFile, TheAdvisedSeedCountIsTheLeastTheCheckAccepts) {
     t.replace(t.find("required: 0.3"), 13, "required: 0.95");
     return file(t);
   };
-  const std::string e = errorOf(withSeeds(20));
+  const std::string e = testFileError(withSeeds(20));
   EXPECT_NE(e.find("t.yaml:7: tests[0].required: with 20 seeds even 20/20 passes"), std::string::npos) << e;
   EXPECT_NE(e.find("use at least 73 seeds or a lower rate"), std::string::npos) << e;
-  EXPECT_EQ(errorOf(withSeeds(73)), "");
-  EXPECT_NE(errorOf(withSeeds(72)).find("use at least 73 seeds"), std::string::npos) << errorOf(withSeeds(72));
+  EXPECT_EQ(testFileError(withSeeds(73)), "");
+  EXPECT_NE(testFileError(withSeeds(72)).find("use at least 73 seeds"), std::string::npos) << testFileError(withSeeds(72));
   // A rate no allowed count confirms (0.99999 needs 384,142) says so.
   std::string t = kOne;
   t.replace(t.find("required: 0.3"), 13, "required: 0.99999");
-  EXPECT_NE(errorOf(file(t)).find("no seed count up to 100000 can: use a lower rate"), std::string::npos)
-      << errorOf(file(t));
+  EXPECT_NE(testFileError(file(t)).find("no seed count up to 100000 can: use a lower rate"), std::string::npos)
+      << testFileError(file(t));
 }
 
 TEST(TestFile, AFuzzListLongerThanTheRobots) {
   std::string t = kOne;
   const std::string fuzz = "fuzz: {robots: {x: 0.2, y: [0.0, 0.3], theta: 0.1}";
   t.replace(t.find(fuzz), fuzz.size(), "fuzz: {robots: [{x: 0.1}, {x: 0.1}]");
-  const std::string e = errorOf(file(t));
+  const std::string e = testFileError(file(t));
   EXPECT_NE(e.find("tests[0].fuzz.robots: lists 2 robots; the scenario has 1"), std::string::npos) << e;
 }
 
@@ -126,15 +126,15 @@ TEST(TestFile, SeedsDependOnTheTestsNameAndRunOnly) {
   EXPECT_NE(runSeed(3, "walk", 4), runSeed(4, "walk", 4));
   EXPECT_LT(runSeed(3, "walk", 4), 2147483647u);  // `simswift run --seed` takes it
   // Adding a test before it does not move its seeds.
-  const TestFile one = TestFile::parse(file(kOne), kSource);
+  const TestFile one = TestFile::parse(file(kOne), kTestFilePath);
   std::string other = kOne;
   other.replace(other.find("name: walk"), 10, "name: othr");
-  const TestFile two = TestFile::parse(file(other + kOne), kSource);
+  const TestFile two = TestFile::parse(file(other + kOne), kTestFilePath);
   EXPECT_EQ(runSpec(one, false, 2, 0, false).seed, runSpec(two, false, 7, 0, false).seed);
 }
 
 TEST(TestFile, FuzzStaysInItsRangesAndIsAFunctionOfTheSeed) {
-  const TestFile f = TestFile::parse(file(kOne), kSource);
+  const TestFile f = TestFile::parse(file(kOne), kTestFilePath);
   const ScenarioTest& t = f.tests[0];
   double min_y = 1, max_y = -1;
   for (uint64_t seed = 1; seed <= 200; ++seed) {
@@ -155,7 +155,7 @@ TEST(TestFile, FuzzStaysInItsRangesAndIsAFunctionOfTheSeed) {
 TEST(TestFile, AFuzzOffTheCarpetIsRefusedBeforeAnyRun) {
   std::string t = kOne;
   t.replace(t.find("x: -1.0, y: 0.0"), 15, "x: -1.0, y: 3.5");
-  const TestFile f = TestFile::parse(file(t), kSource);
+  const TestFile f = TestFile::parse(file(t), kTestFilePath);
   const std::string e = simswift::testing::configError([&] { checkPlacements(f, false, 0, false); });
   EXPECT_NE(e.find("t.yaml:4: tests[0] (walk), run "), std::string::npos) << e;
   EXPECT_NE(e.find("off the carpet"), std::string::npos) << e;
@@ -163,14 +163,14 @@ TEST(TestFile, AFuzzOffTheCarpetIsRefusedBeforeAnyRun) {
 
 TEST(TestFile, AScenarioFileByName) {
   const TestFile f = TestFile::parse(
-      file("  - name: stand\n    scenario: ../stand_one.yaml\n    pass: {never: {fallen: any}}\n"), kSource);
+      file("  - name: stand\n    scenario: ../stand_one.yaml\n    pass: {never: {fallen: any}}\n"), kTestFilePath);
   EXPECT_EQ(f.tests[0].scenario.robots.size(), 1u);
-  const std::string e = errorOf(file("  - name: stand\n    scenario: ../nothing.yaml\n    pass: {never: {fallen: any}}\n"));
+  const std::string e = testFileError(file("  - name: stand\n    scenario: ../nothing.yaml\n    pass: {never: {fallen: any}}\n"));
   EXPECT_NE(e.find("t.yaml:5: tests[0].scenario: no scenario file"), std::string::npos) << e;
 }
 
 TEST(TestFile, ABaselineComparesTheSameMeasurementWhateverTheProgram) {
-  const TestFile f = TestFile::parse(file(kOne), kSource);
+  const TestFile f = TestFile::parse(file(kOne), kTestFilePath);
   // Another program (behaviour, program), other seed counts and rate: the same measurement.
   std::string other = kOne;
   other.replace(other.find("theta: 0.0}"), 11, "theta: 0.0, behaviour: striker, program: builtin}");
@@ -212,10 +212,10 @@ TEST(ResultsRow, RoundTrips) {
 // A test file's seed is read by the one seed reader: every 64-bit value
 // exactly, anything else refused at seed: with the range.
 TEST(TestFileSeed, TakesAll64BitsAndNothingElse) {
-  EXPECT_EQ(TestFile::parse(file(kOne, "name: t\nseed: 18446744073709551615\n"), kSource).seed,
+  EXPECT_EQ(TestFile::parse(file(kOne, "name: t\nseed: 18446744073709551615\n"), kTestFilePath).seed,
             18446744073709551615ull);
   for (const char* bad : {"1.5", "-1", "18446744073709551616"}) {
-    const std::string err = errorOf(file(kOne, "name: t\nseed: " + std::string(bad) + "\n"));
+    const std::string err = testFileError(file(kOne, "name: t\nseed: " + std::string(bad) + "\n"));
     EXPECT_NE(err.find("t.yaml:2: seed: must be a whole number in [0, 18446744073709551615]"), std::string::npos)
         << bad << ": " << err;
   }

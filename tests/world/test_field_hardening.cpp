@@ -14,14 +14,14 @@ using simswift::FieldConfig;
 
 namespace {
 
-std::string errorOf(const std::string& yaml) {
+std::string fieldError(const std::string& yaml) {
   return simswift::testing::configError([&] { FieldConfig::parseYaml(yaml, "f.yaml"); });
 }
 
 }  // namespace
 
 TEST(FieldHardening, ShortPostIsRefusedWithItsLine) {
-  const std::string err = errorOf("field:\n  goal:\n    post_diameter: 0.1\n    post_height: 0.04\n");
+  const std::string err = fieldError("field:\n  goal:\n    post_diameter: 0.1\n    post_height: 0.04\n");
   EXPECT_EQ(err.rfind("f.yaml:4: field.goal.post_height:", 0), 0u) << err;
   EXPECT_NE(err.find("post_diameter"), std::string::npos) << err;
 }
@@ -44,7 +44,7 @@ TEST(FieldHardening, AbsurdDimensionsAreRefused) {
       {"field:\n  circles:\n    - {centre: [0, 0], radius: 1e9}\n", "f.yaml:3: field.circles[0].radius:"},
   };
   for (const Case& c : cases) {
-    const std::string err = errorOf(c.yaml);
+    const std::string err = fieldError(c.yaml);
     EXPECT_EQ(err.rfind(c.prefix, 0), 0u) << c.yaml << " -> " << err;
   }
 }
@@ -69,10 +69,10 @@ TEST(FieldHardening, DirectoryIsNotAFieldFile) {
 // 34 item 5): the required field: map (it was "missing" at the document's
 // first line), an optional key, and a line's required from: in a list.
 TEST(FieldHardening, MisspeltKeysAreNamedAtTheirLineWithTheNearestKey) {
-  EXPECT_EQ(errorOf("# a field\nfeild:\n  length: 9.0\n"),
+  EXPECT_EQ(fieldError("# a field\nfeild:\n  length: 9.0\n"),
             "f.yaml:2: unknown key 'feild' in <document> (did you mean field? a required key, missing)");
-  const std::string opt = errorOf("field:\n  length: 9.0\n  widht: 6.0\n");
+  const std::string opt = fieldError("field:\n  length: 9.0\n  widht: 6.0\n");
   EXPECT_EQ(opt.rfind("f.yaml:3: unknown key 'widht' in field (did you mean width?); expected one of ", 0), 0u) << opt;
-  EXPECT_EQ(errorOf("field:\n  lines:\n    - {name: b, From: [0, 0], to: [0, 1]}\n"),
+  EXPECT_EQ(fieldError("field:\n  lines:\n    - {name: b, From: [0, 0], to: [0, 1]}\n"),
             "f.yaml:3: unknown key 'From' in field.lines[0] (did you mean from? a required key, missing)");
 }

@@ -8,16 +8,13 @@
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/runner/FallDetector.hpp"
 #include "sim/world/World.hpp"
+#include "tests/support/NaoV5Model.hpp"
 
 using namespace simswift;
 
 namespace {
 
-std::shared_ptr<const RobotModel> naoModel() {
-  static auto model = std::make_shared<const RobotModel>(
-      RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
-  return model;
-}
+using simswift::testing::naoV5Model;
 
 // The robot program's standing posture (agent/program/Postures.hpp), model joint order.
 std::vector<double> standingPosture(const RobotModel& m) {
@@ -25,7 +22,7 @@ std::vector<double> standingPosture(const RobotModel& m) {
 }
 
 int addStandingRobot(World& w, double x, double y, double theta) {
-  auto model = naoModel();
+  auto model = naoV5Model();
   const auto q = standingPosture(*model);
   const int i = w.addRobot(model, x, y, theta, q);
   w.robot(i).holdPosture(q);
@@ -78,7 +75,7 @@ TEST(RobotWorld, FootContactsCarryTheWeight) {
     EXPECT_NEAR(c.position.z(), 0.0, 0.003);
     total += c.force;
   }
-  const double weight = naoModel()->totalMass() * 9.81;
+  const double weight = naoV5Model()->totalMass() * 9.81;
   EXPECT_NEAR(total.z(), weight, 0.05 * weight);
   EXPECT_LT(std::hypot(total.x(), total.y()), 0.05 * weight);
 }

@@ -12,18 +12,16 @@
 #include "agent/program/Postures.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/world/World.hpp"
+#include "tests/support/NaoV5Model.hpp"
 
 using namespace simswift;
 
 namespace {
 
-std::shared_ptr<const RobotModel> naoModel() {
-  static auto model = std::make_shared<const RobotModel>(RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
-  return model;
-}
+using simswift::testing::naoV5Model;
 
 int addStandingRobot(World& w, double x, double y) {
-  auto model = naoModel();
+  auto model = naoV5Model();
   const auto q = simswift::NaoBinding(*model).posture(agent::program::postureAngles(agent::program::Posture::Stand));
   const int i = w.addRobot(model, x, y, 0.0, q);
   w.robot(i).holdPosture(q);

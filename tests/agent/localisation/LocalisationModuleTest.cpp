@@ -13,14 +13,14 @@
 #include "agent/localisation/LocalisationModule.hpp"
 
 namespace bb = agent::blackboard;
-namespace al = agent::localisation;
+namespace localisation = agent::localisation;
 
 namespace {
 struct Game {
   bb::Blackboard board;
   agent::framework::ModuleSchedule schedule;  // the module alone: the test writes its inputs
-  al::LocalisationModule& module = static_cast<al::LocalisationModule&>(
-      schedule.add(agent::framework::ThreadId::Perception, std::make_unique<al::LocalisationModule>()));
+  localisation::LocalisationModule& module = static_cast<localisation::LocalisationModule&>(
+      schedule.add(agent::framework::ThreadId::Perception, std::make_unique<localisation::LocalisationModule>()));
   int64_t frame = 0;
   // One frame with no observations in the given game state.
   void step(bb::GameStateId state, bool penalised) {
@@ -41,8 +41,8 @@ struct Game {
   double nearPenaltyReturn() const {
     const auto& ps = module.filter().particles();
     const double x0 = module.filter().config().penalty_return_x;
-    return double(std::count_if(ps.begin(), ps.end(), [&](const al::Particle& p) { return std::abs(p.x - x0) < 600; })) /
-           ps.size();
+    const auto near = [&](const localisation::Particle& p) { return std::abs(p.x - x0) < 600; };
+    return double(std::count_if(ps.begin(), ps.end(), near)) / ps.size();
   }
 };
 }  // namespace

@@ -10,7 +10,7 @@
 #include "tests/agent/localisation/SyntheticField.hpp"
 
 namespace bb = agent::blackboard;
-namespace al = agent::localisation;
+namespace localisation = agent::localisation;
 using loc_test::headingError;
 using loc_test::poseError;
 using loc_test::SyntheticRobot;
@@ -22,11 +22,11 @@ constexpr double kDeg = M_PI / 180;
 // Walks forward 200 mm/s while turning 0.15 rad/s, feeding the filter.
 struct Walk {
   SyntheticRobot robot;
-  al::Localiser loc;
+  localisation::Localiser loc;
   double t = 0;
   Walk(uint64_t seed, bb::FieldPose start) : robot(seed, start), loc(config(seed)) {}
-  static al::LocaliserConfig config(uint64_t seed) {
-    al::LocaliserConfig c;
+  static localisation::LocaliserConfig config(uint64_t seed) {
+    localisation::LocaliserConfig c;
     c.seed = seed * 7919 + 1;
     return c;
   }
@@ -100,10 +100,10 @@ TEST(Localiser, SymmetricPoseIsRejected) {
   // The field is point-symmetric: the mirror pose explains a frame exactly as
   // well as the true one...
   SyntheticRobot probe(99, {-2000, 2800, -M_PI / 2});
-  al::Localiser l;
+  localisation::Localiser l;
   const bb::VisionMeasurements v = probe.see(0);
   const bb::FieldPose t = probe.truth();
-  al::Particle truth{t.x, t.y, t.theta, 1}, mirror{-t.x, -t.y, al::wrapAngle(t.theta + M_PI), 1};
+  localisation::Particle truth{t.x, t.y, t.theta, 1}, mirror{-t.x, -t.y, localisation::wrapAngle(t.theta + M_PI), 1};
   ASSERT_GT(v.num_features, 3);
   EXPECT_NEAR(l.frameLikelihood(truth, v), l.frameLikelihood(mirror, v), 1e-9);
   // ...so only the starting side tells them apart. Entering from the
@@ -111,7 +111,7 @@ TEST(Localiser, SymmetricPoseIsRejected) {
   // must settle on the true pose, never the mirror.
   for (uint64_t seed = 1; seed <= 10; ++seed) {
     Walk w(seed, {-2000 + 150.0 * (seed % 10), (seed % 2 ? 2950.0 : -2950.0), (seed % 2 ? -M_PI / 2 : M_PI / 2)});
-    w.loc.reset(al::InitialPose::SidelineEntry);
+    w.loc.reset(localisation::InitialPose::SidelineEntry);
     int mirror_frames = 0;
     for (int i = 0; i < 300; ++i) {
       w.frames(1, 180, 0.1);
@@ -130,30 +130,30 @@ TEST(Localiser, SymmetricPoseIsRejected) {
 // test_halfway_entry.cpp (the synthetic detector here sees too much of the
 // field for the twins to be confused near the halfway line).
 TEST(Localiser, OwnHalfBoundGrowsWithTheDistanceWalked) {
-  const al::LocaliserConfig c;
-  al::Localiser l(c);
-  l.reset(al::InitialPose::SidelineEntry);
+  const localisation::LocaliserConfig c;
+  localisation::Localiser l(c);
+  l.reset(localisation::InitialPose::SidelineEntry);
   EXPECT_DOUBLE_EQ(l.ownHalfBound(), c.entry_x_max + c.bound_margin);
   const bb::VisionMeasurements none{};
   for (int i = 0; i < 10; ++i) l.update(60, 80, 0, none, i / 30.0);  // 100 mm per frame
   EXPECT_NEAR(l.ownHalfBound(), c.entry_x_max + c.bound_margin + c.bound_walk_factor * 1000, 1e-6);
-  l.reset(al::InitialPose::PenaltyReturn);
+  l.reset(localisation::InitialPose::PenaltyReturn);
   EXPECT_LT(l.ownHalfBound(), -1000);  // back at the own penalty mark's x
   for (int i = 0; i < 70; ++i) l.update(100, 0, 0, none, i / 30.0);  // 7 m: anywhere on the field now
-  EXPECT_EQ(l.ownHalfBound(), al::Localiser::kNoBound);
+  EXPECT_EQ(l.ownHalfBound(), localisation::Localiser::kNoBound);
   l.resetTo({2000, 0, 0});  // a known start: the team placed it, anywhere
-  EXPECT_EQ(l.ownHalfBound(), al::Localiser::kNoBound);
-  al::LocaliserConfig off;
+  EXPECT_EQ(l.ownHalfBound(), localisation::Localiser::kNoBound);
+  localisation::LocaliserConfig off;
   off.own_half_bound = false;
-  al::Localiser u(off);
-  u.reset(al::InitialPose::SidelineEntry);
-  EXPECT_EQ(u.ownHalfBound(), al::Localiser::kNoBound);
+  localisation::Localiser u(off);
+  u.reset(localisation::InitialPose::SidelineEntry);
+  EXPECT_EQ(u.ownHalfBound(), localisation::Localiser::kNoBound);
 }
 
 TEST(Localiser, SameSeedSameEstimate) {
   Walk a(3, {-2000, 0, 0}), b(3, {-2000, 0, 0});
-  a.loc.reset(al::InitialPose::OwnHalf);
-  b.loc.reset(al::InitialPose::OwnHalf);
+  a.loc.reset(localisation::InitialPose::OwnHalf);
+  b.loc.reset(localisation::InitialPose::OwnHalf);
   a.frames(60);
   b.frames(60);
   EXPECT_EQ(a.loc.estimate().pose.x, b.loc.estimate().pose.x);
@@ -161,23 +161,23 @@ TEST(Localiser, SameSeedSameEstimate) {
 }
 
 TEST(FieldModel, LandmarksAreThePointSymmetricSpl2017Set) {
-  const al::FieldModel f = al::FieldModel::spl2017();
+  const localisation::FieldModel f = localisation::FieldModel::spl2017();
   const auto lm = f.landmarks();
   int posts = 0, corners = 0;
-  for (const al::Landmark& l : lm) {
+  for (const localisation::Landmark& l : lm) {
     posts += l.kind == bb::FeatureKind::GoalPost;
     corners += l.kind == bb::FeatureKind::Corner;
     // Every landmark has its mirror twin of the same kind.
     bool twin = false;
-    for (const al::Landmark& m : lm)
+    for (const localisation::Landmark& m : lm)
       twin |= m.kind == l.kind && std::fabs(m.at.x + l.at.x) < 1e-9 && std::fabs(m.at.y + l.at.y) < 1e-9;
     EXPECT_TRUE(twin) << l.at.x << ", " << l.at.y;
   }
   EXPECT_EQ(posts, 4);
   EXPECT_EQ(corners, 16);  // 8 L, 6 T, 2 X
-  EXPECT_NEAR(al::distanceToLines({0, 750}, f.lines(), 750), 0, 1e-9);
-  EXPECT_NEAR(al::distanceToLines({-3900, 0}, f.lines(), 750), 0, 1e-9);
-  EXPECT_NEAR(al::distanceToLines({-2000, 2000}, f.lines(), 750), 1000, 1e-9);
+  EXPECT_NEAR(localisation::distanceToLines({0, 750}, f.lines(), 750), 0, 1e-9);
+  EXPECT_NEAR(localisation::distanceToLines({-3900, 0}, f.lines(), 750), 0, 1e-9);
+  EXPECT_NEAR(localisation::distanceToLines({-2000, 2000}, f.lines(), 750), 1000, 1e-9);
 }
 
 TEST(FieldModel, PreparedLinesGiveExactlyTheReferenceDistance) {
@@ -185,18 +185,19 @@ TEST(FieldModel, PreparedLinesGiveExactlyTheReferenceDistance) {
   // must give bit for bit what the plain scan gives, so the filter's output
   // does not change: points on a 10 mm grid over the field and beyond, plus
   // a slanted segment (none on the SPL field) to cover the general case.
-  const al::FieldModel f = al::FieldModel::spl2017();
-  std::vector<al::LineSegment> lines = f.lines();
-  const al::FieldLines spl(lines, f.centre_circle_radius);
+  const localisation::FieldModel f = localisation::FieldModel::spl2017();
+  std::vector<localisation::LineSegment> lines = f.lines();
+  const localisation::FieldLines spl(lines, f.centre_circle_radius);
   lines.push_back({{-1000, -500}, {2000, 1700}});
-  const al::FieldLines with_slant(lines, f.centre_circle_radius);
-  const std::vector<al::LineSegment> spl_lines = f.lines();
+  const localisation::FieldLines with_slant(lines, f.centre_circle_radius);
+  const std::vector<localisation::LineSegment> spl_lines = f.lines();
   int checked = 0;
   for (double x = -5600; x <= 5600; x += 10)
     for (double y = -3700; y <= 3700; y += 10) {
-      const al::Vec2 p{x + 0.37, y - 0.21};
-      ASSERT_EQ(spl.distance(p), al::distanceToLines(p, spl_lines, f.centre_circle_radius)) << x << ", " << y;
-      ASSERT_EQ(with_slant.distance(p), al::distanceToLines(p, lines, f.centre_circle_radius)) << x << ", " << y;
+      const localisation::Vec2 p{x + 0.37, y - 0.21};
+      ASSERT_EQ(spl.distance(p), localisation::distanceToLines(p, spl_lines, f.centre_circle_radius)) << x << ", " << y;
+      ASSERT_EQ(with_slant.distance(p), localisation::distanceToLines(p, lines, f.centre_circle_radius))
+          << x << ", " << y;
       ++checked;
     }
   EXPECT_GT(checked, 800000);

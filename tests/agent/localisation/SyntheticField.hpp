@@ -16,7 +16,7 @@
 namespace loc_test {
 
 namespace bb = agent::blackboard;
-namespace al = agent::localisation;
+namespace localisation = agent::localisation;
 
 struct DetectorSpec {
   double half_fov = 1.05;         // rad: the camera's 30 deg plus the head scanning +-30 deg
@@ -32,9 +32,9 @@ struct DetectorSpec {
 class SyntheticRobot {
  public:
   SyntheticRobot(uint64_t seed, bb::FieldPose start, DetectorSpec det = {})
-      : rng_(seed), truth_(start), det_(det), field_(al::FieldModel::spl2017()) {
+      : rng_(seed), truth_(start), det_(det), field_(localisation::FieldModel::spl2017()) {
     lm_ = field_.landmarks();
-    for (const al::LineSegment& s : field_.lines()) {
+    for (const localisation::LineSegment& s : field_.lines()) {
       const double len = std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
       for (double t = 0; t <= len; t += 200) {
         line_pts_.push_back({s.a.x + (s.b.x - s.a.x) * t / len, s.a.y + (s.b.y - s.a.y) * t / len});
@@ -51,7 +51,7 @@ class SyntheticRobot {
     const double mid = truth_.theta + 0.5 * t;
     truth_.x += std::cos(mid) * f - std::sin(mid) * l;
     truth_.y += std::sin(mid) * f + std::cos(mid) * l;
-    truth_.theta = al::wrapAngle(truth_.theta + t);
+    truth_.theta = localisation::wrapAngle(truth_.theta + t);
     *of = f * 1.05 + rng_.gaussian(1.0);
     *ol = l * 1.05 + rng_.gaussian(1.0);
     *ot = t * 1.05 + rng_.gaussian(0.002);
@@ -81,7 +81,7 @@ class SyntheticRobot {
       f.where.distance = static_cast<float>(d);
       f.where.heading = static_cast<float>(b);
     };
-    for (const al::Landmark& l : lm_) {
+    for (const localisation::Landmark& l : lm_) {
       double d, b;
       rel(l.at.x, l.at.y, &d, &b);
       if (d < det_.min_range || d > det_.max_point || std::fabs(b) > det_.half_fov) continue;
@@ -89,7 +89,7 @@ class SyntheticRobot {
       push(l.kind, d, b);
     }
     std::vector<std::pair<double, double>> seen;
-    for (const al::Vec2& p : line_pts_) {
+    for (const localisation::Vec2& p : line_pts_) {
       double d, b;
       rel(p.x, p.y, &d, &b);
       if (d < det_.min_range || d > det_.max_line || std::fabs(b) > det_.half_fov) continue;
@@ -108,14 +108,14 @@ class SyntheticRobot {
   common::random::Random rng_;
   bb::FieldPose truth_;
   DetectorSpec det_;
-  al::FieldModel field_;
-  std::vector<al::Landmark> lm_;
-  std::vector<al::Vec2> line_pts_;
+  localisation::FieldModel field_;
+  std::vector<localisation::Landmark> lm_;
+  std::vector<localisation::Vec2> line_pts_;
 };
 
 inline double poseError(const bb::FieldPose& a, const bb::FieldPose& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 inline double headingError(const bb::FieldPose& a, const bb::FieldPose& b) {
-  return std::fabs(al::wrapAngle(a.theta - b.theta));
+  return std::fabs(localisation::wrapAngle(a.theta - b.theta));
 }
 
 }  // namespace loc_test

@@ -11,10 +11,10 @@
 #include "agent/perception/BallTracker.hpp"
 
 namespace bb = agent::blackboard;
-namespace ap = agent::perception;
+namespace perception = agent::perception;
 
 namespace {
-constexpr double kDt = 1.0 / 30;
+constexpr double kFramePeriod = 1.0 / 30;
 
 // A ball rolling on the field from (x, y) at (vx, vy), slowing at `decel`
 // (mm, mm/s, mm/s^2). Returns its position at time t.
@@ -48,17 +48,17 @@ TEST(BallTracker, RollingBallPositionAndVelocityAfterOneSecond) {
   std::vector<double> pos_err, vel_err;
   for (uint64_t seed = 1; seed <= 20; ++seed) {
     common::random::Random rng(seed);
-    ap::BallTracker tr;
+    perception::BallTracker tr;
     bb::LocalisationEstimate pose;  // robot at the centre spot, facing +x
     bb::TeamInfo team;
     double t = 0;
-    for (int i = 0; i <= 30; ++i, t += kDt) {
+    for (int i = 0; i <= 30; ++i, t += kFramePeriod) {
       double x, y, vx, vy;
       ball.at(t, &x, &y, &vx, &vy);
       tr.update(t, 0, 0, 0, detection(x, y, rng), pose, team);
     }
     double x, y, vx, vy;
-    ball.at(t - kDt, &x, &y, &vx, &vy);
+    ball.at(t - kFramePeriod, &x, &y, &vx, &vy);
     const bb::BallEstimate& e = tr.estimate();
     ASSERT_TRUE(e.valid);
     EXPECT_EQ(e.time_since_seen, 0.0);
@@ -82,28 +82,28 @@ TEST(BallTracker, CompensatesTheRobotsOwnMotion) {
   // A still ball 1 m ahead; the robot turns left 90 degrees on the spot
   // without seeing it: the ball must end up 1 m to the robot's right.
   common::random::Random rng(5);
-  ap::BallTracker tr;
+  perception::BallTracker tr;
   bb::LocalisationEstimate pose;
   bb::TeamInfo team;
   double t = 0;
-  for (int i = 0; i < 30; ++i, t += kDt) tr.update(t, 0, 0, 0, detection(1000, 0, rng), pose, team);
-  for (int i = 0; i < 30; ++i, t += kDt) tr.update(t, 0, 0, (M_PI / 2) / 30, bb::VisionMeasurements{}, pose, team);
+  for (int i = 0; i < 30; ++i, t += kFramePeriod) tr.update(t, 0, 0, 0, detection(1000, 0, rng), pose, team);
+  for (int i = 0; i < 30; ++i, t += kFramePeriod) tr.update(t, 0, 0, (M_PI / 2) / 30, bb::VisionMeasurements{}, pose, team);
   EXPECT_NEAR(tr.estimate().rr_x, 0, 80);
   EXPECT_NEAR(tr.estimate().rr_y, -1000, 80);
-  EXPECT_NEAR(tr.estimate().time_since_seen, 1.0, 2 * kDt);
+  EXPECT_NEAR(tr.estimate().time_since_seen, 1.0, 2 * kFramePeriod);
   EXPECT_FALSE(tr.estimate().seen_this_frame);
 }
 
 TEST(BallTracker, LostAfterFiveSecondsThenTeamBall) {
   common::random::Random rng(7);
-  ap::BallTracker tr;
+  perception::BallTracker tr;
   bb::LocalisationEstimate pose;
   pose.pose = {-1000, 0, 0};
   bb::TeamInfo team;
   team.player_number = 2;
   double t = 0;
-  for (int i = 0; i < 10; ++i, t += kDt) tr.update(t, 0, 0, 0, detection(800, 0, rng), pose, team);
-  for (int i = 0; i < 160; ++i, t += kDt) tr.update(t, 0, 0, 0, bb::VisionMeasurements{}, pose, team);
+  for (int i = 0; i < 10; ++i, t += kFramePeriod) tr.update(t, 0, 0, 0, detection(800, 0, rng), pose, team);
+  for (int i = 0; i < 160; ++i, t += kFramePeriod) tr.update(t, 0, 0, 0, bb::VisionMeasurements{}, pose, team);
   EXPECT_FALSE(tr.estimate().valid);
   EXPECT_FALSE(tr.estimate().team_valid);
   // Player 3 reports a ball at (500, 1000) seen 0.5 s before sending; a

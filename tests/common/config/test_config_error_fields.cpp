@@ -14,7 +14,7 @@ using common::config::YamlReader;
 namespace {
 
 // The error reading `text` as {robots: [{team: <number in [0, 99]>}]} throws.
-ConfigError errorOf(const std::string& text, const std::string& file) {
+ConfigError teamListError(const std::string& text, const std::string& file) {
   try {
     const YAML::Node root = YamlReader::parse(text, file);
     YamlReader top(root, file);
@@ -46,7 +46,7 @@ TEST(ConfigErrorFields, TheMessageIsComposedFromTheParts) {
 }
 
 TEST(ConfigErrorFields, AValueOutOfRangeNamesItsFileLineAndKeyPath) {
-  const ConfigError e = errorOf("robots:\n  - {team: 5}\n  - {team: 300}\n", "teams.yaml");
+  const ConfigError e = teamListError("robots:\n  - {team: 5}\n  - {team: 300}\n", "teams.yaml");
   EXPECT_EQ(e.file, "teams.yaml");
   EXPECT_EQ(e.line, 3);
   EXPECT_EQ(e.key, "robots[1].team");
@@ -56,7 +56,7 @@ TEST(ConfigErrorFields, AValueOutOfRangeNamesItsFileLineAndKeyPath) {
 // A file name with ": 9: " in it is the file's, all of it (a reading of the
 // text would stop at the first such colon).
 TEST(ConfigErrorFields, AFileNameWithColonsAndDigitsIsKeptWhole) {
-  const ConfigError e = errorOf("robots:\n  - {team: -1}\n", "runs:9: a: b.yaml");
+  const ConfigError e = teamListError("robots:\n  - {team: -1}\n", "runs:9: a: b.yaml");
   EXPECT_EQ(e.file, "runs:9: a: b.yaml");
   EXPECT_EQ(e.line, 2);
   EXPECT_EQ(e.key, "robots[0].team");
@@ -65,12 +65,12 @@ TEST(ConfigErrorFields, AFileNameWithColonsAndDigitsIsKeptWhole) {
 // Errors of the text itself name no key, even when their message has a
 // colon of its own ("YAML syntax error: ...") or names the document.
 TEST(ConfigErrorFields, SyntaxAndDocumentErrorsHaveALineAndNoKey) {
-  const ConfigError syntax = errorOf("robots:\n  - {team: 5\n", "syntax.yaml");
+  const ConfigError syntax = teamListError("robots:\n  - {team: 5\n", "syntax.yaml");
   EXPECT_EQ(syntax.file, "syntax.yaml");
   EXPECT_EQ(syntax.line, 3);  // yaml-cpp's mark: the end, where the flow map is still open
   EXPECT_EQ(syntax.key, "");
   EXPECT_NE(std::string(syntax.what()).find(": YAML syntax error: "), std::string::npos) << syntax.what();
-  const ConfigError list = errorOf("- 1\n- 2\n", "list.yaml");
+  const ConfigError list = teamListError("- 1\n- 2\n", "list.yaml");
   EXPECT_EQ(list.file, "list.yaml");
   EXPECT_EQ(list.line, 1);
   EXPECT_EQ(list.key, "");

@@ -18,7 +18,7 @@ using common::config::YamlReader;
 
 namespace {
 
-std::string errorOf(const std::string& path, const std::string& kind) {
+std::string readFileError(const std::string& path, const std::string& kind) {
   try {
     YamlReader::readFile(path, kind);
   } catch (const ConfigError& e) {
@@ -40,17 +40,17 @@ TEST(ReadConfigFile, ReadsTheWholeText) {
 
 TEST(ReadConfigFile, ADirectoryOrAMissingFileIsNamedWithItsKind) {
   const std::string dir = ::testing::TempDir();
-  EXPECT_EQ(errorOf(dir, "scenario file"), dir + ":1: is a directory, not a scenario file");
-  EXPECT_EQ(errorOf(dir, "experiment file"), dir + ":1: is a directory, not an experiment file");
-  EXPECT_EQ(errorOf(dir, "file"), dir + ":1: is a directory, not a file");
-  EXPECT_EQ(errorOf("/no/such/s.yaml", "scenario file"), "/no/such/s.yaml:1: cannot open scenario file");
-  EXPECT_EQ(errorOf("/no/such/c.yaml", "file"), "/no/such/c.yaml:1: cannot open file");
+  EXPECT_EQ(readFileError(dir, "scenario file"), dir + ":1: is a directory, not a scenario file");
+  EXPECT_EQ(readFileError(dir, "experiment file"), dir + ":1: is a directory, not an experiment file");
+  EXPECT_EQ(readFileError(dir, "file"), dir + ":1: is a directory, not a file");
+  EXPECT_EQ(readFileError("/no/such/s.yaml", "scenario file"), "/no/such/s.yaml:1: cannot open scenario file");
+  EXPECT_EQ(readFileError("/no/such/c.yaml", "file"), "/no/such/c.yaml:1: cannot open file");
 }
 
 TEST(ReadConfigFile, AFileOverTheLimitIsRefused) {
   const std::string path = ::testing::TempDir() + "simswift_big_" + std::to_string(getpid()) + ".yaml";
   std::ofstream(path) << std::string(kMaxConfigBytes + 1, '#');
-  const std::string e = errorOf(path, "scenario file");
+  const std::string e = readFileError(path, "scenario file");
   EXPECT_EQ(e.rfind(path + ":1: " + std::to_string(kMaxConfigBytes + 1) + " bytes is more than", 0), 0u) << e;
   std::remove(path.c_str());
 }

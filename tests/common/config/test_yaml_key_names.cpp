@@ -13,7 +13,7 @@ using common::config::YamlReader;
 
 namespace {
 
-std::string errorOf(const std::string& text) {
+std::string nestedKeyError(const std::string& text) {
   return simswift::testing::configError([&] {
     const YAML::Node root = YamlReader::parse(text, "k.yaml");
     YamlReader top(root, "k.yaml");
@@ -27,12 +27,12 @@ std::string errorOf(const std::string& text) {
 }  // namespace
 
 TEST(YamlKeyNames, AListMapOrNullKeyIsRefusedAtItsLine) {
-  EXPECT_EQ(errorOf("m:\n  a: 1\n  ? [b]\n  : 2\n"), "k.yaml:3: m: a key must be a name, not a list (got [b])");
-  EXPECT_EQ(errorOf("m: {a: 1, ? {b: c}: 2}\n"), "k.yaml:1: m: a key must be a name, not a map (got {b: c})");
-  EXPECT_EQ(errorOf("m:\n  a: 1\n  ~: 2\n"), "k.yaml:3: m: a key must be a name, not null (got ~)");
+  EXPECT_EQ(nestedKeyError("m:\n  a: 1\n  ? [b]\n  : 2\n"), "k.yaml:3: m: a key must be a name, not a list (got [b])");
+  EXPECT_EQ(nestedKeyError("m: {a: 1, ? {b: c}: 2}\n"), "k.yaml:1: m: a key must be a name, not a map (got {b: c})");
+  EXPECT_EQ(nestedKeyError("m:\n  a: 1\n  ~: 2\n"), "k.yaml:3: m: a key must be a name, not null (got ~)");
   // At the document's top level.
-  EXPECT_EQ(errorOf("m: {a: 1}\n? [x]\n: 1\n"), "k.yaml:2: <document>: a key must be a name, not a list (got [x])");
-  EXPECT_EQ(errorOf("m: {a: 1}\n"), "");
+  EXPECT_EQ(nestedKeyError("m: {a: 1}\n? [x]\n: 1\n"), "k.yaml:2: <document>: a key must be a name, not a list (got [x])");
+  EXPECT_EQ(nestedKeyError("m: {a: 1}\n"), "");
 }
 
 TEST(YamlKeyNames, KeysListsTheMapsKeysWithTheirLines) {

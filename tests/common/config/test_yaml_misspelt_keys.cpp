@@ -17,7 +17,7 @@ namespace {
 
 // Reads `text` as a map with a required `required` number, then the
 // optional ones, then finish(); the error's message, or "".
-std::string errorOf(const std::string& text, const std::string& required) {
+std::string misspeltKeyError(const std::string& text, const std::string& required) {
   return simswift::testing::configError([&] {
     const YAML::Node root = YamlReader::parse(text, "r.yaml");
     YamlReader r(root, "r.yaml");
@@ -32,32 +32,32 @@ std::string errorOf(const std::string& text, const std::string& required) {
 
 TEST(YamlMisspeltKeys, ARequiredKeysNearMissIsNamedAtItsLine) {
   // Before issue 34: "r.yaml:1: trials_per_position: missing required key".
-  EXPECT_EQ(errorOf("count: 2\n\ntrials_per_positon: 1\n", "trials_per_position"),
+  EXPECT_EQ(misspeltKeyError("count: 2\n\ntrials_per_positon: 1\n", "trials_per_position"),
             "r.yaml:3: unknown key 'trials_per_positon' in <document> (did you mean trials_per_position? a required "
             "key, missing)");
   // Letter case, a swap, one letter gone or added, two edits in a long key.
   for (const char* typo : {"Trials_Per_Position", "trials_per_psoition", "trials_per_postion",
                            "trials_per_positionn", "trails_per_postion"})
-    EXPECT_EQ(errorOf(std::string("count: 2\n") + typo + ": 1\n", "trials_per_position").rfind(
+    EXPECT_EQ(misspeltKeyError(std::string("count: 2\n") + typo + ": 1\n", "trials_per_position").rfind(
                   "r.yaml:2: unknown key '" + std::string(typo) + "' in <document> (did you mean trials_per_position?",
                   0),
               0u)
         << typo;
   // A key the reader has already taken is no typo: count is count.
-  EXPECT_EQ(errorOf("count: 2\n", "counts"), "r.yaml:1: counts: missing required key");
+  EXPECT_EQ(misspeltKeyError("count: 2\n", "counts"), "r.yaml:1: counts: missing required key");
   // Short keys: x and y are both keys, so no guess; nor a different first
   // letter in keys of up to 7 letters (name / game).
-  EXPECT_EQ(errorOf("count: 2\ny: 1\n", "x"), "r.yaml:1: x: missing required key");
-  EXPECT_EQ(errorOf("count: 2\ngame: 1\n", "name"), "r.yaml:1: name: missing required key");
+  EXPECT_EQ(misspeltKeyError("count: 2\ny: 1\n", "x"), "r.yaml:1: x: missing required key");
+  EXPECT_EQ(misspeltKeyError("count: 2\ngame: 1\n", "name"), "r.yaml:1: name: missing required key");
   // Far from it: missing, as before.
-  EXPECT_EQ(errorOf("count: 2\ntrials: 1\n", "trials_per_position"),
+  EXPECT_EQ(misspeltKeyError("count: 2\ntrials: 1\n", "trials_per_position"),
             "r.yaml:1: trials_per_position: missing required key");
 }
 
 TEST(YamlMisspeltKeys, AnUnknownKeyNearAKnownOneGetsTheHint) {
-  EXPECT_EQ(errorOf("count: 2\nlimit: 1\nspaceing: 3\n", "limit"),
+  EXPECT_EQ(misspeltKeyError("count: 2\nlimit: 1\nspaceing: 3\n", "limit"),
             "r.yaml:3: unknown key 'spaceing' in <document> (did you mean spacing?); expected one of count, limit, "
             "spacing");
-  EXPECT_EQ(errorOf("count: 2\nlimit: 1\nwhatever: 3\n", "limit"),
+  EXPECT_EQ(misspeltKeyError("count: 2\nlimit: 1\nwhatever: 3\n", "limit"),
             "r.yaml:3: unknown key 'whatever' in <document>; expected one of count, limit, spacing");
 }
