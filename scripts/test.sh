@@ -77,9 +77,16 @@ heavy='MotionPhysics\.|ExternalExperimentFull\.|SimswiftTestHeavy\.'
 # benchmarks, no tools/ (run by hand, never by ctest); `all` is then the test
 # programs and what they start (simswift, simswift-agent, the libagent and
 # LoLA clients, libsimswift.so), so a program a new test needs is never left out.
+# Unity builds (CMAKE_UNITY_BUILD, CMake's batches of 8 files): the sanitizer
+# builds compile every unit a second and a third time, and a unity build
+# roughly halves that (the headers each batch shares are compiled once;
+# docs/testing.md, "Cost"). The Release build stays non-unity: it is the one
+# that catches a missing #include, which a batch would hide. File-local names
+# must therefore be unique within each target (a test helper two files
+# share goes in a test support header).
 san_cmake=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG"
            -DSIMSWIFT_CAMERAS=OFF -DSIMSWIFT_BENCH=OFF -DSIMSWIFT_TOOLS=OFF "${ccache_cmake[@]}"
-           -DSIMSWIFT_SANITIZE_DEBUG=-g1)
+           -DSIMSWIFT_SANITIZE_DEBUG=-g1 -DCMAKE_UNITY_BUILD=ON)
 # verify_asan_link_order=0: a launched program has libsimswift-shim.so
 # preloaded ahead of ASan's runtime (docs/shim.md); the shim is never
 # instrumented, so the order is harmless.
