@@ -14,30 +14,27 @@
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/sensors/SensorSuite.hpp"
 #include "sim/world/World.hpp"
+#include "tests/support/NaoV5Model.hpp"
 
 using namespace simswift;
 namespace ape = agent::perception;
 
 namespace {
-std::shared_ptr<const RobotModel> naoModel() {
-  static auto model =
-      std::make_shared<const RobotModel>(RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
-  return model;
-}
+using simswift::testing::naoV5Model;
 }  // namespace
 
 TEST(CameraMatrix, MatchesTheSimulatedCameraPose) {
   for (auto [yaw, pitch, knee_extra] : {std::tuple{0.0, 0.0, 0.0}, std::tuple{0.5, 0.25, 0.0},
                                         std::tuple{-0.8, -0.3, 0.15}}) {
     World world(FieldConfig::spl2017());
-    const RobotModel& m = *naoModel();
+    const RobotModel& m = *naoV5Model();
     std::vector<double> q = simswift::NaoBinding(m).posture(agent::program::postureAngles(agent::program::Posture::Stand));
     q[m.jointIndex("HeadYaw")] = yaw;
     q[m.jointIndex("HeadPitch")] = pitch;
     // Bend one knee a little more: the torso tilts and the feet differ.
     q[m.jointIndex("LKneePitch")] += knee_extra;
     q[m.jointIndex("LAnklePitch")] -= knee_extra / 2;
-    const int r = world.addRobot(naoModel(), -1.0, 0.5, 0.7, q);
+    const int r = world.addRobot(naoV5Model(), -1.0, 0.5, 0.7, q);
     world.robot(r).holdPosture(q, 1.0f);
     sensors::SensorConfig sc;
     sc.noise = false;

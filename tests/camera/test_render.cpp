@@ -51,7 +51,7 @@ TEST(Render, BallAppearsWhereTheCameraModelPutsIt) {
   const Case cases[] = {{kTop, 320, 300}, {kTop, 500, 400}, {kTop, 110, 350},
                         {kBottom, 320, 240}, {kBottom, 140, 90}, {kBottom, 530, 420}};
   for (const Case& c : cases) {
-    SCOPED_TRACE(testing::Message() << (c.cam == kTop ? "top" : "bottom") << " camera, target pixel (" << c.u
+    SCOPED_TRACE(::testing::Message() << (c.cam == kTop ? "top" : "bottom") << " camera, target pixel (" << c.u
                                     << ", " << c.v << ")");
     CameraView view;
     view.camera = CameraModel::naoCamera(standingHead(), c.cam);

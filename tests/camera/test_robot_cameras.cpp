@@ -14,6 +14,7 @@
 #include "sim/camera/Yuv.hpp"
 #include "sim/nao_model/NaoBinding.hpp"
 #include "sim/world/World.hpp"
+#include "tests/support/NaoV5Model.hpp"
 
 using namespace simswift;
 using namespace simswift::camera;
@@ -22,11 +23,7 @@ using common::libagent::CameraImages;
 
 namespace {
 
-std::shared_ptr<const RobotModel> naoModel() {
-  static auto model =
-      std::make_shared<const RobotModel>(RobotModel::loadUrdf(SIMSWIFT_SOURCE_DIR "/models/nao_v5.urdf"));
-  return model;
-}
+using simswift::testing::naoV5Model;
 
 // The robot program's standing posture (agent/program/Postures.hpp), model joint order.
 std::vector<double> standingPosture(const RobotModel& m) {
@@ -43,7 +40,7 @@ TEST(RobotCameras, BallRelativeToTheRobotAppearsAtTheExpectedPixel) {
   noDisplay();
   World world(FieldConfig{});  // no painted lines: only the ball is grey in its window
   const double theta = 0.3;
-  const int robot = world.addRobot(naoModel(), -1.0, 0.5, theta, standingPosture(*naoModel()));
+  const int robot = world.addRobot(naoV5Model(), -1.0, 0.5, theta, standingPosture(*naoV5Model()));
   RobotCamerasConfig cfg;
   cfg.scene.sky = {0, 0, 1};
   cfg.scene.draw_net = false;
@@ -54,7 +51,7 @@ TEST(RobotCameras, BallRelativeToTheRobotAppearsAtTheExpectedPixel) {
   struct Case { CameraId cam; double x, y; };
   for (const Case& c : {Case{kTop, 1.5, 0.2}, Case{kTop, 2.5, -0.4}, Case{kBottom, 0.45, 0.05},
                         Case{kBottom, 0.35, -0.12}}) {
-    SCOPED_TRACE(testing::Message() << (c.cam == kTop ? "top" : "bottom") << " camera, ball at (" << c.x << ", "
+    SCOPED_TRACE(::testing::Message() << (c.cam == kTop ? "top" : "bottom") << " camera, ball at (" << c.x << ", "
                                     << c.y << ") robot-relative");
     world.placeBall(-1.0 + c.x * std::cos(theta) - c.y * std::sin(theta),
                     0.5 + c.x * std::sin(theta) + c.y * std::cos(theta));
@@ -77,7 +74,7 @@ TEST(RobotCameras, BallRelativeToTheRobotAppearsAtTheExpectedPixel) {
 TEST(RobotCameras, AV6RendersThroughItsNarrowerLens) {
   noDisplay();
   World world(FieldConfig{});
-  const int robot = world.addRobot(naoModel(), -1.0, 0.0, 0.0, standingPosture(*naoModel()));
+  const int robot = world.addRobot(naoV5Model(), -1.0, 0.0, 0.0, standingPosture(*naoV5Model()));
   world.placeBall(-1.0 + 1.6, 0.3);  // 1.6 m ahead, 0.3 m to the left
   Blob seen[2];
   for (int k = 0; k < 2; ++k) {
@@ -107,12 +104,12 @@ TEST(RobotCameras, AV6RendersThroughItsNarrowerLens) {
 TEST(RobotCameras, EachCameraAtItsOwnResolutionSeesTheBallAtTheSamePlace) {
   noDisplay();
   World world(FieldConfig{});
-  const int robot = world.addRobot(naoModel(), -1.0, 0.0, 0.0, standingPosture(*naoModel()));
+  const int robot = world.addRobot(naoV5Model(), -1.0, 0.0, 0.0, standingPosture(*naoV5Model()));
   const common::libagent::ImageSize small{640, 480}, large{1280, 960};
   // Robot-relative ball positions (m) in view of each camera.
   struct Case { CameraId cam; double x, y; };
   for (const Case& c : {Case{kTop, 1.6, 0.3}, Case{kTop, 2.4, -0.5}, Case{kBottom, 0.4, 0.08}}) {
-    SCOPED_TRACE(testing::Message() << (c.cam == kTop ? "top" : "bottom") << " camera, ball at (" << c.x << ", "
+    SCOPED_TRACE(::testing::Message() << (c.cam == kTop ? "top" : "bottom") << " camera, ball at (" << c.x << ", "
                                     << c.y << ")");
     world.placeBall(-1.0 + c.x, c.y);
     Blob seen[2];  // at 640x480, at 1280x960
@@ -148,8 +145,8 @@ TEST(RobotCameras, IdenticalWorldsRenderIdenticalFramesAndYuvMatchesRgb) {
   uint64_t hashes[2][2];
   for (int run = 0; run < 2; ++run) {
     World world(FieldConfig::spl2017());
-    world.addRobot(naoModel(), 0, 0, 0, standingPosture(*naoModel()));
-    world.addRobot(naoModel(), 0.8, 0.1, M_PI, standingPosture(*naoModel()));
+    world.addRobot(naoV5Model(), 0, 0, 0, standingPosture(*naoV5Model()));
+    world.addRobot(naoV5Model(), 0.8, 0.1, M_PI, standingPosture(*naoV5Model()));
     world.placeBall(0.4, 0.05);
     for (int i = 0; i < 20; ++i) world.step();
     RobotCameras cams(world);
@@ -184,7 +181,7 @@ TEST(FrameDumper, WritesEveryNthFrameForBothCameras) {
   noDisplay();
   const std::string dir = freshDir("dump");
   World world(FieldConfig::spl2017());
-  world.addRobot(naoModel(), 0, 0, 0, standingPosture(*naoModel()));
+  world.addRobot(naoV5Model(), 0, 0, 0, standingPosture(*naoV5Model()));
   RobotCameras cams(world);
   FrameDumper dumper(dir, 3);
   auto images = std::make_unique<CameraImages>();
@@ -213,7 +210,7 @@ TEST(Overview, ShortRunGivesTheExpectedFramesAndVideo) {
   noDisplay();
   const std::string dir = freshDir("overview");
   World world(FieldConfig::spl2017());
-  world.addRobot(naoModel(), -1.0, 0.0, 0, standingPosture(*naoModel()));
+  world.addRobot(naoV5Model(), -1.0, 0.0, 0, standingPosture(*naoV5Model()));
   world.placeBall(0, 0);
   world.setBallVelocity({1.0, 0.3, 0});
   RobotCameras cams(world);
