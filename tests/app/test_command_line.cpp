@@ -5,6 +5,8 @@
 // seed reader's decimal rule (CLI11 alone reads 010 as octal 8).
 #include <gtest/gtest.h>
 
+#include <sys/mman.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -189,4 +191,24 @@ TEST(CommandLine, AttachPassesEverythingAfterTheDashesThrough) {
   if (r.output.find("mount namespace") != std::string::npos) GTEST_SKIP() << r.output;
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(r.output, "--help|--|--team|a b|-x|");
+}
+
+// A killed run leaves its robot's clock page behind, set up (its magic) and
+// naming a pid that is gone: `simswift attach` waits for a live run and
+// never starts the command on that page (a V5 robot: no socket to ask).
+TEST(CommandLine, AttachTakesNoClockPageAKilledRunLeft) {
+  const std::string tag = "t91p3";
+  const pid_t run = ::fork();
+  if (run == 0) {
+    new simswift::programs::ClockPage(common::clock::pageName(tag), 10'000'000, 0);  // never unlinked
+    ::_exit(0);
+  }
+  int status = 0;
+  ::waitpid(run, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  const ShellResult r = shell(kSimswift + " attach --team 91 --player 3 --wait 0.3 -- /bin/echo started");
+  ::shm_unlink(common::clock::pageName(tag).c_str());
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_EQ(r.output.find("started"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no run served robot t91p3"), std::string::npos) << r.output;
 }

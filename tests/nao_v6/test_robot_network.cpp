@@ -57,15 +57,15 @@ struct NetRun {
 // `simswift attach` (directly or under gdb) on an external robot.
 enum class Start { Launched, Attach, AttachUnderGdb };
 
-// `simswift attach --team 47 --player 2 -- <command>`, its output in `log`;
-// its exit status.
-pid_t startAttach(const std::vector<std::string>& command, const std::string& log) {
+// `simswift attach --team <team> --player 2 -- <command>`, its output in
+// `log`; its pid.
+pid_t startAttach(int team, const std::vector<std::string>& command, const std::string& log) {
   const pid_t pid = ::fork();
   if (pid == 0) {
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
-    std::vector<std::string> args = {std::string(SIMSWIFT_BINARY_DIR) + "/simswift", "attach", "--team", "47",
-                                     "--player", "2", "--"};
+    std::vector<std::string> args = {std::string(SIMSWIFT_BINARY_DIR) + "/simswift", "attach", "--team",
+                                     std::to_string(team), "--player", "2", "--"};
     args.insert(args.end(), command.begin(), command.end());
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
@@ -83,26 +83,28 @@ int waitExit(pid_t pid) {
 }
 
 // 2.4 s: GameController packets at 0, 0.5, ... 2.0 s; loss 0.
-NetRun runTeam(const std::string& name, double delay_ms, Start start = Start::Launched) {
+// Team `us` (47) with two robots and an opponent `us` - 1 that sends to
+// `us`'s port; each test its own teams (ctest runs tests side by side, and a
+// robot's socket is named by its team and player).
+NetRun runTeam(const std::string& name, double delay_ms, Start start = Start::Launched, int us = 47) {
   NetRun out;
   out.logs = "/tmp/simswift-test-net-" + std::to_string(getpid()) + "-" + name;
   std::filesystem::remove_all(out.logs);
+  const std::string team = std::to_string(us), them = std::to_string(us - 1);
+  const std::string p1 = "t" + team + "p1", p2 = "t" + team + "p2", opponent = "t" + them + "p1";
   std::ostringstream y;
   y << "duration: 2.4\nseed: 5\nprogram_logs: " << out.logs << "\n"
     << "game: {udp: on, version: 18, return_port: 0}\n"
     << "team_comms: {loss: 0, delay_ms: " << delay_ms << "}\n"
     << "robots:\n";
-  const char* robots[] = {"{team: 47, player: 1, x: -1, y: 1, lola: {}, program: {command: [\"" ,
-                          "{team: 47, player: 2, x: -1, y: -1, lola: {}, program: {command: [\"",
-                          "{team: 46, player: 1, x: 1, y: 0, lola: {}, program: {command: [\""};
-  const char* args[] = {"\", \"{team}\", \"{player}\"]}}", "\", \"{team}\", \"{player}\"]}}",
-                        "\", \"{team}\", \"{player}\", \"47\"]}}"};  // the opponent sends to team 47's port
-  for (int i = 0; i < 3; ++i) {
-    if (i == 1 && start != Start::Launched)
-      y << "  - {team: 47, player: 2, x: -1, y: -1, lola: {}, program: external}\n";
-    else
-      y << "  - " << robots[i] << kNetClient << args[i] << "\n";
-  }
+  const std::string client = "program: {command: [\"" + kNetClient + "\", \"{team}\", \"{player}\"";
+  y << "  - {team: " << team << ", player: 1, x: -1, y: 1, lola: {}, " << client << "]}}\n";
+  if (start == Start::Launched)
+    y << "  - {team: " << team << ", player: 2, x: -1, y: -1, lola: {}, " << client << "]}}\n";
+  else
+    y << "  - {team: " << team << ", player: 2, x: -1, y: -1, lola: {}, program: external}\n";
+  // The opponent sends to the team's port.
+  y << "  - {team: " << them << ", player: 1, x: 1, y: 0, lola: {}, " << client << ", \"" << team << "\"]}}\n";
   Runner r(Scenario::parse(y.str(), out.logs + ".yaml"));
   simswift::runner::RunOptions o;
   o.progress = false;
@@ -113,25 +115,25 @@ NetRun runTeam(const std::string& name, double delay_ms, Start start = Start::La
     if (start == Start::Attach) {
       // First a shell in the view, what a program checks of its robot (it
       // is the first process there after the view's init: pid 2).
-      const pid_t sh = startAttach({"/bin/sh", "-c",
-                                    "echo pid $$; cat /sys/class/hwmon/hwmon1/temp2_input; "
-                                    "test -S /tmp/robocup && echo robocup; test -d /home/nao && echo home; "
-                                    "grep -o wlan0 /proc/net/dev; touch /tmp/mark"},
-                                   out.logs + "/t47p2.sh.log");
+      const pid_t sh = startAttach(us, {"/bin/sh", "-c",
+                                        "echo pid $$; cat /sys/class/hwmon/hwmon1/temp2_input; "
+                                        "test -S /tmp/robocup && echo robocup; test -d /home/nao && echo home; "
+                                        "grep -o wlan0 /proc/net/dev; touch /tmp/mark"},
+                                   out.logs + "/" + p2 + ".sh.log");
       out.attach_exit.push_back(waitExit(sh));
     }
-    std::vector<std::string> command = {kNetClient, "47", "2"};
+    std::vector<std::string> command = {kNetClient, team, "2"};
     if (start == Start::AttachUnderGdb)
       // SIGSYS: the shim's trap of raw clock syscalls (docs/shim.md; an
       // ASan runtime makes them), passed on as the docs tell gdb users.
       command.insert(command.begin(), {"/usr/bin/gdb", "-batch", "-nx", "-ex", "handle SIGSYS nostop noprint pass",
                                        "-ex", "run", "--args"});
-    const pid_t program = startAttach(command, out.logs + "/t47p2.log");
+    const pid_t program = startAttach(us, command, out.logs + "/" + p2 + ".log");
     out.hash = r.run(o).hash;
     out.attach_exit.push_back(waitExit(program));
   }
   out.gc_sent = r.gameControllerUdp()->sent();
-  for (const char* tag : {"t47p1", "t47p2", "t46p1"}) out.seen[tag] = readFile(out.logs + "/" + tag + ".log");
+  for (const std::string& tag : {p1, p2, opponent}) out.seen[tag] = readFile(out.logs + "/" + tag + ".log");
   return out;
 }
 
@@ -242,21 +244,22 @@ TEST(RobotNetwork, AProgramStartedWithAttachMeetsWhatTheLaunchedOneMeets) {
     }
     return out;
   };
-  const NetRun launched = runTeam("launched", 0);
-  const NetRun attached = runTeam("attached", 0, Start::Attach);
-  EXPECT_EQ(attached.attach_exit, (std::vector<int>{0, 0})) << readFile(attached.logs + "/t47p2.sh.log")
-                                                            << readFile(attached.logs + "/t47p2.log");
-  EXPECT_EQ(readFile(attached.logs + "/t47p2.sh.log"), "pid 2\n50000\nrobocup\nhome\nwlan0\n");
-  EXPECT_TRUE(std::filesystem::exists(attached.logs + "/t47p2.view/tmp/mark"));
-  for (const char* tag : {"t47p1", "t47p2", "t46p1"}) {
+  // Teams 37 and 36: not the other test's, which ctest may run beside it.
+  const NetRun launched = runTeam("launched", 0, Start::Launched, 37);
+  const NetRun attached = runTeam("attached", 0, Start::Attach, 37);
+  EXPECT_EQ(attached.attach_exit, (std::vector<int>{0, 0})) << readFile(attached.logs + "/t37p2.sh.log")
+                                                            << readFile(attached.logs + "/t37p2.log");
+  EXPECT_EQ(readFile(attached.logs + "/t37p2.sh.log"), "pid 2\n50000\nrobocup\nhome\nwlan0\n");
+  EXPECT_TRUE(std::filesystem::exists(attached.logs + "/t37p2.view/tmp/mark"));
+  for (const char* tag : {"t37p1", "t37p2", "t36p1"}) {
     EXPECT_FALSE(said(launched, tag).empty()) << tag;
     EXPECT_EQ(said(attached, tag), said(launched, tag)) << tag << ": " << attached.seen.at(tag);
   }
   EXPECT_EQ(attached.hash, launched.hash);
   if (::access("/usr/bin/gdb", X_OK) != 0) GTEST_SKIP() << "no /usr/bin/gdb";
-  const NetRun gdb = runTeam("gdb", 0, Start::AttachUnderGdb);
-  EXPECT_EQ(gdb.attach_exit, std::vector<int>{0}) << gdb.seen.at("t47p2");
-  EXPECT_EQ(said(gdb, "t47p2"), said(launched, "t47p2")) << gdb.seen.at("t47p2");
+  const NetRun gdb = runTeam("gdb", 0, Start::AttachUnderGdb, 37);
+  EXPECT_EQ(gdb.attach_exit, std::vector<int>{0}) << gdb.seen.at("t37p2");
+  EXPECT_EQ(said(gdb, "t37p2"), said(launched, "t37p2")) << gdb.seen.at("t37p2");
   EXPECT_EQ(gdb.hash, launched.hash);
   for (const NetRun* r : {&launched, &attached, &gdb}) std::filesystem::remove_all(r->logs);
 }

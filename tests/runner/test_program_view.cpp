@@ -43,9 +43,15 @@ std::string viewTempDir(const std::string& tag) {
 // The pids of processes whose command line holds `marker`.
 int processesNamed(const std::string& marker) {
   int n = 0;
-  for (const auto& e : fs::directory_iterator("/proc")) {
-    std::ifstream in(e.path() / "cmdline");
-    std::string cmd((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator("/proc", ec)) {
+    // A process may end while it is read (ESRCH): it is then not counted.
+    const int fd = open((e.path() / "cmdline").c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) continue;
+    std::string cmd;
+    char buf[4096];
+    for (ssize_t got; (got = read(fd, buf, sizeof buf)) > 0;) cmd.append(buf, static_cast<size_t>(got));
+    close(fd);
     if (cmd.find(marker) != std::string::npos) ++n;
   }
   return n;
@@ -76,7 +82,7 @@ TEST(ProgramView, KillNineOfSimswiftEndsAWrapperScriptsGrandchild) {
   {
     std::ofstream y(d + "/wrapper.yaml");
     y << "duration: 600\nattach_timeout: 60\nprogram_logs: " << d << "/logs\nrobots:\n"
-      << "  - {team: 72, player: 1, x: -1, y: 0, program: {command: [sh, -c, 'm=kill-test; mkfifo /tmp/w; cat /tmp/w $m-"
+      << "  - {team: 39, player: 1, x: -1, y: 0, program: {command: [sh, -c, 'm=kill-test; mkfifo /tmp/w; cat /tmp/w $m-"
       << getpid() << " & cat /tmp/w $m-" << getpid() << "; wait']}}\n";
   }
   const std::string simswift = kBin + "/simswift";
@@ -169,6 +175,8 @@ TEST(ProgramView, BadFileEntriesAreRefusedWithFileAndLine) {
 // its body) and starts its command in the view the run holds for the robot,
 // as a launched program's: its PID namespace, files and /tmp; the libagent
 // client started so holds the robot as the launched one does (the same hash).
+// Team 38: no other test's (ctest runs tests side by side; a robot's objects
+// are named by its team and player).
 TEST(ProgramView, AttachStartsAV5ProgramInItsRobotsView) {
   REQUIRE_NAMESPACES();
   const std::string d = viewTempDir("v5attach");
@@ -176,7 +184,7 @@ TEST(ProgramView, AttachStartsAV5ProgramInItsRobotsView) {
   const auto scenario = [&](const std::string& program) {
     std::ostringstream y;
     y << "duration: 0.5\nseed: 3\nattach_timeout: 20\nprogram_logs: " << d << "/logs\nrobots:\n"
-      << "  - {team: 72, player: 1, x: -1, y: 1, libagent: {release: 2017}, program: " << program << "}\n";
+      << "  - {team: 38, player: 1, x: -1, y: 1, libagent: {release: 2017}, program: " << program << "}\n";
     return Scenario::parse(y.str(), d + "/v5.yaml");
   };
   RunOptions o;
@@ -191,7 +199,7 @@ TEST(ProgramView, AttachStartsAV5ProgramInItsRobotsView) {
     if (pid == 0) {
       const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       if (fd >= 0) dup2(fd, 1), dup2(fd, 2);
-      std::vector<std::string> args = {kBin + "/simswift", "attach", "--team", "72", "--player", "1", "--"};
+      std::vector<std::string> args = {kBin + "/simswift", "attach", "--team", "38", "--player", "1", "--"};
       args.insert(args.end(), command.begin(), command.end());
       std::vector<char*> argv;
       for (std::string& a : args) argv.push_back(a.data());
@@ -215,8 +223,8 @@ TEST(ProgramView, AttachStartsAV5ProgramInItsRobotsView) {
             0)
       << readText(d + "/sh.log");
   EXPECT_EQ(readText(d + "/sh.log"), "pid 2\n50000\nno robocup\n");
-  EXPECT_EQ(readText(d + "/logs/t72p1.view/home/written"), "hi\n");
-  const pid_t program = attach({client, "--team", "72", "--player", "1", "--ticks", "50", "--stand"}, d + "/client.log");
+  EXPECT_EQ(readText(d + "/logs/t38p1.view/home/written"), "hi\n");
+  const pid_t program = attach({client, "--team", "38", "--player", "1", "--ticks", "50", "--stand"}, d + "/client.log");
   EXPECT_EQ(r.run(o).hash, launched);
   EXPECT_EQ(exitOf(program), 0) << readText(d + "/client.log");
   fs::remove_all(d);
