@@ -23,7 +23,9 @@ std::optional<RunPage> readRunPage(const std::string& name) {
   if (fd < 0) return std::nullopt;
   struct stat st {};
   std::optional<RunPage> out;
-  if (fstat(fd, &st) == 0 && static_cast<size_t>(st.st_size) >= sizeof(cc::ClockLayout)) {
+  // Only a page of this user's own run: the page names a folder and a
+  // process this command is then started in.
+  if (fstat(fd, &st) == 0 && st.st_uid == geteuid() && static_cast<size_t>(st.st_size) >= sizeof(cc::ClockLayout)) {
     void* p = mmap(nullptr, sizeof(cc::ClockLayout), PROT_READ, MAP_SHARED, fd, 0);
     if (p != MAP_FAILED) {
       const auto* page = static_cast<const volatile cc::ClockLayout*>(p);
@@ -43,7 +45,9 @@ std::optional<RunPage> readRunPage(const std::string& name) {
             folder[sizeof folder - 1] = '\0';
             r.view_folder = folder;
           }
-          out = r;
+          // A view is named by a live process and an absolute folder, or not taken.
+          if (!(r.flags & cc::kFlagView) || (r.view_pid > 0 && !r.view_folder.empty() && r.view_folder[0] == '/'))
+            out = r;
         }
       }
       munmap(p, sizeof(cc::ClockLayout));

@@ -34,8 +34,9 @@ struct RunPage {
   int view_pid = 0;       // with kFlagView
   std::string view_folder;
 };
-// Nothing while the page is not there, not set up, of another version, or
-// its run is gone.
+// Nothing while the page is not there, not set up, of another version, not
+// this user's, its run is gone, or its view is not named by a pid and an
+// absolute folder.
 std::optional<RunPage> readRunPage(const std::string& name);
 
 // Enters the view's user namespace (when another than the caller's), network
