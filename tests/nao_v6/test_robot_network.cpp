@@ -18,9 +18,12 @@
 #include "sim/programs/MountNamespace.hpp"
 #include "sim/programs/RobotNetwork.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/support/Attach.hpp"
 
 using simswift::runner::Runner;
 using simswift::runner::Scenario;
+using simswift::testing::exitCodeOf;
+using simswift::testing::startAttach;
 
 namespace {
 
@@ -57,32 +60,6 @@ struct NetRun {
 // `simswift attach` (directly or under gdb) on an external robot.
 enum class Start { Launched, Attach, AttachUnderGdb };
 
-// `simswift attach --team <team> --player 2 -- <command>`, its output in
-// `log`; its pid.
-pid_t startAttach(int team, const std::vector<std::string>& command, const std::string& log) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
-    std::vector<std::string> args = {std::string(SIMSWIFT_BINARY_DIR) + "/simswift", "attach", "--team",
-                                     std::to_string(team), "--player", "2", "--"};
-    args.insert(args.end(), command.begin(), command.end());
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-
-int waitExit(pid_t pid) {
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
-// 2.4 s: GameController packets at 0, 0.5, ... 2.0 s; loss 0.
 // Team `us` (47) with two robots and an opponent `us` - 1 that sends to
 // `us`'s port; each test its own teams (ctest runs tests side by side, and a
 // robot's socket is named by its team and player).
@@ -115,12 +92,12 @@ NetRun runTeam(const std::string& name, double delay_ms, Start start = Start::La
     if (start == Start::Attach) {
       // First a shell in the view, what a program checks of its robot (it
       // is the first process there after the view's init: pid 2).
-      const pid_t sh = startAttach(us, {"/bin/sh", "-c",
+      const pid_t sh = startAttach(us, 2, {"/bin/sh", "-c",
                                         "echo pid $$; cat /sys/class/hwmon/hwmon1/temp2_input; "
                                         "test -S /tmp/robocup && echo robocup; test -d /home/nao && echo home; "
                                         "grep -o wlan0 /proc/net/dev; touch /tmp/mark"},
                                    out.logs + "/" + p2 + ".sh.log");
-      out.attach_exit.push_back(waitExit(sh));
+      out.attach_exit.push_back(exitCodeOf(sh));
     }
     std::vector<std::string> command = {kNetClient, team, "2"};
     if (start == Start::AttachUnderGdb)
@@ -128,9 +105,9 @@ NetRun runTeam(const std::string& name, double delay_ms, Start start = Start::La
       // ASan runtime makes them), passed on as the docs tell gdb users.
       command.insert(command.begin(), {"/usr/bin/gdb", "-batch", "-nx", "-ex", "handle SIGSYS nostop noprint pass",
                                        "-ex", "run", "--args"});
-    const pid_t program = startAttach(us, command, out.logs + "/" + p2 + ".log");
+    const pid_t program = startAttach(us, 2, command, out.logs + "/" + p2 + ".log");
     out.hash = r.run(o).hash;
-    out.attach_exit.push_back(waitExit(program));
+    out.attach_exit.push_back(exitCodeOf(program));
   }
   out.gc_sent = r.gameControllerUdp()->sent();
   for (const std::string& tag : {p1, p2, opponent}) out.seen[tag] = readFile(out.logs + "/" + tag + ".log");

@@ -20,6 +20,7 @@
 #include "sim/programs/ProgramView.hpp"
 #include "sim/runner/Runner.hpp"
 #include "tests/runner/RunnerTestUtil.hpp"
+#include "tests/support/Attach.hpp"
 #include "tests/support/ConfigErrors.hpp"
 #include "tests/support/Shell.hpp"
 
@@ -27,6 +28,8 @@ namespace fs = std::filesystem;
 using simswift::runner::RunOptions;
 using simswift::runner::Runner;
 using simswift::runner::Scenario;
+using simswift::testing::exitCodeOf;
+using simswift::testing::startAttach;
 
 namespace {
 
@@ -194,29 +197,9 @@ TEST(ProgramView, AttachStartsAV5ProgramInItsRobotsView) {
     Runner r(scenario("{command: [" + client + ", --team, '{team}', --player, '{player}', --ticks, 50, --stand]}"));
     launched = r.run(o).hash;
   }
-  const auto attach = [&](const std::vector<std::string>& command, const std::string& log) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-      const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      if (fd >= 0) dup2(fd, 1), dup2(fd, 2);
-      std::vector<std::string> args = {kBin + "/simswift", "attach", "--team", "38", "--player", "1", "--"};
-      args.insert(args.end(), command.begin(), command.end());
-      std::vector<char*> argv;
-      for (std::string& a : args) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      execv(argv[0], argv.data());
-      _exit(127);
-    }
-    return pid;
-  };
-  const auto exitOf = [](pid_t pid) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  };
   Runner r(scenario("external"));
   r.start();
-  EXPECT_EQ(exitOf(attach({"/bin/sh", "-c",
+  EXPECT_EQ(exitCodeOf(startAttach(38, 1, {"/bin/sh", "-c",
                            "echo pid $$; cat /sys/class/hwmon/hwmon1/temp3_input; test -e /tmp/robocup || "
                            "echo no robocup; echo hi > /home/nao/written"},
                           d + "/sh.log")),
@@ -224,8 +207,8 @@ TEST(ProgramView, AttachStartsAV5ProgramInItsRobotsView) {
       << readText(d + "/sh.log");
   EXPECT_EQ(readText(d + "/sh.log"), "pid 2\n50000\nno robocup\n");
   EXPECT_EQ(readText(d + "/logs/t38p1.view/home/written"), "hi\n");
-  const pid_t program = attach({client, "--team", "38", "--player", "1", "--ticks", "50", "--stand"}, d + "/client.log");
+  const pid_t program = startAttach(38, 1, {client, "--team", "38", "--player", "1", "--ticks", "50", "--stand"}, d + "/client.log");
   EXPECT_EQ(r.run(o).hash, launched);
-  EXPECT_EQ(exitOf(program), 0) << readText(d + "/client.log");
+  EXPECT_EQ(exitCodeOf(program), 0) << readText(d + "/client.log");
   fs::remove_all(d);
 }

@@ -15,6 +15,7 @@
 
 #include "sim/programs/Errors.hpp"
 #include "sim/runner/Runner.hpp"
+#include "tests/support/Attach.hpp"
 
 using simswift::runner::Runner;
 using simswift::runner::Scenario;
@@ -223,20 +224,9 @@ ProbeRun runAttached(int team, int ticks, const std::string& kinds, const std::v
   {
     Runner r(sc);
     r.start();  // the socket and the clock page exist from here
-    pid = ::fork();
-    if (pid == 0) {
-      const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
-      std::vector<std::string> args = {std::string(SIMSWIFT_BINARY_DIR) + "/simswift", "attach", "--team",
-                                       std::to_string(team), "--player", "1", "--"};
-      args.insert(args.end(), before.begin(), before.end());
-      for (const std::string& a : {kProbe, std::string("-"), std::to_string(ticks), kinds}) args.push_back(a);
-      std::vector<char*> argv;
-      for (std::string& a : args) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(argv[0], argv.data());
-      ::_exit(127);
-    }
+    std::vector<std::string> command = before;
+    for (const std::string& a : {kProbe, std::string("-"), std::to_string(ticks), kinds}) command.push_back(a);
+    pid = simswift::testing::startAttach(team, 1, command, log);
     simswift::runner::RunOptions o;
     o.progress = false;
     out.stats = r.run(o);
